@@ -1,0 +1,212 @@
+//! The one diagnostic type every stage reports with, and the one place that renders it: as text
+//! through codespan-reporting, or as JSON for machines.
+
+use crate::source::{SourceStore, Span};
+use codespan_reporting::diagnostic as cs;
+use codespan_reporting::term;
+use serde::Serialize;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    Note,
+    Warning,
+    Error,
+}
+
+/// A span with a message attached.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Label {
+    pub span: Span,
+    pub message: String,
+}
+
+/// A user mistake (or a hint about one), as plain data.
+///
+/// Codes are stable and documented in `docs/diagnostics.md`; messages are lowercase, without a
+/// trailing period, and make sense on their own.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Diagnostic {
+    pub severity: Severity,
+    pub code: &'static str,
+    pub message: String,
+    pub primary: Option<Label>,
+    pub secondary: Vec<Label>,
+    pub notes: Vec<String>,
+    pub help: Option<String>,
+}
+
+impl Diagnostic {
+    pub fn error(code: &'static str, message: impl Into<String>) -> Diagnostic {
+        Diagnostic::new(Severity::Error, code, message)
+    }
+
+    pub fn warning(code: &'static str, message: impl Into<String>) -> Diagnostic {
+        Diagnostic::new(Severity::Warning, code, message)
+    }
+
+    fn new(severity: Severity, code: &'static str, message: impl Into<String>) -> Diagnostic {
+        Diagnostic {
+            severity,
+            code,
+            message: message.into(),
+            primary: None,
+            secondary: Vec::new(),
+            notes: Vec::new(),
+            help: None,
+        }
+    }
+
+    pub fn at(mut self, span: Span, message: impl Into<String>) -> Diagnostic {
+        self.primary = Some(Label { span, message: message.into() });
+        self
+    }
+
+    pub fn label(mut self, span: Span, message: impl Into<String>) -> Diagnostic {
+        self.secondary.push(Label { span, message: message.into() });
+        self
+    }
+
+    pub fn note(mut self, note: impl Into<String>) -> Diagnostic {
+        self.notes.push(note.into());
+        self
+    }
+
+    pub fn help(mut self, help: impl Into<String>) -> Diagnostic {
+        self.help = Some(help.into());
+        self
+    }
+
+    pub fn is_error(&self) -> bool {
+        self.severity == Severity::Error
+    }
+}
+
+/// Whether any of the diagnostics is an error.
+pub fn has_errors(diagnostics: &[Diagnostic]) -> bool {
+    diagnostics.iter().any(Diagnostic::is_error)
+}
+
+fn to_codespan(d: &Diagnostic) -> cs::Diagnostic<crate::source::FileId> {
+    let severity = match d.severity {
+        Severity::Error => cs::Severity::Error,
+        Severity::Warning => cs::Severity::Warning,
+        Severity::Note => cs::Severity::Note,
+    };
+    let mut labels = Vec::new();
+    if let Some(p) = &d.primary {
+        labels.push(cs::Label::primary(p.span.file, p.span.range()).with_message(&p.message));
+    }
+    for l in &d.secondary {
+        labels.push(cs::Label::secondary(l.span.file, l.span.range()).with_message(&l.message));
+    }
+    let mut notes: Vec<String> = d.notes.iter().map(|n| format!("note: {n}")).collect();
+    if let Some(h) = &d.help {
+        notes.push(format!("help: {h}"));
+    }
+    cs::Diagnostic::new(severity)
+        .with_code(d.code)
+        .with_message(&d.message)
+        .with_labels(labels)
+        .with_notes(notes)
+}
+
+/// Renders diagnostics as text, without colour (for files, pipes and golden tests).
+pub fn render_plain(store: &SourceStore, diagnostics: &[Diagnostic]) -> String {
+    let config = term::Config::default();
+    let mut out = String::new();
+    for d in diagnostics {
+        // A span pointing outside its file is a bug in the reporting stage; show the message anyway.
+        match term::emit_into_string(&config, store, &to_codespan(d)) {
+            Ok(text) => out.push_str(&text),
+            Err(_) => out.push_str(&format!("{:?}[{}]: {}\n", d.severity, d.code, d.message)),
+        }
+    }
+    out
+}
+
+/// Writes diagnostics to a terminal-like stream, coloured when `color` is true.
+pub fn render_to(
+    store: &SourceStore,
+    diagnostics: &[Diagnostic],
+    color: bool,
+    stream: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
+    if !color {
+        return stream.write_all(render_plain(store, diagnostics).as_bytes());
+    }
+    let config = term::Config::default();
+    let styles = term::Styles::default();
+    let mut buffer = term::termcolor::Buffer::ansi();
+    for d in diagnostics {
+        let mut writer = term::StylesWriter::new(&mut buffer, &styles);
+        if term::emit_to_write_style(&mut writer, &config, store, &to_codespan(d)).is_err() {
+            return stream.write_all(render_plain(store, diagnostics).as_bytes());
+        }
+    }
+    stream.write_all(buffer.as_slice())
+}
+
+/// A position for JSON output: file name, 1-based line and column, and byte offsets.
+#[derive(Serialize)]
+pub struct JsonLocation {
+    pub file: String,
+    pub line: usize,
+    pub column: usize,
+    pub end_line: usize,
+    pub end_column: usize,
+    pub start: u32,
+    pub end: u32,
+}
+
+#[derive(Serialize)]
+pub struct JsonLabel {
+    pub message: String,
+    #[serde(flatten)]
+    pub location: JsonLocation,
+}
+
+/// A diagnostic as JSON: its own schema, stable across releases.
+#[derive(Serialize)]
+pub struct JsonDiagnostic {
+    pub severity: Severity,
+    pub code: &'static str,
+    pub message: String,
+    pub location: Option<JsonLabel>,
+    pub labels: Vec<JsonLabel>,
+    pub notes: Vec<String>,
+    pub help: Option<String>,
+}
+
+fn json_label(store: &SourceStore, label: &Label) -> JsonLabel {
+    let start = store.line_col(label.span.file, label.span.start as usize);
+    let end = store.line_col(label.span.file, label.span.end as usize);
+    JsonLabel {
+        message: label.message.clone(),
+        location: JsonLocation {
+            file: store.name(label.span.file).to_string(),
+            line: start.line,
+            column: start.column,
+            end_line: end.line,
+            end_column: end.column,
+            start: label.span.start,
+            end: label.span.end,
+        },
+    }
+}
+
+/// Converts diagnostics to their JSON form.
+pub fn to_json(store: &SourceStore, diagnostics: &[Diagnostic]) -> Vec<JsonDiagnostic> {
+    diagnostics
+        .iter()
+        .map(|d| JsonDiagnostic {
+            severity: d.severity,
+            code: d.code,
+            message: d.message.clone(),
+            location: d.primary.as_ref().map(|l| json_label(store, l)),
+            labels: d.secondary.iter().map(|l| json_label(store, l)).collect(),
+            notes: d.notes.clone(),
+            help: d.help.clone(),
+        })
+        .collect()
+}

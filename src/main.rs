@@ -1,0 +1,86 @@
+//! The `kiln` command: arguments in, library calls, rendered results out, exit code.
+//! Exit codes: 0 success, 1 diagnostics with errors, 2 usage or I/O failure.
+
+use clap::{Parser, Subcommand, ValueEnum};
+use kiln::diagnostics::{self, Diagnostic};
+use kiln::source::SourceStore;
+use std::io::{IsTerminal, Write};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(name = "kiln", version, about = "Shader-variant compiler and keyword system for WGSL")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// List each shader's passes, keyword sets and possible variant counts.
+    List {
+        /// Shader files or folders to walk (default: the bundled example project).
+        paths: Vec<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+    },
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Format {
+    Text,
+    Json,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        Command::List { paths, format } => list(paths, format),
+    }
+}
+
+fn list(paths: Vec<PathBuf>, format: Format) -> ExitCode {
+    let paths = if paths.is_empty() { vec![kiln::project::bundled_example()] } else { paths };
+    let files = match kiln::project::find_shader_files(&paths) {
+        Ok(files) => files,
+        Err(error) => return usage_failure(&error.to_string()),
+    };
+    let mut store = SourceStore::new();
+    let (ids, mut problems) = kiln::project::load_files(&mut store, &files);
+    let (listing, diagnostics) = kiln::listing::list_shaders(&store, &ids);
+    problems.extend(diagnostics);
+    match format {
+        Format::Text => {
+            print_out(&kiln::listing::render_text(&listing));
+            report(&store, &problems);
+        }
+        Format::Json => {
+            let document = serde_json::json!({
+                "shaders": listing.shaders,
+                "diagnostics": diagnostics::to_json(&store, &problems),
+            });
+            print_out(&format!("{document:#}\n"));
+        }
+    }
+    exit_code(&problems)
+}
+
+fn print_out(text: &str) {
+    // A closed pipe (`kiln list | head`) is not an error worth a panic.
+    let _ = std::io::stdout().lock().write_all(text.as_bytes());
+}
+
+fn report(store: &SourceStore, problems: &[Diagnostic]) {
+    let stderr = std::io::stderr();
+    let color = stderr.is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty());
+    let _ = diagnostics::render_to(store, problems, color, &mut stderr.lock());
+}
+
+fn usage_failure(message: &str) -> ExitCode {
+    eprintln!("error: {message}");
+    ExitCode::from(2)
+}
+
+fn exit_code(problems: &[Diagnostic]) -> ExitCode {
+    if diagnostics::has_errors(problems) { ExitCode::from(1) } else { ExitCode::SUCCESS }
+}

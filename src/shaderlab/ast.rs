@@ -1,0 +1,420 @@
+//! The typed syntax tree of a `.shader` file. Every node carries the span it was read from.
+
+use crate::source::{Span, Spanned};
+
+/// One `Shader "name" { ... }` file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Shader {
+    pub name: Spanned<String>,
+    pub properties: Vec<Property>,
+    /// SubShaders in source order, those inside `Category { }` blocks included.
+    pub subshaders: Vec<SubShader>,
+    pub categories: Vec<Category>,
+    /// Shader-level `*INCLUDE` blocks, prepended to every program of their language.
+    pub includes: Vec<ProgramBlock>,
+    pub fallback: Option<Fallback>,
+    pub custom_editors: Vec<CustomEditor>,
+    pub dependencies: Vec<Dependency>,
+    pub span: Span,
+}
+
+/// `[attributes] _Name ("Display name", Type) = default`
+#[derive(Debug, Clone, PartialEq)]
+pub struct Property {
+    pub attributes: Vec<Attribute>,
+    pub name: Spanned<String>,
+    pub display_name: Spanned<String>,
+    pub ty: Spanned<PropertyType>,
+    pub default: Spanned<PropertyDefault>,
+    pub span: Span,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PropertyType {
+    Float,
+    Int,
+    Integer,
+    Range { min: f64, max: f64 },
+    Color,
+    Vector,
+    Texture(TextureDimension),
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TextureDimension {
+    D2,
+    D2Array,
+    D3,
+    Cube,
+    CubeArray,
+    /// Unity's `Any`: a texture of any dimension.
+    Any,
+}
+
+impl PropertyType {
+    /// The name as ShaderLab spells it.
+    pub fn name(&self) -> &'static str {
+        match self {
+            PropertyType::Float => "Float",
+            PropertyType::Int => "Int",
+            PropertyType::Integer => "Integer",
+            PropertyType::Range { .. } => "Range",
+            PropertyType::Color => "Color",
+            PropertyType::Vector => "Vector",
+            PropertyType::Texture(TextureDimension::D2) => "2D",
+            PropertyType::Texture(TextureDimension::D2Array) => "2DArray",
+            PropertyType::Texture(TextureDimension::D3) => "3D",
+            PropertyType::Texture(TextureDimension::Cube) => "Cube",
+            PropertyType::Texture(TextureDimension::CubeArray) => "CubeArray",
+            PropertyType::Texture(TextureDimension::Any) => "Any",
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum PropertyDefault {
+    Number(f64),
+    /// Two to four components; colours may have three (alpha then defaults to 1).
+    Vector(Vec<f64>),
+    /// A texture name such as `"white"`, with the legacy `{ options }` text if present.
+    Texture { name: String, options: Option<String> },
+}
+
+/// A property attribute such as `[Toggle(_CLIPPING)]`, kept verbatim and also interpreted.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Attribute {
+    pub name: Spanned<String>,
+    /// Arguments split at commas and trimmed; empty when the attribute has no parentheses.
+    pub args: Vec<Spanned<String>>,
+    pub kind: AttributeKind,
+    pub span: Span,
+}
+
+/// What kiln understands of an attribute. Unknown ones are [`AttributeKind::Other`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum AttributeKind {
+    /// `[Toggle]`, `[Toggle(KW)]`, `[MaterialToggle]`: the keyword when given.
+    Toggle(Option<String>),
+    /// `[ToggleOff]`, `[ToggleOff(KW)]`.
+    ToggleOff(Option<String>),
+    ToggleUI,
+    /// `[KeywordEnum(A, B, ...)]`, `[MaterialKeywordEnum(...)]`: the entry names.
+    KeywordEnum(Vec<String>),
+    /// `[Enum(...)]`, `[MaterialEnum(...)]`: a type name or name/value pairs; sets no keyword.
+    Enum(Vec<String>),
+    NoScaleOffset,
+    Hdr,
+    Gamma,
+    HideInInspector,
+    MainTexture,
+    MainColor,
+    PerRendererData,
+    Normal,
+    IntRange,
+    PowerSlider(f64),
+    Header(String),
+    Space(f64),
+    Other,
+}
+
+/// `Category { ... }`: render state and tags shared by the SubShaders inside it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Category {
+    pub state: StateBlock,
+    pub span: Span,
+}
+
+/// The settings that SubShaders, Passes and Categories all accept.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct StateBlock {
+    pub name: Option<Spanned<String>>,
+    pub tags: Vec<Tag>,
+    pub lod: Option<Spanned<u32>>,
+    pub render_state: Vec<RenderCommand>,
+    pub package_requirements: Vec<PackageRequirement>,
+    pub legacy: Vec<LegacyCommand>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct SubShader {
+    pub state: StateBlock,
+    pub passes: Vec<PassItem>,
+    /// `*INCLUDE` blocks, and surface-shader `CGPROGRAM` blocks written directly in the SubShader.
+    pub programs: Vec<ProgramBlock>,
+    /// Index into [`Shader::categories`] when the SubShader sits in a `Category`.
+    pub category: Option<usize>,
+    pub span: Span,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum PassItem {
+    Pass(Pass),
+    UsePass(Spanned<String>),
+    GrabPass(GrabPass),
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pass {
+    pub state: StateBlock,
+    pub programs: Vec<ProgramBlock>,
+    pub span: Span,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct GrabPass {
+    pub texture: Option<Spanned<String>>,
+    pub name: Option<Spanned<String>>,
+    pub tags: Vec<Tag>,
+    pub span: Span,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tag {
+    pub key: Spanned<String>,
+    pub value: Spanned<String>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct PackageRequirement {
+    pub package: Spanned<String>,
+    pub version: Option<Spanned<String>>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum Fallback {
+    Shader(Spanned<String>),
+    Off(Span),
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct CustomEditor {
+    pub class: Spanned<String>,
+    /// Set for `CustomEditorForRenderPipeline`.
+    pub render_pipeline: Option<Spanned<String>>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct Dependency {
+    pub name: Spanned<String>,
+    pub shader: Spanned<String>,
+}
+
+/// A render-state value: a literal, or `[_Property]` taken from the material.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Value<T> {
+    Literal(T),
+    Property(String),
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct RenderCommand {
+    pub kind: RenderCommandKind,
+    pub span: Span,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum RenderCommandKind {
+    /// `Blend [target] Off` has `factors: None`.
+    Blend { target: Option<u32>, factors: Option<BlendFactors> },
+    BlendOp { target: Option<u32>, color: Spanned<Value<BlendOperation>>, alpha: Option<Spanned<Value<BlendOperation>>> },
+    ZWrite(Spanned<Value<bool>>),
+    ZTest(Spanned<Value<CompareFunction>>),
+    ZClip(Spanned<Value<bool>>),
+    Cull(Spanned<Value<CullMode>>),
+    ColorMask { mask: Spanned<Value<ColorMask>>, target: Option<u32> },
+    Offset { factor: Spanned<Value<f64>>, units: Spanned<Value<f64>> },
+    AlphaToMask(Spanned<Value<bool>>),
+    Conservative(Spanned<Value<bool>>),
+    Stencil(Vec<StencilEntry>),
+}
+
+impl RenderCommandKind {
+    /// The command's keyword as ShaderLab spells it.
+    pub fn keyword(&self) -> &'static str {
+        match self {
+            RenderCommandKind::Blend { .. } => "Blend",
+            RenderCommandKind::BlendOp { .. } => "BlendOp",
+            RenderCommandKind::ZWrite(_) => "ZWrite",
+            RenderCommandKind::ZTest(_) => "ZTest",
+            RenderCommandKind::ZClip(_) => "ZClip",
+            RenderCommandKind::Cull(_) => "Cull",
+            RenderCommandKind::ColorMask { .. } => "ColorMask",
+            RenderCommandKind::Offset { .. } => "Offset",
+            RenderCommandKind::AlphaToMask(_) => "AlphaToMask",
+            RenderCommandKind::Conservative(_) => "Conservative",
+            RenderCommandKind::Stencil(_) => "Stencil",
+        }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct BlendFactors {
+    pub src: Spanned<Value<BlendFactor>>,
+    pub dst: Spanned<Value<BlendFactor>>,
+    /// Separate alpha factors: `Blend A B, C D`.
+    pub alpha: Option<(Spanned<Value<BlendFactor>>, Spanned<Value<BlendFactor>>)>,
+}
+
+/// Channels written by `ColorMask`: `0` is none.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ColorMask {
+    pub r: bool,
+    pub g: bool,
+    pub b: bool,
+    pub a: bool,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct StencilEntry {
+    pub op: StencilField,
+    pub value: Spanned<StencilValue>,
+    pub span: Span,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum StencilValue {
+    /// `Ref`, `ReadMask`, `WriteMask`: 0 to 255.
+    Byte(Value<u8>),
+    Compare(Value<CompareFunction>),
+    Operation(Value<StencilOperation>),
+}
+
+/// A fixed-function command from before programmable shaders, kept verbatim.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LegacyCommand {
+    pub keyword: Spanned<String>,
+    pub text: String,
+    pub span: Span,
+}
+
+/// A program block: `WGSLPROGRAM ... ENDWGSL` or one of its include or foreign-language forms.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ProgramBlock {
+    pub language: ProgramLanguage,
+    /// `*INCLUDE` blocks are spliced before every program of their language instead of compiled.
+    pub is_include: bool,
+    pub body: String,
+    pub body_span: Span,
+    pub span: Span,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum ProgramLanguage {
+    Wgsl,
+    Hlsl,
+    Cg,
+    Glsl,
+}
+
+impl ProgramLanguage {
+    /// The keyword that opens a program of this language (`WGSLPROGRAM`, `CGINCLUDE`, ...).
+    pub fn open_keyword(self, include: bool) -> &'static str {
+        match (self, include) {
+            (ProgramLanguage::Wgsl, false) => "WGSLPROGRAM",
+            (ProgramLanguage::Wgsl, true) => "WGSLINCLUDE",
+            (ProgramLanguage::Hlsl, false) => "HLSLPROGRAM",
+            (ProgramLanguage::Hlsl, true) => "HLSLINCLUDE",
+            (ProgramLanguage::Cg, false) => "CGPROGRAM",
+            (ProgramLanguage::Cg, true) => "CGINCLUDE",
+            (ProgramLanguage::Glsl, false) => "GLSLPROGRAM",
+            (ProgramLanguage::Glsl, true) => "GLSLINCLUDE",
+        }
+    }
+
+    pub fn close_keyword(self) -> &'static str {
+        match self {
+            ProgramLanguage::Wgsl => "ENDWGSL",
+            ProgramLanguage::Hlsl => "ENDHLSL",
+            ProgramLanguage::Cg => "ENDCG",
+            ProgramLanguage::Glsl => "ENDGLSL",
+        }
+    }
+
+    pub const ALL: [ProgramLanguage; 4] =
+        [ProgramLanguage::Wgsl, ProgramLanguage::Hlsl, ProgramLanguage::Cg, ProgramLanguage::Glsl];
+}
+
+/// Declares a closed set of ShaderLab words, matched case-insensitively.
+macro_rules! shaderlab_words {
+    ($(#[$meta:meta])* $name:ident { $($variant:ident = $text:literal),+ $(,)? }) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum $name { $($variant),+ }
+
+        impl $name {
+            /// Every accepted spelling, in canonical case.
+            pub const NAMES: &'static [&'static str] = &[$($text),+];
+
+            /// Parses a word, ignoring case.
+            pub fn from_word(word: &str) -> Option<$name> {
+                $(if word.eq_ignore_ascii_case($text) { return Some($name::$variant); })+
+                None
+            }
+
+            pub fn name(self) -> &'static str {
+                match self { $($name::$variant => $text),+ }
+            }
+        }
+    };
+}
+
+shaderlab_words!(BlendFactor {
+    One = "One", Zero = "Zero", SrcColor = "SrcColor", SrcAlpha = "SrcAlpha",
+    SrcAlphaSaturate = "SrcAlphaSaturate", DstColor = "DstColor", DstAlpha = "DstAlpha",
+    OneMinusSrcColor = "OneMinusSrcColor", OneMinusSrcAlpha = "OneMinusSrcAlpha",
+    OneMinusDstColor = "OneMinusDstColor", OneMinusDstAlpha = "OneMinusDstAlpha",
+});
+
+shaderlab_words!(BlendOperation {
+    Add = "Add", Sub = "Sub", RevSub = "RevSub", Min = "Min", Max = "Max",
+    LogicalClear = "LogicalClear", LogicalSet = "LogicalSet", LogicalCopy = "LogicalCopy",
+    LogicalCopyInverted = "LogicalCopyInverted", LogicalNoop = "LogicalNoop",
+    LogicalInvert = "LogicalInvert", LogicalAnd = "LogicalAnd", LogicalNand = "LogicalNand",
+    LogicalOr = "LogicalOr", LogicalNor = "LogicalNor", LogicalXor = "LogicalXor",
+    LogicalEquiv = "LogicalEquiv", LogicalAndReverse = "LogicalAndReverse",
+    LogicalAndInverted = "LogicalAndInverted", LogicalOrReverse = "LogicalOrReverse",
+    LogicalOrInverted = "LogicalOrInverted", Multiply = "Multiply", Screen = "Screen",
+    Overlay = "Overlay", Darken = "Darken", Lighten = "Lighten", ColorDodge = "ColorDodge",
+    ColorBurn = "ColorBurn", HardLight = "HardLight", SoftLight = "SoftLight",
+    Difference = "Difference", Exclusion = "Exclusion", HslHue = "HSLHue",
+    HslSaturation = "HSLSaturation", HslColor = "HSLColor", HslLuminosity = "HSLLuminosity",
+});
+
+shaderlab_words!(CompareFunction {
+    Never = "Never", Less = "Less", Equal = "Equal", LEqual = "LEqual", Greater = "Greater",
+    NotEqual = "NotEqual", GEqual = "GEqual", Always = "Always", Disabled = "Disabled",
+});
+
+shaderlab_words!(CullMode { Off = "Off", Front = "Front", Back = "Back" });
+
+shaderlab_words!(StencilOperation {
+    Keep = "Keep", Zero = "Zero", Replace = "Replace", IncrSat = "IncrSat", DecrSat = "DecrSat",
+    Invert = "Invert", IncrWrap = "IncrWrap", DecrWrap = "DecrWrap",
+});
+
+shaderlab_words!(
+    /// The commands allowed inside `Stencil { }`.
+    StencilField {
+        Ref = "Ref", ReadMask = "ReadMask", WriteMask = "WriteMask", Comp = "Comp", Pass = "Pass",
+        Fail = "Fail", ZFail = "ZFail", CompBack = "CompBack", PassBack = "PassBack",
+        FailBack = "FailBack", ZFailBack = "ZFailBack", CompFront = "CompFront",
+        PassFront = "PassFront", FailFront = "FailFront", ZFailFront = "ZFailFront",
+    }
+);
+
+impl Shader {
+    /// Every program-bearing pass, with the SubShader it belongs to.
+    pub fn passes(&self) -> impl Iterator<Item = (usize, &SubShader, usize, &Pass)> {
+        self.subshaders.iter().enumerate().flat_map(|(si, sub)| {
+            sub.passes.iter().enumerate().filter_map(move |(pi, item)| match item {
+                PassItem::Pass(pass) => Some((si, sub, pi, pass)),
+                _ => None,
+            })
+        })
+    }
+
+    /// The property with this name.
+    pub fn property(&self, name: &str) -> Option<&Property> {
+        self.properties.iter().find(|p| p.name.value == name)
+    }
+}

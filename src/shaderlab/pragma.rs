@@ -1,0 +1,559 @@
+//! `#pragma` lines of program blocks: entry points, targets, requirements and keyword sets,
+//! normalised as Unity does (`_`/`__` mean "no keyword"; a one-keyword `shader_feature K` means
+//! `_ K`; Unity's shorthand pragmas expand to their keyword sets).
+
+use crate::diagnostics::Diagnostic;
+use crate::shaderlab::ast::ProgramBlock;
+use crate::shaderlab::one_of;
+use crate::source::{Span, Spanned};
+
+/// How a keyword set makes variants.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum KeywordKind {
+    /// Every keyword of the set is built.
+    MultiCompile,
+    /// Only the keywords materials use are built.
+    ShaderFeature,
+    /// No variants: the keyword is a run-time 0/1 the shader branches on.
+    DynamicBranch,
+}
+
+impl KeywordKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            KeywordKind::MultiCompile => "multi_compile",
+            KeywordKind::ShaderFeature => "shader_feature",
+            KeywordKind::DynamicBranch => "dynamic_branch",
+        }
+    }
+}
+
+/// Whether a keyword is global to the project or local to its shader (`_local`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum KeywordScope {
+    Global,
+    Local,
+}
+
+/// The stage a keyword affects (`_vertex`, `_fragment`, ...); `All` when no suffix is given.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum KeywordStage {
+    All,
+    Vertex,
+    Fragment,
+    Geometry,
+    Hull,
+    Domain,
+    RayTracing,
+}
+
+impl KeywordStage {
+    const SUFFIXES: [(&'static str, KeywordStage); 6] = [
+        ("_vertex", KeywordStage::Vertex),
+        ("_fragment", KeywordStage::Fragment),
+        ("_geometry", KeywordStage::Geometry),
+        ("_hull", KeywordStage::Hull),
+        ("_domain", KeywordStage::Domain),
+        ("_raytracing", KeywordStage::RayTracing),
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            KeywordStage::All => "all",
+            KeywordStage::Vertex => "vertex",
+            KeywordStage::Fragment => "fragment",
+            KeywordStage::Geometry => "geometry",
+            KeywordStage::Hull => "hull",
+            KeywordStage::Domain => "domain",
+            KeywordStage::RayTracing => "raytracing",
+        }
+    }
+}
+
+/// One choice of a keyword set: a keyword, or `None` for the all-off choice (`_`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct KeywordOption {
+    pub keyword: Option<String>,
+    pub span: Span,
+}
+
+/// A declared keyword set, after normalisation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct KeywordSet {
+    pub kind: KeywordKind,
+    pub scope: KeywordScope,
+    pub stage: KeywordStage,
+    pub options: Vec<KeywordOption>,
+    /// The shorthand pragma this set came from (`multi_compile_fog`), if any.
+    pub shorthand: Option<&'static str>,
+    pub span: Span,
+}
+
+impl KeywordSet {
+    /// The keywords, without the all-off choice.
+    pub fn keywords(&self) -> impl Iterator<Item = &str> {
+        self.options.iter().filter_map(|o| o.keyword.as_deref())
+    }
+
+    pub fn has_off_option(&self) -> bool {
+        self.options.iter().any(|o| o.keyword.is_none())
+    }
+}
+
+/// `#pragma target`: a level, optionally only for variants with all the given keywords.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Target {
+    pub level: Spanned<String>,
+    pub keywords: Vec<Spanned<String>>,
+}
+
+/// `#pragma require`: GPU features, optionally only for variants with the given keywords.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Require {
+    pub features: Vec<Spanned<String>>,
+    pub keywords: Vec<Spanned<String>>,
+}
+
+/// What a pass's program says about itself through its pragmas.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ProgramPragmas {
+    pub vertex: Option<Spanned<String>>,
+    pub fragment: Option<Spanned<String>>,
+    pub targets: Vec<Target>,
+    pub requires: Vec<Require>,
+    pub keyword_sets: Vec<KeywordSet>,
+    pub skip_variants: Vec<Spanned<String>>,
+    pub instancing_options: Vec<Spanned<String>>,
+    /// Any other pragma: its name and the rest of the line.
+    pub other: Vec<(Spanned<String>, String)>,
+}
+
+/// Target levels and the requirements each adds to the previous one (DESIGN.md).
+pub const TARGET_LEVELS: [(&str, &[&str]); 8] = [
+    ("2.0", &[]),
+    ("2.5", &["derivatives"]),
+    ("3.0", &["interpolators10", "samplelod", "fragcoord"]),
+    ("3.5", &["interpolators15", "mrt4", "integers", "2darray", "instancing"]),
+    ("4.0", &["geometry"]),
+    ("4.5", &["compute", "randomwrite", "msaatex"]),
+    ("4.6", &["cubearray", "tesshw", "tessellation"]),
+    ("5.0", &["interpolators32", "mrt8", "sparsetex", "framebufferfetch", "setrtarrayindexfromanyshader"]),
+];
+
+/// Every requirement name `#pragma require` accepts.
+pub const REQUIREMENTS: [&str; 22] = [
+    "interpolators10", "interpolators15", "interpolators32", "integers", "mrt4", "mrt8",
+    "derivatives", "samplelod", "fragcoord", "2darray", "cubearray", "instancing", "geometry",
+    "compute", "randomwrite", "msaatex", "tesshw", "tessellation", "sparsetex", "framebufferfetch",
+    "setrtarrayindexfromanyshader", "native16bit",
+];
+
+/// Unity's shorthand pragmas and the keyword sets kiln expands them to (docs/keywords.md).
+const SHORTHANDS: [(&str, &[&str]); 10] = [
+    ("multi_compile_instancing", &["_ INSTANCING_ON"]),
+    ("multi_compile_fog", &["_ FOG_LINEAR FOG_EXP FOG_EXP2"]),
+    ("multi_compile_particles", &["_ SOFTPARTICLES_ON"]),
+    ("multi_compile_shadowcaster", &["SHADOWS_DEPTH SHADOWS_CUBE"]),
+    (
+        "multi_compile_fwdbase",
+        &[
+            "DIRECTIONAL", "_ LIGHTMAP_ON", "_ DIRLIGHTMAP_COMBINED", "_ DYNAMICLIGHTMAP_ON",
+            "_ SHADOWS_SCREEN", "_ SHADOWS_SHADOWMASK", "_ LIGHTMAP_SHADOW_MIXING", "_ LIGHTPROBE_SH",
+            "_ VERTEXLIGHT_ON",
+        ],
+    ),
+    ("multi_compile_fwdadd", &["POINT DIRECTIONAL SPOT POINT_COOKIE DIRECTIONAL_COOKIE"]),
+    (
+        "multi_compile_fwdadd_fullshadows",
+        &[
+            "POINT DIRECTIONAL SPOT POINT_COOKIE DIRECTIONAL_COOKIE",
+            "_ SHADOWS_DEPTH SHADOWS_SCREEN SHADOWS_CUBE", "_ SHADOWS_SOFT", "_ SHADOWS_SHADOWMASK",
+            "_ LIGHTMAP_SHADOW_MIXING",
+        ],
+    ),
+    (
+        "multi_compile_lightpass",
+        &[
+            "POINT DIRECTIONAL SPOT POINT_COOKIE DIRECTIONAL_COOKIE",
+            "_ SHADOWS_DEPTH SHADOWS_SCREEN SHADOWS_CUBE", "_ SHADOWS_SOFT", "_ SHADOWS_SHADOWMASK",
+            "_ UNITY_HDR_ON",
+        ],
+    ),
+    (
+        "multi_compile_prepassfinal",
+        &[
+            "_ LIGHTMAP_ON", "_ DIRLIGHTMAP_COMBINED", "_ DYNAMICLIGHTMAP_ON", "_ UNITY_HDR_ON",
+            "_ SHADOWS_SHADOWMASK", "_ LIGHTPROBE_SH",
+        ],
+    ),
+    ("multi_compile_shadowcollector", &["_ SHADOWS_SPLIT_SPHERES", "_ SHADOWS_SINGLE_CASCADE"]),
+];
+
+/// The shorthand pragma names kiln knows.
+pub fn shorthand_names() -> impl Iterator<Item = &'static str> {
+    SHORTHANDS.iter().map(|(name, _)| *name)
+}
+
+/// Mistakes in pragmas.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PragmaError {
+    UnknownTarget { span: Span, found: String },
+    MissingArgument { span: Span, pragma: String, expected: &'static str },
+    EmptyKeywordSet { span: Span, pragma: String },
+    InvalidKeyword { span: Span, found: String },
+    DuplicateKeyword { span: Span, first: Span, keyword: String },
+    KeywordInTwoSets { span: Span, first: Span, keyword: String },
+    UnknownRequirement { span: Span, found: String },
+    UnknownKeywordPragma { span: Span, found: String },
+    ConflictingEntryPoint { span: Span, first: Span, stage: &'static str },
+}
+
+impl From<PragmaError> for Diagnostic {
+    fn from(error: PragmaError) -> Diagnostic {
+        use PragmaError::*;
+        match error {
+            UnknownTarget { span, found } => Diagnostic::error("K0201", format!("unknown shader target `{found}`"))
+                .at(span, "not a target level")
+                .help(format!("use one of {}", one_of(&TARGET_LEVELS.map(|(level, _)| level)))),
+            MissingArgument { span, pragma, expected } => {
+                Diagnostic::error("K0202", format!("`#pragma {pragma}` needs {expected}")).at(span, "missing argument")
+            }
+            EmptyKeywordSet { span, pragma } => {
+                Diagnostic::error("K0203", format!("`#pragma {pragma}` declares no keywords"))
+                    .at(span, "empty keyword set")
+                    .help("list the keywords, with `_` for the all-off choice: `_ MY_KEYWORD`")
+            }
+            InvalidKeyword { span, found } => Diagnostic::error("K0204", format!("`{found}` is not a valid keyword name"))
+                .at(span, "invalid keyword")
+                .help("keywords are made of letters, digits and `_`, and do not start with a digit"),
+            DuplicateKeyword { span, first, keyword } => {
+                Diagnostic::warning("K0205", format!("`{keyword}` appears twice in one keyword set"))
+                    .at(span, "repeated here")
+                    .label(first, "first listed here")
+            }
+            KeywordInTwoSets { span, first, keyword } => {
+                Diagnostic::warning("K0206", format!("keyword `{keyword}` is declared in two keyword sets of this pass"))
+                    .at(span, "declared again here")
+                    .label(first, "first declared here")
+                    .note("the sets then multiply variants that can never differ; declare each keyword once")
+            }
+            UnknownRequirement { span, found } => {
+                Diagnostic::warning("K0207", format!("unknown requirement `{found}`"))
+                    .at(span, "not a requirement kiln knows")
+                    .help(format!("use one of {}", one_of(&REQUIREMENTS)))
+            }
+            UnknownKeywordPragma { span, found } => {
+                Diagnostic::warning("K0208", format!("unknown keyword pragma `{found}`: it declares nothing"))
+                    .at(span, "not a keyword pragma")
+                    .help(
+                        "write `multi_compile`, `shader_feature` or `dynamic_branch`, optionally followed by \
+                         `_local` and then `_vertex` or `_fragment`",
+                    )
+            }
+            ConflictingEntryPoint { span, first, stage } => {
+                Diagnostic::error("K0209", format!("the {stage} entry point is named twice"))
+                    .at(span, "named again here")
+                    .label(first, "first named here")
+            }
+        }
+    }
+}
+
+/// One `#pragma` line: its name and arguments, with spans in the file.
+struct PragmaLine {
+    name: Spanned<String>,
+    args: Vec<Spanned<String>>,
+    /// The arguments' raw text (comment removed), for pragmas kept verbatim.
+    rest: String,
+    span: Span,
+}
+
+/// Collects the pragmas of the given blocks, in order (include blocks first, as Unity splices them).
+pub fn collect_pragmas<'a>(blocks: impl IntoIterator<Item = &'a ProgramBlock>) -> (ProgramPragmas, Vec<Diagnostic>) {
+    let mut pragmas = ProgramPragmas::default();
+    let mut errors = Vec::new();
+    for block in blocks {
+        for line in pragma_lines(block) {
+            apply(&mut pragmas, line, &mut errors);
+        }
+    }
+    finish(&mut pragmas, &mut errors);
+    (pragmas, errors.into_iter().map(Diagnostic::from).collect())
+}
+
+/// Finds `#pragma` lines in a program body, skipping comments and joining `\` continuations.
+fn pragma_lines(block: &ProgramBlock) -> Vec<PragmaLine> {
+    let body = &block.body;
+    let base = block.body_span.start as usize;
+    let file = block.body_span.file;
+    let mut lines = Vec::new();
+    let mut in_block_comment = false;
+    let mut offset = 0;
+    for raw in body.split_inclusive('\n') {
+        let line_start = offset;
+        offset += raw.len();
+        // Tokens of this line with their offsets, comments removed.
+        let mut tokens: Vec<(usize, &str)> = Vec::new();
+        let mut code = String::new();
+        let bytes = raw.as_bytes();
+        let mut i = 0;
+        let mut token_start: Option<usize> = None;
+        while i <= bytes.len() {
+            let at_end = i == bytes.len();
+            if in_block_comment {
+                if at_end {
+                    break;
+                }
+                if raw[i..].starts_with("*/") {
+                    in_block_comment = false;
+                    i += 2;
+                } else {
+                    i += 1;
+                }
+                continue;
+            }
+            let stop = at_end || raw[i..].starts_with("//") || raw[i..].starts_with("/*");
+            let space = !at_end && bytes[i].is_ascii_whitespace();
+            if stop || space {
+                if let Some(start) = token_start.take() {
+                    tokens.push((start, &raw[start..i]));
+                }
+                if at_end || raw[i..].starts_with("//") {
+                    break;
+                }
+                if raw[i..].starts_with("/*") {
+                    in_block_comment = true;
+                    i += 2;
+                    continue;
+                }
+                code.push(' ');
+            } else {
+                if token_start.is_none() {
+                    token_start = Some(i);
+                }
+                code.push(bytes[i] as char);
+            }
+            i += 1;
+        }
+        // `# pragma` and `#pragma` are both accepted by C preprocessors.
+        let after = match tokens.as_slice() {
+            [(_, "#pragma"), ..] => 1,
+            [(_, "#"), (_, "pragma"), ..] => 2,
+            _ => continue,
+        };
+        let span_of = |(start, text): (usize, &str)| {
+            Span::new(file, base + line_start + start..base + line_start + start + text.len())
+        };
+        let rest: Vec<(usize, &str)> = tokens[after..].to_vec();
+        let Some(&name) = rest.first() else { continue };
+        let first = tokens[0];
+        let last = *tokens.last().expect("non-empty");
+        lines.push(PragmaLine {
+            name: Spanned::new(name.1.to_string(), span_of(name)),
+            args: rest[1..].iter().map(|&t| Spanned::new(t.1.to_string(), span_of(t))).collect(),
+            rest: rest[1..].iter().map(|t| t.1).collect::<Vec<_>>().join(" "),
+            span: span_of(first).to(span_of(last)),
+        });
+    }
+    lines
+}
+
+fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<PragmaError>) {
+    let name = line.name.value.as_str();
+    let missing = |expected| PragmaError::MissingArgument { span: line.span, pragma: name.to_string(), expected };
+    match name {
+        "vertex" | "fragment" => {
+            let Some(entry) = line.args.into_iter().next() else {
+                errors.push(missing("a function name"));
+                return;
+            };
+            let slot = if name == "vertex" { &mut pragmas.vertex } else { &mut pragmas.fragment };
+            match slot {
+                Some(first) if first.value != entry.value => errors.push(PragmaError::ConflictingEntryPoint {
+                    span: entry.span,
+                    first: first.span,
+                    stage: if name == "vertex" { "vertex" } else { "fragment" },
+                }),
+                _ => *slot = Some(entry),
+            }
+        }
+        "target" => {
+            let mut args = line.args.into_iter();
+            let Some(level) = args.next() else {
+                errors.push(missing("a target level such as `3.5`"));
+                return;
+            };
+            if !TARGET_LEVELS.iter().any(|(known, _)| *known == level.value) {
+                errors.push(PragmaError::UnknownTarget { span: level.span, found: level.value });
+                return;
+            }
+            pragmas.targets.push(Target { level, keywords: args.collect() });
+        }
+        "require" => {
+            let mut features = Vec::new();
+            let mut keywords = Vec::new();
+            let mut after_colon = false;
+            for arg in line.args {
+                if arg.value == ":" {
+                    after_colon = true;
+                } else if after_colon {
+                    keywords.push(arg);
+                } else {
+                    if !REQUIREMENTS.contains(&arg.value.as_str()) {
+                        errors.push(PragmaError::UnknownRequirement { span: arg.span, found: arg.value.clone() });
+                    }
+                    features.push(arg);
+                }
+            }
+            if features.is_empty() {
+                errors.push(missing("one or more requirement names"));
+                return;
+            }
+            pragmas.requires.push(Require { features, keywords });
+        }
+        "skip_variants" => pragmas.skip_variants.extend(line.args),
+        "instancing_options" => pragmas.instancing_options.extend(line.args),
+        _ => {
+            if let Some(&(shorthand, sets)) = SHORTHANDS.iter().find(|(short, _)| *short == name) {
+                for set in sets {
+                    let options = set
+                        .split(' ')
+                        .map(|k| KeywordOption { keyword: (!is_none_name(k)).then(|| k.to_string()), span: line.name.span })
+                        .collect();
+                    pragmas.keyword_sets.push(KeywordSet {
+                        kind: KeywordKind::MultiCompile,
+                        scope: KeywordScope::Global,
+                        stage: KeywordStage::All,
+                        options,
+                        shorthand: Some(shorthand),
+                        span: line.span,
+                    });
+                }
+            } else if let Some((kind, scope, stage)) = keyword_pragma(name) {
+                keyword_set(pragmas, kind, scope, stage, line, errors);
+            } else if ["multi_compile", "shader_feature", "dynamic_branch"].iter().any(|p| name.starts_with(p)) {
+                errors.push(PragmaError::UnknownKeywordPragma { span: line.name.span, found: name.to_string() });
+            } else {
+                pragmas.other.push((line.name, line.rest));
+            }
+        }
+    }
+}
+
+/// Splits `shader_feature_local_fragment` into its kind, scope and stage.
+fn keyword_pragma(name: &str) -> Option<(KeywordKind, KeywordScope, KeywordStage)> {
+    let (kind, rest) = [
+        ("multi_compile", KeywordKind::MultiCompile),
+        ("shader_feature", KeywordKind::ShaderFeature),
+        ("dynamic_branch", KeywordKind::DynamicBranch),
+    ]
+    .into_iter()
+    .find_map(|(prefix, kind)| name.strip_prefix(prefix).map(|rest| (kind, rest)))?;
+    let (scope, rest) = match rest.strip_prefix("_local") {
+        Some(rest) => (KeywordScope::Local, rest),
+        None => (KeywordScope::Global, rest),
+    };
+    let stage = match rest {
+        "" => KeywordStage::All,
+        suffix => KeywordStage::SUFFIXES.iter().find(|(s, _)| *s == suffix)?.1,
+    };
+    Some((kind, scope, stage))
+}
+
+fn is_none_name(word: &str) -> bool {
+    !word.is_empty() && word.bytes().all(|b| b == b'_')
+}
+
+fn is_keyword_name(word: &str) -> bool {
+    let mut bytes = word.bytes();
+    bytes.next().is_some_and(|b| b.is_ascii_alphabetic() || b == b'_')
+        && bytes.all(|b| b.is_ascii_alphanumeric() || b == b'_')
+}
+
+fn keyword_set(
+    pragmas: &mut ProgramPragmas,
+    kind: KeywordKind,
+    scope: KeywordScope,
+    stage: KeywordStage,
+    line: PragmaLine,
+    errors: &mut Vec<PragmaError>,
+) {
+    let mut options: Vec<KeywordOption> = Vec::new();
+    for arg in &line.args {
+        if !is_keyword_name(&arg.value) {
+            errors.push(PragmaError::InvalidKeyword { span: arg.span, found: arg.value.clone() });
+            continue;
+        }
+        let keyword = (!is_none_name(&arg.value)).then(|| arg.value.clone());
+        if let Some(first) = options.iter().find(|o| o.keyword == keyword) {
+            errors.push(PragmaError::DuplicateKeyword { span: arg.span, first: first.span, keyword: arg.value.clone() });
+            continue;
+        }
+        options.push(KeywordOption { keyword, span: arg.span });
+    }
+    if options.is_empty() {
+        if line.args.is_empty() {
+            errors.push(PragmaError::EmptyKeywordSet { span: line.span, pragma: line.name.value });
+        }
+        return;
+    }
+    // A lone shader_feature keyword is a toggle: it can also be off. multi_compile never expands.
+    if kind != KeywordKind::MultiCompile && options.len() == 1 && options[0].keyword.is_some() {
+        options.insert(0, KeywordOption { keyword: None, span: line.name.span });
+    }
+    pragmas.keyword_sets.push(KeywordSet { kind, scope, stage, options, shorthand: None, span: line.span });
+}
+
+/// Pass-wide rules once every line is in: instancing options, keywords declared twice.
+fn finish(pragmas: &mut ProgramPragmas, errors: &mut Vec<PragmaError>) {
+    if pragmas.instancing_options.iter().any(|o| o.value.starts_with("procedural:")) {
+        for set in &mut pragmas.keyword_sets {
+            if set.shorthand == Some("multi_compile_instancing") {
+                let span = set.span;
+                set.options.push(KeywordOption { keyword: Some("PROCEDURAL_INSTANCING_ON".into()), span });
+            }
+        }
+    }
+    let mut seen: Vec<(&str, Span)> = Vec::new();
+    for set in &pragmas.keyword_sets {
+        for option in &set.options {
+            let Some(keyword) = option.keyword.as_deref() else { continue };
+            match seen.iter().find(|(k, _)| *k == keyword) {
+                Some(&(_, first)) => errors.push(PragmaError::KeywordInTwoSets {
+                    span: option.span,
+                    first,
+                    keyword: keyword.to_string(),
+                }),
+                None => seen.push((keyword, option.span)),
+            }
+        }
+    }
+}
+
+impl ProgramPragmas {
+    /// Keyword sets that make variants (not `dynamic_branch`), with `skip_variants` applied.
+    pub fn variant_sets(&self) -> Vec<KeywordSet> {
+        self.keyword_sets
+            .iter()
+            .filter(|set| set.kind != KeywordKind::DynamicBranch)
+            .map(|set| {
+                let mut set = set.clone();
+                set.options.retain(|o| {
+                    o.keyword.as_deref().is_none_or(|k| !self.skip_variants.iter().any(|s| s.value == k))
+                });
+                set
+            })
+            .filter(|set| !set.options.is_empty())
+            .collect()
+    }
+
+    /// The number of variants the pass could have: the product of its set sizes, `None` past u128.
+    pub fn possible_variants(&self) -> Option<u128> {
+        self.variant_sets().iter().try_fold(1u128, |n, set| n.checked_mul(set.options.len() as u128))
+    }
+
+    /// The base target level (the last unconditional `#pragma target`), `None` when not given.
+    pub fn target(&self) -> Option<&str> {
+        self.targets.iter().rev().find(|t| t.keywords.is_empty()).map(|t| t.level.value.as_str())
+    }
+}

@@ -1,0 +1,113 @@
+//! A quick structural scan run before the grammar: it finds unterminated strings and comments,
+//! unclosed program blocks and unbalanced braces, all in one pass, and points at where they
+//! start. The grammar alone would stop at the first and blame the end of the file.
+
+use crate::shaderlab::ast::ProgramLanguage;
+use crate::shaderlab::error::ShaderLabError;
+use crate::source::{FileId, Span};
+
+pub(crate) fn scan(file: FileId, text: &str) -> Vec<ShaderLabError> {
+    let bytes = text.as_bytes();
+    let mut errors = Vec::new();
+    // Open braces: their offset and the indentation of their line.
+    let mut open: Vec<(usize, usize)> = Vec::new();
+    // The first brace whose closing `}` sits at another indentation: the likely culprit.
+    let mut misindented: Option<usize> = None;
+    let mut i = 0;
+    while i < bytes.len() {
+        match bytes[i] {
+            b'/' if bytes.get(i + 1) == Some(&b'/') => i = line_end(bytes, i),
+            b'/' if bytes.get(i + 1) == Some(&b'*') => match text[i + 2..].find("*/") {
+                Some(end) => i += end + 4,
+                None => {
+                    errors.push(ShaderLabError::UnterminatedComment { span: Span::new(file, i..i + 2) });
+                    return errors;
+                }
+            },
+            b'"' => {
+                let mut j = i + 1;
+                while j < bytes.len() && bytes[j] != b'"' && bytes[j] != b'\n' {
+                    j += if bytes[j] == b'\\' && bytes.get(j + 1).is_some_and(|&b| b != b'\n') { 2 } else { 1 };
+                }
+                if j >= bytes.len() || bytes[j] != b'"' {
+                    let end = j.min(bytes.len());
+                    let end = if end > i + 1 && bytes[end - 1] == b'\r' { end - 1 } else { end };
+                    errors.push(ShaderLabError::UnterminatedString { span: Span::new(file, i..end) });
+                }
+                i = j + 1;
+            }
+            b'{' => {
+                open.push((i, indentation(bytes, i)));
+                i += 1;
+            }
+            b'}' => {
+                match open.pop() {
+                    Some((at, indent)) => {
+                        if misindented.is_none() && first_on_line(bytes, i) && indentation(bytes, i) != indent {
+                            misindented = Some(at);
+                        }
+                    }
+                    None => errors.push(ShaderLabError::UnmatchedCloseBrace { span: Span::new(file, i..i + 1) }),
+                }
+                i += 1;
+            }
+            b if b.is_ascii_alphabetic() || b == b'_' => {
+                let start = i;
+                while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+                    i += 1;
+                }
+                if let Some((language, include)) = program_opening(&text[start..i]) {
+                    let close = language.close_keyword();
+                    match find_ignore_case(&text[i..], close) {
+                        Some(end) => i += end + close.len(),
+                        None => {
+                            errors.push(ShaderLabError::UnclosedProgram {
+                                open: Span::new(file, start..i),
+                                language,
+                                include,
+                            });
+                            return errors;
+                        }
+                    }
+                }
+            }
+            _ => i += 1,
+        }
+    }
+    if let Some(&(outer, _)) = open.first() {
+        let likely = misindented.filter(|&at| at != outer).map(|at| Span::new(file, at..at + 1));
+        errors.push(ShaderLabError::UnclosedBrace { open: Span::new(file, outer..outer + 1), likely });
+    }
+    errors
+}
+
+fn program_opening(word: &str) -> Option<(ProgramLanguage, bool)> {
+    ProgramLanguage::ALL.into_iter().find_map(|language| {
+        [false, true]
+            .into_iter()
+            .find(|&include| word.eq_ignore_ascii_case(language.open_keyword(include)))
+            .map(|include| (language, include))
+    })
+}
+
+pub(crate) fn find_ignore_case(haystack: &str, needle: &str) -> Option<usize> {
+    let (h, n) = (haystack.as_bytes(), needle.as_bytes());
+    (0..h.len().saturating_sub(n.len() - 1)).find(|&i| h[i..i + n.len()].eq_ignore_ascii_case(n))
+}
+
+fn line_end(bytes: &[u8], from: usize) -> usize {
+    bytes[from..].iter().position(|&b| b == b'\n').map_or(bytes.len(), |p| from + p)
+}
+
+fn line_start(bytes: &[u8], at: usize) -> usize {
+    bytes[..at].iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1)
+}
+
+fn indentation(bytes: &[u8], at: usize) -> usize {
+    let start = line_start(bytes, at);
+    bytes[start..at].iter().take_while(|&&b| b == b' ' || b == b'\t').count()
+}
+
+fn first_on_line(bytes: &[u8], at: usize) -> bool {
+    bytes[line_start(bytes, at)..at].iter().all(|&b| b == b' ' || b == b'\t')
+}

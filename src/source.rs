@@ -1,0 +1,190 @@
+//! Source files and spans: the one store of file text that every stage points into.
+//!
+//! Stages never read files themselves. The caller loads files here, the store remembers every file
+//! it read (so a build script can print `rerun-if-changed` for exactly those), and diagnostics find
+//! line and column through it.
+
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+
+/// Index of a file inside a [`SourceStore`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FileId(u32);
+
+/// A byte range inside one file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Span {
+    pub file: FileId,
+    pub start: u32,
+    pub end: u32,
+}
+
+impl Span {
+    pub fn new(file: FileId, range: Range<usize>) -> Span {
+        Span { file, start: range.start as u32, end: range.end as u32 }
+    }
+
+    pub fn range(self) -> Range<usize> {
+        self.start as usize..self.end as usize
+    }
+
+    /// The smallest span covering both (which must be in the same file).
+    pub fn to(self, other: Span) -> Span {
+        debug_assert_eq!(self.file, other.file);
+        Span { file: self.file, start: self.start.min(other.start), end: self.end.max(other.end) }
+    }
+}
+
+/// A value together with the span it was read from.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Spanned<T> {
+    pub value: T,
+    pub span: Span,
+}
+
+impl<T> Spanned<T> {
+    pub fn new(value: T, span: Span) -> Spanned<T> {
+        Spanned { value, span }
+    }
+}
+
+/// 1-based line and column (in characters) of a byte offset.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct LineCol {
+    pub line: usize,
+    pub column: usize,
+}
+
+/// Why a file could not be loaded.
+#[derive(Debug, thiserror::Error)]
+pub enum LoadError {
+    #[error("cannot read `{path}`: {source}")]
+    Io { path: PathBuf, source: std::io::Error },
+    #[error("`{path}` is not valid UTF-8 (first bad byte at offset {offset})")]
+    NotUtf8 { path: PathBuf, offset: usize },
+}
+
+struct SourceFile {
+    name: String,
+    path: Option<PathBuf>,
+    text: String,
+    line_starts: Vec<usize>,
+}
+
+/// Every file a run has seen, with its text and line index.
+#[derive(Default)]
+pub struct SourceStore {
+    files: Vec<SourceFile>,
+}
+
+impl SourceStore {
+    pub fn new() -> SourceStore {
+        SourceStore::default()
+    }
+
+    /// Adds text that did not come from disk (tests, generated sources, embedded library files).
+    pub fn add(&mut self, name: impl Into<String>, text: impl Into<String>) -> FileId {
+        self.push(name.into(), None, text.into())
+    }
+
+    /// Reads a file from disk and records it as read.
+    pub fn load(&mut self, path: &Path) -> Result<FileId, LoadError> {
+        let bytes = std::fs::read(path)
+            .map_err(|source| LoadError::Io { path: path.to_path_buf(), source })?;
+        let text = String::from_utf8(bytes).map_err(|e| LoadError::NotUtf8 {
+            path: path.to_path_buf(),
+            offset: e.utf8_error().valid_up_to(),
+        })?;
+        let name = path.to_string_lossy().replace('\\', "/");
+        Ok(self.push(name, Some(path.to_path_buf()), text))
+    }
+
+    fn push(&mut self, name: String, path: Option<PathBuf>, text: String) -> FileId {
+        let line_starts = codespan_reporting::files::line_starts(&text).collect();
+        let id = FileId(self.files.len() as u32);
+        self.files.push(SourceFile { name, path, text, line_starts });
+        id
+    }
+
+    pub fn text(&self, file: FileId) -> &str {
+        &self.files[file.0 as usize].text
+    }
+
+    /// The name diagnostics show for the file: its path as given, with `/` separators.
+    pub fn name(&self, file: FileId) -> &str {
+        &self.files[file.0 as usize].name
+    }
+
+    /// The text a span covers.
+    pub fn slice(&self, span: Span) -> &str {
+        &self.text(span.file)[span.range()]
+    }
+
+    /// Every file read from disk, in the order it was read.
+    pub fn files_read(&self) -> impl Iterator<Item = &Path> {
+        self.files.iter().filter_map(|f| f.path.as_deref())
+    }
+
+    /// Line and column (1-based, columns counted in characters) of a byte offset.
+    pub fn line_col(&self, file: FileId, offset: usize) -> LineCol {
+        let f = &self.files[file.0 as usize];
+        let offset = offset.min(f.text.len());
+        let line = f.line_starts.partition_point(|&start| start <= offset) - 1;
+        let column = f.text[f.line_starts[line]..offset].chars().count() + 1;
+        LineCol { line: line + 1, column }
+    }
+}
+
+impl<'a> codespan_reporting::files::Files<'a> for SourceStore {
+    type FileId = FileId;
+    type Name = &'a str;
+    type Source = &'a str;
+
+    fn name(&'a self, id: FileId) -> Result<&'a str, codespan_reporting::files::Error> {
+        self.files
+            .get(id.0 as usize)
+            .map(|f| f.name.as_str())
+            .ok_or(codespan_reporting::files::Error::FileMissing)
+    }
+
+    fn source(&'a self, id: FileId) -> Result<&'a str, codespan_reporting::files::Error> {
+        self.files
+            .get(id.0 as usize)
+            .map(|f| f.text.as_str())
+            .ok_or(codespan_reporting::files::Error::FileMissing)
+    }
+
+    fn line_index(&'a self, id: FileId, byte_index: usize) -> Result<usize, codespan_reporting::files::Error> {
+        let f = self.files.get(id.0 as usize).ok_or(codespan_reporting::files::Error::FileMissing)?;
+        Ok(f.line_starts.partition_point(|&start| start <= byte_index).saturating_sub(1))
+    }
+
+    fn line_range(
+        &'a self,
+        id: FileId,
+        line_index: usize,
+    ) -> Result<Range<usize>, codespan_reporting::files::Error> {
+        let f = self.files.get(id.0 as usize).ok_or(codespan_reporting::files::Error::FileMissing)?;
+        let start = *f.line_starts.get(line_index).ok_or(
+            codespan_reporting::files::Error::LineTooLarge { given: line_index, max: f.line_starts.len() - 1 },
+        )?;
+        let end = f.line_starts.get(line_index + 1).copied().unwrap_or(f.text.len());
+        Ok(start..end)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_col_counts_characters_not_bytes() {
+        let mut store = SourceStore::new();
+        let file = store.add("a", "ab\n// é é x\n");
+        assert_eq!(store.line_col(file, 0), LineCol { line: 1, column: 1 });
+        let x = store.text(file).find('x').unwrap();
+        assert_eq!(store.line_col(file, x), LineCol { line: 2, column: 8 });
+        let end = store.text(file).len();
+        assert_eq!(store.line_col(file, end), LineCol { line: 3, column: 1 });
+    }
+}
