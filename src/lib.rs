@@ -1,7 +1,7 @@
 //! kiln: a shader-variant compiler and keyword system for Rust renderers.
 
 pub mod diagnostics;
-pub mod shaderlab;
-pub mod source;
 pub mod listing;
 pub mod project;
+pub mod shaderlab;
+pub mod source;

@@ -3,8 +3,8 @@
 
 use crate::diagnostics::Diagnostic;
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
-use crate::shaderlab::pragma::{KeywordScope, KeywordSet, ProgramPragmas, collect_pragmas};
 use crate::shaderlab::parse_shader;
+use crate::shaderlab::pragma::{KeywordScope, KeywordSet, ProgramPragmas, collect_pragmas};
 use crate::source::{FileId, SourceStore};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -76,7 +76,12 @@ pub fn list_shaders(store: &SourceStore, files: &[FileId]) -> (Listing, Vec<Diag
     (Listing { shaders }, diagnostics)
 }
 
-fn list_shader(store: &SourceStore, file: FileId, shader: &Shader, diagnostics: &mut Vec<Diagnostic>) -> ShaderListing {
+fn list_shader(
+    store: &SourceStore,
+    file: FileId,
+    shader: &Shader,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> ShaderListing {
     let mut passes = Vec::new();
     for (si, sub) in shader.subshaders.iter().enumerate() {
         // Surface programs come first, as Unity generates their passes ahead of explicit ones.
@@ -120,7 +125,11 @@ fn tags(state: &StateBlock) -> Vec<(String, String)> {
 
 /// The include blocks a program sees (shader-level, then SubShader-level, of its language),
 /// followed by the program itself.
-pub fn program_blocks<'a>(shader: &'a Shader, sub: &'a SubShader, programs: &'a [ProgramBlock]) -> Vec<&'a ProgramBlock> {
+pub fn program_blocks<'a>(
+    shader: &'a Shader,
+    sub: &'a SubShader,
+    programs: &'a [ProgramBlock],
+) -> Vec<&'a ProgramBlock> {
     let language = programs.first().map_or(ProgramLanguage::Wgsl, |p| p.language);
     shader
         .includes

@@ -14,9 +14,14 @@ pub enum ProjectError {
     Walk { path: PathBuf, message: String },
 }
 
-/// The example project bundled with kiln, used when no path is given.
+/// The example project bundled with kiln, used when no path is given; relative to the working
+/// directory when it lies below it, so diagnostics show short paths.
 pub fn bundled_example() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/project")
+    let absolute = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/project");
+    std::env::current_dir()
+        .ok()
+        .and_then(|cwd| absolute.strip_prefix(cwd).ok().map(Path::to_path_buf))
+        .unwrap_or(absolute)
 }
 
 /// Every `.shader` file under the given files and folders, in a stable (sorted) order. A file
@@ -32,7 +37,8 @@ pub fn find_shader_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, ProjectError
             continue;
         }
         for entry in walkdir::WalkDir::new(path).sort_by_file_name() {
-            let entry = entry.map_err(|e| ProjectError::Walk { path: path.clone(), message: e.to_string() })?;
+            let entry =
+                entry.map_err(|e| ProjectError::Walk { path: path.clone(), message: e.to_string() })?;
             let is_shader = entry.path().extension().is_some_and(|ext| ext.eq_ignore_ascii_case("shader"));
             if entry.file_type().is_file() && is_shader {
                 files.push(entry.into_path());
@@ -50,10 +56,12 @@ pub fn load_files(store: &mut SourceStore, paths: &[PathBuf]) -> (Vec<FileId>, V
     for path in paths {
         match store.load(path) {
             Ok(id) => ids.push(id),
-            Err(error @ LoadError::NotUtf8 { .. }) => diagnostics.push(
-                Diagnostic::error("K0001", error.to_string()).help("save the file as UTF-8"),
-            ),
-            Err(error @ LoadError::Io { .. }) => diagnostics.push(Diagnostic::error("K0002", error.to_string())),
+            Err(error @ LoadError::NotUtf8 { .. }) => {
+                diagnostics.push(Diagnostic::error("K0001", error.to_string()).help("save the file as UTF-8"))
+            }
+            Err(error @ LoadError::Io { .. }) => {
+                diagnostics.push(Diagnostic::error("K0002", error.to_string()))
+            }
         }
     }
     (ids, diagnostics)

@@ -89,8 +89,8 @@ impl SourceStore {
 
     /// Reads a file from disk and records it as read.
     pub fn load(&mut self, path: &Path) -> Result<FileId, LoadError> {
-        let bytes = std::fs::read(path)
-            .map_err(|source| LoadError::Io { path: path.to_path_buf(), source })?;
+        let bytes =
+            std::fs::read(path).map_err(|source| LoadError::Io { path: path.to_path_buf(), source })?;
         let text = String::from_utf8(bytes).map_err(|e| LoadError::NotUtf8 {
             path: path.to_path_buf(),
             offset: e.utf8_error().valid_up_to(),
@@ -154,7 +154,11 @@ impl<'a> codespan_reporting::files::Files<'a> for SourceStore {
             .ok_or(codespan_reporting::files::Error::FileMissing)
     }
 
-    fn line_index(&'a self, id: FileId, byte_index: usize) -> Result<usize, codespan_reporting::files::Error> {
+    fn line_index(
+        &'a self,
+        id: FileId,
+        byte_index: usize,
+    ) -> Result<usize, codespan_reporting::files::Error> {
         let f = self.files.get(id.0 as usize).ok_or(codespan_reporting::files::Error::FileMissing)?;
         Ok(f.line_starts.partition_point(|&start| start <= byte_index).saturating_sub(1))
     }
@@ -165,9 +169,10 @@ impl<'a> codespan_reporting::files::Files<'a> for SourceStore {
         line_index: usize,
     ) -> Result<Range<usize>, codespan_reporting::files::Error> {
         let f = self.files.get(id.0 as usize).ok_or(codespan_reporting::files::Error::FileMissing)?;
-        let start = *f.line_starts.get(line_index).ok_or(
-            codespan_reporting::files::Error::LineTooLarge { given: line_index, max: f.line_starts.len() - 1 },
-        )?;
+        let start = *f.line_starts.get(line_index).ok_or(codespan_reporting::files::Error::LineTooLarge {
+            given: line_index,
+            max: f.line_starts.len() - 1,
+        })?;
         let end = f.line_starts.get(line_index + 1).copied().unwrap_or(f.text.len());
         Ok(start..end)
     }

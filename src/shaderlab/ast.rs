@@ -77,7 +77,10 @@ pub enum PropertyDefault {
     /// Two to four components; colours may have three (alpha then defaults to 1).
     Vector(Vec<f64>),
     /// A texture name such as `"white"`, with the legacy `{ options }` text if present.
-    Texture { name: String, options: Option<String> },
+    Texture {
+        name: String,
+        options: Option<String>,
+    },
 }
 
 /// A property attribute such as `[Toggle(_CLIPPING)]`, kept verbatim and also interpreted.
@@ -215,14 +218,27 @@ pub struct RenderCommand {
 #[derive(Debug, Clone, PartialEq)]
 pub enum RenderCommandKind {
     /// `Blend [target] Off` has `factors: None`.
-    Blend { target: Option<u32>, factors: Option<BlendFactors> },
-    BlendOp { target: Option<u32>, color: Spanned<Value<BlendOperation>>, alpha: Option<Spanned<Value<BlendOperation>>> },
+    Blend {
+        target: Option<u32>,
+        factors: Option<BlendFactors>,
+    },
+    BlendOp {
+        target: Option<u32>,
+        color: Spanned<Value<BlendOperation>>,
+        alpha: Option<Spanned<Value<BlendOperation>>>,
+    },
     ZWrite(Spanned<Value<bool>>),
     ZTest(Spanned<Value<CompareFunction>>),
     ZClip(Spanned<Value<bool>>),
     Cull(Spanned<Value<CullMode>>),
-    ColorMask { mask: Spanned<Value<ColorMask>>, target: Option<u32> },
-    Offset { factor: Spanned<Value<f64>>, units: Spanned<Value<f64>> },
+    ColorMask {
+        mask: Spanned<Value<ColorMask>>,
+        target: Option<u32>,
+    },
+    Offset {
+        factor: Spanned<Value<f64>>,
+        units: Spanned<Value<f64>>,
+    },
     AlphaToMask(Spanned<Value<bool>>),
     Conservative(Spanned<Value<bool>>),
     Stencil(Vec<StencilEntry>),
@@ -247,12 +263,15 @@ impl RenderCommandKind {
     }
 }
 
+/// A blend factor as written: literal or `[_Property]`.
+pub type FactorValue = Spanned<Value<BlendFactor>>;
+
 #[derive(Debug, Clone, PartialEq)]
 pub struct BlendFactors {
-    pub src: Spanned<Value<BlendFactor>>,
-    pub dst: Spanned<Value<BlendFactor>>,
+    pub src: FactorValue,
+    pub dst: FactorValue,
     /// Separate alpha factors: `Blend A B, C D`.
-    pub alpha: Option<(Spanned<Value<BlendFactor>>, Spanned<Value<BlendFactor>>)>,
+    pub alpha: Option<(FactorValue, FactorValue)>,
 }
 
 /// Channels written by `ColorMask`: `0` is none.

@@ -79,6 +79,11 @@ impl From<ShaderLabError> for Diagnostic {
                 if let Some((span, what)) = context {
                     d = d.label(span, format!("in this {what}"));
                 }
+                let word = found.trim_matches('`');
+                if expected.iter().any(|e| e == "`}`") && word.starts_with(|c: char| c.is_ascii_alphabetic())
+                {
+                    d = d.help(format!("`{word}` is not a command ShaderLab accepts here"));
+                }
                 d
             }
             UnknownPropertyType { span, found } => {
@@ -87,8 +92,18 @@ impl From<ShaderLabError> for Diagnostic {
                     .help(format!(
                         "use one of {}",
                         one_of(&[
-                            "Float", "Int", "Integer", "Range(min, max)", "Color", "Vector", "2D",
-                            "2DArray", "3D", "Cube", "CubeArray", "Any"
+                            "Float",
+                            "Int",
+                            "Integer",
+                            "Range(min, max)",
+                            "Color",
+                            "Vector",
+                            "2D",
+                            "2DArray",
+                            "3D",
+                            "Cube",
+                            "CubeArray",
+                            "Any"
                         ])
                     ))
             }
@@ -100,11 +115,9 @@ impl From<ShaderLabError> for Diagnostic {
                     .at(span, "empty range")
                     .help(format!("swap the bounds: `Range({max}, {min})`"))
             }
-            BoundsOnNonRange { span, ty } => {
-                Diagnostic::error("K0113", format!("`{ty}` takes no bounds"))
-                    .at(span, "bounds are only allowed on `Range`")
-                    .help(format!("remove the parentheses, or make the type `Range`"))
-            }
+            BoundsOnNonRange { span, ty } => Diagnostic::error("K0113", format!("`{ty}` takes no bounds"))
+                .at(span, "bounds are only allowed on `Range`")
+                .help("remove the parentheses, or make the type `Range`"),
             DefaultMismatch { span, ty, expected } => {
                 Diagnostic::error("K0114", format!("a `{ty}` property needs {expected} as its default"))
                     .at(span, "wrong kind of default")
@@ -135,10 +148,7 @@ impl From<ShaderLabError> for Diagnostic {
             UnknownStencilCommand { span, found } => {
                 Diagnostic::error("K0123", format!("unknown stencil command `{found}`"))
                     .at(span, "not a stencil command")
-                    .help(format!(
-                        "use one of {}",
-                        one_of(crate::shaderlab::ast::StencilField::NAMES)
-                    ))
+                    .help(format!("use one of {}", one_of(crate::shaderlab::ast::StencilField::NAMES)))
             }
             AttributeArguments { span, attribute, expected } => {
                 Diagnostic::error("K0130", format!("`[{attribute}]` takes {expected}"))

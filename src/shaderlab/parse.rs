@@ -24,14 +24,29 @@ pub struct ParsedShader {
 /// Parses one `.shader` file held in the store.
 pub fn parse_shader(store: &SourceStore, file: FileId) -> ParsedShader {
     let text = store.text(file);
-    let structural = scan(file, text);
-    if !structural.is_empty() {
-        return ParsedShader { shader: None, diagnostics: structural.into_iter().map(Diagnostic::from).collect() };
+    let failed = |errors: Vec<ShaderLabError>| ParsedShader {
+        shader: None,
+        diagnostics: errors.into_iter().map(Diagnostic::from).collect(),
+    };
+    let (lexical, braces) = scan(file, text);
+    if !lexical.is_empty() {
+        return failed(lexical);
     }
     let pairs = match ShaderLabParser::parse(Rule::file, text) {
         Ok(pairs) => pairs,
         Err(error) => {
-            return ParsedShader { shader: None, diagnostics: vec![syntax_error(file, text, error).into()] };
+            let error = syntax_error(file, text, error);
+            // A brace problem explains a syntax error at or after it better than pest can (an
+            // unclosed `{` makes pest fail at the end of the file); an earlier error is the cause.
+            let blamed_at = match &error {
+                ShaderLabError::Syntax { span, .. } => span.start,
+                _ => 0,
+            };
+            let explains = |b: &ShaderLabError| match b {
+                ShaderLabError::UnmatchedCloseBrace { span } => span.start <= blamed_at,
+                _ => blamed_at as usize >= text.trim_end().len(),
+            };
+            return failed(if braces.iter().any(explains) { braces } else { vec![error] });
         }
     };
     let mut builder = Builder { file, errors: Vec::new() };
@@ -46,43 +61,51 @@ pub fn parse_shader(store: &SourceStore, file: FileId) -> ParsedShader {
 // ---- syntax errors ---------------------------------------------------------------------------
 
 fn syntax_error(file: FileId, text: &str, error: pest::error::Error<Rule>) -> ShaderLabError {
-    let at = match error.location {
+    let mut at = match error.location {
         pest::error::InputLocation::Pos(p) => p,
         pest::error::InputLocation::Span((s, _)) => s,
     };
     let mut expected: Vec<String> = Vec::new();
-    if let pest::error::ErrorVariant::ParsingError { positives, .. } = &error.variant {
-        for rule in positives {
-            if let Some(words) = describe(*rule) {
-                if !expected.iter().any(|e| e == words) {
-                    expected.push(words.to_string());
+    let add = |words: String, expected: &mut Vec<String>| {
+        if !expected.contains(&words) {
+            expected.push(words);
+        }
+    };
+    // pest tracks only rules by default, so it blames the start of the last rule tried rather
+    // than the missing `=` after it. Parse again with token tracking on this (rare) error path.
+    pest::set_error_detail(true);
+    let detailed = ShaderLabParser::parse(Rule::file, text).err().and_then(|e| e.parse_attempts());
+    pest::set_error_detail(false);
+    match detailed {
+        Some(attempts) if attempts.max_position >= at => {
+            at = attempts.max_position;
+            for stack in &attempts.call_stacks {
+                if let Some(words) = stack.parent.and_then(describe) {
+                    add(words.to_string(), &mut expected);
+                }
+            }
+            for token in attempts.expected_tokens() {
+                let token = token.to_string();
+                if token == "\"" {
+                    add("a quoted string".to_string(), &mut expected);
+                } else if token.len() == 1 && "{}()[]=,:".contains(token.as_str()) {
+                    add(format!("`{token}`"), &mut expected);
+                }
+            }
+        }
+        _ => {
+            if let pest::error::ErrorVariant::ParsingError { positives, .. } = &error.variant {
+                for words in positives.iter().filter_map(|rule| describe(*rule)) {
+                    add(words.to_string(), &mut expected);
                 }
             }
         }
     }
-    // Punctuation is not a rule, so pest only names it when asked for details; ask again on this
-    // (rare) error path.
-    pest::set_error_detail(true);
-    let detailed = ShaderLabParser::parse(Rule::file, text).err();
-    pest::set_error_detail(false);
-    if let Some(attempts) = detailed.and_then(|e| e.parse_attempts()) {
-        for token in attempts.expected_tokens() {
-            let token = token.to_string();
-            let punctuation = token.len() == 1 && "{}()[]=,:\"".contains(token.as_str());
-            let quoted = format!("`{token}`");
-            if punctuation && !expected.contains(&quoted) {
-                expected.push(quoted);
-            }
-        }
-    }
+    let at = at.min(text.len());
     let found_len = token_len(&text[at..]);
-    let found = if at >= text.len() {
-        "end of file".to_string()
-    } else {
-        format!("`{}`", &text[at..at + found_len])
-    };
-    let end = if found_len == 0 { at } else { at + found_len };
-    ShaderLabError::Syntax { span: Span::new(file, at..end), expected, found, context: None }
+    let found =
+        if at >= text.len() { "end of file".to_string() } else { format!("`{}`", &text[at..at + found_len]) };
+    ShaderLabError::Syntax { span: Span::new(file, at..at + found_len), expected, found, context: None }
 }
 
 fn token_len(rest: &str) -> usize {
@@ -111,12 +134,29 @@ fn describe(rule: Rule) -> Option<&'static str> {
         Rule::kw_shader => "`Shader`",
         Rule::kw_properties => "`Properties`",
         Rule::kw_subshader => "`SubShader`",
+        Rule::kw_category => "`Category`",
         Rule::kw_pass => "`Pass`",
+        Rule::kw_use_pass => "`UsePass`",
+        Rule::kw_grab_pass => "`GrabPass`",
+        Rule::kw_name => "`Name`",
+        Rule::kw_tags => "`Tags`",
+        Rule::kw_lod => "`LOD`",
         Rule::kw_off => "`Off`",
         Rule::kw_fallback => "`Fallback`",
-        Rule::program_block | Rule::wgsl_open => "a program block",
-        Rule::kw_blend | Rule::kw_zwrite | Rule::kw_cull | Rule::kw_ztest => "a render-state command",
-        Rule::kw_tags => "`Tags`",
+        Rule::kw_custom_editor | Rule::kw_custom_editor_rp => "`CustomEditor`",
+        Rule::kw_package_requirements => "`PackageRequirements`",
+        Rule::program_block | Rule::wgsl_open | Rule::wgsl_block => "a program block",
+        Rule::kw_blend
+        | Rule::kw_blend_op
+        | Rule::kw_zwrite
+        | Rule::kw_ztest
+        | Rule::kw_zclip
+        | Rule::kw_cull
+        | Rule::kw_color_mask
+        | Rule::kw_offset
+        | Rule::kw_alpha_to_mask
+        | Rule::kw_conservative
+        | Rule::kw_stencil => "a render-state command",
         Rule::EOI => "end of file",
         _ => return None,
     })
@@ -271,7 +311,13 @@ impl Builder {
 
     fn subshader(&mut self, pair: P, category: Option<usize>) -> SubShader {
         let span = self.span(&pair);
-        let mut sub = SubShader { state: StateBlock::default(), passes: Vec::new(), programs: Vec::new(), category, span };
+        let mut sub = SubShader {
+            state: StateBlock::default(),
+            passes: Vec::new(),
+            programs: Vec::new(),
+            category,
+            span,
+        };
         for item in pair.into_inner().skip(1) {
             match item.as_rule() {
                 Rule::pass => {
@@ -418,7 +464,10 @@ impl Builder {
                         let lead = part.len() - part.trim_start().len();
                         let start = base + offset + lead;
                         offset += part.len() + 1;
-                        Spanned::new(part.trim().to_string(), Span::new(self.file, start..start + part.trim().len()))
+                        Spanned::new(
+                            part.trim().to_string(),
+                            Span::new(self.file, start..start + part.trim().len()),
+                        )
                     })
                     .filter(|arg| !arg.value.is_empty())
                     .collect()
@@ -431,7 +480,11 @@ impl Builder {
     fn attribute_kind(&mut self, name: &str, args: &[Spanned<String>], span: Span) -> AttributeKind {
         let words: Vec<String> = args.iter().map(|a| a.value.clone()).collect();
         let mut bad = |expected: &'static str| {
-            self.errors.push(ShaderLabError::AttributeArguments { span, attribute: name.to_string(), expected });
+            self.errors.push(ShaderLabError::AttributeArguments {
+                span,
+                attribute: name.to_string(),
+                expected,
+            });
             AttributeKind::Other
         };
         let lower = name.to_ascii_lowercase();
@@ -441,7 +494,11 @@ impl Builder {
                     return bad("at most one keyword");
                 }
                 let keyword = words.into_iter().next();
-                if lower == "toggleoff" { AttributeKind::ToggleOff(keyword) } else { AttributeKind::Toggle(keyword) }
+                if lower == "toggleoff" {
+                    AttributeKind::ToggleOff(keyword)
+                } else {
+                    AttributeKind::Toggle(keyword)
+                }
             }
             "toggleui" => AttributeKind::ToggleUI,
             "keywordenum" | "materialkeywordenum" => {
@@ -587,7 +644,8 @@ impl Builder {
     fn render_command(&mut self, pair: P) -> Option<RenderCommand> {
         let span = self.span(&pair);
         let rule = pair.as_rule();
-        let keyword = pair.as_str().split(|c: char| !c.is_ascii_alphanumeric()).next().unwrap_or("").to_string();
+        let keyword =
+            pair.as_str().split(|c: char| !c.is_ascii_alphanumeric()).next().unwrap_or("").to_string();
         let mut inner = pair.into_inner();
         inner.next(); // the keyword
         let mut rest: Vec<P> = inner.collect();
@@ -597,7 +655,9 @@ impl Builder {
                 if rest.first().is_some_and(|p| p.as_rule() == Rule::kw_off) {
                     RenderCommandKind::Blend { target, factors: None }
                 } else {
-                    let mut factors = rest.into_iter().map(|p| self.word_value(p, "Blend", BlendFactor::from_word, BlendFactor::NAMES));
+                    let mut factors = rest
+                        .into_iter()
+                        .map(|p| self.word_value(p, "Blend", BlendFactor::from_word, BlendFactor::NAMES));
                     let src = factors.next().flatten();
                     let dst = factors.next().flatten();
                     let alpha_src = factors.next().flatten();
@@ -608,12 +668,17 @@ impl Builder {
                         _ if has_alpha => return None,
                         _ => None,
                     };
-                    RenderCommandKind::Blend { target, factors: Some(BlendFactors { src: src?, dst: dst?, alpha }) }
+                    RenderCommandKind::Blend {
+                        target,
+                        factors: Some(BlendFactors { src: src?, dst: dst?, alpha }),
+                    }
                 }
             }
             Rule::blend_op => {
                 let target = self.render_target(&mut rest)?;
-                let mut ops = rest.into_iter().map(|p| self.word_value(p, "BlendOp", BlendOperation::from_word, BlendOperation::NAMES));
+                let mut ops = rest
+                    .into_iter()
+                    .map(|p| self.word_value(p, "BlendOp", BlendOperation::from_word, BlendOperation::NAMES));
                 let color = ops.next().flatten();
                 let alpha = ops.next();
                 let alpha = match alpha {
@@ -623,23 +688,32 @@ impl Builder {
                 };
                 RenderCommandKind::BlendOp { target, color: color?, alpha }
             }
-            Rule::zwrite => RenderCommandKind::ZWrite(self.bool_value(rest.pop()?, "ZWrite", &["On", "Off"])?),
+            Rule::zwrite => {
+                RenderCommandKind::ZWrite(self.bool_value(rest.pop()?, "ZWrite", &["On", "Off"])?)
+            }
             Rule::alpha_to_mask => {
                 RenderCommandKind::AlphaToMask(self.bool_value(rest.pop()?, "AlphaToMask", &["On", "Off"])?)
             }
-            Rule::zclip => RenderCommandKind::ZClip(self.bool_value(rest.pop()?, "ZClip", &["True", "False"])?),
-            Rule::conservative => {
-                RenderCommandKind::Conservative(self.bool_value(rest.pop()?, "Conservative", &["True", "False"])?)
+            Rule::zclip => {
+                RenderCommandKind::ZClip(self.bool_value(rest.pop()?, "ZClip", &["True", "False"])?)
             }
+            Rule::conservative => RenderCommandKind::Conservative(self.bool_value(
+                rest.pop()?,
+                "Conservative",
+                &["True", "False"],
+            )?),
             Rule::ztest => RenderCommandKind::ZTest(self.word_value(
                 rest.pop()?,
                 "ZTest",
                 CompareFunction::from_word,
                 CompareFunction::NAMES,
             )?),
-            Rule::cull => {
-                RenderCommandKind::Cull(self.word_value(rest.pop()?, "Cull", CullMode::from_word, CullMode::NAMES)?)
-            }
+            Rule::cull => RenderCommandKind::Cull(self.word_value(
+                rest.pop()?,
+                "Cull",
+                CullMode::from_word,
+                CullMode::NAMES,
+            )?),
             Rule::color_mask => {
                 let target_pair = if rest.len() == 2 { rest.pop() } else { None };
                 let target = match target_pair {
@@ -655,7 +729,8 @@ impl Builder {
                 RenderCommandKind::Offset { factor: factor?, units: units? }
             }
             Rule::stencil => {
-                let entries: Vec<Option<StencilEntry>> = rest.into_iter().map(|e| self.stencil_entry(e)).collect();
+                let entries: Vec<Option<StencilEntry>> =
+                    rest.into_iter().map(|e| self.stencil_entry(e)).collect();
                 RenderCommandKind::Stencil(entries.into_iter().collect::<Option<Vec<_>>>()?)
             }
             _ => {
@@ -713,7 +788,12 @@ impl Builder {
         }
     }
 
-    fn bool_value(&mut self, pair: P, command: &str, names: &'static [&'static str]) -> Option<Spanned<Value<bool>>> {
+    fn bool_value(
+        &mut self,
+        pair: P,
+        command: &str,
+        names: &'static [&'static str],
+    ) -> Option<Spanned<Value<bool>>> {
         // `True`/`False` and `On`/`Off` are both accepted wherever ShaderLab takes a switch.
         let parse = |w: &str| match w.to_ascii_lowercase().as_str() {
             "on" | "true" => Some(true),
@@ -786,7 +866,9 @@ impl Builder {
                 let number = self.number_value(value_pair, &command)?;
                 StencilValue::Byte(match number.value {
                     Value::Property(p) => Value::Property(p),
-                    Value::Literal(n) if n.fract() == 0.0 && (0.0..=255.0).contains(&n) => Value::Literal(n as u8),
+                    Value::Literal(n) if n.fract() == 0.0 && (0.0..=255.0).contains(&n) => {
+                        Value::Literal(n as u8)
+                    }
                     Value::Literal(n) => {
                         self.errors.push(ShaderLabError::OutOfRange {
                             span: value_span,
@@ -799,10 +881,12 @@ impl Builder {
                 })
             }
             StencilField::Comp | StencilField::CompBack | StencilField::CompFront => StencilValue::Compare(
-                self.word_value(value_pair, &command, CompareFunction::from_word, CompareFunction::NAMES)?.value,
+                self.word_value(value_pair, &command, CompareFunction::from_word, CompareFunction::NAMES)?
+                    .value,
             ),
             _ => StencilValue::Operation(
-                self.word_value(value_pair, &command, StencilOperation::from_word, StencilOperation::NAMES)?.value,
+                self.word_value(value_pair, &command, StencilOperation::from_word, StencilOperation::NAMES)?
+                    .value,
             ),
         };
         Some(StencilEntry { op, value: Spanned::new(value, value_span), span })
@@ -823,7 +907,13 @@ impl Builder {
         let open = inner.next().expect("grammar: program opening");
         let is_include = open.as_str().to_ascii_uppercase().ends_with("INCLUDE");
         let body = inner.next().expect("grammar: program body");
-        ProgramBlock { language, is_include, body: body.as_str().to_string(), body_span: self.span(&body), span }
+        ProgramBlock {
+            language,
+            is_include,
+            body: body.as_str().to_string(),
+            body_span: self.span(&body),
+            span,
+        }
     }
 }
 

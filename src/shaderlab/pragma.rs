@@ -142,10 +142,28 @@ pub const TARGET_LEVELS: [(&str, &[&str]); 8] = [
 
 /// Every requirement name `#pragma require` accepts.
 pub const REQUIREMENTS: [&str; 22] = [
-    "interpolators10", "interpolators15", "interpolators32", "integers", "mrt4", "mrt8",
-    "derivatives", "samplelod", "fragcoord", "2darray", "cubearray", "instancing", "geometry",
-    "compute", "randomwrite", "msaatex", "tesshw", "tessellation", "sparsetex", "framebufferfetch",
-    "setrtarrayindexfromanyshader", "native16bit",
+    "interpolators10",
+    "interpolators15",
+    "interpolators32",
+    "integers",
+    "mrt4",
+    "mrt8",
+    "derivatives",
+    "samplelod",
+    "fragcoord",
+    "2darray",
+    "cubearray",
+    "instancing",
+    "geometry",
+    "compute",
+    "randomwrite",
+    "msaatex",
+    "tesshw",
+    "tessellation",
+    "sparsetex",
+    "framebufferfetch",
+    "setrtarrayindexfromanyshader",
+    "native16bit",
 ];
 
 /// Unity's shorthand pragmas and the keyword sets kiln expands them to (docs/keywords.md).
@@ -157,8 +175,14 @@ const SHORTHANDS: [(&str, &[&str]); 10] = [
     (
         "multi_compile_fwdbase",
         &[
-            "DIRECTIONAL", "_ LIGHTMAP_ON", "_ DIRLIGHTMAP_COMBINED", "_ DYNAMICLIGHTMAP_ON",
-            "_ SHADOWS_SCREEN", "_ SHADOWS_SHADOWMASK", "_ LIGHTMAP_SHADOW_MIXING", "_ LIGHTPROBE_SH",
+            "DIRECTIONAL",
+            "_ LIGHTMAP_ON",
+            "_ DIRLIGHTMAP_COMBINED",
+            "_ DYNAMICLIGHTMAP_ON",
+            "_ SHADOWS_SCREEN",
+            "_ SHADOWS_SHADOWMASK",
+            "_ LIGHTMAP_SHADOW_MIXING",
+            "_ LIGHTPROBE_SH",
             "_ VERTEXLIGHT_ON",
         ],
     ),
@@ -167,7 +191,9 @@ const SHORTHANDS: [(&str, &[&str]); 10] = [
         "multi_compile_fwdadd_fullshadows",
         &[
             "POINT DIRECTIONAL SPOT POINT_COOKIE DIRECTIONAL_COOKIE",
-            "_ SHADOWS_DEPTH SHADOWS_SCREEN SHADOWS_CUBE", "_ SHADOWS_SOFT", "_ SHADOWS_SHADOWMASK",
+            "_ SHADOWS_DEPTH SHADOWS_SCREEN SHADOWS_CUBE",
+            "_ SHADOWS_SOFT",
+            "_ SHADOWS_SHADOWMASK",
             "_ LIGHTMAP_SHADOW_MIXING",
         ],
     ),
@@ -175,15 +201,21 @@ const SHORTHANDS: [(&str, &[&str]); 10] = [
         "multi_compile_lightpass",
         &[
             "POINT DIRECTIONAL SPOT POINT_COOKIE DIRECTIONAL_COOKIE",
-            "_ SHADOWS_DEPTH SHADOWS_SCREEN SHADOWS_CUBE", "_ SHADOWS_SOFT", "_ SHADOWS_SHADOWMASK",
+            "_ SHADOWS_DEPTH SHADOWS_SCREEN SHADOWS_CUBE",
+            "_ SHADOWS_SOFT",
+            "_ SHADOWS_SHADOWMASK",
             "_ UNITY_HDR_ON",
         ],
     ),
     (
         "multi_compile_prepassfinal",
         &[
-            "_ LIGHTMAP_ON", "_ DIRLIGHTMAP_COMBINED", "_ DYNAMICLIGHTMAP_ON", "_ UNITY_HDR_ON",
-            "_ SHADOWS_SHADOWMASK", "_ LIGHTPROBE_SH",
+            "_ LIGHTMAP_ON",
+            "_ DIRLIGHTMAP_COMBINED",
+            "_ DYNAMICLIGHTMAP_ON",
+            "_ UNITY_HDR_ON",
+            "_ SHADOWS_SHADOWMASK",
+            "_ LIGHTPROBE_SH",
         ],
     ),
     ("multi_compile_shadowcollector", &["_ SHADOWS_SPLIT_SPHERES", "_ SHADOWS_SINGLE_CASCADE"]),
@@ -212,31 +244,37 @@ impl From<PragmaError> for Diagnostic {
     fn from(error: PragmaError) -> Diagnostic {
         use PragmaError::*;
         match error {
-            UnknownTarget { span, found } => Diagnostic::error("K0201", format!("unknown shader target `{found}`"))
-                .at(span, "not a target level")
-                .help(format!("use one of {}", one_of(&TARGET_LEVELS.map(|(level, _)| level)))),
+            UnknownTarget { span, found } => {
+                Diagnostic::error("K0201", format!("unknown shader target `{found}`"))
+                    .at(span, "not a target level")
+                    .help(format!("use one of {}", one_of(&TARGET_LEVELS.map(|(level, _)| level))))
+            }
             MissingArgument { span, pragma, expected } => {
-                Diagnostic::error("K0202", format!("`#pragma {pragma}` needs {expected}")).at(span, "missing argument")
+                Diagnostic::error("K0202", format!("`#pragma {pragma}` needs {expected}"))
+                    .at(span, "missing argument")
             }
             EmptyKeywordSet { span, pragma } => {
                 Diagnostic::error("K0203", format!("`#pragma {pragma}` declares no keywords"))
                     .at(span, "empty keyword set")
                     .help("list the keywords, with `_` for the all-off choice: `_ MY_KEYWORD`")
             }
-            InvalidKeyword { span, found } => Diagnostic::error("K0204", format!("`{found}` is not a valid keyword name"))
-                .at(span, "invalid keyword")
-                .help("keywords are made of letters, digits and `_`, and do not start with a digit"),
+            InvalidKeyword { span, found } => {
+                Diagnostic::error("K0204", format!("`{found}` is not a valid keyword name"))
+                    .at(span, "invalid keyword")
+                    .help("keywords are made of letters, digits and `_`, and do not start with a digit")
+            }
             DuplicateKeyword { span, first, keyword } => {
                 Diagnostic::warning("K0205", format!("`{keyword}` appears twice in one keyword set"))
                     .at(span, "repeated here")
                     .label(first, "first listed here")
             }
-            KeywordInTwoSets { span, first, keyword } => {
-                Diagnostic::warning("K0206", format!("keyword `{keyword}` is declared in two keyword sets of this pass"))
-                    .at(span, "declared again here")
-                    .label(first, "first declared here")
-                    .note("the sets then multiply variants that can never differ; declare each keyword once")
-            }
+            KeywordInTwoSets { span, first, keyword } => Diagnostic::warning(
+                "K0206",
+                format!("keyword `{keyword}` is declared in two keyword sets of this pass"),
+            )
+            .at(span, "declared again here")
+            .label(first, "first declared here")
+            .note("the sets then multiply variants that can never differ; declare each keyword once"),
             UnknownRequirement { span, found } => {
                 Diagnostic::warning("K0207", format!("unknown requirement `{found}`"))
                     .at(span, "not a requirement kiln knows")
@@ -269,7 +307,9 @@ struct PragmaLine {
 }
 
 /// Collects the pragmas of the given blocks, in order (include blocks first, as Unity splices them).
-pub fn collect_pragmas<'a>(blocks: impl IntoIterator<Item = &'a ProgramBlock>) -> (ProgramPragmas, Vec<Diagnostic>) {
+pub fn collect_pragmas<'a>(
+    blocks: impl IntoIterator<Item = &'a ProgramBlock>,
+) -> (ProgramPragmas, Vec<Diagnostic>) {
     let mut pragmas = ProgramPragmas::default();
     let mut errors = Vec::new();
     for block in blocks {
@@ -360,7 +400,8 @@ fn pragma_lines(block: &ProgramBlock) -> Vec<PragmaLine> {
 
 fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<PragmaError>) {
     let name = line.name.value.as_str();
-    let missing = |expected| PragmaError::MissingArgument { span: line.span, pragma: name.to_string(), expected };
+    let missing =
+        |expected| PragmaError::MissingArgument { span: line.span, pragma: name.to_string(), expected };
     match name {
         "vertex" | "fragment" => {
             let Some(entry) = line.args.into_iter().next() else {
@@ -369,11 +410,13 @@ fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<Pragma
             };
             let slot = if name == "vertex" { &mut pragmas.vertex } else { &mut pragmas.fragment };
             match slot {
-                Some(first) if first.value != entry.value => errors.push(PragmaError::ConflictingEntryPoint {
-                    span: entry.span,
-                    first: first.span,
-                    stage: if name == "vertex" { "vertex" } else { "fragment" },
-                }),
+                Some(first) if first.value != entry.value => {
+                    errors.push(PragmaError::ConflictingEntryPoint {
+                        span: entry.span,
+                        first: first.span,
+                        stage: if name == "vertex" { "vertex" } else { "fragment" },
+                    })
+                }
                 _ => *slot = Some(entry),
             }
         }
@@ -400,7 +443,10 @@ fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<Pragma
                     keywords.push(arg);
                 } else {
                     if !REQUIREMENTS.contains(&arg.value.as_str()) {
-                        errors.push(PragmaError::UnknownRequirement { span: arg.span, found: arg.value.clone() });
+                        errors.push(PragmaError::UnknownRequirement {
+                            span: arg.span,
+                            found: arg.value.clone(),
+                        });
                     }
                     features.push(arg);
                 }
@@ -418,7 +464,10 @@ fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<Pragma
                 for set in sets {
                     let options = set
                         .split(' ')
-                        .map(|k| KeywordOption { keyword: (!is_none_name(k)).then(|| k.to_string()), span: line.name.span })
+                        .map(|k| KeywordOption {
+                            keyword: (!is_none_name(k)).then(|| k.to_string()),
+                            span: line.name.span,
+                        })
                         .collect();
                     pragmas.keyword_sets.push(KeywordSet {
                         kind: KeywordKind::MultiCompile,
@@ -431,8 +480,14 @@ fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<Pragma
                 }
             } else if let Some((kind, scope, stage)) = keyword_pragma(name) {
                 keyword_set(pragmas, kind, scope, stage, line, errors);
-            } else if ["multi_compile", "shader_feature", "dynamic_branch"].iter().any(|p| name.starts_with(p)) {
-                errors.push(PragmaError::UnknownKeywordPragma { span: line.name.span, found: name.to_string() });
+            } else if ["multi_compile", "shader_feature", "dynamic_branch"]
+                .iter()
+                .any(|p| name.starts_with(p))
+            {
+                errors.push(PragmaError::UnknownKeywordPragma {
+                    span: line.name.span,
+                    found: name.to_string(),
+                });
             } else {
                 pragmas.other.push((line.name, line.rest));
             }
@@ -486,7 +541,11 @@ fn keyword_set(
         }
         let keyword = (!is_none_name(&arg.value)).then(|| arg.value.clone());
         if let Some(first) = options.iter().find(|o| o.keyword == keyword) {
-            errors.push(PragmaError::DuplicateKeyword { span: arg.span, first: first.span, keyword: arg.value.clone() });
+            errors.push(PragmaError::DuplicateKeyword {
+                span: arg.span,
+                first: first.span,
+                keyword: arg.value.clone(),
+            });
             continue;
         }
         options.push(KeywordOption { keyword, span: arg.span });

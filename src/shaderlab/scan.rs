@@ -1,14 +1,18 @@
 //! A quick structural scan run before the grammar: it finds unterminated strings and comments,
 //! unclosed program blocks and unbalanced braces, all in one pass, and points at where they
 //! start. The grammar alone would stop at the first and blame the end of the file.
+//!
+//! Returns the lexical problems (always reported) and the brace problems (reported when they
+//! explain the grammar's error) separately.
 
 use crate::shaderlab::ast::ProgramLanguage;
 use crate::shaderlab::error::ShaderLabError;
 use crate::source::{FileId, Span};
 
-pub(crate) fn scan(file: FileId, text: &str) -> Vec<ShaderLabError> {
+pub(crate) fn scan(file: FileId, text: &str) -> (Vec<ShaderLabError>, Vec<ShaderLabError>) {
     let bytes = text.as_bytes();
     let mut errors = Vec::new();
+    let mut braces = Vec::new();
     // Open braces: their offset and the indentation of their line.
     let mut open: Vec<(usize, usize)> = Vec::new();
     // The first brace whose closing `}` sits at another indentation: the likely culprit.
@@ -21,13 +25,17 @@ pub(crate) fn scan(file: FileId, text: &str) -> Vec<ShaderLabError> {
                 Some(end) => i += end + 4,
                 None => {
                     errors.push(ShaderLabError::UnterminatedComment { span: Span::new(file, i..i + 2) });
-                    return errors;
+                    return (errors, braces);
                 }
             },
             b'"' => {
                 let mut j = i + 1;
                 while j < bytes.len() && bytes[j] != b'"' && bytes[j] != b'\n' {
-                    j += if bytes[j] == b'\\' && bytes.get(j + 1).is_some_and(|&b| b != b'\n') { 2 } else { 1 };
+                    j += if bytes[j] == b'\\' && bytes.get(j + 1).is_some_and(|&b| b != b'\n') {
+                        2
+                    } else {
+                        1
+                    };
                 }
                 if j >= bytes.len() || bytes[j] != b'"' {
                     let end = j.min(bytes.len());
@@ -43,11 +51,14 @@ pub(crate) fn scan(file: FileId, text: &str) -> Vec<ShaderLabError> {
             b'}' => {
                 match open.pop() {
                     Some((at, indent)) => {
-                        if misindented.is_none() && first_on_line(bytes, i) && indentation(bytes, i) != indent {
+                        if misindented.is_none() && first_on_line(bytes, i) && indentation(bytes, i) != indent
+                        {
                             misindented = Some(at);
                         }
                     }
-                    None => errors.push(ShaderLabError::UnmatchedCloseBrace { span: Span::new(file, i..i + 1) }),
+                    None => {
+                        braces.push(ShaderLabError::UnmatchedCloseBrace { span: Span::new(file, i..i + 1) })
+                    }
                 }
                 i += 1;
             }
@@ -66,7 +77,7 @@ pub(crate) fn scan(file: FileId, text: &str) -> Vec<ShaderLabError> {
                                 language,
                                 include,
                             });
-                            return errors;
+                            return (errors, braces);
                         }
                     }
                 }
@@ -76,9 +87,9 @@ pub(crate) fn scan(file: FileId, text: &str) -> Vec<ShaderLabError> {
     }
     if let Some(&(outer, _)) = open.first() {
         let likely = misindented.filter(|&at| at != outer).map(|at| Span::new(file, at..at + 1));
-        errors.push(ShaderLabError::UnclosedBrace { open: Span::new(file, outer..outer + 1), likely });
+        braces.push(ShaderLabError::UnclosedBrace { open: Span::new(file, outer..outer + 1), likely });
     }
-    errors
+    (errors, braces)
 }
 
 fn program_opening(word: &str) -> Option<(ProgramLanguage, bool)> {

@@ -1,1 +1,10 @@
+//! kiln's integration tests: one binary, one module per concern. Golden files are regenerated
+//! with `UPDATE_EXPECT=1 cargo test`, then reviewed like code.
 
+mod bad;
+mod cli;
+mod list;
+mod parse;
+mod robustness;
+mod support;
+mod tidy;

@@ -1,0 +1,61 @@
+//! Golden listings, text and JSON, for the bundled project and the Unity-style fixtures.
+
+use crate::support::{fixture_files, kiln, root};
+use expect_test::expect_file;
+
+fn check(folder: &str, golden: &str) {
+    let text = kiln(&["list", folder]);
+    assert_eq!(text.status.code(), Some(0), "{}", String::from_utf8_lossy(&text.stderr));
+    assert!(text.stderr.is_empty(), "{}", String::from_utf8_lossy(&text.stderr));
+    expect_file![root().join(format!("tests/golden/list/{golden}.txt"))]
+        .assert_eq(&String::from_utf8_lossy(&text.stdout));
+
+    let json = kiln(&["list", folder, "--format", "json"]);
+    assert_eq!(json.status.code(), Some(0));
+    let stdout = String::from_utf8_lossy(&json.stdout);
+    let value: serde_json::Value = serde_json::from_str(&stdout).expect("list --format json prints JSON");
+    assert!(value["diagnostics"].as_array().is_some_and(Vec::is_empty));
+    expect_file![root().join(format!("tests/golden/list/{golden}.json"))].assert_eq(&stdout);
+}
+
+#[test]
+fn bundled_project() {
+    check("fixtures/project", "project");
+}
+
+#[test]
+fn unity_style_shaders() {
+    assert!(fixture_files("fixtures/unity", "shader").len() >= 3);
+    check("fixtures/unity", "unity");
+}
+
+#[test]
+fn default_path_is_the_bundled_project() {
+    let default = kiln(&["list"]);
+    let explicit = kiln(&["list", "fixtures/project"]);
+    assert_eq!(default.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&default.stdout), String::from_utf8_lossy(&explicit.stdout));
+}
+
+#[test]
+fn variant_counts_are_products_of_set_sizes() {
+    let json = kiln(&["list", "fixtures/unity/UniversalLit.shader", "--format", "json"]);
+    let value: serde_json::Value = serde_json::from_slice(&json.stdout).expect("json");
+    let forward = &value["shaders"][0]["passes"][0];
+    assert_eq!(forward["name"], "ForwardLit");
+    let program = &forward["program"];
+    // dynamic_branch makes no variants; skip_variants removes one of the four shadow choices.
+    let product: u64 = program["keyword_sets"]
+        .as_array()
+        .expect("sets")
+        .iter()
+        .filter(|set| set["kind"] != "dynamic_branch")
+        .map(|set| {
+            let keywords = set["keywords"].as_array().expect("keywords");
+            let skipped = keywords.iter().filter(|k| *k == "_MAIN_LIGHT_SHADOWS_SCREEN").count();
+            (keywords.len() - skipped) as u64
+        })
+        .product();
+    assert_eq!(program["possible_variants"].as_u64(), Some(product));
+    assert_eq!(product, 18432);
+}

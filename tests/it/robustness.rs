@@ -1,0 +1,56 @@
+//! Arbitrary and mutated input never panics the parser, the pragma reader or the listing.
+
+use kiln::source::SourceStore;
+use proptest::prelude::*;
+
+fn list_text(text: &str) {
+    let mut store = SourceStore::new();
+    let file = store.add("fuzz.shader", text);
+    let (_, diagnostics) = kiln::listing::list_shaders(&store, &[file]);
+    // Rendering walks every span: a span outside its file would fail here.
+    let _ = kiln::diagnostics::render_plain(&store, &diagnostics);
+    let _ = kiln::diagnostics::to_json(&store, &diagnostics);
+}
+
+fn fixtures() -> Vec<String> {
+    let mut texts = Vec::new();
+    for folder in ["fixtures/project/shaders", "fixtures/unity", "fixtures/bad"] {
+        for path in crate::support::fixture_files(folder, "shader") {
+            if let Ok(text) = std::fs::read_to_string(crate::support::root().join(path)) {
+                texts.push(text);
+            }
+        }
+    }
+    texts
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+
+    #[test]
+    fn arbitrary_text_never_panics(text in "\\PC{0,400}") {
+        list_text(&text);
+    }
+
+    #[test]
+    fn arbitrary_bytes_never_panic(bytes in proptest::collection::vec(any::<u8>(), 0..400)) {
+        list_text(&String::from_utf8_lossy(&bytes));
+    }
+
+    #[test]
+    fn mutated_fixtures_never_panic(
+        pick in any::<prop::sample::Index>(),
+        edits in proptest::collection::vec((any::<prop::sample::Index>(), 0usize..4, "[{}\"\\[\\]()=,#/*a-zA-Z0-9 \n]{0,3}"), 1..6),
+    ) {
+        let fixtures = fixtures();
+        let mut text = fixtures[pick.index(fixtures.len())].clone();
+        for (at, remove, insert) in edits {
+            let mut start = at.index(text.len() + 1);
+            while !text.is_char_boundary(start) { start -= 1; }
+            let mut end = (start + remove).min(text.len());
+            while !text.is_char_boundary(end) { end += 1; }
+            text.replace_range(start..end, &insert);
+        }
+        list_text(&text);
+    }
+}

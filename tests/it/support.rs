@@ -1,0 +1,53 @@
+//! Shared helpers: paths into the repository, loading fixtures, running the `kiln` binary.
+
+use kiln::diagnostics::Diagnostic;
+use kiln::source::{FileId, SourceStore};
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+/// The repository root (tests run with it as the working directory, but do not rely on that).
+pub fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The files with this extension directly in a fixtures folder, sorted, as paths relative to
+/// the root so that diagnostics name them the same way on every machine.
+pub fn fixture_files(folder: &str, extension: &str) -> Vec<PathBuf> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(root().join(folder))
+        .expect("fixture folder exists")
+        .map(|entry| entry.expect("readable entry").path())
+        .filter(|path| path.extension().is_some_and(|e| e == extension))
+        .map(|path| Path::new(folder).join(path.file_name().expect("file name")))
+        .collect();
+    files.sort();
+    files
+}
+
+/// Loads relative paths into a store, from the repository root.
+pub fn load(paths: &[PathBuf]) -> (SourceStore, Vec<FileId>, Vec<Diagnostic>) {
+    let _cwd = CwdGuard::root();
+    let mut store = SourceStore::new();
+    let (ids, diagnostics) = kiln::project::load_files(&mut store, paths);
+    (store, ids, diagnostics)
+}
+
+/// Runs the built `kiln` binary from the repository root.
+pub fn kiln(args: &[&str]) -> Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_kiln"))
+        .args(args)
+        .current_dir(root())
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("kiln binary runs")
+}
+
+/// Relative fixture paths resolve against the root whatever the test runner's directory.
+struct CwdGuard;
+
+impl CwdGuard {
+    fn root() -> CwdGuard {
+        // cargo runs integration tests from the package root already; this only asserts it.
+        assert_eq!(std::env::current_dir().expect("cwd"), root(), "tests run from the package root");
+        CwdGuard
+    }
+}

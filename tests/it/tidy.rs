@@ -1,0 +1,70 @@
+//! Keeps docs and code in sync: module docs present, every diagnostic code documented in
+//! `docs/diagnostics.md` and shown by at least one golden file.
+
+use crate::support::root;
+use std::path::{Path, PathBuf};
+
+fn files_under(dir: &Path, extension: &str) -> Vec<PathBuf> {
+    walkdir::WalkDir::new(dir)
+        .sort_by_file_name()
+        .into_iter()
+        .filter_map(Result::ok)
+        .filter(|e| e.file_type().is_file() && e.path().extension().is_some_and(|x| x == extension))
+        .map(|e| e.into_path())
+        .collect()
+}
+
+/// Codes the goldens cannot show, with the reason.
+const NOT_IN_GOLDENS: &[(&str, &str)] = &[("K0002", "an I/O failure while reading a file that exists")];
+
+fn diagnostic_codes() -> Vec<String> {
+    let mut codes = Vec::new();
+    for file in files_under(&root().join("src"), "rs") {
+        let text = std::fs::read_to_string(&file).expect("source is UTF-8");
+        for (i, _) in text.match_indices("\"K") {
+            let code = &text[i + 1..(i + 6).min(text.len())];
+            if code.len() == 5
+                && code[1..].bytes().all(|b| b.is_ascii_digit())
+                && text[i + 6..].starts_with('"')
+            {
+                codes.push(code.to_string());
+            }
+        }
+    }
+    codes.sort();
+    codes.dedup();
+    codes
+}
+
+#[test]
+fn every_source_file_says_its_role() {
+    for file in files_under(&root().join("src"), "rs") {
+        let text = std::fs::read_to_string(&file).expect("source is UTF-8");
+        assert!(text.starts_with("//!"), "{} must open with a `//!` line saying its role", file.display());
+    }
+}
+
+#[test]
+fn every_diagnostic_code_is_documented_and_shown() {
+    let codes = diagnostic_codes();
+    assert!(codes.len() > 20, "found only {codes:?}");
+    let docs = std::fs::read_to_string(root().join("docs/diagnostics.md")).expect("docs/diagnostics.md");
+    let mut goldens = String::new();
+    for dir in ["fixtures", "tests/golden"] {
+        for file in files_under(&root().join(dir), "stderr") {
+            goldens.push_str(&std::fs::read_to_string(file).expect("golden is UTF-8"));
+        }
+    }
+    for code in &codes {
+        assert!(docs.contains(&format!("## {code}")), "{code} is not documented in docs/diagnostics.md");
+        let exempt = NOT_IN_GOLDENS.iter().any(|(c, _)| c == code);
+        assert!(exempt || goldens.contains(&format!("[{code}]")), "no golden shows {code}");
+    }
+    for line in docs.lines().filter_map(|l| l.strip_prefix("## ")) {
+        let code = line.split_whitespace().next().unwrap_or("");
+        assert!(
+            codes.iter().any(|c| c == code),
+            "docs/diagnostics.md documents {code}, which the code never reports"
+        );
+    }
+}
