@@ -4,4 +4,5 @@ pub mod diagnostics;
 pub mod listing;
 pub mod project;
 pub mod shaderlab;
+pub mod shaderlib;
 pub mod source;

@@ -239,3 +239,24 @@ fn drawers_and_unknown_attributes() {
         matches!(&sub.passes[1], PassItem::UsePass(name) if name.value == "Legacy Shaders/VertexLit/SHADOWCASTER")
     );
 }
+
+#[test]
+fn placeholder_may_come_last() {
+    let (store, ids, _) = load(&["fixtures/unity/SurfaceToon.shader".into()]);
+    let shader = parse_shader(&store, ids[0]).shader.expect("parses");
+    let (_, sub, _, forward) = shader
+        .passes()
+        .find(|(_, _, _, p)| p.state.name.as_ref().is_some_and(|n| n.value == "FORWARD"))
+        .expect("FORWARD");
+    let (pragmas, diagnostics) = kiln::shaderlab::pragma::collect_pragmas(kiln::listing::program_blocks(
+        &shader,
+        sub,
+        &forward.programs,
+    ));
+    assert!(diagnostics.is_empty());
+    let toon =
+        pragmas.keyword_sets.iter().find(|s| s.keywords().any(|k| k == "_TOON_RAMP")).expect("toon set");
+    let options: Vec<Option<&str>> = toon.options.iter().map(|o| o.keyword.as_deref()).collect();
+    assert_eq!(options, [Some("_TOON_RAMP"), Some("_TOON_SOFT"), None]);
+    assert!(toon.has_off_option());
+}

@@ -1,0 +1,26 @@
+//! Embeds the bundled WGSL shader library (`shaderlib/*.wgsl`) into the crate, so kiln finds its
+//! library from any working directory.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+fn main() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaderlib");
+    println!("cargo:rerun-if-changed={}", dir.display());
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .expect("shaderlib/ exists")
+        .filter_map(|entry| entry.ok().map(|e| e.file_name().to_string_lossy().into_owned()))
+        .filter(|name| name.ends_with(".wgsl"))
+        .collect();
+    names.sort();
+    let mut module = String::from("/// The bundled library: (file name, text), sorted by name.\n");
+    module.push_str("pub static FILES: &[(&str, &str)] = &[\n");
+    for name in &names {
+        let path = dir.join(name);
+        println!("cargo:rerun-if-changed={}", path.display());
+        let _ = writeln!(module, "    ({name:?}, include_str!({:?})),", path.display().to_string());
+    }
+    module.push_str("];\n");
+    let out = Path::new(&std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("shaderlib.rs");
+    std::fs::write(out, module).expect("OUT_DIR is writable");
+}
