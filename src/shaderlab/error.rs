@@ -11,6 +11,7 @@ pub enum ShaderLabError {
     UnclosedProgram { open: Span, language: ProgramLanguage, include: bool },
     UnclosedBrace { open: Span, likely: Option<Span> },
     UnmatchedCloseBrace { span: Span },
+    NestedTooDeep { span: Span, limit: usize },
     Syntax { span: Span, expected: Vec<String>, found: String, context: Option<(Span, String)> },
     UnknownPropertyType { span: Span, found: String },
     RangeWithoutBounds { span: Span },
@@ -67,6 +68,11 @@ impl From<ShaderLabError> for Diagnostic {
             UnmatchedCloseBrace { span } => Diagnostic::error("K0105", "unmatched `}`")
                 .at(span, "this `}` closes nothing")
                 .help("remove it, or add the `{` it was meant to close"),
+            NestedTooDeep { span, limit } => {
+                Diagnostic::error("K0107", format!("blocks are nested more than {limit} deep"))
+                    .at(span, "this `{` goes past the limit")
+                    .note("the limit keeps pathological input from exhausting the parser's stack")
+            }
             Syntax { span, expected, found, context } => {
                 let expected_text = match expected.as_slice() {
                     [] => "something else".to_string(),

@@ -93,11 +93,12 @@ fn syntax_error(file: FileId, text: &str, error: pest::error::Error<Rule>) -> Sh
                 }
             }
         }
-        _ => {
-            if let pest::error::ErrorVariant::ParsingError { positives, .. } = &error.variant {
-                for words in positives.iter().filter_map(|rule| describe(*rule)) {
-                    add(words.to_string(), &mut expected);
-                }
+        _ => {}
+    }
+    if expected.is_empty() {
+        if let pest::error::ErrorVariant::ParsingError { positives, .. } = &error.variant {
+            for words in positives.iter().filter_map(|rule| describe(*rule)) {
+                add(words.to_string(), &mut expected);
             }
         }
     }

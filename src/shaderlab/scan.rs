@@ -9,8 +9,21 @@ use crate::shaderlab::ast::ProgramLanguage;
 use crate::shaderlab::error::ShaderLabError;
 use crate::source::{FileId, Span};
 
+/// Deeper nesting than any real shader needs; the limit keeps the recursive grammar off the end
+/// of the stack.
+pub const MAX_NESTING: usize = 64;
+
 pub(crate) fn scan(file: FileId, text: &str) -> (Vec<ShaderLabError>, Vec<ShaderLabError>) {
     let bytes = text.as_bytes();
+    let line_starts: Vec<usize> = std::iter::once(0)
+        .chain(bytes.iter().enumerate().filter(|(_, b)| **b == b'\n').map(|(i, _)| i + 1))
+        .collect();
+    let indentation = |at: usize| {
+        let start = line_starts[line_starts.partition_point(|&s| s <= at) - 1];
+        let indent = bytes[start..at].iter().take_while(|&&b| b == b' ' || b == b'\t').count();
+        // The indentation, and whether the brace is the first thing on its line.
+        (indent, start + indent == at)
+    };
     let mut errors = Vec::new();
     let mut braces = Vec::new();
     // Open braces: their offset and the indentation of their line.
@@ -45,14 +58,21 @@ pub(crate) fn scan(file: FileId, text: &str) -> (Vec<ShaderLabError>, Vec<Shader
                 i = j + 1;
             }
             b'{' => {
-                open.push((i, indentation(bytes, i)));
+                if open.len() == MAX_NESTING {
+                    errors.push(ShaderLabError::NestedTooDeep {
+                        span: Span::new(file, i..i + 1),
+                        limit: MAX_NESTING,
+                    });
+                    return (errors, braces);
+                }
+                open.push((i, indentation(i).0));
                 i += 1;
             }
             b'}' => {
                 match open.pop() {
                     Some((at, indent)) => {
-                        if misindented.is_none() && first_on_line(bytes, i) && indentation(bytes, i) != indent
-                        {
+                        let (close_indent, first_on_line) = indentation(i);
+                        if misindented.is_none() && first_on_line && close_indent != indent {
                             misindented = Some(at);
                         }
                     }
@@ -108,17 +128,4 @@ pub(crate) fn find_ignore_case(haystack: &str, needle: &str) -> Option<usize> {
 
 fn line_end(bytes: &[u8], from: usize) -> usize {
     bytes[from..].iter().position(|&b| b == b'\n').map_or(bytes.len(), |p| from + p)
-}
-
-fn line_start(bytes: &[u8], at: usize) -> usize {
-    bytes[..at].iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1)
-}
-
-fn indentation(bytes: &[u8], at: usize) -> usize {
-    let start = line_start(bytes, at);
-    bytes[start..at].iter().take_while(|&&b| b == b' ' || b == b'\t').count()
-}
-
-fn first_on_line(bytes: &[u8], at: usize) -> bool {
-    bytes[line_start(bytes, at)..at].iter().all(|&b| b == b' ' || b == b'\t')
 }
