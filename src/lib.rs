@@ -2,6 +2,7 @@
 
 pub mod diagnostics;
 pub mod listing;
+pub mod preprocess;
 pub mod project;
 pub mod shaderlab;
 pub mod shaderlib;
