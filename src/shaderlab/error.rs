@@ -12,7 +12,7 @@ pub enum ShaderLabError {
     UnclosedBrace { open: Span, likely: Option<Span> },
     UnmatchedCloseBrace { span: Span },
     NestedTooDeep { span: Span, limit: usize },
-    Syntax { span: Span, expected: Vec<String>, found: String, context: Option<(Span, String)> },
+    Syntax { span: Span, expected: Vec<String>, found: String },
     UnknownPropertyType { span: Span, found: String },
     RangeWithoutBounds { span: Span },
     RangeMinAboveMax { span: Span, min: f64, max: f64 },
@@ -73,7 +73,7 @@ impl From<ShaderLabError> for Diagnostic {
                     .at(span, "this `{` goes past the limit")
                     .note("the limit keeps pathological input from exhausting the parser's stack")
             }
-            Syntax { span, expected, found, context } => {
+            Syntax { span, expected, found } => {
                 let expected_text = match expected.as_slice() {
                     [] => "something else".to_string(),
                     [one] => one.clone(),
@@ -82,9 +82,6 @@ impl From<ShaderLabError> for Diagnostic {
                 let mut d = Diagnostic::error("K0106", format!("expected {expected_text}, found {found}"))
                     .at(span, format!("expected {expected_text}"))
                     .note("ShaderLab syntax errors stop the parse of this file at the first one");
-                if let Some((span, what)) = context {
-                    d = d.label(span, format!("in this {what}"));
-                }
                 let word = found.trim_matches('`');
                 if expected.iter().any(|e| e == "`}`") && word.starts_with(|c: char| c.is_ascii_alphabetic())
                 {

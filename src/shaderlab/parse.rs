@@ -106,7 +106,7 @@ fn syntax_error(file: FileId, text: &str, error: pest::error::Error<Rule>) -> Sh
     let found_len = token_len(&text[at..]);
     let found =
         if at >= text.len() { "end of file".to_string() } else { format!("`{}`", &text[at..at + found_len]) };
-    ShaderLabError::Syntax { span: Span::new(file, at..at + found_len), expected, found, context: None }
+    ShaderLabError::Syntax { span: Span::new(file, at..at + found_len), expected, found }
 }
 
 fn token_len(rest: &str) -> usize {
