@@ -645,8 +645,6 @@ impl Builder {
     fn render_command(&mut self, pair: P) -> Option<RenderCommand> {
         let span = self.span(&pair);
         let rule = pair.as_rule();
-        let keyword =
-            pair.as_str().split(|c: char| !c.is_ascii_alphanumeric()).next().unwrap_or("").to_string();
         let mut inner = pair.into_inner();
         inner.next(); // the keyword
         let mut rest: Vec<P> = inner.collect();
@@ -735,7 +733,7 @@ impl Builder {
                 RenderCommandKind::Stencil(entries.into_iter().collect::<Option<Vec<_>>>()?)
             }
             _ => {
-                debug_assert!(false, "unhandled render command {keyword}");
+                debug_assert!(false, "unhandled render command {rule:?}");
                 return None;
             }
         };

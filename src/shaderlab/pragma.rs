@@ -334,7 +334,6 @@ fn pragma_lines(block: &ProgramBlock) -> Vec<PragmaLine> {
         offset += raw.len();
         // Tokens of this line with their offsets, comments removed.
         let mut tokens: Vec<(usize, &str)> = Vec::new();
-        let mut code = String::new();
         let bytes = raw.as_bytes();
         let mut i = 0;
         let mut token_start: Option<usize> = None;
@@ -366,12 +365,10 @@ fn pragma_lines(block: &ProgramBlock) -> Vec<PragmaLine> {
                     i += 2;
                     continue;
                 }
-                code.push(' ');
             } else {
                 if token_start.is_none() {
                     token_start = Some(i);
                 }
-                code.push(bytes[i] as char);
             }
             i += 1;
         }

@@ -121,7 +121,7 @@ fn program_opening(word: &str) -> Option<(ProgramLanguage, bool)> {
     })
 }
 
-pub(crate) fn find_ignore_case(haystack: &str, needle: &str) -> Option<usize> {
+fn find_ignore_case(haystack: &str, needle: &str) -> Option<usize> {
     let (h, n) = (haystack.as_bytes(), needle.as_bytes());
     (0..h.len().saturating_sub(n.len() - 1)).find(|&i| h[i..i + n.len()].eq_ignore_ascii_case(n))
 }

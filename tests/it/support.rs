@@ -25,7 +25,8 @@ pub fn fixture_files(folder: &str, extension: &str) -> Vec<PathBuf> {
 
 /// Loads relative paths into a store, from the repository root.
 pub fn load(paths: &[PathBuf]) -> (SourceStore, Vec<FileId>, Vec<Diagnostic>) {
-    let _cwd = CwdGuard::root();
+    // Fixture paths are relative: cargo runs integration tests from the package root.
+    assert_eq!(std::env::current_dir().expect("cwd"), root(), "tests run from the package root");
     let mut store = SourceStore::new();
     let (ids, diagnostics) = kiln::project::load_files(&mut store, paths);
     (store, ids, diagnostics)
@@ -39,15 +40,4 @@ pub fn kiln(args: &[&str]) -> Output {
         .env("NO_COLOR", "1")
         .output()
         .expect("kiln binary runs")
-}
-
-/// Relative fixture paths resolve against the root whatever the test runner's directory.
-struct CwdGuard;
-
-impl CwdGuard {
-    fn root() -> CwdGuard {
-        // cargo runs integration tests from the package root already; this only asserts it.
-        assert_eq!(std::env::current_dir().expect("cwd"), root(), "tests run from the package root");
-        CwdGuard
-    }
 }
