@@ -58,7 +58,15 @@ fn parse(c: &mut Criterion) {
             parsed
         })
     });
-    group.bench_function("list_shaders", |b| b.iter(|| kiln::listing::list_shaders(&store, &[file])));
+    group.bench_function("list_shaders", |b| {
+        b.iter(|| {
+            kiln::listing::list_shaders(
+                &mut store,
+                &mut kiln::preprocess::Includes::new(kiln::preprocess::IncludeConfig::new(Vec::new())),
+                &[file],
+            )
+        })
+    });
     group.finish();
 }
 

@@ -1,6 +1,8 @@
 //! kiln: a shader-variant compiler and keyword system for Rust renderers.
 
+pub mod compile;
 pub mod diagnostics;
+pub mod keywords;
 pub mod listing;
 pub mod preprocess;
 pub mod project;

@@ -1,10 +1,11 @@
 //! The `kiln list` report: what each shader's passes declare, as data with its own serde schema,
 //! rendered as text here and as JSON by serde.
 
-use crate::diagnostics::Diagnostic;
+use crate::diagnostics::{self, Diagnostic};
+use crate::preprocess::{Includes, load_pass};
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
 use crate::shaderlab::parse_shader;
-use crate::shaderlab::pragma::{KeywordScope, KeywordSet, ProgramPragmas, collect_pragmas};
+use crate::shaderlab::pragma::{KeywordScope, KeywordSet, PragmaSource, ProgramPragmas, collect_pragmas};
 use crate::source::{FileId, SourceStore};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -54,69 +55,93 @@ pub struct KeywordSetListing {
     pub shorthand: Option<&'static str>,
 }
 
-/// Parses the files and lists what they declare. Diagnostics come back in file order.
-pub fn list_shaders(store: &SourceStore, files: &[FileId]) -> (Listing, Vec<Diagnostic>) {
+/// Parses the files and lists what they declare. WGSL programs are loaded with their includes,
+/// whose `#include_with_pragmas` pragmas count. Diagnostics come back in file order.
+pub fn list_shaders(
+    store: &mut SourceStore,
+    includes: &mut Includes,
+    files: &[FileId],
+) -> (Listing, Vec<Diagnostic>) {
     let mut shaders = Vec::new();
     let mut diagnostics = Vec::new();
     for &file in files {
         let parsed = parse_shader(store, file);
         diagnostics.extend(parsed.diagnostics);
         if let Some(shader) = parsed.shader {
-            shaders.push(list_shader(store, file, &shader, &mut diagnostics));
+            let mut lister =
+                Lister { store: &mut *store, includes: &mut *includes, diagnostics: &mut diagnostics };
+            shaders.push(lister.shader(file, &shader));
         }
     }
-    // Include blocks are shared by passes: report each of their problems once.
-    let mut seen = Vec::new();
-    diagnostics.retain(|d| {
-        let key = (d.code, d.primary.as_ref().map(|l| l.span));
-        let fresh = !seen.contains(&key);
-        seen.push(key);
-        fresh
-    });
+    // Include blocks and files are shared by passes: report each of their problems once.
+    diagnostics::dedup(&mut diagnostics);
     (Listing { shaders }, diagnostics)
 }
 
-fn list_shader(
-    store: &SourceStore,
-    file: FileId,
-    shader: &Shader,
-    diagnostics: &mut Vec<Diagnostic>,
-) -> ShaderListing {
-    let mut passes = Vec::new();
-    for (si, sub) in shader.subshaders.iter().enumerate() {
-        // Surface programs come first, as Unity generates their passes ahead of explicit ones.
-        let surface_programs = sub.programs.iter().filter(|p| !p.is_include);
-        for (index, program) in surface_programs.clone().enumerate() {
-            let listing = program_listing(shader, sub, std::slice::from_ref(program), diagnostics);
-            passes.push(PassListing {
-                subshader: si,
-                pass: index,
-                kind: "surface_program",
-                name: None,
-                tags: tags(&sub.state),
-                program: Some(listing),
-            });
+struct Lister<'a> {
+    store: &'a mut SourceStore,
+    includes: &'a mut Includes,
+    diagnostics: &'a mut Vec<Diagnostic>,
+}
+
+impl Lister<'_> {
+    fn shader(&mut self, file: FileId, shader: &Shader) -> ShaderListing {
+        let mut passes = Vec::new();
+        for (si, sub) in shader.subshaders.iter().enumerate() {
+            // Surface programs come first, as Unity generates their passes ahead of explicit ones.
+            let surface_programs = sub.programs.iter().filter(|p| !p.is_include);
+            for (index, program) in surface_programs.clone().enumerate() {
+                let listing = self.program(shader, sub, std::slice::from_ref(program));
+                passes.push(PassListing {
+                    subshader: si,
+                    pass: index,
+                    kind: "surface_program",
+                    name: None,
+                    tags: tags(&sub.state),
+                    program: Some(listing),
+                });
+            }
+            let first_pass = surface_programs.count();
+            for (pi, item) in sub.passes.iter().enumerate() {
+                let (kind, name, tags, program) = match item {
+                    PassItem::Pass(pass) => {
+                        let program =
+                            (!pass.programs.is_empty()).then(|| self.program(shader, sub, &pass.programs));
+                        (
+                            "pass",
+                            pass.state.name.as_ref().map(|n| n.value.clone()),
+                            tags(&pass.state),
+                            program,
+                        )
+                    }
+                    PassItem::UsePass(name) => ("use_pass", Some(name.value.clone()), Vec::new(), None),
+                    PassItem::GrabPass(grab) => (
+                        "grab_pass",
+                        grab.name.as_ref().or(grab.texture.as_ref()).map(|n| n.value.clone()),
+                        grab.tags.iter().map(|t| (t.key.value.clone(), t.value.value.clone())).collect(),
+                        None,
+                    ),
+                };
+                passes.push(PassListing { subshader: si, pass: first_pass + pi, kind, name, tags, program });
+            }
         }
-        let first_pass = surface_programs.count();
-        for (pi, item) in sub.passes.iter().enumerate() {
-            let (kind, name, tags, program) = match item {
-                PassItem::Pass(pass) => {
-                    let program = (!pass.programs.is_empty())
-                        .then(|| program_listing(shader, sub, &pass.programs, diagnostics));
-                    ("pass", pass.state.name.as_ref().map(|n| n.value.clone()), tags(&pass.state), program)
-                }
-                PassItem::UsePass(name) => ("use_pass", Some(name.value.clone()), Vec::new(), None),
-                PassItem::GrabPass(grab) => (
-                    "grab_pass",
-                    grab.name.as_ref().or(grab.texture.as_ref()).map(|n| n.value.clone()),
-                    grab.tags.iter().map(|t| (t.key.value.clone(), t.value.value.clone())).collect(),
-                    None,
-                ),
-            };
-            passes.push(PassListing { subshader: si, pass: first_pass + pi, kind, name, tags, program });
-        }
+        ShaderListing { name: shader.name.value.clone(), file: self.store.name(file).to_string(), passes }
     }
-    ShaderListing { name: shader.name.value.clone(), file: store.name(file).to_string(), passes }
+
+    fn program(&mut self, shader: &Shader, sub: &SubShader, programs: &[ProgramBlock]) -> ProgramListing {
+        let blocks = program_blocks(shader, sub, programs);
+        let language = programs.first().map_or(ProgramLanguage::Wgsl, |p| p.language);
+        let pragmas = if language == ProgramLanguage::Wgsl {
+            let (pass, diagnostics) = load_pass(self.includes, self.store, &blocks);
+            self.diagnostics.extend(diagnostics);
+            pass.pragmas
+        } else {
+            let (pragmas, errors) = collect_pragmas(blocks.into_iter().map(PragmaSource::from));
+            self.diagnostics.extend(errors);
+            pragmas
+        };
+        program_from_pragmas(language.name(), &pragmas)
+    }
 }
 
 fn tags(state: &StateBlock) -> Vec<(String, String)> {
@@ -138,23 +163,6 @@ pub fn program_blocks<'a>(
         .filter(|p| p.language == language)
         .chain(programs)
         .collect()
-}
-
-fn program_listing(
-    shader: &Shader,
-    sub: &SubShader,
-    programs: &[ProgramBlock],
-    diagnostics: &mut Vec<Diagnostic>,
-) -> ProgramListing {
-    let (pragmas, errors) = collect_pragmas(program_blocks(shader, sub, programs));
-    diagnostics.extend(errors);
-    let language = match programs.first().map(|p| p.language) {
-        Some(ProgramLanguage::Hlsl) => "hlsl",
-        Some(ProgramLanguage::Cg) => "cg",
-        Some(ProgramLanguage::Glsl) => "glsl",
-        _ => "wgsl",
-    };
-    program_from_pragmas(language, &pragmas)
 }
 
 fn program_from_pragmas(language: &'static str, pragmas: &ProgramPragmas) -> ProgramListing {

@@ -3,6 +3,8 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use kiln::diagnostics::{self, Diagnostic};
+use kiln::preprocess::{Includes, Stage};
+use kiln::project::VariantRequest;
 use kiln::source::SourceStore;
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -24,6 +26,26 @@ enum Command {
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
     },
+    /// Print the WGSL the compiler sees for one variant of one pass: includes spliced,
+    /// conditionals resolved, macros substituted.
+    Preprocess {
+        /// The `.shader` file.
+        shader: PathBuf,
+        /// Pass name (case-insensitive) or 0-based index; default: the first pass with a program.
+        #[arg(long)]
+        pass: Option<String>,
+        /// The variant's keywords, comma-separated. Sets without `_` default to their first keyword.
+        #[arg(long, value_delimiter = ',')]
+        keywords: Vec<String>,
+        #[arg(long, value_enum, default_value_t = StageArg::Fragment)]
+        stage: StageArg,
+    },
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum StageArg {
+    Vertex,
+    Fragment,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -36,6 +58,27 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::List { paths, format } => list(paths, format),
+        Command::Preprocess { shader, pass, keywords, stage } => {
+            let stage = match stage {
+                StageArg::Vertex => Stage::Vertex,
+                StageArg::Fragment => Stage::Fragment,
+            };
+            preprocess(&VariantRequest { shader, pass, keywords, stage })
+        }
+    }
+}
+
+fn preprocess(request: &VariantRequest) -> ExitCode {
+    let mut store = SourceStore::new();
+    match kiln::project::preprocess_variant(&mut store, request) {
+        Ok((output, problems)) => {
+            if let Some(output) = output {
+                print_out(&output.text);
+            }
+            report(&store, &problems);
+            exit_code(&problems)
+        }
+        Err(error) => usage_failure(&error.to_string()),
     }
 }
 
@@ -46,8 +89,9 @@ fn list(paths: Vec<PathBuf>, format: Format) -> ExitCode {
         Err(error) => return usage_failure(&error.to_string()),
     };
     let mut store = SourceStore::new();
+    let mut includes = Includes::new(kiln::project::include_config(&paths));
     let (ids, mut problems) = kiln::project::load_files(&mut store, &files);
-    let (listing, diagnostics) = kiln::listing::list_shaders(&store, &ids);
+    let (listing, diagnostics) = kiln::listing::list_shaders(&mut store, &mut includes, &ids);
     problems.extend(diagnostics);
     match format {
         Format::Text => {

@@ -1,7 +1,13 @@
-//! Finding and loading a project's files. This is the only place besides [`SourceStore`] that
-//! touches the file system: stages get file ids, never paths.
+//! A project: finding and loading its files, and running the stages over them for the CLI and
+//! build scripts. This is the only place besides [`SourceStore`] that touches the file system:
+//! stages get file ids, never paths.
 
-use crate::diagnostics::Diagnostic;
+use crate::diagnostics::{self, Diagnostic};
+use crate::keywords::{VariantError, select_variant, stage_keywords};
+use crate::listing::program_blocks;
+use crate::preprocess::{IncludeConfig, Includes, Preprocessed, Stage, load_pass, preprocess};
+use crate::shaderlab::ast::ProgramLanguage;
+use crate::shaderlab::parse_shader;
 use crate::source::{FileId, LoadError, SourceStore};
 use std::path::{Path, PathBuf};
 
@@ -12,6 +18,56 @@ pub enum ProjectError {
     NotFound(PathBuf),
     #[error("cannot walk `{path}`: {message}")]
     Walk { path: PathBuf, message: String },
+    #[error("{0}")]
+    Load(#[from] LoadError),
+    #[error("`{shader}` has no pass {}", selector.as_ref().map_or("with a program".to_string(), |s| format!("`{s}`")))]
+    PassNotFound { shader: String, selector: Option<String> },
+    #[error("the pass's program is {language}: only WGSL programs are preprocessed and compiled")]
+    NotWgsl { language: &'static str },
+    #[error(transparent)]
+    Variant(#[from] VariantError),
+}
+
+/// One variant of one pass, as `kiln preprocess` asks for it.
+#[derive(Debug, Clone)]
+pub struct VariantRequest {
+    pub shader: PathBuf,
+    /// Pass name or index (see [`Shader::find_pass`](crate::shaderlab::ast::Shader::find_pass)).
+    pub pass: Option<String>,
+    pub keywords: Vec<String>,
+    pub stage: Stage,
+}
+
+/// Preprocesses one variant of one pass. `Err` is a request that names nothing (exit code 2);
+/// mistakes in the files are diagnostics, and the text is `None` when any of them is an error.
+pub fn preprocess_variant(
+    store: &mut SourceStore,
+    request: &VariantRequest,
+) -> Result<(Option<Preprocessed>, Vec<Diagnostic>), ProjectError> {
+    let file = store.load(&request.shader)?;
+    let parsed = parse_shader(store, file);
+    let mut diagnostics = parsed.diagnostics;
+    let Some(shader) = parsed.shader else { return Ok((None, diagnostics)) };
+    let not_found =
+        || ProjectError::PassNotFound { shader: shader.name.value.clone(), selector: request.pass.clone() };
+    let (sub, pass) = shader.find_pass(request.pass.as_deref()).ok_or_else(not_found)?;
+    let language = pass.programs.first().ok_or_else(not_found)?.language;
+    if language != ProgramLanguage::Wgsl {
+        return Err(ProjectError::NotWgsl { language: language.name() });
+    }
+    let mut includes = Includes::new(include_config(std::slice::from_ref(&request.shader)));
+    let (program, loaded) = load_pass(&mut includes, store, &program_blocks(&shader, sub, &pass.programs));
+    diagnostics.extend(loaded);
+    let sets = program.pragmas.variant_sets();
+    let keywords = select_variant(&sets, &request.keywords)?;
+    if diagnostics::has_errors(&diagnostics) {
+        return Ok((None, diagnostics));
+    }
+    let keywords = stage_keywords(&sets, &keywords, request.stage);
+    let output = preprocess(&includes, store, &program.program, &keywords, request.stage);
+    diagnostics.extend(output.diagnostics.iter().cloned());
+    let ok = !diagnostics::has_errors(&output.diagnostics);
+    Ok((ok.then_some(output), diagnostics))
 }
 
 /// The example project bundled with kiln, used when no path is given; relative to the working
@@ -22,6 +78,17 @@ pub fn bundled_example() -> PathBuf {
         .ok()
         .and_then(|cwd| absolute.strip_prefix(cwd).ok().map(Path::to_path_buf))
         .unwrap_or(absolute)
+}
+
+/// Where includes may come from for shaders found under `paths`: each folder given (or the folder
+/// of each file given) is a root, searched after the including file's own folder.
+pub fn include_config(paths: &[PathBuf]) -> IncludeConfig {
+    let roots = paths
+        .iter()
+        .map(|p| if p.is_dir() { p.clone() } else { p.parent().map(Path::to_path_buf).unwrap_or_default() })
+        .map(|p| if p.as_os_str().is_empty() { PathBuf::from(".") } else { p })
+        .collect();
+    IncludeConfig::new(roots)
 }
 
 /// Every `.shader` file under the given files and folders, in a stable (sorted) order. A file

@@ -4,8 +4,9 @@
 //! it read (so a build script can print `rerun-if-changed` for exactly those), and diagnostics find
 //! line and column through it.
 
+use std::collections::HashMap;
 use std::ops::Range;
-use std::path::{Path, PathBuf};
+use std::path::{Component, Path, PathBuf};
 
 /// Index of a file inside a [`SourceStore`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -48,6 +49,27 @@ impl<T> Spanned<T> {
     }
 }
 
+/// Removes `.` components and folds `a/..` without touching the file system, so that names in
+/// diagnostics read as the user wrote them (`shaders/../lib/x.wgsl` becomes `lib/x.wgsl`).
+pub fn normalize_lexically(path: &Path) -> PathBuf {
+    let mut out = PathBuf::new();
+    for component in path.components() {
+        match component {
+            Component::CurDir => {}
+            Component::ParentDir => {
+                let last_is_normal = matches!(out.components().next_back(), Some(Component::Normal(_)));
+                if last_is_normal {
+                    out.pop();
+                } else if !matches!(out.components().next_back(), Some(Component::RootDir)) {
+                    out.push("..");
+                }
+            }
+            other => out.push(other),
+        }
+    }
+    out
+}
+
 /// 1-based line and column (in characters) of a byte offset.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct LineCol {
@@ -75,6 +97,8 @@ struct SourceFile {
 #[derive(Default)]
 pub struct SourceStore {
     files: Vec<SourceFile>,
+    /// Files loaded through [`SourceStore::load_once`], by canonical path.
+    by_canonical_path: HashMap<PathBuf, FileId>,
 }
 
 impl SourceStore {
@@ -99,6 +123,23 @@ impl SourceStore {
         Ok(self.push(name, Some(path.to_path_buf()), text))
     }
 
+    /// The canonical path of an existing regular file (symlinks resolved), or `None` when there is
+    /// no such file. Include resolution asks this before deciding where a name points.
+    pub fn canonical_file(&self, path: &Path) -> Option<PathBuf> {
+        let canonical = std::fs::canonicalize(path).ok()?;
+        canonical.is_file().then_some(canonical)
+    }
+
+    /// Loads a file once: a second call with the same canonical path returns the first id.
+    pub fn load_once(&mut self, path: &Path, canonical: PathBuf) -> Result<FileId, LoadError> {
+        if let Some(&id) = self.by_canonical_path.get(&canonical) {
+            return Ok(id);
+        }
+        let id = self.load(path)?;
+        self.by_canonical_path.insert(canonical, id);
+        Ok(id)
+    }
+
     fn push(&mut self, name: String, path: Option<PathBuf>, text: String) -> FileId {
         let line_starts = codespan_reporting::files::line_starts(&text).collect();
         let id = FileId(self.files.len() as u32);
@@ -113,6 +154,11 @@ impl SourceStore {
     /// The name diagnostics show for the file: its path as given, with `/` separators.
     pub fn name(&self, file: FileId) -> &str {
         &self.files[file.0 as usize].name
+    }
+
+    /// The path a file was read from (`None` for text added in memory).
+    pub fn path(&self, file: FileId) -> Option<&Path> {
+        self.files[file.0 as usize].path.as_deref()
     }
 
     /// The text a span covers.
@@ -181,6 +227,15 @@ impl<'a> codespan_reporting::files::Files<'a> for SourceStore {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn lexical_normalisation_folds_dots() {
+        let n = |p: &str| normalize_lexically(Path::new(p)).to_string_lossy().replace('\\', "/");
+        assert_eq!(n("a/./b/../c.wgsl"), "a/c.wgsl");
+        assert_eq!(n("../x/../y"), "../y");
+        assert_eq!(n("a/../../b"), "../b");
+        assert_eq!(n("/../a"), "/a");
+    }
 
     #[test]
     fn line_col_counts_characters_not_bytes() {

@@ -1,4 +1,75 @@
-//! The WGSL preprocessor: `#include`, `#define`, conditionals, macro substitution and a source
-//! map back to the original files. So far: the `#if` expression evaluator.
+//! The WGSL preprocessor: `#include`, `#define`, conditionals and macro substitution, with a
+//! source map from every output byte back to its original file.
+//!
+//! Work is split in two so that variants cost little: [`Includes::load_program`] finds and scans
+//! every file a pass can include, once, whatever the keywords (this is the only part that reads
+//! files, through the [`SourceStore`]); [`preprocess`] then walks those scans for one variant and
+//! stage, without I/O, so variants can run in parallel.
 
+mod analysis;
+mod error;
 pub mod expr;
+mod include;
+mod pass;
+mod run;
+mod scan;
+mod source_map;
+
+pub use error::PreprocessError;
+pub use include::{IncludeConfig, Includes, LIBRARY_PREFIX, Program};
+pub use pass::{PassProgram, load_pass};
+pub use run::MAX_INCLUDE_DEPTH;
+pub use scan::MAX_CONDITIONAL_DEPTH;
+pub use source_map::{Origin, SourceMap};
+
+use crate::diagnostics::Diagnostic;
+use crate::source::SourceStore;
+
+/// The stage a text is preprocessed for. Its macro (`SHADER_STAGE_VERTEX` or
+/// `SHADER_STAGE_FRAGMENT`) is defined, as Unity does.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Stage {
+    Vertex,
+    Fragment,
+}
+
+impl Stage {
+    pub fn macro_name(self) -> &'static str {
+        match self {
+            Stage::Vertex => "SHADER_STAGE_VERTEX",
+            Stage::Fragment => "SHADER_STAGE_FRAGMENT",
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Stage::Vertex => "vertex",
+            Stage::Fragment => "fragment",
+        }
+    }
+}
+
+/// Macros kiln defines itself, which keyword analysis must not call undeclared.
+pub const BUILTIN_MACROS: [&str; 2] = ["SHADER_STAGE_VERTEX", "SHADER_STAGE_FRAGMENT"];
+
+/// One variant's spliced WGSL.
+#[derive(Debug, Clone)]
+pub struct Preprocessed {
+    pub text: String,
+    pub source_map: SourceMap,
+    /// `#error`, `#warning`, failed includes and expression errors met on this variant's path,
+    /// each with its "included from" chain.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// Preprocesses `program` for one variant: `keywords` are defined (as `1`), as is the stage's
+/// macro. `includes` must be the set the program was loaded into.
+pub fn preprocess(
+    includes: &Includes,
+    store: &SourceStore,
+    program: &Program,
+    keywords: &[&str],
+    stage: Stage,
+) -> Preprocessed {
+    run::run(includes, store, program, keywords, stage)
+}

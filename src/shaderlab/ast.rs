@@ -326,6 +326,16 @@ pub enum ProgramLanguage {
 }
 
 impl ProgramLanguage {
+    /// Lowercase name, as listings show it.
+    pub fn name(self) -> &'static str {
+        match self {
+            ProgramLanguage::Wgsl => "wgsl",
+            ProgramLanguage::Hlsl => "hlsl",
+            ProgramLanguage::Cg => "cg",
+            ProgramLanguage::Glsl => "glsl",
+        }
+    }
+
     /// The keyword that opens a program of this language (`WGSLPROGRAM`, `CGINCLUDE`, ...).
     pub fn open_keyword(self, include: bool) -> &'static str {
         match (self, include) {
@@ -430,6 +440,22 @@ impl Shader {
                 _ => None,
             })
         })
+    }
+
+    /// The pass a user named: by its `Name` (case-insensitive, as Unity's `UsePass` matches) or
+    /// by its 0-based index in [`Shader::passes`]; with no selector, the first pass with a
+    /// program.
+    pub fn find_pass(&self, selector: Option<&str>) -> Option<(&SubShader, &Pass)> {
+        let mut passes = self.passes().map(|(_, sub, _, pass)| (sub, pass));
+        match selector {
+            None => passes.find(|(_, pass)| !pass.programs.is_empty()),
+            Some(selector) => match selector.parse::<usize>() {
+                Ok(index) => passes.nth(index),
+                Err(_) => passes.find(|(_, pass)| {
+                    pass.state.name.as_ref().is_some_and(|n| n.value.eq_ignore_ascii_case(selector))
+                }),
+            },
+        }
     }
 
     /// The property with this name.

@@ -3,7 +3,7 @@
 //! pest types never leave this module: callers get [`ast::Shader`] and diagnostics.
 
 pub mod ast;
-mod error;
+pub(crate) mod error;
 mod parse;
 pub mod pragma;
 mod scan;

@@ -306,14 +306,29 @@ struct PragmaLine {
     span: Span,
 }
 
-/// Collects the pragmas of the given blocks, in order (include blocks first, as Unity splices them).
+/// Where pragmas are read from: a program block's body, or an `#include_with_pragmas` file.
+#[derive(Debug, Clone, Copy)]
+pub struct PragmaSource<'a> {
+    /// The text's span in its file.
+    pub span: Span,
+    pub text: &'a str,
+}
+
+impl<'a> From<&'a ProgramBlock> for PragmaSource<'a> {
+    fn from(block: &'a ProgramBlock) -> PragmaSource<'a> {
+        PragmaSource { span: block.body_span, text: &block.body }
+    }
+}
+
+/// Collects the pragmas of the given sources, in order (include blocks first, as Unity splices
+/// them).
 pub fn collect_pragmas<'a>(
-    blocks: impl IntoIterator<Item = &'a ProgramBlock>,
+    sources: impl IntoIterator<Item = PragmaSource<'a>>,
 ) -> (ProgramPragmas, Vec<Diagnostic>) {
     let mut pragmas = ProgramPragmas::default();
     let mut errors = Vec::new();
-    for block in blocks {
-        for line in pragma_lines(block) {
+    for source in sources {
+        for line in pragma_lines(source) {
             apply(&mut pragmas, line, &mut errors);
         }
     }
@@ -322,10 +337,10 @@ pub fn collect_pragmas<'a>(
 }
 
 /// Finds `#pragma` lines in a program body, skipping comments and joining `\` continuations.
-fn pragma_lines(block: &ProgramBlock) -> Vec<PragmaLine> {
-    let body = &block.body;
-    let base = block.body_span.start as usize;
-    let file = block.body_span.file;
+fn pragma_lines(source: PragmaSource) -> Vec<PragmaLine> {
+    let body = source.text;
+    let base = source.span.start as usize;
+    let file = source.span.file;
     let mut lines = Vec::new();
     let mut in_block_comment = false;
     let mut offset = 0;

@@ -10,8 +10,10 @@ fn check(folder: &str, expect_errors: bool) {
     let files = fixture_files(folder, "shader");
     assert!(!files.is_empty());
     for path in files {
-        let (store, ids, mut diagnostics) = load(std::slice::from_ref(&path));
-        let (_, found) = kiln::listing::list_shaders(&store, &ids);
+        let (mut store, ids, mut diagnostics) = load(std::slice::from_ref(&path));
+        let mut includes =
+            kiln::preprocess::Includes::new(kiln::project::include_config(std::slice::from_ref(&path)));
+        let (_, found) = kiln::listing::list_shaders(&mut store, &mut includes, &ids);
         diagnostics.extend(found);
         assert_eq!(
             has_errors(&diagnostics),

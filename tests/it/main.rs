@@ -5,6 +5,7 @@ mod bad;
 mod cli;
 mod list;
 mod parse;
+mod preprocess;
 mod robustness;
 mod support;
 mod tidy;

@@ -248,11 +248,11 @@ fn placeholder_may_come_last() {
         .passes()
         .find(|(_, _, _, p)| p.state.name.as_ref().is_some_and(|n| n.value == "FORWARD"))
         .expect("FORWARD");
-    let (pragmas, diagnostics) = kiln::shaderlab::pragma::collect_pragmas(kiln::listing::program_blocks(
-        &shader,
-        sub,
-        &forward.programs,
-    ));
+    let (pragmas, diagnostics) = kiln::shaderlab::pragma::collect_pragmas(
+        kiln::listing::program_blocks(&shader, sub, &forward.programs)
+            .into_iter()
+            .map(kiln::shaderlab::pragma::PragmaSource::from),
+    );
     assert!(diagnostics.is_empty());
     let toon =
         pragmas.keyword_sets.iter().find(|s| s.keywords().any(|k| k == "_TOON_RAMP")).expect("toon set");

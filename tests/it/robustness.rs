@@ -6,7 +6,11 @@ use proptest::prelude::*;
 fn list_text(text: &str) {
     let mut store = SourceStore::new();
     let file = store.add("fuzz.shader", text);
-    let (_, diagnostics) = kiln::listing::list_shaders(&store, &[file]);
+    let (_, diagnostics) = kiln::listing::list_shaders(
+        &mut store,
+        &mut kiln::preprocess::Includes::new(kiln::preprocess::IncludeConfig::new(Vec::new())),
+        &[file],
+    );
     // Rendering walks every span: a span outside its file would fail here.
     let _ = kiln::diagnostics::render_plain(&store, &diagnostics);
     let _ = kiln::diagnostics::to_json(&store, &diagnostics);

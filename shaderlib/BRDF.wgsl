@@ -1,0 +1,64 @@
+// BRDF.wgsl: the metallic workflow split into diffuse and specular colours, and the minimal
+// Cook-Torrance specular term Unity's Universal RP uses.
+#ifndef KILN_BRDF_INCLUDED
+#define KILN_BRDF_INCLUDED
+
+#include "Common.wgsl"
+#include "Surface.wgsl"
+#include "Light.wgsl"
+
+// Dielectrics still reflect about 4% of light specularly.
+#define MIN_REFLECTIVITY 0.04
+
+struct BRDF {
+    diffuse: vec3<f32>,
+    specular: vec3<f32>,
+    roughness: f32,
+}
+
+// Maps metallic 0..1 to a diffuse share of 0.96..0, so that no surface loses its highlight.
+fn OneMinusReflectivity(metallic: f32) -> f32 {
+    let range = 1.0 - MIN_REFLECTIVITY;
+    return range - metallic * range;
+}
+
+fn PerceptualSmoothnessToPerceptualRoughness(smoothness: f32) -> f32 {
+    return 1.0 - smoothness;
+}
+
+// Disney's mapping: perceptual roughness is squared.
+fn PerceptualRoughnessToRoughness(perceptualRoughness: f32) -> f32 {
+    return perceptualRoughness * perceptualRoughness;
+}
+
+// With `applyAlphaToDiffuse` the diffuse part is premultiplied by alpha (glass-like blending that
+// keeps the specular highlight); blending with `One`/`OneMinusSrcAlpha` then expects it.
+fn GetBRDF(surface: Surface, applyAlphaToDiffuse: bool) -> BRDF {
+    var brdf: BRDF;
+    let oneMinusReflectivity = OneMinusReflectivity(surface.metallic);
+    brdf.diffuse = surface.color * oneMinusReflectivity;
+    if (applyAlphaToDiffuse) {
+        brdf.diffuse *= surface.alpha;
+    }
+    brdf.specular = mix(vec3<f32>(MIN_REFLECTIVITY), surface.color, surface.metallic);
+    let perceptualRoughness = PerceptualSmoothnessToPerceptualRoughness(surface.smoothness);
+    brdf.roughness = PerceptualRoughnessToRoughness(perceptualRoughness);
+    return brdf;
+}
+
+// r^2 / (d^2 * max(0.1, (L.H)^2) * (4r + 2)) with d = (N.H)^2 (r^2 - 1) + 1.00001.
+fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
+    let h = SafeNormalize(light.direction + surface.viewDirection);
+    let nh2 = Square(saturate(dot(surface.normal, h)));
+    let lh2 = Square(saturate(dot(light.direction, h)));
+    let r2 = Square(brdf.roughness);
+    let d2 = Square(nh2 * (r2 - 1.0) + 1.00001);
+    let normalization = brdf.roughness * 4.0 + 2.0;
+    return r2 / (d2 * max(0.1, lh2) * normalization);
+}
+
+fn DirectBRDF(surface: Surface, brdf: BRDF, light: Light) -> vec3<f32> {
+    return SpecularStrength(surface, brdf, light) * brdf.specular + brdf.diffuse;
+}
+
+#endif

@@ -1,0 +1,62 @@
+//! Keyword sets and variants: which keywords a variant may have, given a pass's declared sets.
+//! (Enumeration from materials comes with the materials work.)
+
+use crate::preprocess::Stage;
+use crate::shaderlab::pragma::{KeywordSet, KeywordStage};
+
+/// Why a requested keyword combination is not a variant of the pass.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum VariantError {
+    #[error("`{keyword}` is not a keyword of this pass{}", suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default())]
+    Undeclared { keyword: String, suggestion: Option<String> },
+    #[error("`{first}` and `{second}` belong to the same keyword set: a variant has at most one of them")]
+    SameSet { first: String, second: String },
+}
+
+/// The keywords of the variant a user asked for: each requested keyword checked against the
+/// sets that make variants ([`ProgramPragmas::variant_sets`](crate::shaderlab::pragma::ProgramPragmas::variant_sets)), and every set without an off option (`_`) that got none set to its first
+/// keyword, which is the variant Unity builds by default. Sorted by set order.
+pub fn select_variant(sets: &[KeywordSet], requested: &[String]) -> Result<Vec<String>, VariantError> {
+    let mut chosen: Vec<Option<&str>> = vec![None; sets.len()];
+    for keyword in requested {
+        let Some(index) = sets.iter().position(|s| s.keywords().any(|k| k == keyword)) else {
+            let suggestion = sets
+                .iter()
+                .flat_map(KeywordSet::keywords)
+                .map(|k| (strsim::damerau_levenshtein(k, keyword), k))
+                .filter(|&(distance, _)| distance <= 2)
+                .min()
+                .map(|(_, k)| k.to_string());
+            return Err(VariantError::Undeclared { keyword: keyword.clone(), suggestion });
+        };
+        match chosen[index] {
+            Some(first) if first != keyword => {
+                return Err(VariantError::SameSet { first: first.to_string(), second: keyword.clone() });
+            }
+            _ => chosen[index] = Some(keyword),
+        }
+    }
+    let keywords = sets.iter().zip(chosen).filter_map(|(set, chosen)| {
+        let default = || if set.has_off_option() { None } else { set.keywords().next() };
+        chosen.or_else(default).map(str::to_string)
+    });
+    Ok(keywords.collect())
+}
+
+/// The keywords of a variant that are defined when preprocessing `stage`: a keyword declared with
+/// a stage suffix (`shader_feature_fragment`) exists only in that stage, so the other stage's
+/// text, and module, does not fork on it.
+pub fn stage_keywords<'a>(sets: &[KeywordSet], keywords: &'a [String], stage: Stage) -> Vec<&'a str> {
+    let affects = |set: &KeywordSet| match set.stage {
+        KeywordStage::All => true,
+        KeywordStage::Vertex => stage == Stage::Vertex,
+        KeywordStage::Fragment => stage == Stage::Fragment,
+        // Stages WGSL has no such stage for never see the keyword.
+        _ => false,
+    };
+    keywords
+        .iter()
+        .filter(|k| sets.iter().filter(|s| s.keywords().any(|d| d == k.as_str())).any(affects))
+        .map(String::as_str)
+        .collect()
+}

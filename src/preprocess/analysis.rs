@@ -1,0 +1,122 @@
+//! What a pass's spliced source says about its keywords, whatever the variant: where its pragmas
+//! come from, which keywords no `#if` tests, and which tested names nothing declares.
+
+use super::BUILTIN_MACROS;
+use super::error::PreprocessError;
+use super::include::{Includes, Program};
+use super::scan::{BranchKind, Condition, Item, identifiers};
+use crate::diagnostics::Diagnostic;
+use crate::shaderlab::pragma::{KeywordKind, PragmaSource, ProgramPragmas};
+use crate::source::{SourceStore, Span};
+use std::collections::HashSet;
+
+/// The texts whose `#pragma`s count for the pass: its blocks, then every file reached through
+/// `#include_with_pragmas` (as Unity counts them).
+pub(super) fn pragma_sources<'a>(
+    includes: &Includes,
+    store: &'a SourceStore,
+    program: &Program,
+) -> Vec<PragmaSource<'a>> {
+    includes
+        .reachable(program, true)
+        .into_iter()
+        .map(|unit| {
+            let unit = &includes.units[unit];
+            PragmaSource {
+                span: Span::new(unit.file, unit.range.clone()),
+                text: &store.text(unit.file)[unit.range.clone()],
+            }
+        })
+        .collect()
+}
+
+/// Warnings about the pass's keywords, from every file it can include:
+/// - a declared keyword that no `#if`, `#ifdef` or `#ifndef` tests only multiplies variants;
+/// - a name tested in the project's own files that no pragma declares and no `#define` defines
+///   is always off (often a misspelt keyword);
+/// - keyword pragmas in a file reached only through a plain `#include` do not count.
+pub(super) fn analyze_keywords(
+    includes: &Includes,
+    program: &Program,
+    pragmas: &ProgramPragmas,
+) -> Vec<Diagnostic> {
+    let reachable = includes.reachable(program, false);
+    let counted: HashSet<usize> = includes.reachable(program, true).into_iter().collect();
+    let mut tested: HashSet<&str> = HashSet::new();
+    let mut defined: HashSet<&str> = BUILTIN_MACROS.into_iter().collect();
+    // Tests in the project's own files, in source order, for the "never declared" warning.
+    let mut project_tests: Vec<(&str, Span)> = Vec::new();
+    let mut warnings = Vec::new();
+    for &id in &reachable {
+        let unit = &includes.units[id];
+        let in_project = !includes.is_library(id);
+        for item in &unit.items {
+            match item {
+                Item::Define { name, value, .. } => {
+                    defined.insert(name);
+                    // `#define USE_X defined(_X)` tests `_X` as surely as an `#if` does.
+                    tested.extend(identifiers(value).map(|(_, name)| name));
+                }
+                Item::Branch { kind: BranchKind::If(condition) | BranchKind::Elif(condition), .. } => {
+                    for (name, span) in condition_names(condition, unit.file) {
+                        tested.insert(name);
+                        if in_project {
+                            project_tests.push((name, span));
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+        if !counted.contains(&id) {
+            for (span, pragma) in &unit.keyword_pragmas {
+                warnings.push(PreprocessError::PragmaInPlainInclude { span: *span, pragma: pragma.clone() });
+            }
+        }
+    }
+
+    let mut declared: HashSet<&str> = HashSet::new();
+    for set in &pragmas.keyword_sets {
+        for option in &set.options {
+            let Some(keyword) = option.keyword.as_deref() else { continue };
+            // Dynamic-branch keywords are tested by `if` at run time, not by the preprocessor.
+            let first_declaration = declared.insert(keyword);
+            if first_declaration && set.kind != KeywordKind::DynamicBranch && !tested.contains(keyword) {
+                warnings.push(PreprocessError::KeywordNeverTested {
+                    span: option.span,
+                    keyword: keyword.to_string(),
+                });
+            }
+        }
+    }
+    let mut reported: HashSet<&str> = HashSet::new();
+    for (name, span) in project_tests {
+        if declared.contains(name) || defined.contains(name) || !reported.insert(name) {
+            continue;
+        }
+        let suggestion = declared
+            .iter()
+            .map(|k| (strsim::damerau_levenshtein(k, name), *k))
+            .filter(|&(distance, _)| distance <= 2)
+            .min()
+            .map(|(_, k)| k.to_string());
+        warnings.push(PreprocessError::KeywordNeverDeclared { span, name: name.to_string(), suggestion });
+    }
+    warnings.into_iter().map(Diagnostic::from).collect()
+}
+
+/// The macro names a condition tests, with their spans.
+fn condition_names(condition: &Condition, file: crate::source::FileId) -> Vec<(&str, Span)> {
+    match condition {
+        Condition::Defined { name, span } | Condition::NotDefined { name, span } => {
+            vec![(name.as_str(), *span)]
+        }
+        Condition::Expr { text, start } => identifiers(text)
+            .filter(|&(_, name)| name != "defined")
+            .map(|(offset, name)| {
+                let at = *start as usize + offset;
+                (name, Span::new(file, at..at + name.len()))
+            })
+            .collect(),
+    }
+}

@@ -1,0 +1,230 @@
+//! Every mistake the preprocessor reports, as a typed enum turned into diagnostics here.
+
+use crate::diagnostics::Diagnostic;
+use crate::shaderlab::error::one_of;
+use crate::source::Span;
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum PreprocessError {
+    IncludeNotFound {
+        span: Span,
+        name: String,
+        searched: Vec<String>,
+    },
+    /// `chain` runs from the file that includes itself again, through each include, back to it.
+    IncludeCycle {
+        span: Span,
+        chain: Vec<String>,
+    },
+    IncludeTooDeep {
+        span: Span,
+        limit: usize,
+    },
+    IncludeOutsideRoots {
+        span: Span,
+        name: String,
+        resolved: String,
+    },
+    IncludeUnreadable {
+        span: Span,
+        name: String,
+        reason: String,
+    },
+    UnterminatedConditional {
+        open: Span,
+        directive: String,
+    },
+    StrayConditional {
+        span: Span,
+        directive: String,
+    },
+    BranchAfterElse {
+        span: Span,
+        directive: String,
+        else_span: Span,
+    },
+    ConditionalTooDeep {
+        span: Span,
+        limit: usize,
+    },
+    MalformedExpression {
+        span: Span,
+        expected: &'static str,
+    },
+    DivisionByZero {
+        span: Span,
+    },
+    ExpansionTooDeep {
+        span: Span,
+        name: String,
+        limit: usize,
+    },
+    ErrorDirective {
+        span: Span,
+        message: String,
+    },
+    WarningDirective {
+        span: Span,
+        message: String,
+    },
+    UnknownDirective {
+        span: Span,
+        name: String,
+    },
+    MalformedDirective {
+        span: Span,
+        directive: String,
+        expected: &'static str,
+    },
+    FunctionLikeMacro {
+        span: Span,
+        name: String,
+    },
+    MacroRedefined {
+        span: Span,
+        name: String,
+        previous: Span,
+    },
+    KeywordNeverTested {
+        span: Span,
+        keyword: String,
+    },
+    KeywordNeverDeclared {
+        span: Span,
+        name: String,
+        suggestion: Option<String>,
+    },
+    PragmaInPlainInclude {
+        span: Span,
+        pragma: String,
+    },
+}
+
+/// The directives the preprocessor knows, for the "unknown directive" help.
+pub(crate) const DIRECTIVES: [&str; 13] = [
+    "include",
+    "include_with_pragmas",
+    "define",
+    "undef",
+    "if",
+    "ifdef",
+    "ifndef",
+    "elif",
+    "else",
+    "endif",
+    "error",
+    "warning",
+    "pragma",
+];
+
+impl From<PreprocessError> for Diagnostic {
+    fn from(error: PreprocessError) -> Diagnostic {
+        use PreprocessError::*;
+        match error {
+            IncludeNotFound { span, name, searched } => {
+                let mut d = Diagnostic::error("K0301", format!("cannot find include `{name}`"))
+                    .at(span, "included here");
+                for folder in searched {
+                    d = d.note(format!("searched {folder}"));
+                }
+                d.help("check the name, or add its folder to the project's include paths")
+            }
+            IncludeCycle { span, chain } => Diagnostic::error("K0302", "include cycle")
+                .at(span, "this include leads back to a file that is still being included")
+                .note(format!("the cycle: {}", chain.join(" -> ")))
+                .help("break the cycle, or guard the file with `#pragma once`"),
+            IncludeTooDeep { span, limit } => {
+                Diagnostic::error("K0303", format!("includes nested deeper than {limit} levels"))
+                    .at(span, "this include is one level too deep")
+                    .help("this usually means a file includes itself through a chain without a guard")
+            }
+            IncludeOutsideRoots { span, name, resolved } => Diagnostic::error(
+                "K0304",
+                format!("include `{name}` resolves outside the project"),
+            )
+            .at(span, format!("this names `{resolved}`"))
+            .help("includes may only name files under the project's roots, its include paths or the bundled library"),
+            IncludeUnreadable { span, name, reason } => {
+                Diagnostic::error("K0315", format!("cannot read include `{name}`"))
+                    .at(span, "included here")
+                    .note(reason)
+            }
+            UnterminatedConditional { open, directive } => {
+                Diagnostic::error("K0305", format!("`#{directive}` without `#endif`"))
+                    .at(open, "this conditional is never closed")
+                    .help("add `#endif` where the conditional block ends (in the same file)")
+            }
+            StrayConditional { span, directive } => {
+                Diagnostic::error("K0306", format!("`#{directive}` without a matching `#if`"))
+                    .at(span, "no open `#if`, `#ifdef` or `#ifndef` in this file")
+            }
+            BranchAfterElse { span, directive, else_span } => {
+                Diagnostic::error("K0307", format!("`#{directive}` after `#else`"))
+                    .at(span, format!("`#{directive}` cannot follow `#else`"))
+                    .label(else_span, "the `#else` is here")
+            }
+            ConditionalTooDeep { span, limit } => {
+                Diagnostic::error("K0314", format!("conditionals nested deeper than {limit} levels"))
+                    .at(span, "this conditional is one level too deep")
+            }
+            MalformedExpression { span, expected } => {
+                Diagnostic::error("K0308", "malformed `#if` expression").at(span, format!("expected {expected}"))
+            }
+            DivisionByZero { span } => {
+                Diagnostic::error("K0309", "division by zero in `#if` expression").at(span, "this divisor is zero")
+            }
+            ExpansionTooDeep { span, name, limit } => Diagnostic::error(
+                "K0313",
+                format!("macro `{name}` expands more than {limit} levels deep"),
+            )
+            .at(span, "expanded here")
+            .help("a chain of `#define`s probably refers back to itself"),
+            ErrorDirective { span, message } => Diagnostic::error("K0310", message).at(span, "`#error` reached"),
+            WarningDirective { span, message } => {
+                Diagnostic::warning("K0318", message).at(span, "`#warning` reached")
+            }
+            UnknownDirective { span, name } => {
+                let known: Vec<String> = DIRECTIVES.iter().map(|d| format!("#{d}")).collect();
+                let known: Vec<&str> = known.iter().map(String::as_str).collect();
+                Diagnostic::error("K0311", format!("unknown preprocessor directive `#{name}`"))
+                    .at(span, "not a directive")
+                    .help(format!("directives are {}", one_of(&known)))
+            }
+            MalformedDirective { span, directive, expected } => {
+                Diagnostic::error("K0312", format!("malformed `#{directive}`")).at(span, format!("expected {expected}"))
+            }
+            FunctionLikeMacro { span, name } => {
+                Diagnostic::error("K0317", format!("function-like macro `{name}` is not supported"))
+                    .at(span, "macro parameters begin here")
+                    .help("WGSL has functions: write `fn` instead, or put a space before `(` to define an object-like macro")
+            }
+            MacroRedefined { span, name, previous } => {
+                Diagnostic::warning("K0316", format!("macro `{name}` redefined with a different value"))
+                    .at(span, "redefined here")
+                    .label(previous, "first defined here")
+                    .help("`#undef` it first if the new value is intended")
+            }
+            KeywordNeverTested { span, keyword } => Diagnostic::warning(
+                "K0320",
+                format!("keyword `{keyword}` is declared but never tested"),
+            )
+            .at(span, "declared here")
+            .note("no `#if`, `#ifdef` or `#ifndef` in the pass's source or its includes tests it, so it only multiplies variants")
+            .help("test it with `#if defined(...)`, or remove it from the pragma"),
+            KeywordNeverDeclared { span, name, suggestion } => {
+                let d = Diagnostic::warning("K0321", format!("`{name}` is tested but never declared or defined"))
+                    .at(span, "always off in this pass")
+                    .note("no keyword pragma of the pass declares it and no `#define` defines it");
+                match suggestion {
+                    Some(s) => d.help(format!("did you mean the keyword `{s}`?")),
+                    None => d.help("declare it with `#pragma shader_feature` or `#pragma multi_compile`"),
+                }
+            }
+            PragmaInPlainInclude { span, pragma } => {
+                Diagnostic::warning("K0322", format!("`#pragma {pragma}` in a plain `#include` is ignored"))
+                    .at(span, "this pragma does not count for the pass")
+                    .help("include the file with `#include_with_pragmas` to make its pragmas count")
+            }
+        }
+    }
+}

@@ -1,0 +1,263 @@
+//! Include resolution: finds every file a program can include (in any branch, before variants
+//! are known), scans each once, and records where each `#include` points or why it fails. Files
+//! come in only through the [`SourceStore`], which records them for `rerun-if-changed`.
+
+use super::error::PreprocessError;
+use super::scan::{self, Item, Target, Unit};
+use crate::diagnostics::Diagnostic;
+use crate::source::{FileId, SourceStore, Span, normalize_lexically};
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+/// Where includes may come from.
+#[derive(Debug, Clone)]
+pub struct IncludeConfig {
+    /// Folders includes may resolve into (symlinks are followed before checking).
+    pub roots: Vec<PathBuf>,
+    /// Folders searched after the including file's own folder, in order.
+    pub include_paths: Vec<PathBuf>,
+    /// The bundled library, searched last: `(name, text)` pairs such as `("BRDF.wgsl", ...)`.
+    pub library: Vec<(String, String)>,
+}
+
+impl IncludeConfig {
+    /// Includes may resolve under `roots`; the library is the one built into kiln.
+    pub fn new(roots: Vec<PathBuf>) -> IncludeConfig {
+        let library = crate::shaderlib::FILES.iter().map(|(n, t)| (n.to_string(), t.to_string())).collect();
+        IncludeConfig { roots, include_paths: Vec::new(), library }
+    }
+}
+
+/// The name bundled library files have in diagnostics.
+pub const LIBRARY_PREFIX: &str = "<kiln>/shaderlib/";
+
+/// Where a unit's own includes are searched first.
+#[derive(Debug)]
+enum Place {
+    Folder(PathBuf),
+    /// A library file: the folder inside the library, `""` at its top.
+    Library(String),
+    /// Text added in memory: there is no folder of its own.
+    Nowhere,
+}
+
+/// Every file reachable from the programs loaded so far, scanned once and shared by all passes
+/// and variants.
+pub struct Includes {
+    config: IncludeConfig,
+    /// Roots and include paths, canonicalised once.
+    allowed: Vec<PathBuf>,
+    pub(crate) units: Vec<Unit>,
+    places: Vec<Place>,
+    on_disk: HashMap<PathBuf, usize>,
+    in_library: HashMap<String, usize>,
+    blocks: HashMap<(FileId, u32), usize>,
+}
+
+/// One pass's program: its blocks (include blocks first), as scanned units.
+#[derive(Debug, Clone)]
+pub struct Program {
+    pub(crate) blocks: Vec<usize>,
+}
+
+impl Includes {
+    pub fn new(config: IncludeConfig) -> Includes {
+        let allowed = config
+            .roots
+            .iter()
+            .chain(&config.include_paths)
+            .filter_map(|p| std::fs::canonicalize(p).ok())
+            .collect();
+        Includes {
+            config,
+            allowed,
+            units: Vec::new(),
+            places: Vec::new(),
+            on_disk: HashMap::new(),
+            in_library: HashMap::new(),
+            blocks: HashMap::new(),
+        }
+    }
+
+    /// Scans the program blocks at `blocks` and every file they can include. Diagnostics are for
+    /// files scanned for the first time, so a library shared by many passes is reported once.
+    pub fn load_program(&mut self, store: &mut SourceStore, blocks: &[Span]) -> (Program, Vec<Diagnostic>) {
+        let mut diagnostics = Vec::new();
+        let first_new = self.units.len();
+        let mut program = Program { blocks: Vec::new() };
+        for &block in blocks {
+            let unit = match self.blocks.get(&(block.file, block.start)) {
+                Some(&unit) => unit,
+                None => {
+                    let place = match store.path(block.file).and_then(Path::parent) {
+                        Some(folder) => Place::Folder(folder.to_path_buf()),
+                        None => Place::Nowhere,
+                    };
+                    let unit = self.add_unit(store, block.file, block.range(), place, &mut diagnostics);
+                    self.blocks.insert((block.file, block.start), unit);
+                    unit
+                }
+            };
+            program.blocks.push(unit);
+        }
+        // Units appended while resolving are resolved in turn: a worklist over the include graph.
+        let mut next = first_new;
+        while next < self.units.len() {
+            self.resolve_includes(store, next, &mut diagnostics);
+            next += 1;
+        }
+        (program, diagnostics)
+    }
+
+    fn add_unit(
+        &mut self,
+        store: &SourceStore,
+        file: FileId,
+        range: std::ops::Range<usize>,
+        place: Place,
+        diagnostics: &mut Vec<Diagnostic>,
+    ) -> usize {
+        let (unit, errors) = scan::scan(file, store.text(file), range);
+        diagnostics.extend(errors.into_iter().map(Diagnostic::from));
+        self.units.push(unit);
+        self.places.push(place);
+        self.units.len() - 1
+    }
+
+    fn resolve_includes(&mut self, store: &mut SourceStore, unit: usize, diagnostics: &mut Vec<Diagnostic>) {
+        for index in 0..self.units[unit].items.len() {
+            let Item::Include { name, span, target: Target::Pending, .. } = &self.units[unit].items[index]
+            else {
+                continue;
+            };
+            let (name, span) = (name.clone(), *span);
+            let target = self.resolve(store, unit, &name, span, diagnostics);
+            if let Item::Include { target: slot, .. } = &mut self.units[unit].items[index] {
+                *slot = target;
+            }
+        }
+    }
+
+    /// Search order: the including file's folder, the include paths, the bundled library.
+    fn resolve(
+        &mut self,
+        store: &mut SourceStore,
+        from: usize,
+        name: &str,
+        span: Span,
+        diagnostics: &mut Vec<Diagnostic>,
+    ) -> Target {
+        let mut searched = Vec::new();
+        let mut folders: Vec<PathBuf> = Vec::new();
+        match &self.places[from] {
+            Place::Folder(folder) => folders.push(folder.clone()),
+            Place::Library(folder) => {
+                let folder = folder.clone();
+                let inside = if folder.is_empty() { name.to_string() } else { format!("{folder}/{name}") };
+                if let Some(target) = self.library_unit(store, &inside, diagnostics) {
+                    return target;
+                }
+                searched.push(format!("{LIBRARY_PREFIX}{folder}"));
+            }
+            Place::Nowhere => {}
+        }
+        folders.extend(self.config.include_paths.iter().cloned());
+        for folder in folders {
+            let candidate = normalize_lexically(&folder.join(name));
+            if let Some(canonical) = store.canonical_file(&candidate) {
+                return self.disk_unit(store, candidate, canonical, name, span, diagnostics);
+            }
+            let shown = folder.to_string_lossy().replace('\\', "/");
+            searched.push(if shown.is_empty() { ".".into() } else { shown });
+        }
+        if let Some(target) = self.library_unit(store, name, diagnostics) {
+            return target;
+        }
+        searched.push("the bundled shader library".into());
+        Target::Failed(PreprocessError::IncludeNotFound { span, name: name.to_string(), searched })
+    }
+
+    fn disk_unit(
+        &mut self,
+        store: &mut SourceStore,
+        path: PathBuf,
+        canonical: PathBuf,
+        name: &str,
+        span: Span,
+        diagnostics: &mut Vec<Diagnostic>,
+    ) -> Target {
+        if !self.allowed.iter().any(|root| canonical.starts_with(root)) {
+            let resolved = path.to_string_lossy().replace('\\', "/");
+            return Target::Failed(PreprocessError::IncludeOutsideRoots {
+                span,
+                name: name.to_string(),
+                resolved,
+            });
+        }
+        if let Some(&unit) = self.on_disk.get(&canonical) {
+            return Target::Unit(unit);
+        }
+        match store.load_once(&path, canonical.clone()) {
+            Ok(file) => {
+                let place = Place::Folder(path.parent().map(Path::to_path_buf).unwrap_or_default());
+                let len = store.text(file).len();
+                let unit = self.add_unit(store, file, 0..len, place, diagnostics);
+                self.on_disk.insert(canonical, unit);
+                Target::Unit(unit)
+            }
+            Err(error) => Target::Failed(PreprocessError::IncludeUnreadable {
+                span,
+                name: name.to_string(),
+                reason: error.to_string(),
+            }),
+        }
+    }
+
+    fn library_unit(
+        &mut self,
+        store: &mut SourceStore,
+        name: &str,
+        diagnostics: &mut Vec<Diagnostic>,
+    ) -> Option<Target> {
+        let normalized = normalize_lexically(Path::new(name)).to_string_lossy().replace('\\', "/");
+        if let Some(&unit) = self.in_library.get(&normalized) {
+            return Some(Target::Unit(unit));
+        }
+        let (_, text) = self.config.library.iter().find(|(n, _)| *n == normalized)?;
+        let file = store.add(format!("{LIBRARY_PREFIX}{normalized}"), text.clone());
+        let folder = normalized.rsplit_once('/').map_or("", |(folder, _)| folder).to_string();
+        let unit = self.add_unit(store, file, 0..text.len(), Place::Library(folder), diagnostics);
+        self.in_library.insert(normalized, unit);
+        Some(Target::Unit(unit))
+    }
+
+    /// Whether a unit is part of the bundled library (whose optional keywords are not the
+    /// project's concern).
+    pub(crate) fn is_library(&self, unit: usize) -> bool {
+        matches!(self.places[unit], Place::Library(_))
+    }
+
+    /// Every unit the program can reach through any `#include`, whatever the keywords, in first
+    /// visit order; `only_with_pragmas` follows only `#include_with_pragmas` edges.
+    pub(crate) fn reachable(&self, program: &Program, only_with_pragmas: bool) -> Vec<usize> {
+        let mut seen = vec![false; self.units.len()];
+        let mut order = Vec::new();
+        let mut stack: Vec<usize> = program.blocks.iter().rev().copied().collect();
+        while let Some(unit) = stack.pop() {
+            if std::mem::replace(&mut seen[unit], true) {
+                continue;
+            }
+            order.push(unit);
+            let children = self.units[unit].items.iter().rev().filter_map(|item| match item {
+                Item::Include { target: Target::Unit(child), with_pragmas, .. }
+                    if *with_pragmas || !only_with_pragmas =>
+                {
+                    Some(*child)
+                }
+                _ => None,
+            });
+            stack.extend(children);
+        }
+        order
+    }
+}

@@ -1,0 +1,205 @@
+//! Where every byte of preprocessed output came from: a sorted list of output offsets, each the
+//! start of a run copied from one place in one file (or of one macro expansion), found by binary
+//! search. Includes form a tree, so each run also knows the chain of `#include`s that brought it.
+
+use crate::source::{FileId, SourceStore, Span};
+use std::ops::Range;
+
+/// The include chain root: text of the program blocks themselves.
+pub(crate) const ROOT: u32 = 0;
+
+#[derive(Debug, Clone, Copy)]
+struct Segment {
+    /// Output offset where this run starts; it ends where the next one starts.
+    out: u32,
+    file: FileId,
+    /// File offset of the run's first byte (for an expansion, of the macro's name).
+    src: u32,
+    /// For a macro expansion, the length of the name it replaced: every output byte of the
+    /// expansion maps to that whole name. Zero for copied text.
+    expansion: u32,
+    inclusion: u32,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Inclusion {
+    /// The quoted name of the `#include` that opened this file (`None` for the root).
+    directive: Option<Span>,
+    parent: u32,
+}
+
+/// Maps output offsets of one preprocessed text back to original files.
+#[derive(Debug, Clone)]
+pub struct SourceMap {
+    segments: Vec<Segment>,
+    inclusions: Vec<Inclusion>,
+    len: u32,
+}
+
+/// Where an output range came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Origin {
+    pub span: Span,
+    /// Identifies the include chain that brought the text; see [`SourceMap::include_chain`].
+    pub inclusion: u32,
+}
+
+impl Default for SourceMap {
+    fn default() -> SourceMap {
+        SourceMap {
+            segments: Vec::new(),
+            inclusions: vec![Inclusion { directive: None, parent: ROOT }],
+            len: 0,
+        }
+    }
+}
+
+impl SourceMap {
+    pub(crate) fn copied(&mut self, out: usize, file: FileId, src: usize, inclusion: u32) {
+        if let Some(last) = self.segments.last()
+            && last.expansion == 0
+            && last.file == file
+            && last.inclusion == inclusion
+            && last.src as usize + (out - last.out as usize) == src
+        {
+            return;
+        }
+        self.push(Segment { out: out as u32, file, src: src as u32, expansion: 0, inclusion });
+    }
+
+    pub(crate) fn expanded(&mut self, out: usize, name: Span, inclusion: u32) {
+        let expansion = (name.end - name.start).max(1);
+        self.push(Segment { out: out as u32, file: name.file, src: name.start, expansion, inclusion });
+    }
+
+    fn push(&mut self, segment: Segment) {
+        // A run that produced no bytes is replaced by the one that follows it.
+        if self.segments.last().is_some_and(|last| last.out == segment.out) {
+            self.segments.pop();
+        }
+        self.segments.push(segment);
+    }
+
+    /// Opens a file included by the directive at `directive` from inside `parent`.
+    pub(crate) fn enter(&mut self, directive: Span, parent: u32) -> u32 {
+        self.inclusions.push(Inclusion { directive: Some(directive), parent });
+        (self.inclusions.len() - 1) as u32
+    }
+
+    pub(crate) fn finish(&mut self, len: usize) {
+        self.len = len as u32;
+    }
+
+    /// The origin of one output byte. Offsets at or past the end map to the end of the last run.
+    pub fn locate(&self, offset: usize) -> Option<Origin> {
+        let offset = offset.min(self.len as usize) as u32;
+        let index = self.segments.partition_point(|s| s.out <= offset).checked_sub(1)?;
+        let s = self.segments[index];
+        let (start, end) = if s.expansion > 0 {
+            (s.src, s.src + s.expansion)
+        } else {
+            let at = s.src + (offset - s.out);
+            (at, at + u32::from(offset < self.len))
+        };
+        Some(Origin { span: Span { file: s.file, start, end }, inclusion: s.inclusion })
+    }
+
+    /// The origin of an output range: the original span from its first to its last byte when both
+    /// lie in the same run of one file, otherwise just where it starts.
+    pub fn map_range(&self, range: Range<usize>) -> Option<Origin> {
+        let start = self.locate(range.start)?;
+        if range.end <= range.start + 1 {
+            return Some(start);
+        }
+        let last = self.locate(range.end - 1)?;
+        if last.span.file == start.span.file
+            && last.inclusion == start.inclusion
+            && last.span.end >= start.span.start
+        {
+            return Some(Origin { span: start.span.to(last.span), inclusion: start.inclusion });
+        }
+        Some(start)
+    }
+
+    /// The `#include` names that brought an inclusion in, innermost first.
+    pub fn include_chain(&self, inclusion: u32) -> impl Iterator<Item = Span> + '_ {
+        let mut at = inclusion;
+        std::iter::from_fn(move || {
+            let step = self.inclusions.get(at as usize)?;
+            let directive = step.directive?;
+            at = step.parent;
+            Some(directive)
+        })
+    }
+
+    /// "included from FILE:LINE:COL" notes for a diagnostic, innermost first. Past ten levels the
+    /// middle of the chain is summarised.
+    pub fn included_from_notes(&self, store: &SourceStore, inclusion: u32) -> Vec<String> {
+        let note = |span: Span| {
+            let at = store.line_col(span.file, span.start as usize);
+            format!("included from {}:{}:{}", store.name(span.file), at.line, at.column)
+        };
+        let chain: Vec<Span> = self.include_chain(inclusion).collect();
+        if chain.len() <= 10 {
+            return chain.into_iter().map(note).collect();
+        }
+        let mut notes: Vec<String> = chain[..5].iter().map(|&s| note(s)).collect();
+        notes.push(format!("... {} more levels of includes ...", chain.len() - 9));
+        notes.extend(chain[chain.len() - 4..].iter().map(|&s| note(s)));
+        notes
+    }
+
+    /// One line per run of output lines that come from consecutive lines of one file:
+    /// `12-40 <- Common.wgsl:3-31`. Golden files show this beside the preprocessed text.
+    pub fn describe_lines(&self, store: &SourceStore, text: &str) -> String {
+        struct Run {
+            out: (usize, usize),
+            file: FileId,
+            src: (usize, usize),
+            expanded: bool,
+        }
+        let mut runs: Vec<Run> = Vec::new();
+        let mut offset = 0;
+        for (index, line) in text.split_inclusive('\n').enumerate() {
+            let out_line = index + 1;
+            if let Some(origin) = self.locate(offset) {
+                let src_line = store.line_col(origin.span.file, origin.span.start as usize).line;
+                let expanded = self.is_expansion(offset);
+                match runs.last_mut() {
+                    Some(run)
+                        if run.file == origin.span.file
+                            && run.src.1 + 1 == src_line
+                            && run.out.1 + 1 == out_line
+                            && !expanded
+                            && !run.expanded =>
+                    {
+                        run.out.1 = out_line;
+                        run.src.1 = src_line;
+                    }
+                    _ => runs.push(Run {
+                        out: (out_line, out_line),
+                        file: origin.span.file,
+                        src: (src_line, src_line),
+                        expanded,
+                    }),
+                }
+            }
+            offset += line.len();
+        }
+        let range = |(a, b): (usize, usize)| if a == b { a.to_string() } else { format!("{a}-{b}") };
+        runs.iter()
+            .map(|r| {
+                let how = if r.expanded { " (macro)" } else { "" };
+                format!("{} <- {}:{}{how}\n", range(r.out), store.name(r.file), range(r.src))
+            })
+            .collect()
+    }
+
+    fn is_expansion(&self, offset: usize) -> bool {
+        let offset = offset as u32;
+        self.segments
+            .partition_point(|s| s.out <= offset)
+            .checked_sub(1)
+            .is_some_and(|i| self.segments[i].expansion > 0)
+    }
+}

@@ -1,0 +1,372 @@
+//! The preprocessor: golden spliced WGSL for every fixture variant (which naga must accept),
+//! naga errors mapped back through the source map to the exact original file, line and column,
+//! and a pinned diagnostic for every bad input.
+
+use crate::support::{fixture_files, kiln, root};
+use expect_test::expect_file;
+use kiln::diagnostics::{Diagnostic, has_errors, render_plain};
+use kiln::listing::program_blocks;
+use kiln::preprocess::{IncludeConfig, Includes, Stage, load_pass, preprocess};
+use kiln::project::{VariantRequest, include_config, preprocess_variant};
+use kiln::shaderlab::parse_shader;
+use kiln::shaderlab::pragma::KeywordSet;
+use kiln::source::SourceStore;
+use std::path::{Path, PathBuf};
+
+/// Every combination of one option per set, as keyword lists.
+fn combinations(sets: &[KeywordSet]) -> Vec<Vec<String>> {
+    sets.iter().fold(vec![Vec::new()], |partial, set| {
+        partial
+            .iter()
+            .flat_map(|keywords| {
+                set.options.iter().map(move |option| {
+                    let mut next = keywords.clone();
+                    next.extend(option.keyword.clone());
+                    next
+                })
+            })
+            .collect()
+    })
+}
+
+#[test]
+fn every_fixture_variant_preprocesses_to_golden_wgsl_that_naga_accepts() {
+    let mut checked = 0;
+    for path in fixture_files("fixtures/project/shaders", "shader") {
+        let mut store = SourceStore::new();
+        let file = store.load(&path).expect("fixture loads");
+        let shader = parse_shader(&store, file).shader.expect("fixture parses");
+        let mut includes = Includes::new(include_config(std::slice::from_ref(&path)));
+        for (index, (_, sub, _, pass)) in shader.passes().enumerate() {
+            let blocks = program_blocks(&shader, sub, &pass.programs);
+            let (program, diagnostics) = load_pass(&mut includes, &mut store, &blocks);
+            assert!(diagnostics.is_empty(), "{}", render_plain(&store, &diagnostics));
+            for keywords in combinations(&program.pragmas.variant_sets()) {
+                let refs: Vec<&str> = keywords.iter().map(String::as_str).collect();
+                let out = preprocess(&includes, &store, &program.program, &refs, Stage::Fragment);
+                assert!(out.diagnostics.is_empty(), "{}", render_plain(&store, &out.diagnostics));
+                if let Err(errors) = kiln::compile::check(&out, &store) {
+                    panic!("{keywords:?}: {}", render_plain(&store, &errors));
+                }
+                let shown = if keywords.is_empty() { "none".to_string() } else { keywords.join("+") };
+                let stem = path.file_stem().and_then(|s| s.to_str()).expect("stem");
+                let golden = root().join(format!("tests/golden/preprocess/{stem}/{index}.{shown}.wgsl"));
+                let flags = if keywords.is_empty() {
+                    String::new()
+                } else {
+                    format!(" --keywords {}", keywords.join(","))
+                };
+                let header = format!("// kiln preprocess {} --pass {index}{flags}\n", path.display());
+                let map = out.source_map.describe_lines(&store, &out.text);
+                let map: String = map.lines().map(|l| format!("// {l}\n")).collect();
+                let actual = format!(
+                    "{header}{}\n// ---- source map: output lines <- original lines ----\n{map}",
+                    out.text
+                );
+                expect_file![golden].assert_eq(&actual);
+                checked += 1;
+            }
+        }
+    }
+    // Lit 2 x 2, Unlit 2, Complex 2 x 3 x 2.
+    assert_eq!(checked, 18);
+}
+
+#[test]
+fn the_vertex_stage_ignores_fragment_only_keywords() {
+    // `_EMISSION_MAP` is `shader_feature_fragment`: the vertex text must not fork on it.
+    let path = PathBuf::from("fixtures/project/shaders/Complex.shader");
+    let vertex = |keywords: &[&str]| {
+        let request = VariantRequest {
+            shader: path.clone(),
+            pass: None,
+            keywords: keywords.iter().map(|k| k.to_string()).collect(),
+            stage: Stage::Vertex,
+        };
+        let (out, diagnostics) =
+            preprocess_variant(&mut SourceStore::new(), &request).expect("request is valid");
+        assert!(diagnostics.is_empty());
+        out.expect("preprocesses").text
+    };
+    assert_eq!(vertex(&[]), vertex(&["_EMISSION_MAP"]));
+    assert_ne!(vertex(&[]), vertex(&["_METALLIC_MAP"]), "a keyword for all stages does fork it");
+}
+
+/// An error written into one file: `needle` becomes `replacement`, and naga must point at `at`
+/// (a substring of the replacement).
+struct Injection {
+    file: &'static str,
+    needle: &'static str,
+    replacement: &'static str,
+    at: &'static str,
+}
+
+const INJECTIONS: &[Injection] = &[
+    Injection { file: "Common.wgsl", needle: "return v * v;", replacement: "return v * w;", at: "w;" },
+    Injection {
+        file: "Input.wgsl",
+        needle: "_WorldSpaceCameraPos: vec3<f32>",
+        replacement: "_WorldSpaceCameraPos: vec3<f33>",
+        at: "f33",
+    },
+    Injection { file: "Surface.wgsl", needle: "alpha: f32,", replacement: "alpha: flaot,", at: "flaot" },
+    Injection {
+        file: "Light.wgsl",
+        needle: "light.color = _CustomLight",
+        replacement: "light.colour = _CustomLight",
+        at: "colour",
+    },
+    Injection {
+        file: "BRDF.wgsl",
+        needle: "let r2 = Square(",
+        replacement: "let r2 = Sqaure(",
+        at: "Sqaure",
+    },
+    Injection {
+        file: "Lighting.wgsl",
+        needle: "return IncomingLight(surface, light) *",
+        replacement: "return IncomingLigth(surface, light) *",
+        at: "IncomingLigth",
+    },
+    // A validation error (not a syntax error): the returned type is wrong.
+    Injection {
+        file: "BRDF.wgsl",
+        needle: "return range - metallic * range;",
+        replacement: "return vec2<f32>(range);",
+        at: "vec2<f32>(range)",
+    },
+    Injection {
+        file: "LitPass.wgsl",
+        needle: "surface.alpha = base.a;",
+        replacement: "surface.alpha = base.q;",
+        at: "q;",
+    },
+    // Through a macro: the error is in the expansion, reported at the macro's use.
+    Injection {
+        file: "Light.wgsl",
+        needle: "#define MAX_DIRECTIONAL_LIGHT_COUNT 4",
+        replacement: "#define MAX_DIRECTIONAL_LIGHT_COUNT 4.5",
+        at: "",
+    },
+];
+
+#[test]
+fn naga_errors_in_every_library_file_and_the_pass_map_to_the_original_line_and_column() {
+    let fixture = PathBuf::from("fixtures/project/shaders/Lit.shader");
+    let pass_text =
+        std::fs::read_to_string(root().join("fixtures/project/shaders/LitPass.wgsl")).expect("read");
+    // The pass file is changed in a copy of the shader's folder; library files in the library.
+    let copy = tempfile::tempdir().expect("temp dir");
+    for (index, injection) in INJECTIONS.iter().enumerate() {
+        let mut config = IncludeConfig::new(vec![PathBuf::from("fixtures/project")]);
+        let mut shader = fixture.clone();
+        let original = match config.library.iter_mut().find(|(name, _)| name == injection.file) {
+            Some((_, text)) => text,
+            None => {
+                shader = copy.path().join("Lit.shader");
+                config.roots = vec![copy.path().to_path_buf()];
+                std::fs::copy(root().join(&fixture), &shader).expect("copy");
+                &mut pass_text.clone()
+            }
+        };
+        assert_eq!(original.matches(injection.needle).count(), 1, "{}: needle is unique", injection.file);
+        let modified = original.replacen(injection.needle, injection.replacement, 1);
+        *original = modified.clone();
+        if injection.file == "LitPass.wgsl" {
+            std::fs::write(copy.path().join("LitPass.wgsl"), &modified).expect("write");
+        }
+
+        let expected_offset = if injection.at.is_empty() {
+            // The macro's use: its name in `array<vec4<f32>, MAX_DIRECTIONAL_LIGHT_COUNT>`.
+            modified.find("vec4<f32>, MAX_DIRECTIONAL_LIGHT_COUNT>").expect("use") + "vec4<f32>, ".len()
+        } else {
+            modified.find(injection.replacement).expect("injected")
+                + injection.replacement.find(injection.at).expect("at")
+        };
+        let expected_line = modified[..expected_offset].matches('\n').count() + 1;
+        let line_start = modified[..expected_offset].rfind('\n').map_or(0, |i| i + 1);
+        let expected_column = modified[line_start..expected_offset].chars().count() + 1;
+
+        let (store, error) = first_naga_error(config, &shader);
+        let span = error.primary.as_ref().expect("the error has a location").span;
+        let (name, at) = (store.name(span.file), store.line_col(span.file, span.start as usize));
+        assert!(name.ends_with(injection.file), "{}: reported in {name}: {}", injection.file, error.message);
+        assert_eq!(
+            (at.line, at.column),
+            (expected_line, expected_column),
+            "{}: {}",
+            injection.file,
+            error.message
+        );
+        if injection.file != "LitPass.wgsl" {
+            assert!(
+                error.notes.iter().any(|n| n.starts_with("included from ") && n.contains("LitPass.wgsl")),
+                "{}: the include chain is shown: {:?}",
+                injection.file,
+                error.notes
+            );
+            let golden =
+                root().join(format!("tests/golden/preprocess/naga/{index}.{}.stderr", injection.file));
+            expect_file![golden].assert_eq(&render_plain(&store, &[error]));
+        }
+    }
+}
+
+/// Preprocesses Lit with every keyword on and returns naga's error.
+fn first_naga_error(config: IncludeConfig, shader: &Path) -> (SourceStore, Diagnostic) {
+    let mut store = SourceStore::new();
+    let file = store.load(shader).expect("load");
+    let parsed = parse_shader(&store, file).shader.expect("parses");
+    let (_, sub, _, pass) = parsed.passes().next().expect("a pass");
+    let mut includes = Includes::new(config);
+    let (program, diagnostics) =
+        load_pass(&mut includes, &mut store, &program_blocks(&parsed, sub, &pass.programs));
+    assert!(!has_errors(&diagnostics), "{}", render_plain(&store, &diagnostics));
+    let out = preprocess(
+        &includes,
+        &store,
+        &program.program,
+        &["_CLIPPING", "_PREMULTIPLY_ALPHA"],
+        Stage::Fragment,
+    );
+    assert!(out.diagnostics.is_empty());
+    let Err(mut errors) = kiln::compile::check(&out, &store) else {
+        panic!("naga accepted the injected error")
+    };
+    assert_eq!(errors.len(), 1);
+    (store, errors.remove(0))
+}
+
+/// Reads `// kiln-args: ...` from a fixture's first line into a request.
+fn request_for(path: &Path) -> VariantRequest {
+    let text = std::fs::read_to_string(root().join(path)).expect("fixture");
+    let mut request = VariantRequest {
+        shader: path.to_path_buf(),
+        pass: None,
+        keywords: Vec::new(),
+        stage: Stage::Fragment,
+    };
+    let args = text.lines().next().and_then(|l| l.strip_prefix("// kiln-args:")).unwrap_or("");
+    let mut words = args.split_whitespace();
+    while let Some(flag) = words.next() {
+        let value = words.next().expect("flag value");
+        match flag {
+            "--keywords" => request.keywords = value.split(',').map(str::to_string).collect(),
+            "--pass" => request.pass = Some(value.to_string()),
+            "--stage" => request.stage = if value == "vertex" { Stage::Vertex } else { Stage::Fragment },
+            other => panic!("unknown fixture flag {other}"),
+        }
+    }
+    request
+}
+
+fn check_folder(folder: &str, expect_errors: bool) {
+    let files = fixture_files(folder, "shader");
+    assert!(!files.is_empty());
+    for path in files {
+        let mut store = SourceStore::new();
+        let (_, diagnostics) = preprocess_variant(&mut store, &request_for(&path)).expect("request is valid");
+        assert_eq!(
+            has_errors(&diagnostics),
+            expect_errors,
+            "{}: errors expected: {expect_errors}",
+            path.display()
+        );
+        assert!(!diagnostics.is_empty(), "{} reports nothing", path.display());
+        expect_file![root().join(path.with_extension("stderr"))]
+            .assert_eq(&render_plain(&store, &diagnostics));
+    }
+}
+
+#[test]
+fn every_bad_preprocessor_input_has_a_pinned_diagnostic() {
+    check_folder("fixtures/bad/preprocess", true);
+}
+
+#[test]
+fn preprocessor_warnings_do_not_fail_the_pass() {
+    check_folder("fixtures/warn/preprocess", false);
+}
+
+#[test]
+fn the_cli_prints_the_variant_and_exits_1_on_bad_inputs() {
+    let output = kiln(&["preprocess", "fixtures/project/shaders/Lit.shader", "--keywords", "_CLIPPING"]);
+    assert_eq!(output.status.code(), Some(0));
+    let request = request_for(Path::new("fixtures/project/shaders/Lit.shader"));
+    let request = VariantRequest { keywords: vec!["_CLIPPING".into()], ..request };
+    let (expected, _) = preprocess_variant(&mut SourceStore::new(), &request).expect("valid");
+    assert_eq!(String::from_utf8_lossy(&output.stdout), expected.expect("text").text);
+
+    for path in fixture_files("fixtures/bad/preprocess", "shader") {
+        let request = request_for(&path);
+        let mut args = vec!["preprocess".to_string(), path.display().to_string()];
+        if !request.keywords.is_empty() {
+            args.extend(["--keywords".into(), request.keywords.join(",")]);
+        }
+        if request.stage == Stage::Vertex {
+            args.extend(["--stage".into(), "vertex".into()]);
+        }
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let output = kiln(&args);
+        assert_eq!(output.status.code(), Some(1), "{}", path.display());
+        assert!(output.stdout.is_empty(), "{}: no half output", path.display());
+    }
+}
+
+#[test]
+fn requests_that_name_nothing_are_usage_errors() {
+    let cases: [(&[&str], &str); 4] = [
+        (&["--keywords", "_CLIPING"], "`_CLIPING` is not a keyword of this pass (did you mean `_CLIPPING`?)"),
+        (&["--pass", "Shadow"], "has no pass `Shadow`"),
+        (&["--pass", "3"], "has no pass `3`"),
+        (&["--keywords", "_CLIPPING,_CLIPPING,_PREMULTIPLY_ALPHA"], ""),
+    ];
+    for (args, message) in cases {
+        let mut all = vec!["preprocess", "fixtures/project/shaders/Lit.shader"];
+        all.extend(args);
+        let output = kiln(&all);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        if message.is_empty() {
+            assert_eq!(output.status.code(), Some(0), "{args:?}: {stderr}");
+        } else {
+            assert_eq!(output.status.code(), Some(2), "{args:?}");
+            assert!(stderr.contains(message), "{args:?}: {stderr}");
+        }
+    }
+    let output = kiln(&["preprocess", "fixtures/unity/UniversalLit.shader"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("only WGSL programs are preprocessed"));
+}
+
+/// Preprocesses an in-memory program against an in-memory library and renders what it reports.
+fn preprocess_in_memory(program: &str, library: Vec<(String, String)>) -> String {
+    let mut store = SourceStore::new();
+    let file = store.add("limits.wgsl", program);
+    let mut includes = Includes::new(IncludeConfig { roots: Vec::new(), include_paths: Vec::new(), library });
+    let span = kiln::source::Span::new(file, 0..program.len());
+    let (program, mut diagnostics) = includes.load_program(&mut store, &[span]);
+    diagnostics.extend(preprocess(&includes, &store, &program, &[], Stage::Fragment).diagnostics);
+    assert!(has_errors(&diagnostics));
+    render_plain(&store, &diagnostics)
+}
+
+#[test]
+fn limits_are_diagnostics_not_stack_overflows() {
+    let golden = |name: &str| root().join(format!("tests/golden/preprocess/limits/{name}.stderr"));
+
+    // A chain of 70 files, each including the next: the 65th level is refused.
+    let chain = (0..70)
+        .map(|i| (format!("deep_{i:02}.wgsl"), format!("#include \"deep_{:02}.wgsl\"\n", i + 1)))
+        .collect();
+    expect_file![golden("include_depth")]
+        .assert_eq(&preprocess_in_memory("#include \"deep_00.wgsl\"\n", chain));
+
+    // 70 macros, each defined as the next, used in text and in `#if`.
+    let mut defines: String = (0..70).map(|i| format!("#define M{i} M{}\n", i + 1)).collect();
+    defines.push_str("let x = M0;\n#if M0\n#endif\n");
+    expect_file![golden("expansion_depth")].assert_eq(&preprocess_in_memory(&defines, Vec::new()));
+
+    // 65 nested conditionals.
+    let nested = format!("{}{}", "#if 1\n".repeat(65), "#endif\n".repeat(65));
+    expect_file![golden("conditional_depth")].assert_eq(&preprocess_in_memory(&nested, Vec::new()));
+}
