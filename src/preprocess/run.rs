@@ -130,8 +130,13 @@ impl<'a> Runner<'a> {
             i += 1;
         }
         // A file without a final newline must not run into the text after its `#include`.
+        // The added newline maps to the unit's last character.
         if !self.out.is_empty() && !self.out.ends_with('\n') {
-            self.map.copied(self.out.len(), file, unit.range.end, inclusion);
+            let last = text[unit.range.clone()].char_indices().next_back();
+            if let Some((at, c)) = last {
+                let start = unit.range.start + at;
+                self.map.expanded(self.out.len(), Span::new(file, start..start + c.len_utf8()), inclusion);
+            }
             self.out.push('\n');
         }
     }

@@ -370,3 +370,160 @@ fn limits_are_diagnostics_not_stack_overflows() {
     let nested = format!("{}{}", "#if 1\n".repeat(65), "#endif\n".repeat(65));
     expect_file![golden("conditional_depth")].assert_eq(&preprocess_in_memory(&nested, Vec::new()));
 }
+
+/// Preprocesses in-memory `files` (the first is the program) placed in a temporary project
+/// folder, with `keywords` defined; returns the text (or the rendered diagnostics).
+fn preprocess_files(files: &[(&str, &str)], keywords: &[&str]) -> String {
+    let dir = tempfile::tempdir().expect("temp dir");
+    for (name, text) in files {
+        let path = dir.path().join(name);
+        std::fs::create_dir_all(path.parent().expect("parent")).expect("mkdir");
+        std::fs::write(path, text).expect("write");
+    }
+    let mut store = SourceStore::new();
+    let main = store.load(&dir.path().join(files[0].0)).expect("load");
+    let mut config = IncludeConfig::new(vec![dir.path().to_path_buf()]);
+    config.include_paths.push(dir.path().join("include"));
+    let mut includes = Includes::new(config);
+    let span = kiln::source::Span::new(main, 0..files[0].1.len());
+    let (program, mut diagnostics) = includes.load_program(&mut store, &[span]);
+    let out = preprocess(&includes, &store, &program, keywords, Stage::Fragment);
+    diagnostics.extend(out.diagnostics);
+    if diagnostics.is_empty() { out.text } else { render_plain(&store, &diagnostics) }
+}
+
+#[test]
+fn macros_are_substituted_token_by_token() {
+    let program = "#define N 4\n#define COUNT N\nlet a = array<f32, COUNT>();\n\
+                   let b = N_SIZE + NN + N1; // N stays in comments\n/* N */ let c = \"N\";\nlet d = N;\n";
+    let out = preprocess_files(&[("main.wgsl", program)], &[]);
+    assert_eq!(
+        out,
+        "let a = array<f32, 4>();\nlet b = N_SIZE + NN + N1; // N stays in comments\n/* N */ let c = \"N\";\nlet d = 4;\n"
+    );
+    // A macro naming itself stops there, as in C.
+    assert_eq!(preprocess_files(&[("main.wgsl", "#define X X + 1\nlet y = X;\n")], &[]), "let y = X + 1;\n");
+}
+
+#[test]
+fn conditionals_follow_c() {
+    let program = "#if defined(_A) && !defined _B\na\n#elif _B\nb\n#else\nc\n#endif\n\
+                   #ifdef _A\n#ifndef _B\nd\n#endif\n#endif\n#if 2 * 3 == 6 && (7 % 4) == 3 ? 1 : 0\ne\n#endif\n\
+                   #define _B\n#undef _B\n#ifdef _B\nf\n#endif\n";
+    assert_eq!(preprocess_files(&[("main.wgsl", program)], &["_A"]), "a\nd\ne\n");
+    assert_eq!(preprocess_files(&[("main.wgsl", program)], &["_B"]), "b\ne\n");
+    assert_eq!(preprocess_files(&[("main.wgsl", program)], &[]), "c\ne\n");
+    // A skipped branch is not evaluated: its division by zero is harmless.
+    let skipped = "#if 1\nx\n#elif 1 / 0\ny\n#endif\n";
+    assert_eq!(preprocess_files(&[("main.wgsl", skipped)], &[]), "x\n");
+}
+
+#[test]
+fn includes_search_the_including_folder_then_include_paths_then_the_library() {
+    let files = [
+        (
+            "shaders/main.wgsl",
+            "#include \"Local.wgsl\"\n#include \"Shared.wgsl\"\n#include \"Square.wgsl\"\n",
+        ),
+        ("shaders/Local.wgsl", "// local\n"),
+        // Shadows the library's Common.wgsl only for files that look in `include/` first.
+        ("include/Shared.wgsl", "// shared\n#include \"Common.wgsl\"\n"),
+        ("include/Common.wgsl", "// project common\n"),
+        ("shaders/Square.wgsl", "#include \"../include/Shared.wgsl\"\n"),
+    ];
+    let out = preprocess_files(&files, &[]);
+    // Shared.wgsl finds the project's Common.wgsl in its own folder; the second include of
+    // Shared.wgsl (through Square.wgsl) adds it again because it has no guard.
+    assert_eq!(out, "// local\n// shared\n// project common\n// shared\n// project common\n");
+    let library = preprocess_files(&[("main.wgsl", "#include \"Surface.wgsl\"\n")], &[]);
+    assert!(library.contains("struct Surface {"), "{library}");
+}
+
+#[test]
+fn guards_and_pragma_once_include_a_file_once() {
+    let files = [
+        (
+            "main.wgsl",
+            "#include \"a.wgsl\"\n#include \"a.wgsl\"\n#include \"b.wgsl\"\n#include \"./b.wgsl\"\n",
+        ),
+        ("a.wgsl", "#ifndef A\n#define A\nfn a() {}\n#endif\n"),
+        ("b.wgsl", "#pragma once\nfn b() {}\n"),
+    ];
+    assert_eq!(preprocess_files(&files, &[]), "fn a() {}\nfn b() {}\n");
+    // A guarded file including itself is not a cycle.
+    let guarded = [
+        ("main.wgsl", "#include \"g.wgsl\"\n"),
+        ("g.wgsl", "#ifndef G\n#define G\n#include \"g.wgsl\"\ng\n#endif\n"),
+    ];
+    assert_eq!(preprocess_files(&guarded, &[]), "g\n");
+}
+
+#[cfg(unix)]
+#[test]
+fn a_symlink_out_of_the_project_is_refused() {
+    let outside = tempfile::tempdir().expect("temp dir");
+    std::fs::write(outside.path().join("secret.wgsl"), "fn secret() {}\n").expect("write");
+    let project = tempfile::tempdir().expect("temp dir");
+    std::fs::write(project.path().join("main.wgsl"), "#include \"link.wgsl\"\n").expect("write");
+    std::os::unix::fs::symlink(outside.path().join("secret.wgsl"), project.path().join("link.wgsl"))
+        .expect("symlink");
+    let mut store = SourceStore::new();
+    let main = store.load(&project.path().join("main.wgsl")).expect("load");
+    let mut includes = Includes::new(IncludeConfig::new(vec![project.path().to_path_buf()]));
+    let span = kiln::source::Span::new(main, 0..store.text(main).len());
+    let (program, _) = includes.load_program(&mut store, &[span]);
+    let out = preprocess(&includes, &store, &program, &[], Stage::Fragment);
+    assert_eq!(out.diagnostics.len(), 1);
+    assert_eq!(out.diagnostics[0].code, "K0304");
+    assert!(!out.text.contains("secret"));
+}
+
+#[test]
+fn the_source_map_points_every_byte_home() {
+    let files = [
+        ("main.wgsl", "#define N 4\nlet a = N;\n#include \"b.wgsl\"\nlet c = 1;\n"),
+        ("b.wgsl", "let b = 2;\n"),
+    ];
+    let dir = tempfile::tempdir().expect("temp dir");
+    for (name, text) in files {
+        std::fs::write(dir.path().join(name), text).expect("write");
+    }
+    let mut store = SourceStore::new();
+    let main = store.load(&dir.path().join("main.wgsl")).expect("load");
+    let mut includes = Includes::new(IncludeConfig::new(vec![dir.path().to_path_buf()]));
+    let span = kiln::source::Span::new(main, 0..files[0].1.len());
+    let (program, _) = includes.load_program(&mut store, &[span]);
+    let out = preprocess(&includes, &store, &program, &[], Stage::Fragment);
+    assert_eq!(out.text, "let a = 4;\nlet b = 2;\nlet c = 1;\n");
+    let map = &out.source_map;
+    // Every copied byte maps to the same byte in its file.
+    for (offset, byte) in out.text.bytes().enumerate() {
+        let origin = map.locate(offset).expect("mapped");
+        if out.text[offset..].starts_with('4') {
+            assert_eq!(store.slice(origin.span), "N", "the expansion maps to the macro's use");
+        } else {
+            assert_eq!(
+                store.text(origin.span.file).as_bytes()[origin.span.start as usize],
+                byte,
+                "offset {offset}"
+            );
+        }
+    }
+    let b = map.map_range(11..21).expect("mapped");
+    assert_eq!(store.slice(b.span), "let b = 2;");
+    assert_eq!(map.include_chain(b.inclusion).count(), 1);
+    assert_eq!(map.included_from_notes(&store, b.inclusion).len(), 1);
+    assert!(map.included_from_notes(&store, b.inclusion)[0].ends_with("main.wgsl:3:10"));
+}
+
+#[test]
+fn include_with_pragmas_declares_keywords_for_the_pass() {
+    let (mut store, ids, _) =
+        crate::support::load(&["fixtures/warn/preprocess/keyword_analysis.shader".into()]);
+    let mut includes = Includes::new(include_config(&["fixtures/warn/preprocess".into()]));
+    let (listing, _) = kiln::listing::list_shaders(&mut store, &mut includes, &ids);
+    let program = listing.shaders[0].passes[0].program.as_ref().expect("program");
+    let sets: Vec<Vec<String>> = program.keyword_sets.iter().map(|s| s.keywords.clone()).collect();
+    assert!(sets.contains(&vec!["_".to_string(), "_DETAIL".to_string()]), "{sets:?}");
+    assert!(!sets.iter().flatten().any(|k| k == "_PLAIN"), "{sets:?}");
+}

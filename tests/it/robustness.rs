@@ -58,3 +58,42 @@ proptest! {
         list_text(&text);
     }
 }
+
+/// Preprocesses arbitrary text (with the bundled library reachable) under some keywords: no
+/// panic, every output byte maps back into a file, and diagnostics render.
+fn preprocess_text(text: &str, keywords: &[&str]) {
+    let mut store = SourceStore::new();
+    let file = store.add("fuzz.wgsl", text);
+    let mut includes = kiln::preprocess::Includes::new(kiln::preprocess::IncludeConfig::new(Vec::new()));
+    let span = kiln::source::Span::new(file, 0..text.len());
+    let (program, mut diagnostics) = includes.load_program(&mut store, &[span]);
+    let out =
+        kiln::preprocess::preprocess(&includes, &store, &program, keywords, kiln::preprocess::Stage::Vertex);
+    for offset in 0..out.text.len() {
+        let origin = out.source_map.locate(offset).expect("every output byte is mapped");
+        assert!(origin.span.end as usize <= store.text(origin.span.file).len());
+    }
+    diagnostics.extend(out.diagnostics);
+    let _ = kiln::diagnostics::render_plain(&store, &diagnostics);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+
+    #[test]
+    fn arbitrary_preprocessor_input_never_panics(
+        lines in proptest::collection::vec(
+            prop_oneof![
+                "#(if|ifdef|ifndef|elif|else|endif|define|undef|include|error|warning|pragma)[ (A-Z_a-z0-9!&|<>=+*/%\")]{0,16}",
+                "#include \"(Common|BRDF|Light|fuzz)\\.wgsl\"",
+                "[ -~]{0,30}",
+                "/\\*|\\*/|//.*|\\\\",
+            ],
+            0..40,
+        ),
+        keywords in proptest::collection::vec("_?[A-C]", 0..3),
+    ) {
+        let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
+        preprocess_text(&lines.join("\n"), &keywords);
+    }
+}
