@@ -94,6 +94,14 @@ pub fn dedup(diagnostics: &mut Vec<Diagnostic>) {
     diagnostics.retain(|d| seen.insert((d.code, d.message.clone(), d.primary.as_ref().map(|l| l.span))));
 }
 
+/// Strict mode: every warning becomes an error (with the same code).
+pub fn promote_warnings(diagnostics: &mut [Diagnostic]) {
+    for d in diagnostics.iter_mut().filter(|d| d.severity == Severity::Warning) {
+        d.severity = Severity::Error;
+        d.notes.push("this warning is an error because the project is strict".into());
+    }
+}
+
 fn to_codespan(d: &Diagnostic) -> cs::Diagnostic<crate::source::FileId> {
     let severity = match d.severity {
         Severity::Error => cs::Severity::Error,

@@ -2,6 +2,8 @@
 //! rendered as text here and as JSON by serde.
 
 use crate::diagnostics::{self, Diagnostic};
+use crate::keywords::PassKeywords;
+use crate::material::{Material, MaterialValue, Preset, ShaderEntry, enum_names, load_material};
 use crate::preprocess::{Includes, load_pass};
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
 use crate::shaderlab::parse_shader;
@@ -10,10 +12,20 @@ use crate::source::{FileId, SourceStore};
 use serde::Serialize;
 use std::fmt::Write as _;
 
-/// The listing of every shader that parsed.
+/// The listing of every shader that parsed, and of every material that resolved.
 #[derive(Debug, Serialize)]
 pub struct Listing {
     pub shaders: Vec<ShaderListing>,
+    pub materials: Vec<MaterialListing>,
+}
+
+/// What `kiln list` looks at.
+#[derive(Debug, Clone, Default)]
+pub struct ListInput {
+    pub shaders: Vec<FileId>,
+    pub materials: Vec<FileId>,
+    /// Shaders built whole, whatever the materials (by name).
+    pub always_include: Vec<String>,
 }
 
 #[derive(Debug, Serialize)]
@@ -43,6 +55,32 @@ pub struct ProgramListing {
     pub keyword_sets: Vec<KeywordSetListing>,
     /// The product of the variant-making sets' sizes; `null` when it exceeds 2^128.
     pub possible_variants: Option<u128>,
+    /// The variants materials need (all of them for an always-included shader), in key order.
+    pub used_variants: Vec<VariantListing>,
+}
+
+#[derive(Debug, Serialize)]
+pub struct VariantListing {
+    /// The variant key: the pass's keyword bits in hexadecimal.
+    pub key: String,
+    pub keywords: Vec<String>,
+    /// The keywords each stage is compiled with (stage-specific keywords only in their stage).
+    pub vertex_keywords: Vec<String>,
+    pub fragment_keywords: Vec<String>,
+    pub materials: Vec<String>,
+}
+
+#[derive(Debug, Serialize)]
+pub struct MaterialListing {
+    pub name: String,
+    pub file: String,
+    pub shader: String,
+    pub preset: Option<&'static str>,
+    pub render_queue: i64,
+    pub keywords: Vec<String>,
+    /// The values of the properties the shader's render state refers to (`[_SrcBlend]`), by name
+    /// where a drawer names them.
+    pub render_state: Vec<(String, String)>,
 }
 
 #[derive(Debug, Serialize)]
@@ -55,33 +93,134 @@ pub struct KeywordSetListing {
     pub shorthand: Option<&'static str>,
 }
 
-/// Parses the files and lists what they declare. WGSL programs are loaded with their includes,
-/// whose `#include_with_pragmas` pragmas count. Diagnostics come back in file order.
+/// Parses the shaders, resolves the materials against them and lists what each pass declares and
+/// which variants the materials use. WGSL programs are loaded with their includes, whose
+/// `#include_with_pragmas` pragmas count. Diagnostics come back in file order.
 pub fn list_shaders(
     store: &mut SourceStore,
     includes: &mut Includes,
-    files: &[FileId],
+    input: &ListInput,
 ) -> (Listing, Vec<Diagnostic>) {
-    let mut shaders = Vec::new();
     let mut diagnostics = Vec::new();
-    for &file in files {
+    let mut parsed_shaders: Vec<(FileId, Shader)> = Vec::new();
+    let mut listings = Vec::new();
+    let mut pass_sets: Vec<Vec<Vec<KeywordSet>>> = Vec::new();
+    for &file in &input.shaders {
         let parsed = parse_shader(store, file);
         diagnostics.extend(parsed.diagnostics);
         if let Some(shader) = parsed.shader {
-            let mut lister =
-                Lister { store: &mut *store, includes: &mut *includes, diagnostics: &mut diagnostics };
-            shaders.push(lister.shader(file, &shader));
+            let mut lister = Lister {
+                store: &mut *store,
+                includes: &mut *includes,
+                diagnostics: &mut diagnostics,
+                sets: Vec::new(),
+            };
+            listings.push(lister.shader(file, &shader));
+            pass_sets.push(lister.sets);
+            parsed_shaders.push((file, shader));
         }
     }
+
+    let entries: Vec<ShaderEntry> = parsed_shaders
+        .iter()
+        .zip(&pass_sets)
+        .map(|((_, shader), sets)| ShaderEntry {
+            shader,
+            keyword_sets: sets.iter().flatten().cloned().collect(),
+        })
+        .collect();
+    let mut materials = Vec::new();
+    for &file in &input.materials {
+        let (material, found) = load_material(store, file, &entries);
+        diagnostics.extend(found);
+        materials.extend(material);
+    }
+
+    for (s, listing) in listings.iter_mut().enumerate() {
+        let everything = input.always_include.contains(&listing.name);
+        let users: Vec<&Material> = materials.iter().filter(|m| m.shader == s).collect();
+        let keywords: Vec<Vec<&str>> =
+            users.iter().map(|m| m.keywords.iter().map(|(k, _)| k.as_str()).collect()).collect();
+        let programs = listing.passes.iter_mut().filter_map(|p| p.program.as_mut());
+        for (program, sets) in programs.zip(&pass_sets[s]) {
+            let pass = PassKeywords::new(sets.clone());
+            let names = |bits| pass.keywords(bits).map(str::to_string).collect();
+            program.used_variants = pass
+                .enumerate(&keywords, everything)
+                .iter()
+                .map(|v| VariantListing {
+                    key: v.bits.key(),
+                    keywords: names(&v.bits),
+                    vertex_keywords: names(&v.vertex),
+                    fragment_keywords: names(&v.fragment),
+                    materials: v.materials.iter().map(|&m| users[m].name.clone()).collect(),
+                })
+                .collect();
+        }
+    }
+    let materials = materials.iter().map(|m| material_listing(store, &entries[m.shader], m)).collect();
     // Include blocks and files are shared by passes: report each of their problems once.
     diagnostics::dedup(&mut diagnostics);
-    (Listing { shaders }, diagnostics)
+    (Listing { shaders: listings, materials }, diagnostics)
+}
+
+fn material_listing(store: &SourceStore, entry: &ShaderEntry, material: &Material) -> MaterialListing {
+    let shader = entry.shader;
+    let mut referenced: Vec<String> = Vec::new();
+    for (_, _, _, pass) in shader.passes() {
+        for command in
+            shader.subshaders.iter().flat_map(|s| &s.state.render_state).chain(&pass.state.render_state)
+        {
+            for (_, name) in bracketed(store.slice(command.span)) {
+                if !referenced.iter().any(|r| r == name) {
+                    referenced.push(name.to_string());
+                }
+            }
+        }
+    }
+    let render_state = referenced
+        .into_iter()
+        .filter_map(|name| {
+            let shown = match material.values.get(&name)? {
+                MaterialValue::Number(n) => {
+                    let named = shader
+                        .property(&name)
+                        .and_then(enum_names)
+                        .and_then(|names| names.into_iter().find(|(_, v)| v == n).map(|(label, _)| label));
+                    named.unwrap_or_else(|| n.to_string())
+                }
+                other => format!("{other:?}"),
+            };
+            Some((name, shown))
+        })
+        .collect();
+    MaterialListing {
+        name: material.name.clone(),
+        file: store.name(material.file).to_string(),
+        shader: shader.name.value.clone(),
+        preset: material.preset.map(Preset::name),
+        render_queue: material.render_queue,
+        keywords: material.keywords.iter().map(|(k, _)| k.clone()).collect(),
+        render_state,
+    }
+}
+
+/// `[_Name]` references in a render command's text.
+fn bracketed(text: &str) -> impl Iterator<Item = (usize, &str)> {
+    text.match_indices('[').filter_map(move |(i, _)| {
+        let rest = &text[i + 1..];
+        let end = rest.find(']')?;
+        let name = rest[..end].trim();
+        (!name.is_empty() && name.chars().all(|c| c.is_alphanumeric() || c == '_')).then_some((i, name))
+    })
 }
 
 struct Lister<'a> {
     store: &'a mut SourceStore,
     includes: &'a mut Includes,
     diagnostics: &'a mut Vec<Diagnostic>,
+    /// The variant sets of each program listed, in listing order.
+    sets: Vec<Vec<KeywordSet>>,
 }
 
 impl Lister<'_> {
@@ -140,6 +279,7 @@ impl Lister<'_> {
             self.diagnostics.extend(errors);
             pragmas
         };
+        self.sets.push(pragmas.variant_sets());
         program_from_pragmas(language.name(), &pragmas)
     }
 }
@@ -173,6 +313,7 @@ fn program_from_pragmas(language: &'static str, pragmas: &ProgramPragmas) -> Pro
         target: pragmas.target().map(str::to_string),
         keyword_sets: pragmas.keyword_sets.iter().map(set_listing).collect(),
         possible_variants: pragmas.possible_variants(),
+        used_variants: Vec::new(),
     }
 }
 
@@ -223,7 +364,36 @@ pub fn render_text(listing: &Listing) -> String {
                 );
             }
             let count = program.possible_variants.map_or("more than 2^128".to_string(), |n| n.to_string());
-            let _ = writeln!(out, "    possible variants: {count}");
+            let _ = writeln!(out, "    variants: used {} of {count} possible", program.used_variants.len());
+            for variant in &program.used_variants {
+                let keywords = if variant.keywords.is_empty() {
+                    "(no keywords)".to_string()
+                } else {
+                    variant.keywords.join(" ")
+                };
+                let users = if variant.materials.is_empty() {
+                    "(always included)".to_string()
+                } else {
+                    variant.materials.join(", ")
+                };
+                let _ = writeln!(out, "      {keywords:<40} {users}");
+            }
+        }
+    }
+    out
+}
+
+/// Renders each material's shader, preset, queue, keywords and render-state values.
+pub fn render_materials(listing: &Listing) -> String {
+    let mut out = String::new();
+    for m in &listing.materials {
+        let preset = m.preset.map(|p| format!(", preset {p}")).unwrap_or_default();
+        let _ = writeln!(out, "{} ({}): {}{preset}, queue {}", m.name, m.file, m.shader, m.render_queue);
+        let keywords = if m.keywords.is_empty() { "(none)".to_string() } else { m.keywords.join(" ") };
+        let _ = writeln!(out, "  keywords: {keywords}");
+        if !m.render_state.is_empty() {
+            let state: Vec<String> = m.render_state.iter().map(|(k, v)| format!("{k} = {v}")).collect();
+            let _ = writeln!(out, "  render state: {}", state.join(", "));
         }
     }
     out

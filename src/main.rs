@@ -3,8 +3,9 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use kiln::diagnostics::{self, Diagnostic};
+use kiln::listing::ListInput;
 use kiln::preprocess::{Includes, Stage};
-use kiln::project::VariantRequest;
+use kiln::project::{VariantRequest, include_config};
 use kiln::source::SourceStore;
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -19,12 +20,16 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// List each shader's passes, keyword sets and possible variant counts.
+    /// List each shader's passes, keyword sets, and the variants its materials use.
     List {
-        /// Shader files or folders to walk (default: the bundled example project).
+        /// Project folders (with their kiln.toml, if any), `.shader` or `.mat` files
+        /// (default: the bundled example project).
         paths: Vec<PathBuf>,
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
+        /// Also list each material's resolved keywords and render state.
+        #[arg(long)]
+        materials: bool,
     },
     /// Print the WGSL the compiler sees for one variant of one pass: includes spliced,
     /// conditionals resolved, macros substituted.
@@ -57,7 +62,7 @@ enum Format {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
-        Command::List { paths, format } => list(paths, format),
+        Command::List { paths, format, materials } => list(paths, format, materials),
         Command::Preprocess { shader, pass, keywords, stage } => {
             let stage = match stage {
                 StageArg::Vertex => Stage::Vertex,
@@ -82,27 +87,41 @@ fn preprocess(request: &VariantRequest) -> ExitCode {
     }
 }
 
-fn list(paths: Vec<PathBuf>, format: Format) -> ExitCode {
+fn list(paths: Vec<PathBuf>, format: Format, show_materials: bool) -> ExitCode {
     let paths = if paths.is_empty() { vec![kiln::project::bundled_example()] } else { paths };
-    let files = match kiln::project::find_shader_files(&paths) {
-        Ok(files) => files,
+    let mut store = SourceStore::new();
+    let (workspace, mut problems) = match kiln::project::open_workspace(&mut store, &paths) {
+        Ok(opened) => opened,
         Err(error) => return usage_failure(&error.to_string()),
     };
-    let mut store = SourceStore::new();
-    let mut includes = Includes::new(kiln::project::include_config(&paths));
-    let (ids, mut problems) = kiln::project::load_files(&mut store, &files);
-    let (listing, diagnostics) = kiln::listing::list_shaders(&mut store, &mut includes, &ids);
+    let mut includes = Includes::new(workspace.include.clone().unwrap_or_else(|| include_config(&paths)));
+    let (shaders, found) = kiln::project::load_files(&mut store, &workspace.shaders);
+    problems.extend(found);
+    let (materials, found) = kiln::project::load_files(&mut store, &workspace.materials);
+    problems.extend(found);
+    let input = ListInput { shaders, materials, always_include: workspace.always_include.clone() };
+    let (listing, diagnostics) = kiln::listing::list_shaders(&mut store, &mut includes, &input);
     problems.extend(diagnostics);
+    if workspace.strict {
+        diagnostics::promote_warnings(&mut problems);
+    }
     match format {
         Format::Text => {
-            print_out(&kiln::listing::render_text(&listing));
+            let mut text = kiln::listing::render_text(&listing);
+            if show_materials {
+                text.push_str(&kiln::listing::render_materials(&listing));
+            }
+            print_out(&text);
             report(&store, &problems);
         }
         Format::Json => {
-            let document = serde_json::json!({
+            let mut document = serde_json::json!({
                 "shaders": listing.shaders,
                 "diagnostics": diagnostics::to_json(&store, &problems),
             });
+            if show_materials {
+                document["materials"] = serde_json::json!(listing.materials);
+            }
             print_out(&format!("{document:#}\n"));
         }
     }

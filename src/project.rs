@@ -2,6 +2,7 @@
 //! build scripts. This is the only place besides [`SourceStore`] that touches the file system:
 //! stages get file ids, never paths.
 
+use crate::config::ProjectConfig;
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{VariantError, select_variant, stage_keywords};
 use crate::listing::program_blocks;
@@ -80,6 +81,67 @@ pub fn bundled_example() -> PathBuf {
         .unwrap_or(absolute)
 }
 
+/// What the given paths hold: folders are projects (with their `kiln.toml`, or the defaults), files
+/// are shaders (or materials, by their `.mat` extension).
+#[derive(Debug, Default)]
+pub struct Workspace {
+    pub shaders: Vec<PathBuf>,
+    pub materials: Vec<PathBuf>,
+    pub include: Option<IncludeConfig>,
+    pub always_include: Vec<String>,
+    pub strict: bool,
+}
+
+/// Gathers the shaders, materials and include settings of `paths` (see [`Workspace`]); a
+/// malformed `kiln.toml` is a diagnostic, its defaults used instead.
+pub fn open_workspace(
+    store: &mut SourceStore,
+    paths: &[PathBuf],
+) -> Result<(Workspace, Vec<Diagnostic>), ProjectError> {
+    let mut workspace = Workspace::default();
+    let mut diagnostics = Vec::new();
+    let mut roots = Vec::new();
+    let mut include_paths = Vec::new();
+    for path in paths {
+        if !path.exists() {
+            return Err(ProjectError::NotFound(path.clone()));
+        }
+        if path.is_file() {
+            let is_material = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("mat"));
+            if is_material { &mut workspace.materials } else { &mut workspace.shaders }.push(path.clone());
+            roots.push(path.parent().map(Path::to_path_buf).unwrap_or_default());
+            continue;
+        }
+        let config_path = path.join(crate::config::FILE_NAME);
+        let config = if config_path.is_file() {
+            let file = store.load(&config_path)?;
+            let (config, problems) = crate::config::parse_config(store, file);
+            diagnostics.extend(problems);
+            config
+        } else {
+            ProjectConfig::default()
+        };
+        let under = |folders: &[PathBuf]| -> Vec<PathBuf> {
+            folders.iter().map(|f| crate::source::normalize_lexically(&path.join(f))).collect()
+        };
+        workspace.shaders.extend(find_files(&under(&config.shaders), "shader")?);
+        workspace.materials.extend(find_files(&under(&config.materials), "mat")?);
+        include_paths.extend(under(&config.include_paths));
+        workspace.always_include.extend(config.always_include);
+        workspace.strict |= config.strict;
+        roots.push(path.clone());
+    }
+    // A shader under two roots (`.` and `shaders`) is still one shader.
+    for files in [&mut workspace.shaders, &mut workspace.materials] {
+        let mut seen = std::collections::HashSet::new();
+        files.retain(|f| seen.insert(std::fs::canonicalize(f).unwrap_or_else(|_| f.clone())));
+    }
+    let mut include = include_config(&roots);
+    include.include_paths = include_paths;
+    workspace.include = Some(include);
+    Ok((workspace, diagnostics))
+}
+
 /// Where includes may come from for shaders found under `paths`: each folder given (or the folder
 /// of each file given) is a root, searched after the including file's own folder.
 pub fn include_config(paths: &[PathBuf]) -> IncludeConfig {
@@ -94,11 +156,17 @@ pub fn include_config(paths: &[PathBuf]) -> IncludeConfig {
 /// Every `.shader` file under the given files and folders, in a stable (sorted) order. A file
 /// named directly is taken whatever its extension; symbolic links are not followed.
 pub fn find_shader_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, ProjectError> {
+    if let Some(missing) = paths.iter().find(|p| !p.exists()) {
+        return Err(ProjectError::NotFound(missing.clone()));
+    }
+    find_files(paths, "shader")
+}
+
+/// Every file with this extension under the given files and folders (see [`find_shader_files`]).
+/// A folder that does not exist contributes nothing (a project without materials is fine).
+pub fn find_files(paths: &[PathBuf], extension: &str) -> Result<Vec<PathBuf>, ProjectError> {
     let mut files = Vec::new();
-    for path in paths {
-        if !path.exists() {
-            return Err(ProjectError::NotFound(path.clone()));
-        }
+    for path in paths.iter().filter(|p| p.exists()) {
         if path.is_file() {
             files.push(path.clone());
             continue;
@@ -106,8 +174,8 @@ pub fn find_shader_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, ProjectError
         for entry in walkdir::WalkDir::new(path).sort_by_file_name() {
             let entry =
                 entry.map_err(|e| ProjectError::Walk { path: path.clone(), message: e.to_string() })?;
-            let is_shader = entry.path().extension().is_some_and(|ext| ext.eq_ignore_ascii_case("shader"));
-            if entry.file_type().is_file() && is_shader {
+            let matches = entry.path().extension().is_some_and(|ext| ext.eq_ignore_ascii_case(extension));
+            if entry.file_type().is_file() && matches {
                 files.push(entry.into_path());
             }
         }

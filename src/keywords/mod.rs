@@ -1,5 +1,9 @@
-//! Keyword sets and variants: which keywords a variant may have, given a pass's declared sets.
-//! (Enumeration from materials comes with the materials work.)
+//! Keyword sets and variants: a pass's keywords as bits, the variants its materials need, and
+//! which keywords a requested variant has.
+
+mod enumerate;
+
+pub use enumerate::{KeywordBits, PassKeywords, Variant};
 
 use crate::preprocess::Stage;
 use crate::shaderlab::pragma::{KeywordSet, KeywordStage};

@@ -1,0 +1,64 @@
+//! `kiln.toml`: where a project's shaders, materials and includes are, and what a build emits.
+//! Every field has a default, so a folder of `.shader` and `.mat` files needs no file at all.
+
+use crate::diagnostics::Diagnostic;
+use crate::source::{FileId, SourceStore, Span};
+use serde::Deserialize;
+use std::path::PathBuf;
+
+/// The project file's name, looked for in the project folder.
+pub const FILE_NAME: &str = "kiln.toml";
+
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ProjectConfig {
+    /// Folders searched for `.shader` files, relative to the project folder.
+    pub shaders: Vec<PathBuf>,
+    /// Folders searched for `.mat` files.
+    pub materials: Vec<PathBuf>,
+    /// Folders `#include` searches after the including file's own folder.
+    pub include_paths: Vec<PathBuf>,
+    /// Where builds write their output.
+    pub output: PathBuf,
+    pub backends: Vec<Backend>,
+    /// Shaders built with every variant, whether or not a material uses them (by shader name).
+    pub always_include: Vec<String>,
+    /// Warnings count as errors.
+    pub strict: bool,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Backend {
+    Wgsl,
+    Spirv,
+}
+
+impl Default for ProjectConfig {
+    fn default() -> ProjectConfig {
+        ProjectConfig {
+            shaders: vec![PathBuf::from(".")],
+            materials: vec![PathBuf::from(".")],
+            include_paths: Vec::new(),
+            output: PathBuf::from("build/kiln"),
+            backends: vec![Backend::Wgsl, Backend::Spirv],
+            always_include: Vec::new(),
+            strict: false,
+        }
+    }
+}
+
+/// Reads a loaded `kiln.toml`; a malformed one is reported and the defaults are used.
+pub fn parse_config(store: &SourceStore, file: FileId) -> (ProjectConfig, Vec<Diagnostic>) {
+    match toml::from_str(store.text(file)) {
+        Ok(config) => (config, Vec::new()),
+        Err(error) => {
+            let span = Span::new(file, error.span().unwrap_or(0..0));
+            let message = error.message().trim().trim_end_matches('.').to_string();
+            let diagnostic = Diagnostic::error("K0003", "invalid `kiln.toml`")
+                .at(span, message)
+                .help("fields are shaders, materials, include_paths, output, backends, always_include and strict (docs/project.md)");
+            (ProjectConfig::default(), vec![diagnostic])
+        }
+    }
+}

@@ -1,0 +1,209 @@
+//! A pass's keywords as bits, and its variants: the product of its multi_compile sets times the
+//! distinct projections of its materials onto its shader_feature sets. The full product of the
+//! shader_feature sets is never built (except for shaders the project always includes whole).
+
+use crate::preprocess::Stage;
+use crate::shaderlab::pragma::{KeywordKind, KeywordSet, KeywordStage};
+use std::collections::HashMap;
+
+/// Some of a pass's keywords: bit i stands for the pass's i-th keyword.
+#[derive(Debug, Clone, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct KeywordBits(Vec<u64>);
+
+impl KeywordBits {
+    fn empty(len: usize) -> KeywordBits {
+        KeywordBits(vec![0; len.div_ceil(64)])
+    }
+
+    fn insert(&mut self, bit: usize) {
+        self.0[bit / 64] |= 1 << (bit % 64);
+    }
+
+    pub fn contains(&self, bit: usize) -> bool {
+        self.0.get(bit / 64).is_some_and(|w| w & (1 << (bit % 64)) != 0)
+    }
+
+    fn and(&self, mask: &KeywordBits) -> KeywordBits {
+        KeywordBits(self.0.iter().zip(&mask.0).map(|(a, b)| a & b).collect())
+    }
+
+    /// The variant key: hexadecimal, most significant word first, stable for a given pass.
+    pub fn key(&self) -> String {
+        let mut words = self.0.iter().rev().skip_while(|w| **w == 0).peekable();
+        match words.next() {
+            None => "0".to_string(),
+            Some(first) => words.fold(format!("{first:x}"), |key, w| format!("{key}{w:016x}")),
+        }
+    }
+}
+
+/// A pass's variant-making keyword sets, with a bit per keyword.
+#[derive(Debug, Clone)]
+pub struct PassKeywords {
+    sets: Vec<KeywordSet>,
+    /// For each set, the bit of each option (`None` for the off choice).
+    option_bits: Vec<Vec<Option<usize>>>,
+    names: Vec<String>,
+    /// Bits of the keywords each stage sees (a `_fragment` keyword is not in the vertex mask).
+    vertex_mask: KeywordBits,
+    fragment_mask: KeywordBits,
+}
+
+/// One variant of a pass.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Variant {
+    pub bits: KeywordBits,
+    /// Option chosen in each set, in set order.
+    pub choices: Vec<usize>,
+    /// Indices (into the materials given) of the materials that need this variant.
+    pub materials: Vec<usize>,
+    /// The keywords each stage's text is preprocessed with: two variants with equal vertex bits
+    /// share a vertex module.
+    pub vertex: KeywordBits,
+    pub fragment: KeywordBits,
+}
+
+impl PassKeywords {
+    /// `sets` are the pass's variant sets (`ProgramPragmas::variant_sets`: no `dynamic_branch`,
+    /// `skip_variants` applied). A keyword repeated across sets keeps its first bit.
+    pub fn new(sets: Vec<KeywordSet>) -> PassKeywords {
+        let mut names: Vec<String> = Vec::new();
+        let mut bit_of: HashMap<String, usize> = HashMap::new();
+        let option_bits: Vec<Vec<Option<usize>>> = sets
+            .iter()
+            .map(|set| {
+                set.options
+                    .iter()
+                    .map(|o| {
+                        let keyword = o.keyword.as_ref()?;
+                        Some(*bit_of.entry(keyword.clone()).or_insert_with(|| {
+                            names.push(keyword.clone());
+                            names.len() - 1
+                        }))
+                    })
+                    .collect()
+            })
+            .collect();
+        let mut vertex_mask = KeywordBits::empty(names.len());
+        let mut fragment_mask = KeywordBits::empty(names.len());
+        for (set, bits) in sets.iter().zip(&option_bits) {
+            for bit in bits.iter().flatten() {
+                if matches!(set.stage, KeywordStage::All | KeywordStage::Vertex) {
+                    vertex_mask.insert(*bit);
+                }
+                if matches!(set.stage, KeywordStage::All | KeywordStage::Fragment) {
+                    fragment_mask.insert(*bit);
+                }
+            }
+        }
+        PassKeywords { sets, option_bits, names, vertex_mask, fragment_mask }
+    }
+
+    pub fn sets(&self) -> &[KeywordSet] {
+        &self.sets
+    }
+
+    /// The keyword of each bit.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The keywords in `bits`, in bit order (which is declaration order).
+    pub fn keywords<'a>(&'a self, bits: &'a KeywordBits) -> impl Iterator<Item = &'a str> + 'a {
+        self.names.iter().enumerate().filter(|(i, _)| bits.contains(*i)).map(|(_, n)| n.as_str())
+    }
+
+    /// The keywords `stage` is preprocessed with for this variant.
+    pub fn stage_bits<'a>(&self, variant: &'a Variant, stage: Stage) -> &'a KeywordBits {
+        match stage {
+            Stage::Vertex => &variant.vertex,
+            Stage::Fragment => &variant.fragment,
+        }
+    }
+
+    /// The number of variants the pass could have: the product of its set sizes.
+    pub fn possible(&self) -> Option<u128> {
+        self.sets.iter().try_fold(1u128, |n, set| n.checked_mul(set.options.len() as u128))
+    }
+
+    /// The option a material's keywords choose in a shader_feature set: its keyword, else the off
+    /// choice, else (an error the material reported) the first option.
+    fn choose(&self, set: usize, keywords: &[&str]) -> usize {
+        let options = &self.sets[set].options;
+        options
+            .iter()
+            .position(|o| o.keyword.as_deref().is_some_and(|k| keywords.contains(&k)))
+            .or_else(|| options.iter().position(|o| o.keyword.is_none()))
+            .unwrap_or(0)
+    }
+
+    /// The variants the materials need (each given as its enabled keywords), or every variant
+    /// when `everything` (a shader the project always includes). Sorted by their choices.
+    pub fn enumerate(&self, materials: &[Vec<&str>], everything: bool) -> Vec<Variant> {
+        let features: Vec<usize> = self.indices(KeywordKind::ShaderFeature);
+        let multi: Vec<usize> = self.indices(KeywordKind::MultiCompile);
+        // Distinct projections onto the shader_feature sets, each with the materials needing it.
+        let mut projections: Vec<(Vec<usize>, Vec<usize>)> = Vec::new();
+        let mut index: HashMap<Vec<usize>, usize> = HashMap::new();
+        if everything {
+            for choice in self.product(&features) {
+                index.insert(choice.clone(), projections.len());
+                projections.push((choice, Vec::new()));
+            }
+        }
+        for (m, keywords) in materials.iter().enumerate() {
+            let choice: Vec<usize> = features.iter().map(|&s| self.choose(s, keywords)).collect();
+            let slot = *index.entry(choice.clone()).or_insert_with(|| {
+                projections.push((choice, Vec::new()));
+                projections.len() - 1
+            });
+            projections[slot].1.push(m);
+        }
+        let combos = self.product(&multi);
+        let mut variants = Vec::with_capacity(projections.len() * combos.len());
+        for (projection, users) in &projections {
+            for combo in &combos {
+                let mut choices = vec![0; self.sets.len()];
+                for (&set, &option) in features.iter().zip(projection).chain(multi.iter().zip(combo)) {
+                    choices[set] = option;
+                }
+                variants.push(self.variant(choices, users.clone()));
+            }
+        }
+        variants.sort_by(|a, b| a.choices.cmp(&b.choices));
+        variants
+    }
+
+    fn variant(&self, choices: Vec<usize>, materials: Vec<usize>) -> Variant {
+        let mut bits = KeywordBits::empty(self.names.len());
+        for (set, &option) in choices.iter().enumerate() {
+            if let Some(bit) = self.option_bits[set][option] {
+                bits.insert(bit);
+            }
+        }
+        let vertex = bits.and(&self.vertex_mask);
+        let fragment = bits.and(&self.fragment_mask);
+        Variant { bits, choices, materials, vertex, fragment }
+    }
+
+    fn indices(&self, kind: KeywordKind) -> Vec<usize> {
+        (0..self.sets.len()).filter(|&i| self.sets[i].kind == kind).collect()
+    }
+
+    /// Every combination of one option per set of `sets`, in lexicographic order.
+    fn product(&self, sets: &[usize]) -> Vec<Vec<usize>> {
+        sets.iter().fold(vec![Vec::new()], |partial, &set| {
+            let options = self.sets[set].options.len();
+            partial
+                .iter()
+                .flat_map(|prefix| {
+                    (0..options).map(move |o| {
+                        let mut next = prefix.clone();
+                        next.push(o);
+                        next
+                    })
+                })
+                .collect()
+        })
+    }
+}

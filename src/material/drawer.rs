@@ -1,0 +1,117 @@
+//! What property drawers mean for a material, as Unity reads them: the keywords `Toggle`,
+//! `ToggleOff` and `KeywordEnum` enable, and the names `Enum` gives to numbers.
+
+use crate::shaderlab::ast::{AttributeKind, Property};
+
+/// A number counts as "on" above this, as in Unity's toggle drawers.
+pub const TOGGLE_EPSILON: f64 = 0.001;
+
+/// The keywords a drawer can enable, with which value enables each.
+#[derive(Debug, Clone, PartialEq)]
+pub enum KeywordDrawer {
+    /// `[Toggle(KW)]` (or `UPPER(prop)_ON`): on when |value| > 0.001.
+    Toggle(String),
+    /// `[ToggleOff(KW)]` (or `UPPER(prop)_OFF`): on when the value is off.
+    ToggleOff(String),
+    /// `[KeywordEnum(A, B)]`: value i enables `UPPER(prop)_UPPER(entry i)`.
+    KeywordEnum(Vec<String>),
+}
+
+impl KeywordDrawer {
+    /// The drawer of a property, if it sets keywords.
+    pub fn of(property: &Property) -> Option<KeywordDrawer> {
+        let upper = property.name.value.to_uppercase();
+        property.attributes.iter().find_map(|attribute| match &attribute.kind {
+            AttributeKind::Toggle(keyword) => {
+                Some(KeywordDrawer::Toggle(keyword.clone().unwrap_or_else(|| format!("{upper}_ON"))))
+            }
+            AttributeKind::ToggleOff(keyword) => {
+                Some(KeywordDrawer::ToggleOff(keyword.clone().unwrap_or_else(|| format!("{upper}_OFF"))))
+            }
+            AttributeKind::KeywordEnum(entries) => Some(KeywordDrawer::KeywordEnum(
+                entries.iter().map(|e| format!("{upper}_{}", e.to_uppercase().replace(' ', "_"))).collect(),
+            )),
+            _ => None,
+        })
+    }
+
+    /// Every keyword this drawer may enable.
+    pub fn keywords(&self) -> Vec<&str> {
+        match self {
+            KeywordDrawer::Toggle(k) | KeywordDrawer::ToggleOff(k) => vec![k.as_str()],
+            KeywordDrawer::KeywordEnum(keywords) => keywords.iter().map(String::as_str).collect(),
+        }
+    }
+
+    /// The keyword enabled by `value`, if any.
+    pub fn keyword_for(&self, value: f64) -> Option<&str> {
+        let on = value.abs() > TOGGLE_EPSILON;
+        match self {
+            KeywordDrawer::Toggle(k) => on.then_some(k.as_str()),
+            KeywordDrawer::ToggleOff(k) => (!on).then_some(k.as_str()),
+            KeywordDrawer::KeywordEnum(keywords) => {
+                let index = value.round();
+                (index >= 0.0).then(|| keywords.get(index as usize).map(String::as_str)).flatten()
+            }
+        }
+    }
+}
+
+/// Names Unity's `[Enum(Type)]` drawers know, with their values.
+const UNITY_ENUMS: &[(&str, &[(&str, f64)])] = &[
+    (
+        "UnityEngine.Rendering.BlendMode",
+        &[
+            ("Zero", 0.0),
+            ("One", 1.0),
+            ("DstColor", 2.0),
+            ("SrcColor", 3.0),
+            ("OneMinusDstColor", 4.0),
+            ("SrcAlpha", 5.0),
+            ("OneMinusSrcColor", 6.0),
+            ("DstAlpha", 7.0),
+            ("OneMinusDstAlpha", 8.0),
+            ("SrcAlphaSaturate", 9.0),
+            ("OneMinusSrcAlpha", 10.0),
+        ],
+    ),
+    ("UnityEngine.Rendering.CullMode", &[("Off", 0.0), ("Front", 1.0), ("Back", 2.0)]),
+    (
+        "UnityEngine.Rendering.CompareFunction",
+        &[
+            ("Disabled", 0.0),
+            ("Never", 1.0),
+            ("Less", 2.0),
+            ("Equal", 3.0),
+            ("LessEqual", 4.0),
+            ("Greater", 5.0),
+            ("NotEqual", 6.0),
+            ("GreaterEqual", 7.0),
+            ("Always", 8.0),
+        ],
+    ),
+];
+
+/// The `(name, value)` pairs of a property's `[Enum]` or `[KeywordEnum]` drawer, if it has one.
+pub fn enum_names(property: &Property) -> Option<Vec<(String, f64)>> {
+    property.attributes.iter().find_map(|attribute| match &attribute.kind {
+        AttributeKind::Enum(args) if args.len() == 1 => {
+            let short = |name: &str| name.rsplit('.').next().unwrap_or(name).to_string();
+            UNITY_ENUMS
+                .iter()
+                .find(|(ty, _)| *ty == args[0] || short(ty) == short(&args[0]))
+                .map(|(_, pairs)| pairs.iter().map(|(n, v)| (n.to_string(), *v)).collect())
+        }
+        AttributeKind::Enum(args) => {
+            let pairs = args.chunks(2).filter_map(|pair| match pair {
+                [name, value] => value.parse::<f64>().ok().map(|v| (name.clone(), v)),
+                _ => None,
+            });
+            Some(pairs.collect())
+        }
+        AttributeKind::KeywordEnum(entries) => {
+            Some(entries.iter().enumerate().map(|(i, e)| (e.clone(), i as f64)).collect())
+        }
+        _ => None,
+    })
+}
