@@ -45,6 +45,34 @@ enum Command {
         #[arg(long, value_enum, default_value_t = StageArg::Fragment)]
         stage: StageArg,
     },
+    /// Create materials and apply presets to them.
+    #[command(subcommand)]
+    Material(MaterialCommand),
+}
+
+#[derive(Subcommand)]
+enum MaterialCommand {
+    /// Write a new material with the shader's defaults.
+    New {
+        /// The `.mat` file to create (never overwritten).
+        path: PathBuf,
+        /// The shader's name, as in `Shader "name"`.
+        #[arg(long)]
+        shader: String,
+        /// Opaque, Clip, Fade or Transparent.
+        #[arg(long)]
+        preset: Option<String>,
+        /// The project to find the shader in (default: the nearest folder with a kiln.toml).
+        #[arg(long)]
+        project: Option<PathBuf>,
+    },
+    /// Apply a preset to a material, keeping its other values and comments.
+    Preset {
+        path: PathBuf,
+        preset: String,
+        #[arg(long)]
+        project: Option<PathBuf>,
+    },
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -69,6 +97,22 @@ fn main() -> ExitCode {
                 StageArg::Fragment => Stage::Fragment,
             };
             preprocess(&VariantRequest { shader, pass, keywords, stage })
+        }
+        Command::Material(command) => {
+            let done = match command {
+                MaterialCommand::New { path, shader, preset, project } => {
+                    let project = project.unwrap_or_else(|| kiln::project::project_of(&path));
+                    kiln::project::new_material(&path, &shader, preset.as_deref(), &project)
+                }
+                MaterialCommand::Preset { path, preset, project } => {
+                    let project = project.unwrap_or_else(|| kiln::project::project_of(&path));
+                    kiln::project::apply_preset(&path, &preset, &project)
+                }
+            };
+            match done {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(error) => usage_failure(&error.to_string()),
+            }
         }
     }
 }

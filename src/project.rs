@@ -6,6 +6,7 @@ use crate::config::ProjectConfig;
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{VariantError, select_variant, stage_keywords};
 use crate::listing::program_blocks;
+use crate::material::Preset;
 use crate::preprocess::{IncludeConfig, Includes, Preprocessed, Stage, load_pass, preprocess};
 use crate::shaderlab::ast::ProgramLanguage;
 use crate::shaderlab::parse_shader;
@@ -27,6 +28,103 @@ pub enum ProjectError {
     NotWgsl { language: &'static str },
     #[error(transparent)]
     Variant(#[from] VariantError),
+    #[error("no shader named `{name}` in the project{}", suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default())]
+    ShaderNotFound { name: String, suggestion: Option<String> },
+    #[error("unknown preset `{0}`: presets are Opaque, Clip, Fade and Transparent")]
+    UnknownPreset(String),
+    #[error("preset `{preset}` is not offered for `{shader}`: it has no `_PremulAlpha` property")]
+    PresetNotOffered { preset: &'static str, shader: String },
+    #[error("`{0}` already exists; use `kiln material preset` to change it")]
+    Exists(PathBuf),
+    #[error("`{path}` is not a valid material: {message}")]
+    NotAMaterial { path: PathBuf, message: String },
+    #[error("cannot write `{path}`: {source}")]
+    Write { path: PathBuf, source: std::io::Error },
+}
+
+/// The project a material file belongs to: the nearest folder above it with a `kiln.toml`, else
+/// its own folder.
+pub fn project_of(material: &Path) -> PathBuf {
+    let folder = material.parent().map(Path::to_path_buf).unwrap_or_default();
+    let found =
+        folder.ancestors().find(|a| a.join(crate::config::FILE_NAME).is_file()).map(Path::to_path_buf);
+    found.unwrap_or(folder)
+}
+
+/// Parses the project's shaders and returns the one named `name`.
+fn find_shader(
+    store: &mut SourceStore,
+    project: &Path,
+    name: &str,
+) -> Result<crate::shaderlab::ast::Shader, ProjectError> {
+    let (workspace, _) = open_workspace(store, &[project.to_path_buf()])?;
+    let (files, _) = load_files(store, &workspace.shaders);
+    let shaders: Vec<_> = files.into_iter().filter_map(|f| parse_shader(store, f).shader).collect();
+    let names = shaders.iter().map(|s| s.name.value.as_str());
+    let suggestion = crate::material::closest(name, names);
+    shaders
+        .into_iter()
+        .find(|s| s.name.value == name)
+        .ok_or(ProjectError::ShaderNotFound { name: name.to_string(), suggestion })
+}
+
+fn parse_preset(name: &str, shader: &crate::shaderlab::ast::Shader) -> Result<Preset, ProjectError> {
+    let preset = Preset::parse(name).ok_or_else(|| ProjectError::UnknownPreset(name.to_string()))?;
+    if !preset.offered_for(shader) {
+        return Err(ProjectError::PresetNotOffered {
+            preset: preset.name(),
+            shader: shader.name.value.clone(),
+        });
+    }
+    Ok(preset)
+}
+
+/// `kiln material new`: writes a material for the named shader with its defaults (and a preset).
+/// Never overwrites a file.
+pub fn new_material(
+    path: &Path,
+    shader: &str,
+    preset: Option<&str>,
+    project: &Path,
+) -> Result<(), ProjectError> {
+    if path.exists() {
+        return Err(ProjectError::Exists(path.to_path_buf()));
+    }
+    let shader = find_shader(&mut SourceStore::new(), project, shader)?;
+    let preset = preset.map(|p| parse_preset(p, &shader)).transpose()?;
+    write_atomically(path, &crate::material::preset::new_material(&shader, preset))
+}
+
+/// `kiln material preset`: applies a preset to an existing material, keeping its other values
+/// and comments.
+pub fn apply_preset(path: &Path, preset: &str, project: &Path) -> Result<(), ProjectError> {
+    let text =
+        std::fs::read_to_string(path).map_err(|source| LoadError::Io { path: path.to_path_buf(), source })?;
+    let not_a_material = |message: String| ProjectError::NotAMaterial { path: path.to_path_buf(), message };
+    let mut document: toml_edit::DocumentMut =
+        text.parse().map_err(|e: toml_edit::TomlError| not_a_material(e.message().to_string()))?;
+    let name = document
+        .get("shader")
+        .and_then(|s| s.as_str())
+        .ok_or_else(|| not_a_material("it names no `shader`".into()))?;
+    let shader = find_shader(&mut SourceStore::new(), project, name)?;
+    let preset = parse_preset(preset, &shader)?;
+    crate::material::preset::apply(&mut document, &shader, preset);
+    write_atomically(path, &document.to_string())
+}
+
+/// Writes through a temporary file in the same folder and a rename, so a reader never sees half
+/// a file and a failed write leaves the old one.
+fn write_atomically(path: &Path, text: &str) -> Result<(), ProjectError> {
+    let write_error = |source| ProjectError::Write { path: path.to_path_buf(), source };
+    let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let file_name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let temporary = folder.join(format!(".{file_name}.kiln-tmp"));
+    std::fs::write(&temporary, text).map_err(write_error)?;
+    std::fs::rename(&temporary, path).map_err(|e| {
+        let _ = std::fs::remove_file(&temporary);
+        write_error(e)
+    })
 }
 
 /// One variant of one pass, as `kiln preprocess` asks for it.

@@ -127,3 +127,25 @@ fn replace_keeping_decor(slot: &mut Value, mut value: Value) {
     *value.decor_mut() = slot.decor().clone();
     *slot = value;
 }
+
+/// A new material for `shader`: every property at its default (with the preset applied), so the
+/// file shows what can be set.
+pub fn new_material(shader: &Shader, preset: Option<Preset>) -> String {
+    use crate::shaderlab::ast::PropertyDefault;
+    let mut document = DocumentMut::new();
+    document["shader"] = toml_edit::value(shader.name.value.as_str());
+    let mut properties = toml_edit::Table::new();
+    for property in &shader.properties {
+        let value = match &property.default.value {
+            PropertyDefault::Number(n) => value_for(shader, &property.name.value, *n),
+            PropertyDefault::Vector(v) => Value::Array(v.iter().copied().collect()),
+            PropertyDefault::Texture { name, .. } => Value::from(name.as_str()),
+        };
+        properties.insert(&property.name.value, Item::Value(value));
+    }
+    document["properties"] = Item::Table(properties);
+    if let Some(preset) = preset {
+        apply(&mut document, shader, preset);
+    }
+    document.to_string()
+}

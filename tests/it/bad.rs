@@ -13,7 +13,11 @@ fn check(folder: &str, expect_errors: bool) {
         let (mut store, ids, mut diagnostics) = load(std::slice::from_ref(&path));
         let mut includes =
             kiln::preprocess::Includes::new(kiln::project::include_config(std::slice::from_ref(&path)));
-        let (_, found) = kiln::listing::list_shaders(&mut store, &mut includes, &ids);
+        let (_, found) = kiln::listing::list_shaders(
+            &mut store,
+            &mut includes,
+            &kiln::listing::ListInput { shaders: ids, ..Default::default() },
+        );
         diagnostics.extend(found);
         assert_eq!(
             has_errors(&diagnostics),

@@ -24,6 +24,14 @@ fn bundled_project() {
 }
 
 #[test]
+fn bundled_project_materials() {
+    let output = kiln(&["list", "fixtures/project", "--materials"]);
+    assert_eq!(output.status.code(), Some(0));
+    expect_file![root().join("tests/golden/list/project_materials.txt")]
+        .assert_eq(&String::from_utf8_lossy(&output.stdout));
+}
+
+#[test]
 fn unity_style_shaders() {
     assert!(fixture_files("fixtures/unity", "shader").len() >= 3);
     check("fixtures/unity", "unity");

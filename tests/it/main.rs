@@ -4,6 +4,7 @@
 mod bad;
 mod cli;
 mod list;
+mod materials;
 mod parse;
 mod preprocess;
 mod robustness;

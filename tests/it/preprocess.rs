@@ -521,7 +521,11 @@ fn include_with_pragmas_declares_keywords_for_the_pass() {
     let (mut store, ids, _) =
         crate::support::load(&["fixtures/warn/preprocess/keyword_analysis.shader".into()]);
     let mut includes = Includes::new(include_config(&["fixtures/warn/preprocess".into()]));
-    let (listing, _) = kiln::listing::list_shaders(&mut store, &mut includes, &ids);
+    let (listing, _) = kiln::listing::list_shaders(
+        &mut store,
+        &mut includes,
+        &kiln::listing::ListInput { shaders: ids, ..Default::default() },
+    );
     let program = listing.shaders[0].passes[0].program.as_ref().expect("program");
     let sets: Vec<Vec<String>> = program.keyword_sets.iter().map(|s| s.keywords.clone()).collect();
     assert!(sets.contains(&vec!["_".to_string(), "_DETAIL".to_string()]), "{sets:?}");

@@ -9,7 +9,7 @@ fn list_text(text: &str) {
     let (_, diagnostics) = kiln::listing::list_shaders(
         &mut store,
         &mut kiln::preprocess::Includes::new(kiln::preprocess::IncludeConfig::new(Vec::new())),
-        &[file],
+        &kiln::listing::ListInput { shaders: vec![file], ..Default::default() },
     );
     // Rendering walks every span: a span outside its file would fail here.
     let _ = kiln::diagnostics::render_plain(&store, &diagnostics);
