@@ -97,3 +97,29 @@ proptest! {
         preprocess_text(&lines.join("\n"), &keywords);
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+
+    /// Materials with arbitrary (mostly TOML-looking) text, against the Lit shader.
+    #[test]
+    fn arbitrary_material_text_never_panics(
+        lines in proptest::collection::vec(
+            prop_oneof![
+                Just("shader = \"Custom RP/Lit\"".to_string()),
+                Just("[properties]".to_string()),
+                "(preset|render_queue|keywords|_BaseColor|_Cutoff|_Clipping|_SrcBlend|_ZWrite|_PremulAlpha) = (\"[A-Za-z+]{0,12}\"|-?[0-9]{1,6}(\\.[0-9]{1,3})?|\\[[0-9., \"_A-Z]{0,20}\\]|true|false)",
+                "[ -~]{0,30}",
+            ],
+            0..12,
+        ),
+    ) {
+        let mut store = SourceStore::new();
+        let shader = store.load(&crate::support::root().join("fixtures/project/shaders/Lit.shader")).expect("fixture");
+        let material = store.add("fuzz.mat", lines.join("\n"));
+        let mut includes = kiln::preprocess::Includes::new(kiln::preprocess::IncludeConfig::new(Vec::new()));
+        let input = kiln::listing::ListInput { shaders: vec![shader], materials: vec![material], ..Default::default() };
+        let (_, diagnostics) = kiln::listing::list_shaders(&mut store, &mut includes, &input);
+        let _ = kiln::diagnostics::render_plain(&store, &diagnostics);
+    }
+}
