@@ -63,7 +63,7 @@ fn parse(c: &mut Criterion) {
             kiln::listing::list_shaders(
                 &mut store,
                 &mut kiln::preprocess::Includes::new(kiln::preprocess::IncludeConfig::new(Vec::new())),
-                &kiln::listing::ListInput { shaders: vec![file], ..Default::default() },
+                &kiln::catalog::CatalogInput { shaders: vec![file], ..Default::default() },
             )
         })
     });

@@ -1,5 +1,6 @@
 //! kiln: a shader-variant compiler and keyword system for Rust renderers.
 
+pub mod catalog;
 pub mod compile;
 pub mod config;
 pub mod diagnostics;

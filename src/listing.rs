@@ -1,15 +1,16 @@
 //! The `kiln list` report: what each shader's passes declare, as data with its own serde schema,
 //! rendered as text here and as JSON by serde.
 
-use crate::diagnostics::{self, Diagnostic};
-use crate::keywords::PassKeywords;
-use crate::material::{Material, MaterialValue, Preset, ShaderEntry, enum_names, load_material};
-use crate::preprocess::{Includes, load_pass};
-use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
-use crate::shaderlab::parse_shader;
-use crate::shaderlab::pragma::{KeywordScope, KeywordSet, PragmaSource, ProgramPragmas, collect_pragmas};
-use crate::source::{FileId, SourceStore};
+use crate::catalog::{Catalog, CatalogInput, CatalogPass, catalog};
+use crate::diagnostics::Diagnostic;
+use crate::material::{Material, MaterialValue, Preset, enum_names};
+use crate::preprocess::Includes;
+use crate::shaderlab::ast::Shader;
+use crate::shaderlab::pragma::{KeywordScope, KeywordSet, ProgramPragmas};
+use crate::source::SourceStore;
 use serde::Serialize;
+
+pub use crate::catalog::program_blocks;
 use std::fmt::Write as _;
 
 /// The listing of every shader that parsed, and of every material that resolved.
@@ -17,15 +18,6 @@ use std::fmt::Write as _;
 pub struct Listing {
     pub shaders: Vec<ShaderListing>,
     pub materials: Vec<MaterialListing>,
-}
-
-/// What `kiln list` looks at.
-#[derive(Debug, Clone, Default)]
-pub struct ListInput {
-    pub shaders: Vec<FileId>,
-    pub materials: Vec<FileId>,
-    /// Shaders built whole, whatever the materials (by name).
-    pub always_include: Vec<String>,
 }
 
 #[derive(Debug, Serialize)]
@@ -94,78 +86,63 @@ pub struct KeywordSetListing {
 }
 
 /// Parses the shaders, resolves the materials against them and lists what each pass declares and
-/// which variants the materials use. WGSL programs are loaded with their includes, whose
-/// `#include_with_pragmas` pragmas count. Diagnostics come back in file order.
+/// which variants the materials use (see [`catalog`]).
 pub fn list_shaders(
     store: &mut SourceStore,
     includes: &mut Includes,
-    input: &ListInput,
+    input: &CatalogInput,
 ) -> (Listing, Vec<Diagnostic>) {
-    let mut diagnostics = Vec::new();
-    let mut parsed_shaders: Vec<(FileId, Shader)> = Vec::new();
-    let mut listings = Vec::new();
-    let mut pass_sets: Vec<Vec<Vec<KeywordSet>>> = Vec::new();
-    for &file in &input.shaders {
-        let parsed = parse_shader(store, file);
-        diagnostics.extend(parsed.diagnostics);
-        if let Some(shader) = parsed.shader {
-            let mut lister = Lister {
-                store: &mut *store,
-                includes: &mut *includes,
-                diagnostics: &mut diagnostics,
-                sets: Vec::new(),
-            };
-            listings.push(lister.shader(file, &shader));
-            pass_sets.push(lister.sets);
-            parsed_shaders.push((file, shader));
-        }
-    }
+    let (catalog, diagnostics) = catalog(store, includes, input);
+    (listing(store, &catalog), diagnostics)
+}
 
-    let entries: Vec<ShaderEntry> = parsed_shaders
+/// The listing of a catalogue.
+pub fn listing(store: &SourceStore, catalog: &Catalog) -> Listing {
+    let shaders = catalog
+        .shaders
         .iter()
-        .zip(&pass_sets)
-        .map(|((_, shader), sets)| ShaderEntry {
-            shader,
-            keyword_sets: sets.iter().flatten().cloned().collect(),
+        .map(|s| ShaderListing {
+            name: s.shader.name.value.clone(),
+            file: store.name(s.file).to_string(),
+            passes: s.passes.iter().map(|p| pass_listing(catalog, p)).collect(),
         })
         .collect();
-    let mut materials = Vec::new();
-    for &file in &input.materials {
-        let (material, found) = load_material(store, file, &entries);
-        diagnostics.extend(found);
-        materials.extend(material);
-    }
+    let materials = catalog
+        .materials
+        .iter()
+        .map(|m| material_listing(store, &catalog.shaders[m.shader].shader, m))
+        .collect();
+    Listing { shaders, materials }
+}
 
-    for (s, listing) in listings.iter_mut().enumerate() {
-        let everything = input.always_include.contains(&listing.name);
-        let users: Vec<&Material> = materials.iter().filter(|m| m.shader == s).collect();
-        let keywords: Vec<Vec<&str>> =
-            users.iter().map(|m| m.keywords.iter().map(|(k, _)| k.as_str()).collect()).collect();
-        let programs = listing.passes.iter_mut().filter_map(|p| p.program.as_mut());
-        for (program, sets) in programs.zip(&pass_sets[s]) {
-            let pass = PassKeywords::new(sets.clone());
-            let names = |bits| pass.keywords(bits).map(str::to_string).collect();
-            program.used_variants = pass
-                .enumerate(&keywords, everything)
+fn pass_listing(catalog: &Catalog, pass: &CatalogPass) -> PassListing {
+    PassListing {
+        subshader: pass.subshader,
+        pass: pass.index,
+        kind: pass.kind.name(),
+        name: pass.name.clone(),
+        tags: pass.tags.clone(),
+        program: pass.program.as_ref().map(|program| {
+            let keywords = &program.keywords;
+            let names = |bits| keywords.keywords(bits).map(str::to_string).collect();
+            let mut listing = program_from_pragmas(program.language.name(), &program.pragmas);
+            listing.used_variants = program
+                .variants
                 .iter()
                 .map(|v| VariantListing {
                     key: v.bits.key(),
                     keywords: names(&v.bits),
                     vertex_keywords: names(&v.vertex),
                     fragment_keywords: names(&v.fragment),
-                    materials: v.materials.iter().map(|&m| users[m].name.clone()).collect(),
+                    materials: v.materials.iter().map(|&m| catalog.materials[m].name.clone()).collect(),
                 })
                 .collect();
-        }
+            listing
+        }),
     }
-    let materials = materials.iter().map(|m| material_listing(store, &entries[m.shader], m)).collect();
-    // Include blocks and files are shared by passes: report each of their problems once.
-    diagnostics::dedup(&mut diagnostics);
-    (Listing { shaders: listings, materials }, diagnostics)
 }
 
-fn material_listing(store: &SourceStore, entry: &ShaderEntry, material: &Material) -> MaterialListing {
-    let shader = entry.shader;
+fn material_listing(store: &SourceStore, shader: &Shader, material: &Material) -> MaterialListing {
     let mut referenced: Vec<String> = Vec::new();
     for (_, _, _, pass) in shader.passes() {
         for command in
@@ -213,96 +190,6 @@ fn bracketed(text: &str) -> impl Iterator<Item = (usize, &str)> {
         let name = rest[..end].trim();
         (!name.is_empty() && name.chars().all(|c| c.is_alphanumeric() || c == '_')).then_some((i, name))
     })
-}
-
-struct Lister<'a> {
-    store: &'a mut SourceStore,
-    includes: &'a mut Includes,
-    diagnostics: &'a mut Vec<Diagnostic>,
-    /// The variant sets of each program listed, in listing order.
-    sets: Vec<Vec<KeywordSet>>,
-}
-
-impl Lister<'_> {
-    fn shader(&mut self, file: FileId, shader: &Shader) -> ShaderListing {
-        let mut passes = Vec::new();
-        for (si, sub) in shader.subshaders.iter().enumerate() {
-            // Surface programs come first, as Unity generates their passes ahead of explicit ones.
-            let surface_programs = sub.programs.iter().filter(|p| !p.is_include);
-            for (index, program) in surface_programs.clone().enumerate() {
-                let listing = self.program(shader, sub, std::slice::from_ref(program));
-                passes.push(PassListing {
-                    subshader: si,
-                    pass: index,
-                    kind: "surface_program",
-                    name: None,
-                    tags: tags(&sub.state),
-                    program: Some(listing),
-                });
-            }
-            let first_pass = surface_programs.count();
-            for (pi, item) in sub.passes.iter().enumerate() {
-                let (kind, name, tags, program) = match item {
-                    PassItem::Pass(pass) => {
-                        let program =
-                            (!pass.programs.is_empty()).then(|| self.program(shader, sub, &pass.programs));
-                        (
-                            "pass",
-                            pass.state.name.as_ref().map(|n| n.value.clone()),
-                            tags(&pass.state),
-                            program,
-                        )
-                    }
-                    PassItem::UsePass(name) => ("use_pass", Some(name.value.clone()), Vec::new(), None),
-                    PassItem::GrabPass(grab) => (
-                        "grab_pass",
-                        grab.name.as_ref().or(grab.texture.as_ref()).map(|n| n.value.clone()),
-                        grab.tags.iter().map(|t| (t.key.value.clone(), t.value.value.clone())).collect(),
-                        None,
-                    ),
-                };
-                passes.push(PassListing { subshader: si, pass: first_pass + pi, kind, name, tags, program });
-            }
-        }
-        ShaderListing { name: shader.name.value.clone(), file: self.store.name(file).to_string(), passes }
-    }
-
-    fn program(&mut self, shader: &Shader, sub: &SubShader, programs: &[ProgramBlock]) -> ProgramListing {
-        let blocks = program_blocks(shader, sub, programs);
-        let language = programs.first().map_or(ProgramLanguage::Wgsl, |p| p.language);
-        let pragmas = if language == ProgramLanguage::Wgsl {
-            let (pass, diagnostics) = load_pass(self.includes, self.store, &blocks);
-            self.diagnostics.extend(diagnostics);
-            pass.pragmas
-        } else {
-            let (pragmas, errors) = collect_pragmas(blocks.into_iter().map(PragmaSource::from));
-            self.diagnostics.extend(errors);
-            pragmas
-        };
-        self.sets.push(pragmas.variant_sets());
-        program_from_pragmas(language.name(), &pragmas)
-    }
-}
-
-fn tags(state: &StateBlock) -> Vec<(String, String)> {
-    state.tags.iter().map(|t| (t.key.value.clone(), t.value.value.clone())).collect()
-}
-
-/// The include blocks a program sees (shader-level, then SubShader-level, of its language),
-/// followed by the program itself.
-pub fn program_blocks<'a>(
-    shader: &'a Shader,
-    sub: &'a SubShader,
-    programs: &'a [ProgramBlock],
-) -> Vec<&'a ProgramBlock> {
-    let language = programs.first().map_or(ProgramLanguage::Wgsl, |p| p.language);
-    shader
-        .includes
-        .iter()
-        .chain(sub.programs.iter().filter(|p| p.is_include))
-        .filter(|p| p.language == language)
-        .chain(programs)
-        .collect()
 }
 
 fn program_from_pragmas(language: &'static str, pragmas: &ProgramPragmas) -> ProgramListing {

@@ -2,8 +2,8 @@
 //! Exit codes: 0 success, 1 diagnostics with errors, 2 usage or I/O failure.
 
 use clap::{Parser, Subcommand, ValueEnum};
+use kiln::catalog::CatalogInput;
 use kiln::diagnostics::{self, Diagnostic};
-use kiln::listing::ListInput;
 use kiln::preprocess::{Includes, Stage};
 use kiln::project::{VariantRequest, include_config};
 use kiln::source::SourceStore;
@@ -143,7 +143,7 @@ fn list(paths: Vec<PathBuf>, format: Format, show_materials: bool) -> ExitCode {
     problems.extend(found);
     let (materials, found) = kiln::project::load_files(&mut store, &workspace.materials);
     problems.extend(found);
-    let input = ListInput { shaders, materials, always_include: workspace.always_include.clone() };
+    let input = CatalogInput { shaders, materials, always_include: workspace.always_include.clone() };
     let (listing, diagnostics) = kiln::listing::list_shaders(&mut store, &mut includes, &input);
     problems.extend(diagnostics);
     if workspace.strict {

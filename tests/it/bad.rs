@@ -16,7 +16,7 @@ fn check(folder: &str, expect_errors: bool) {
         let (_, found) = kiln::listing::list_shaders(
             &mut store,
             &mut includes,
-            &kiln::listing::ListInput { shaders: ids, ..Default::default() },
+            &kiln::catalog::CatalogInput { shaders: ids, ..Default::default() },
         );
         diagnostics.extend(found);
         assert_eq!(

@@ -4,9 +4,10 @@
 
 use crate::support::{fixture_files, kiln, root};
 use expect_test::expect_file;
+use kiln::catalog::CatalogInput;
 use kiln::diagnostics::{has_errors, render_plain};
 use kiln::keywords::PassKeywords;
-use kiln::listing::{ListInput, list_shaders};
+use kiln::listing::list_shaders;
 use kiln::preprocess::Includes;
 use kiln::project::{load_files, open_workspace};
 use kiln::shaderlab::pragma::{KeywordKind, KeywordOption, KeywordScope, KeywordSet, KeywordStage};
@@ -24,7 +25,7 @@ fn list(paths: &[PathBuf]) -> (kiln::listing::Listing, String, bool) {
     diagnostics.extend(found);
     let (materials, found) = load_files(&mut store, &workspace.materials);
     diagnostics.extend(found);
-    let input = ListInput { shaders, materials, always_include: workspace.always_include.clone() };
+    let input = CatalogInput { shaders, materials, always_include: workspace.always_include.clone() };
     let (listing, found) = list_shaders(&mut store, &mut includes, &input);
     diagnostics.extend(found);
     (listing, render_plain(&store, &diagnostics), has_errors(&diagnostics))

@@ -524,7 +524,7 @@ fn include_with_pragmas_declares_keywords_for_the_pass() {
     let (listing, _) = kiln::listing::list_shaders(
         &mut store,
         &mut includes,
-        &kiln::listing::ListInput { shaders: ids, ..Default::default() },
+        &kiln::catalog::CatalogInput { shaders: ids, ..Default::default() },
     );
     let program = listing.shaders[0].passes[0].program.as_ref().expect("program");
     let sets: Vec<Vec<String>> = program.keyword_sets.iter().map(|s| s.keywords.clone()).collect();

@@ -9,7 +9,7 @@ fn list_text(text: &str) {
     let (_, diagnostics) = kiln::listing::list_shaders(
         &mut store,
         &mut kiln::preprocess::Includes::new(kiln::preprocess::IncludeConfig::new(Vec::new())),
-        &kiln::listing::ListInput { shaders: vec![file], ..Default::default() },
+        &kiln::catalog::CatalogInput { shaders: vec![file], ..Default::default() },
     );
     // Rendering walks every span: a span outside its file would fail here.
     let _ = kiln::diagnostics::render_plain(&store, &diagnostics);
@@ -118,7 +118,7 @@ proptest! {
         let shader = store.load(&crate::support::root().join("fixtures/project/shaders/Lit.shader")).expect("fixture");
         let material = store.add("fuzz.mat", lines.join("\n"));
         let mut includes = kiln::preprocess::Includes::new(kiln::preprocess::IncludeConfig::new(Vec::new()));
-        let input = kiln::listing::ListInput { shaders: vec![shader], materials: vec![material], ..Default::default() };
+        let input = kiln::catalog::CatalogInput { shaders: vec![shader], materials: vec![material], ..Default::default() };
         let (_, diagnostics) = kiln::listing::list_shaders(&mut store, &mut includes, &input);
         let _ = kiln::diagnostics::render_plain(&store, &diagnostics);
     }

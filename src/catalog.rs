@@ -1,0 +1,252 @@
+//! What a project declares, gathered once for every job (`list`, `check`, `build`): shaders with
+//! their passes and programs (WGSL ones loaded with their includes), materials resolved against
+//! them, and each pass's keywords and used variants.
+
+use crate::diagnostics::{self, Diagnostic};
+use crate::keywords::{PassKeywords, Variant};
+use crate::material::{Material, ShaderEntry, load_material};
+use crate::preprocess::{Includes, Program, load_pass};
+use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
+use crate::shaderlab::parse_shader;
+use crate::shaderlab::pragma::{PragmaSource, ProgramPragmas, collect_pragmas};
+use crate::source::{FileId, SourceStore};
+
+/// The files a job looks at.
+#[derive(Debug, Clone, Default)]
+pub struct CatalogInput {
+    pub shaders: Vec<FileId>,
+    pub materials: Vec<FileId>,
+    /// Shaders built whole, whatever the materials (by name).
+    pub always_include: Vec<String>,
+}
+
+pub struct Catalog {
+    pub shaders: Vec<CatalogShader>,
+    pub materials: Vec<Material>,
+}
+
+pub struct CatalogShader {
+    pub file: FileId,
+    pub shader: Shader,
+    pub passes: Vec<CatalogPass>,
+}
+
+/// How a pass entry of a SubShader is written.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PassKind {
+    Pass,
+    UsePass,
+    GrabPass,
+    /// A program directly in a SubShader (Unity's surface shaders).
+    SurfaceProgram,
+}
+
+impl PassKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            PassKind::Pass => "pass",
+            PassKind::UsePass => "use_pass",
+            PassKind::GrabPass => "grab_pass",
+            PassKind::SurfaceProgram => "surface_program",
+        }
+    }
+}
+
+pub struct CatalogPass {
+    pub subshader: usize,
+    /// Index among the SubShader's passes, surface programs first.
+    pub index: usize,
+    pub kind: PassKind,
+    pub name: Option<String>,
+    pub tags: Vec<(String, String)>,
+    /// Where the pass sits in `shader.subshaders[subshader].passes` (`None` for surface programs).
+    pub item: Option<usize>,
+    pub program: Option<CatalogProgram>,
+}
+
+pub struct CatalogProgram {
+    pub language: ProgramLanguage,
+    pub pragmas: ProgramPragmas,
+    /// WGSL programs only: the blocks and their includes, ready to preprocess.
+    pub wgsl: Option<Program>,
+    pub keywords: PassKeywords,
+    /// The variants the materials need (or all, for an always-included shader), in key order.
+    pub variants: Vec<Variant>,
+}
+
+impl CatalogShader {
+    /// The `Pass { }` of a catalogued pass, if it is one.
+    pub fn pass_ast(&self, pass: &CatalogPass) -> Option<&crate::shaderlab::ast::Pass> {
+        match self.shader.subshaders[pass.subshader].passes.get(pass.item?)? {
+            PassItem::Pass(ast) => Some(ast),
+            _ => None,
+        }
+    }
+}
+
+/// Parses the shaders, loads their programs, resolves the materials and enumerates each pass's
+/// variants. Diagnostics come back in file order, each reported once.
+pub fn catalog(
+    store: &mut SourceStore,
+    includes: &mut Includes,
+    input: &CatalogInput,
+) -> (Catalog, Vec<Diagnostic>) {
+    let mut diagnostics = Vec::new();
+    let mut shaders = Vec::new();
+    for &file in &input.shaders {
+        let parsed = parse_shader(store, file);
+        diagnostics.extend(parsed.diagnostics);
+        if let Some(shader) = parsed.shader {
+            let passes = passes(store, includes, &shader, &mut diagnostics);
+            shaders.push(CatalogShader { file, shader, passes });
+        }
+    }
+
+    let entries: Vec<ShaderEntry> = shaders
+        .iter()
+        .map(|s| ShaderEntry {
+            shader: &s.shader,
+            keyword_sets: s
+                .passes
+                .iter()
+                .filter_map(|p| p.program.as_ref())
+                .flat_map(|p| p.keywords.sets().to_vec())
+                .collect(),
+        })
+        .collect();
+    let mut materials = Vec::new();
+    for &file in &input.materials {
+        let (material, found) = load_material(store, file, &entries);
+        diagnostics.extend(found);
+        materials.extend(material);
+    }
+
+    for (index, shader) in shaders.iter_mut().enumerate() {
+        let everything = input.always_include.contains(&shader.shader.name.value);
+        let keywords: Vec<Vec<&str>> = materials
+            .iter()
+            .filter(|m| m.shader == index)
+            .map(|m| m.keywords.iter().map(|(k, _)| k.as_str()).collect())
+            .collect();
+        let users: Vec<usize> = (0..materials.len()).filter(|&m| materials[m].shader == index).collect();
+        for program in shader.passes.iter_mut().filter_map(|p| p.program.as_mut()) {
+            program.variants = program.keywords.enumerate(&keywords, everything);
+            // Point at materials of the catalog, not of this shader's list.
+            for variant in &mut program.variants {
+                for m in &mut variant.materials {
+                    *m = users[*m];
+                }
+            }
+        }
+    }
+    // Include blocks and files are shared by passes: report each of their problems once.
+    diagnostics::dedup(&mut diagnostics);
+    (Catalog { shaders, materials }, diagnostics)
+}
+
+fn passes(
+    store: &mut SourceStore,
+    includes: &mut Includes,
+    shader: &Shader,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Vec<CatalogPass> {
+    let mut passes = Vec::new();
+    for (si, sub) in shader.subshaders.iter().enumerate() {
+        // Surface programs come first, as Unity generates their passes ahead of explicit ones.
+        let surface_programs = sub.programs.iter().filter(|p| !p.is_include);
+        for (index, program) in surface_programs.clone().enumerate() {
+            passes.push(CatalogPass {
+                subshader: si,
+                index,
+                kind: PassKind::SurfaceProgram,
+                name: None,
+                tags: tags(&sub.state),
+                item: None,
+                program: Some(load_program(
+                    store,
+                    includes,
+                    shader,
+                    sub,
+                    std::slice::from_ref(program),
+                    diagnostics,
+                )),
+            });
+        }
+        let first_pass = surface_programs.count();
+        for (pi, item) in sub.passes.iter().enumerate() {
+            let (kind, name, tags, program) = match item {
+                PassItem::Pass(pass) => {
+                    let program = (!pass.programs.is_empty())
+                        .then(|| load_program(store, includes, shader, sub, &pass.programs, diagnostics));
+                    (
+                        PassKind::Pass,
+                        pass.state.name.as_ref().map(|n| n.value.clone()),
+                        tags(&pass.state),
+                        program,
+                    )
+                }
+                PassItem::UsePass(name) => (PassKind::UsePass, Some(name.value.clone()), Vec::new(), None),
+                PassItem::GrabPass(grab) => (
+                    PassKind::GrabPass,
+                    grab.name.as_ref().or(grab.texture.as_ref()).map(|n| n.value.clone()),
+                    grab.tags.iter().map(|t| (t.key.value.clone(), t.value.value.clone())).collect(),
+                    None,
+                ),
+            };
+            passes.push(CatalogPass {
+                subshader: si,
+                index: first_pass + pi,
+                kind,
+                name,
+                tags,
+                item: Some(pi),
+                program,
+            });
+        }
+    }
+    passes
+}
+
+fn load_program(
+    store: &mut SourceStore,
+    includes: &mut Includes,
+    shader: &Shader,
+    sub: &SubShader,
+    programs: &[ProgramBlock],
+    diagnostics: &mut Vec<Diagnostic>,
+) -> CatalogProgram {
+    let blocks = program_blocks(shader, sub, programs);
+    let language = programs.first().map_or(ProgramLanguage::Wgsl, |p| p.language);
+    let (pragmas, wgsl) = if language == ProgramLanguage::Wgsl {
+        let (pass, found) = load_pass(includes, store, &blocks);
+        diagnostics.extend(found);
+        (pass.pragmas, Some(pass.program))
+    } else {
+        let (pragmas, errors) = collect_pragmas(blocks.into_iter().map(PragmaSource::from));
+        diagnostics.extend(errors);
+        (pragmas, None)
+    };
+    let keywords = PassKeywords::new(pragmas.variant_sets());
+    CatalogProgram { language, pragmas, wgsl, keywords, variants: Vec::new() }
+}
+
+fn tags(state: &StateBlock) -> Vec<(String, String)> {
+    state.tags.iter().map(|t| (t.key.value.clone(), t.value.value.clone())).collect()
+}
+
+/// The include blocks a program sees (shader-level, then SubShader-level, of its language),
+/// followed by the program itself.
+pub fn program_blocks<'a>(
+    shader: &'a Shader,
+    sub: &'a SubShader,
+    programs: &'a [ProgramBlock],
+) -> Vec<&'a ProgramBlock> {
+    let language = programs.first().map_or(ProgramLanguage::Wgsl, |p| p.language);
+    shader
+        .includes
+        .iter()
+        .chain(sub.programs.iter().filter(|p| p.is_include))
+        .filter(|p| p.language == language)
+        .chain(programs)
+        .collect()
+}
