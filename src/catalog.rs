@@ -250,3 +250,25 @@ pub fn program_blocks<'a>(
         .chain(programs)
         .collect()
 }
+
+/// The `[_Name]` property references in a render command's text, in order.
+pub fn property_references(text: &str) -> Vec<&str> {
+    text.match_indices('[')
+        .filter_map(|(i, _)| {
+            let rest = &text[i + 1..];
+            let name = rest[..rest.find(']')?].trim();
+            (!name.is_empty() && name.chars().all(|c| c.is_alphanumeric() || c == '_')).then_some(name)
+        })
+        .collect()
+}
+
+impl CatalogProgram {
+    /// The keywords a variant's `stage` is preprocessed with.
+    pub fn keywords_for<'a>(
+        &self,
+        variant: &'a Variant,
+        stage: crate::preprocess::Stage,
+    ) -> &'a crate::keywords::KeywordBits {
+        self.keywords.stage_bits(variant, stage)
+    }
+}

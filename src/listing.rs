@@ -148,7 +148,7 @@ fn material_listing(store: &SourceStore, shader: &Shader, material: &Material) -
         for command in
             shader.subshaders.iter().flat_map(|s| &s.state.render_state).chain(&pass.state.render_state)
         {
-            for (_, name) in bracketed(store.slice(command.span)) {
+            for name in crate::catalog::property_references(store.slice(command.span)) {
                 if !referenced.iter().any(|r| r == name) {
                     referenced.push(name.to_string());
                 }
@@ -180,16 +180,6 @@ fn material_listing(store: &SourceStore, shader: &Shader, material: &Material) -
         keywords: material.keywords.iter().map(|(k, _)| k.clone()).collect(),
         render_state,
     }
-}
-
-/// `[_Name]` references in a render command's text.
-fn bracketed(text: &str) -> impl Iterator<Item = (usize, &str)> {
-    text.match_indices('[').filter_map(move |(i, _)| {
-        let rest = &text[i + 1..];
-        let end = rest.find(']')?;
-        let name = rest[..end].trim();
-        (!name.is_empty() && name.chars().all(|c| c.is_alphanumeric() || c == '_')).then_some((i, name))
-    })
 }
 
 fn program_from_pragmas(language: &'static str, pragmas: &ProgramPragmas) -> ProgramListing {

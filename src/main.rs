@@ -3,9 +3,10 @@
 
 use clap::{Parser, Subcommand, ValueEnum};
 use kiln::catalog::CatalogInput;
+use kiln::compile::VariantSelection;
 use kiln::diagnostics::{self, Diagnostic};
 use kiln::preprocess::{Includes, Stage};
-use kiln::project::{VariantRequest, include_config};
+use kiln::project::{BuildMode, VariantRequest, include_config};
 use kiln::source::SourceStore;
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -44,6 +45,36 @@ enum Command {
         keywords: Vec<String>,
         #[arg(long, value_enum, default_value_t = StageArg::Fragment)]
         stage: StageArg,
+    },
+    /// Compile every variant the materials use to WGSL and SPIR-V, with a manifest.
+    Build {
+        /// The project folder (default: the bundled example project).
+        project: Option<PathBuf>,
+        /// Worker threads (default: all cores).
+        #[arg(long)]
+        threads: Option<usize>,
+        /// Write here instead of the project's `output` folder.
+        #[arg(long)]
+        output: Option<PathBuf>,
+    },
+    /// Validate without writing anything: used variants, and for shaders no material uses, the
+    /// default variant and each keyword on its own. Exit 1 on any error.
+    Check {
+        project: Option<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+        /// Check every variant of shaders no material uses (refused above 4096 per pass).
+        #[arg(long)]
+        all_variants: bool,
+    },
+    /// Print one variant's reflection as JSON: the pass's bind group layout, the stage modules'
+    /// inputs, outputs and bindings, and the uniform block layouts.
+    Reflect {
+        shader: PathBuf,
+        #[arg(long)]
+        pass: Option<String>,
+        #[arg(long, value_delimiter = ',')]
+        keywords: Vec<String>,
     },
     /// Create materials and apply presets to them.
     #[command(subcommand)]
@@ -98,6 +129,32 @@ fn main() -> ExitCode {
             };
             preprocess(&VariantRequest { shader, pass, keywords, stage })
         }
+        Command::Build { project, threads, output } => {
+            let mode = BuildMode { write: true, output, unused_shaders: VariantSelection::Used, threads };
+            build(project, mode, Format::Text)
+        }
+        Command::Check { project, format, all_variants } => {
+            let unused_shaders = if all_variants {
+                VariantSelection::All { limit: ALL_VARIANTS_LIMIT }
+            } else {
+                VariantSelection::DefaultsAndEachKeyword
+            };
+            build(project, BuildMode { write: false, output: None, unused_shaders, threads: None }, format)
+        }
+        Command::Reflect { shader, pass, keywords } => {
+            let mut store = SourceStore::new();
+            let request = VariantRequest { shader, pass, keywords, stage: Stage::Fragment };
+            match kiln::project::reflect_variant(&mut store, &request) {
+                Ok((json, problems)) => {
+                    if let Some(json) = json {
+                        print_out(&format!("{json:#}\n"));
+                    }
+                    report(&store, &problems);
+                    exit_code(&problems)
+                }
+                Err(error) => usage_failure(&error.to_string()),
+            }
+        }
         Command::Material(command) => {
             let done = match command {
                 MaterialCommand::New { path, shader, preset, project } => {
@@ -115,6 +172,58 @@ fn main() -> ExitCode {
             }
         }
     }
+}
+
+/// `kiln check --all-variants` refuses passes with more variants than this.
+const ALL_VARIANTS_LIMIT: u128 = 4096;
+
+fn build(project: Option<PathBuf>, mode: BuildMode, format: Format) -> ExitCode {
+    let project = project.unwrap_or_else(kiln::project::bundled_example);
+    let mut store = SourceStore::new();
+    let bar = std::io::stderr().is_terminal().then(|| {
+        let bar = indicatif::ProgressBar::new(0);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{spinner} {bar:40} {pos}/{len} stage modules")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        bar
+    });
+    let progress = |done: usize, total: usize| {
+        if let Some(bar) = &bar {
+            bar.set_length(total as u64);
+            bar.set_position(done as u64);
+        }
+    };
+    let outcome = kiln::project::build_project(&mut store, &[project], &mode, &progress);
+    if let Some(bar) = &bar {
+        bar.finish_and_clear();
+    }
+    let (result, mut problems) = match outcome {
+        Ok(done) => done,
+        Err(error) => return usage_failure(&error.to_string()),
+    };
+    problems.extend(result.diagnostics);
+    if format == Format::Json {
+        let document = serde_json::json!({ "diagnostics": diagnostics::to_json(&store, &problems) });
+        print_out(&format!("{document:#}\n"));
+        return exit_code(&problems);
+    }
+    report(&store, &problems);
+    let s = &result.summary;
+    let verb = if mode.write { "built" } else { "checked" };
+    let mut line = format!(
+        "{verb} {} shaders, {} passes, {} variants: {} stage modules ({} compiled, {} reused from cache)",
+        s.shaders, s.passes, s.variants, s.modules, s.compiled, s.reused
+    );
+    if mode.write {
+        line.push_str(&format!(", {} bytes written", s.bytes_written));
+    }
+    line.push_str(&format!(" in {:.2} s", s.elapsed.as_secs_f64()));
+    if diagnostics::has_errors(&problems) {
+        line.push_str(", with errors");
+    }
+    eprintln!("{line}");
+    exit_code(&problems)
 }
 
 fn preprocess(request: &VariantRequest) -> ExitCode {

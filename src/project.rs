@@ -2,6 +2,8 @@
 //! build scripts. This is the only place besides [`SourceStore`] that touches the file system:
 //! stages get file ids, never paths.
 
+use crate::catalog::{CatalogInput, catalog};
+use crate::compile::{BuildOptions, BuildResult, VariantSelection, build};
 use crate::config::ProjectConfig;
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{VariantError, select_variant, stage_keywords};
@@ -113,18 +115,9 @@ pub fn apply_preset(path: &Path, preset: &str, project: &Path) -> Result<(), Pro
     write_atomically(path, &document.to_string())
 }
 
-/// Writes through a temporary file in the same folder and a rename, so a reader never sees half
-/// a file and a failed write leaves the old one.
 fn write_atomically(path: &Path, text: &str) -> Result<(), ProjectError> {
-    let write_error = |source| ProjectError::Write { path: path.to_path_buf(), source };
-    let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let file_name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let temporary = folder.join(format!(".{file_name}.kiln-tmp"));
-    std::fs::write(&temporary, text).map_err(write_error)?;
-    std::fs::rename(&temporary, path).map_err(|e| {
-        let _ = std::fs::remove_file(&temporary);
-        write_error(e)
-    })
+    crate::compile::write_atomically(path, text.as_bytes())
+        .map_err(|source| ProjectError::Write { path: path.to_path_buf(), source })
 }
 
 /// One variant of one pass, as `kiln preprocess` asks for it.
@@ -183,6 +176,9 @@ pub fn bundled_example() -> PathBuf {
 /// are shaders (or materials, by their `.mat` extension).
 #[derive(Debug, Default)]
 pub struct Workspace {
+    /// Where builds write: the first project folder's `output` (default `build/kiln` in it).
+    pub output: PathBuf,
+    pub backends: Vec<crate::config::Backend>,
     pub shaders: Vec<PathBuf>,
     pub materials: Vec<PathBuf>,
     pub include: Option<IncludeConfig>,
@@ -225,6 +221,10 @@ pub fn open_workspace(
         workspace.shaders.extend(find_files(&under(&config.shaders), "shader")?);
         workspace.materials.extend(find_files(&under(&config.materials), "mat")?);
         include_paths.extend(under(&config.include_paths));
+        if workspace.output.as_os_str().is_empty() {
+            workspace.output = crate::source::normalize_lexically(&path.join(&config.output));
+            workspace.backends = config.backends.clone();
+        }
         workspace.always_include.extend(config.always_include);
         workspace.strict |= config.strict;
         roots.push(path.clone());
@@ -233,6 +233,12 @@ pub fn open_workspace(
     for files in [&mut workspace.shaders, &mut workspace.materials] {
         let mut seen = std::collections::HashSet::new();
         files.retain(|f| seen.insert(std::fs::canonicalize(f).unwrap_or_else(|_| f.clone())));
+    }
+    if workspace.output.as_os_str().is_empty() {
+        let defaults = ProjectConfig::default();
+        let folder = roots.first().cloned().unwrap_or_default();
+        workspace.output = crate::source::normalize_lexically(&folder.join(defaults.output));
+        workspace.backends = defaults.backends;
     }
     let mut include = include_config(&roots);
     include.include_paths = include_paths;
@@ -298,4 +304,103 @@ pub fn load_files(store: &mut SourceStore, paths: &[PathBuf]) -> (Vec<FileId>, V
         }
     }
     (ids, diagnostics)
+}
+
+/// How `kiln build` and `kiln check` run.
+#[derive(Debug, Clone)]
+pub struct BuildMode {
+    pub write: bool,
+    /// Overrides the project's `output` folder.
+    pub output: Option<PathBuf>,
+    pub unused_shaders: VariantSelection,
+    pub threads: Option<usize>,
+}
+
+/// Builds (or checks) the projects and files at `paths`. `Err` only when a path does not exist.
+pub fn build_project(
+    store: &mut SourceStore,
+    paths: &[PathBuf],
+    mode: &BuildMode,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
+    let (workspace, mut diagnostics) = open_workspace(store, paths)?;
+    let mut includes = Includes::new(workspace.include.clone().unwrap_or_else(|| include_config(paths)));
+    let (shaders, found) = load_files(store, &workspace.shaders);
+    diagnostics.extend(found);
+    let (materials, found) = load_files(store, &workspace.materials);
+    diagnostics.extend(found);
+    let input = CatalogInput { shaders, materials, always_include: workspace.always_include.clone() };
+    let (catalog, found) = catalog(store, &mut includes, &input);
+    diagnostics.extend(found);
+    let options = BuildOptions {
+        output: mode.output.clone().unwrap_or_else(|| workspace.output.clone()),
+        write: mode.write && !diagnostics::has_errors(&diagnostics),
+        threads: mode.threads,
+        backends: workspace.backends.clone(),
+        unused_shaders: mode.unused_shaders,
+    };
+    let result = build(store, &includes, &catalog, &options, progress);
+    if workspace.strict {
+        diagnostics::promote_warnings(&mut diagnostics);
+    }
+    Ok((result, diagnostics))
+}
+
+/// `kiln reflect`: compiles one variant of one pass (writing nothing) and returns its bind group
+/// layout and its variant entry of the manifest, as JSON.
+pub fn reflect_variant(
+    store: &mut SourceStore,
+    request: &VariantRequest,
+) -> Result<(Option<serde_json::Value>, Vec<Diagnostic>), ProjectError> {
+    let file = store.load(&request.shader)?;
+    let mut includes = Includes::new(include_config(std::slice::from_ref(&request.shader)));
+    let input = CatalogInput { shaders: vec![file], ..CatalogInput::default() };
+    let (mut catalog, mut diagnostics) = catalog(store, &mut includes, &input);
+    let Some(shader) = catalog.shaders.first_mut() else { return Ok((None, diagnostics)) };
+    let not_found = || ProjectError::PassNotFound {
+        shader: shader.shader.name.value.clone(),
+        selector: request.pass.clone(),
+    };
+    let chosen = shader
+        .shader
+        .find_pass(request.pass.as_deref())
+        .map(|(_, pass)| pass as *const _)
+        .ok_or_else(not_found)?;
+    let index = (0..shader.passes.len())
+        .find(|&i| shader.pass_ast(&shader.passes[i]).is_some_and(|p| std::ptr::eq(p, chosen)))
+        .ok_or_else(not_found)?;
+    let program = shader.passes[index].program.as_ref().ok_or_else(not_found)?;
+    if program.language != ProgramLanguage::Wgsl {
+        return Err(ProjectError::NotWgsl { language: program.language.name() });
+    }
+    let keywords = select_variant(program.keywords.sets(), &request.keywords)?;
+    let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
+    let variant = program.keywords.variant_of(&keywords);
+    for (i, pass) in shader.passes.iter_mut().enumerate() {
+        if let Some(program) = pass.program.as_mut() {
+            program.variants = if i == index { vec![variant.clone()] } else { Vec::new() };
+        }
+    }
+    if diagnostics::has_errors(&diagnostics) {
+        return Ok((None, diagnostics));
+    }
+    let options = BuildOptions {
+        output: request
+            .shader
+            .parent()
+            .map(Path::to_path_buf)
+            .unwrap_or_default()
+            .join(".kiln-reflect-unused"),
+        write: false,
+        threads: Some(1),
+        backends: ProjectConfig::default().backends,
+        unused_shaders: VariantSelection::Used,
+    };
+    let result = build(store, &includes, &catalog, &options, &|_, _| {});
+    diagnostics.extend(result.diagnostics);
+    let pass = result.manifest.shaders.first().and_then(|s| s.passes.first());
+    let json = pass
+        .filter(|_| !diagnostics::has_errors(&diagnostics))
+        .and_then(|p| Some(serde_json::json!({ "layout": p.layout, "variant": p.variants.first()? })));
+    Ok((json, diagnostics))
 }

@@ -1,9 +1,23 @@
-//! naga: parse and validate preprocessed WGSL, with every naga error re-mapped through the
-//! preprocessor's source map to its original file:line:col. (Binding assignment, targets,
-//! backends and caching grow here with the compile work.)
+//! naga: parse, bind, validate, compact and emit every used variant's stage modules, with every
+//! naga error re-mapped through the preprocessor's source map to its original file:line:col.
+//!
+//! - `bind.rs`: binding assignment by update frequency, one layout per pass.
+//! - `target.rs`: what `#pragma target` / `require` allow.
+//! - `stage.rs`: one stage module from parsed text to WGSL, SPIR-V and reflection.
+//! - `cache.rs`: the content-addressed cache and output files.
+//! - `build.rs`: the whole project: jobs, deduplication, parallelism, the manifest.
+
+pub mod bind;
+pub mod build;
+mod cache;
+mod stage;
+pub mod target;
+
+pub use build::{BuildOptions, BuildResult, BuildSummary, VariantSelection, build};
+pub use cache::write_atomically;
 
 use crate::diagnostics::Diagnostic;
-use crate::preprocess::{Origin, Preprocessed};
+use crate::preprocess::{Preprocessed, SourceMap};
 use crate::source::SourceStore;
 use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
 use std::error::Error as _;
@@ -14,18 +28,32 @@ pub struct Checked {
     pub info: ModuleInfo,
 }
 
-/// Parses and validates one preprocessed text; naga stops at its first error. Bindings are not checked yet: resources without
-/// `@group`/`@binding` get them later, by update frequency.
+/// Parses and validates one preprocessed text; naga stops at its first error. Bindings are not
+/// checked: resources without `@group`/`@binding` get them when a pass is built.
 pub fn check(preprocessed: &Preprocessed, store: &SourceStore) -> Result<Checked, Vec<Diagnostic>> {
-    let mapper = Mapper { preprocessed, store };
-    let module = naga::front::wgsl::parse_str(&preprocessed.text).map_err(|error| {
+    let mapper = Mapper { map: &preprocessed.source_map, store };
+    let module = parse(&preprocessed.text, &mapper).map_err(|d| vec![d])?;
+    let flags = ValidationFlags::all() - ValidationFlags::BINDINGS;
+    let info = validate(&module, flags, Capabilities::all(), &mapper).map_err(|d| vec![d])?;
+    Ok(Checked { module, info })
+}
+
+pub(crate) fn parse(text: &str, mapper: &Mapper) -> Result<naga::Module, Diagnostic> {
+    naga::front::wgsl::parse_str(text).map_err(|error| {
         let labels = error.labels().map(|(span, message)| (span, message.to_string()));
         let mut diagnostic = mapper.diagnostic("K0401", error.message().to_string(), labels.collect());
         diagnostic.notes.extend(error.notes().map(str::to_string));
-        vec![diagnostic]
-    })?;
-    let flags = ValidationFlags::all() - ValidationFlags::BINDINGS;
-    let info = Validator::new(flags, Capabilities::all()).validate(&module).map_err(|error| {
+        diagnostic
+    })
+}
+
+pub(crate) fn validate(
+    module: &naga::Module,
+    flags: ValidationFlags,
+    capabilities: Capabilities,
+    mapper: &Mapper,
+) -> Result<ModuleInfo, Diagnostic> {
+    Validator::new(flags, capabilities).validate(module).map_err(|error| {
         let mut message = error.as_inner().to_string();
         let mut source = error.as_inner().source();
         while let Some(inner) = source {
@@ -37,32 +65,36 @@ pub fn check(preprocessed: &Preprocessed, store: &SourceStore) -> Result<Checked
         let mut labels: Vec<(naga::Span, String)> =
             error.spans().map(|(span, text)| (*span, text.clone())).collect();
         labels.sort_by_key(|(span, _)| span.to_range().map_or(usize::MAX, |r| r.len()));
-        vec![mapper.diagnostic("K0402", message, labels)]
-    })?;
-    Ok(Checked { module, info })
+        mapper.diagnostic("K0402", message, labels)
+    })
 }
 
-struct Mapper<'a> {
-    preprocessed: &'a Preprocessed,
-    store: &'a SourceStore,
+/// Turns spans in preprocessed text into diagnostics at original positions.
+pub(crate) struct Mapper<'a> {
+    pub map: &'a SourceMap,
+    pub store: &'a SourceStore,
 }
 
 impl Mapper<'_> {
-    fn origin(&self, span: naga::Span) -> Option<Origin> {
-        self.preprocessed.source_map.map_range(span.to_range()?)
-    }
-
     /// The first label that maps is primary; its include chain becomes notes.
-    fn diagnostic(
+    pub fn diagnostic(
         &self,
         code: &'static str,
         message: String,
         labels: Vec<(naga::Span, String)>,
     ) -> Diagnostic {
-        let mut diagnostic = Diagnostic::error(code, lowercase_first(&message));
+        let ranges = labels.into_iter().filter_map(|(span, text)| Some((span.to_range()?, text))).collect();
+        self.diagnostic_at(Diagnostic::error(code, lowercase_first(&message)), ranges)
+    }
+
+    pub fn diagnostic_at(
+        &self,
+        mut diagnostic: Diagnostic,
+        labels: Vec<(std::ops::Range<usize>, String)>,
+    ) -> Diagnostic {
         let mut primary_inclusion = None;
-        for (span, text) in labels {
-            let Some(origin) = self.origin(span) else { continue };
+        for (range, text) in labels {
+            let Some(origin) = self.map.map_range(range) else { continue };
             if primary_inclusion.is_none() {
                 primary_inclusion = Some(origin.inclusion);
                 diagnostic = diagnostic.at(origin.span, text);
@@ -71,7 +103,7 @@ impl Mapper<'_> {
             }
         }
         if let Some(inclusion) = primary_inclusion {
-            diagnostic.notes.extend(self.preprocessed.source_map.included_from_notes(self.store, inclusion));
+            diagnostic.notes.extend(self.map.included_from_notes(self.store, inclusion));
         }
         diagnostic
     }

@@ -174,6 +174,34 @@ impl PassKeywords {
         variants
     }
 
+    /// For checking a shader no material uses yet: the default variant (each set's off choice, or
+    /// its first keyword) and, for every keyword, the default with just that keyword changed.
+    pub fn defaults_and_each_keyword(&self) -> Vec<Variant> {
+        let default: Vec<usize> = self
+            .sets
+            .iter()
+            .map(|set| set.options.iter().position(|o| o.keyword.is_none()).unwrap_or(0))
+            .collect();
+        let mut all = vec![default.clone()];
+        for (set, options) in self.sets.iter().enumerate() {
+            for option in (0..options.options.len()).filter(|&o| o != default[set]) {
+                let mut choices = default.clone();
+                choices[set] = option;
+                all.push(choices);
+            }
+        }
+        all.sort();
+        all.dedup();
+        all.into_iter().map(|choices| self.variant(choices, Vec::new())).collect()
+    }
+
+    /// The variant with exactly these keywords (each set without one of them takes its off choice,
+    /// or its first option).
+    pub fn variant_of(&self, keywords: &[&str]) -> Variant {
+        let choices = (0..self.sets.len()).map(|set| self.choose(set, keywords)).collect();
+        self.variant(choices, Vec::new())
+    }
+
     fn variant(&self, choices: Vec<usize>, materials: Vec<usize>) -> Variant {
         let mut bits = KeywordBits::empty(self.names.len());
         for (set, &option) in choices.iter().enumerate() {

@@ -2,7 +2,9 @@
 //! with `UPDATE_EXPECT=1 cargo test`, then reviewed like code.
 
 mod bad;
+mod build;
 mod cli;
+mod gpu;
 mod list;
 mod materials;
 mod parse;

@@ -1,0 +1,128 @@
+//! Binding assignment: resources without `@group`/`@binding` get them by update frequency (group 0
+//! per frame, 1 per material, 2 per object), the same for every variant of a pass so that one
+//! bind group layout serves all of them. Explicit attributes win and are checked for clashes.
+
+use naga::{AddressSpace, Module, ResourceBinding};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+pub const PER_FRAME: u32 = 0;
+pub const PER_MATERIAL: u32 = 1;
+pub const PER_OBJECT: u32 = 2;
+
+/// Resources the renderer updates once per frame, and once per object; everything else is the
+/// material's.
+const PER_FRAME_NAMES: [&str; 2] = ["UnityPerFrame", "_CustomLight"];
+const PER_OBJECT_NAMES: [&str; 1] = ["UnityPerDraw"];
+
+/// The group a resource without an explicit `@group` goes to.
+pub fn group_for(name: &str) -> u32 {
+    if PER_FRAME_NAMES.contains(&name) {
+        PER_FRAME
+    } else if PER_OBJECT_NAMES.contains(&name) {
+        PER_OBJECT
+    } else {
+        PER_MATERIAL
+    }
+}
+
+/// A resource a module declares, with where (in the preprocessed text) it is declared.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Declared {
+    pub name: String,
+    pub explicit: Option<(u32, u32)>,
+    pub range: (u32, u32),
+}
+
+fn is_resource(space: AddressSpace) -> bool {
+    matches!(space, AddressSpace::Uniform | AddressSpace::Storage { .. } | AddressSpace::Handle)
+}
+
+/// The resources of a parsed module, in declaration order.
+pub fn declared(module: &Module) -> Vec<Declared> {
+    module
+        .global_variables
+        .iter()
+        .filter(|(_, g)| is_resource(g.space))
+        .map(|(handle, g)| {
+            let range = module.global_variables.get_span(handle).to_range().unwrap_or(0..0);
+            Declared {
+                name: g.name.clone().unwrap_or_default(),
+                explicit: g.binding.as_ref().map(|b| (b.group, b.binding)),
+                range: (range.start as u32, range.end as u32),
+            }
+        })
+        .collect()
+}
+
+/// Where each resource of a pass is bound.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct PassLayout {
+    pub slots: BTreeMap<String, (u32, u32)>,
+}
+
+/// Lays out a pass from the resources of all its modules (in variant order). Explicit bindings
+/// are kept; the rest are numbered in order of first appearance within their group.
+pub fn layout(modules: &[&[Declared]]) -> (PassLayout, Vec<(usize, usize, String)>) {
+    let mut explicit: BTreeMap<String, (u32, u32)> = BTreeMap::new();
+    let mut owner: BTreeMap<(u32, u32), String> = BTreeMap::new();
+    let mut clashes = Vec::new();
+    let mut order: Vec<String> = Vec::new();
+    for (m, declared) in modules.iter().enumerate() {
+        for (d, resource) in declared.iter().enumerate() {
+            if !order.contains(&resource.name) {
+                order.push(resource.name.clone());
+            }
+            let Some(slot) = resource.explicit else { continue };
+            match explicit.get(&resource.name) {
+                Some(&first) if first != slot => clashes.push((
+                    m,
+                    d,
+                    format!(
+                        "`{}` is bound at @group({}) @binding({}) here but at @group({}) @binding({}) in another variant",
+                        resource.name, slot.0, slot.1, first.0, first.1
+                    ),
+                )),
+                _ => {
+                    explicit.insert(resource.name.clone(), slot);
+                }
+            }
+            match owner.get(&slot) {
+                Some(other) if *other != resource.name => clashes.push((
+                    m,
+                    d,
+                    format!(
+                        "`{}` and `{other}` are both bound at @group({}) @binding({})",
+                        resource.name, slot.0, slot.1
+                    ),
+                )),
+                _ => {
+                    owner.insert(slot, resource.name.clone());
+                }
+            }
+        }
+    }
+    let mut layout = PassLayout { slots: explicit };
+    for name in order {
+        if layout.slots.contains_key(&name) {
+            continue;
+        }
+        let group = group_for(&name);
+        let binding = (0..).find(|b| !owner.contains_key(&(group, *b))).unwrap_or(0);
+        owner.insert((group, binding), name.clone());
+        layout.slots.insert(name, (group, binding));
+    }
+    (layout, clashes)
+}
+
+/// Gives every resource of the module its slot in the pass layout.
+pub fn apply(module: &mut Module, layout: &PassLayout) {
+    for (_, global) in module.global_variables.iter_mut() {
+        if !is_resource(global.space) {
+            continue;
+        }
+        if let Some(&(group, binding)) = global.name.as_ref().and_then(|n| layout.slots.get(n)) {
+            global.binding = Some(ResourceBinding { group, binding });
+        }
+    }
+}

@@ -1,0 +1,645 @@
+//! Building a project: every used variant of every WGSL pass, preprocessed per stage, identical
+//! stage texts compiled once, unchanged ones taken from the cache, the rest compiled in parallel,
+//! and the manifest assembled in a fixed order so that output never depends on the thread count.
+
+use super::bind::{self, Declared, PassLayout};
+use super::cache::{Cache, CachedStage, hash};
+use super::stage::{self, StageRequest};
+use super::target::Allowed;
+use super::{Mapper, parse};
+use crate::catalog::{Catalog, CatalogPass, CatalogProgram, CatalogShader, property_references};
+use crate::config::Backend;
+use crate::diagnostics::{self, Diagnostic};
+use crate::keywords::Variant;
+use crate::preprocess::{Includes, SourceMap, Stage, preprocess};
+use crate::reflect::manifest::*;
+use crate::reflect::{Resource, StageReflection, UniformBlock};
+use crate::shaderlab::ast::{PropertyDefault, PropertyType, Shader};
+use crate::shaderlab::pragma::KeywordScope;
+use crate::source::{SourceStore, Span};
+use rayon::prelude::*;
+use std::collections::{BTreeMap, HashMap};
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
+
+/// Part of every cache key: a new naga may compile differently.
+const NAGA_VERSION: &str = "naga 30";
+
+/// Which variants of a shader no material uses are compiled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum VariantSelection {
+    /// None: only what materials (and `always_include`) need. `kiln build`.
+    Used,
+    /// The default variant and each keyword on its own. `kiln check`.
+    DefaultsAndEachKeyword,
+    /// The full product, refused above `limit` variants per pass. `kiln check --all-variants`.
+    All { limit: u128 },
+}
+
+#[derive(Debug, Clone)]
+pub struct BuildOptions {
+    pub output: PathBuf,
+    /// `false` for `kiln check`: nothing is written.
+    pub write: bool,
+    /// Worker threads (default: all cores).
+    pub threads: Option<usize>,
+    pub backends: Vec<Backend>,
+    pub unused_shaders: VariantSelection,
+}
+
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct BuildSummary {
+    pub shaders: usize,
+    pub passes: usize,
+    pub variants: usize,
+    /// Distinct stage modules.
+    pub modules: usize,
+    pub compiled: usize,
+    pub reused: usize,
+    pub bytes_written: u64,
+    pub elapsed: Duration,
+}
+
+pub struct BuildResult {
+    pub manifest: Manifest,
+    pub summary: BuildSummary,
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// One distinct stage module of a pass.
+struct Job<'a> {
+    pass: usize,
+    stage: Stage,
+    entry: &'a str,
+    entry_pragma: Span,
+    text: String,
+    map: SourceMap,
+    text_hash: String,
+    allowed: Allowed,
+    keywords: Vec<String>,
+    /// Which variant asked for it first, for diagnostics.
+    context: String,
+}
+
+/// A pass being built.
+struct PassWork<'a> {
+    shader: &'a CatalogShader,
+    pass: &'a CatalogPass,
+    program: &'a CatalogProgram,
+    variants: Vec<Variant>,
+    /// For each variant, its vertex and fragment job (`None` when that stage failed or is absent).
+    stages: Vec<[Option<usize>; 2]>,
+    layout: PassLayout,
+    failed: bool,
+}
+
+/// Outcome of a job's front end: its declared resources, and the parsed module when it had to be
+/// parsed (kept so the stage phase does not parse again).
+type Front = Result<(Vec<Declared>, Option<naga::Module>), Diagnostic>;
+
+/// A stage module from the cache or freshly compiled (`true`), with the bytes written; `None`
+/// when its pass could not be laid out.
+type StageOutcome = Option<Result<(CachedStage, bool, u64), Diagnostic>>;
+
+/// Builds (or, without `write`, checks) every WGSL pass of the catalogue.
+pub fn build(
+    store: &SourceStore,
+    includes: &Includes,
+    catalog: &Catalog,
+    options: &BuildOptions,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> BuildResult {
+    let started = Instant::now();
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(options.threads.unwrap_or(0)).build();
+    let run = || build_in_pool(store, includes, catalog, options, progress);
+    let mut result = match pool {
+        Ok(pool) => pool.install(run),
+        Err(_) => run(),
+    };
+    result.summary.elapsed = started.elapsed();
+    result
+}
+
+fn build_in_pool(
+    store: &SourceStore,
+    includes: &Includes,
+    catalog: &Catalog,
+    options: &BuildOptions,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> BuildResult {
+    let mut diagnostics = Vec::new();
+    let cache = Cache::new(&options.output, options.write);
+    let mut summary = BuildSummary::default();
+
+    // 1. Variants and their preprocessed stage texts, identical ones merged per pass.
+    let mut work: Vec<PassWork> = Vec::new();
+    let mut jobs: Vec<Job> = Vec::new();
+    for shader in &catalog.shaders {
+        let mut built_any = false;
+        for pass in &shader.passes {
+            let Some(program) = pass.program.as_ref().filter(|p| p.wgsl.is_some()) else { continue };
+            let variants = select_variants(shader, pass, program, options.unused_shaders, &mut diagnostics);
+            if variants.is_empty() {
+                continue;
+            }
+            built_any = true;
+            let index = work.len();
+            let stages = variants
+                .iter()
+                .map(|variant| {
+                    [Stage::Vertex, Stage::Fragment].map(|stage| {
+                        add_job(
+                            store,
+                            includes,
+                            shader,
+                            pass,
+                            program,
+                            variant,
+                            stage,
+                            index,
+                            &mut jobs,
+                            &mut diagnostics,
+                        )
+                    })
+                })
+                .collect();
+            summary.variants += variants.len();
+            summary.passes += 1;
+            work.push(PassWork {
+                shader,
+                pass,
+                program,
+                variants,
+                stages,
+                layout: PassLayout::default(),
+                failed: false,
+            });
+        }
+        summary.shaders += usize::from(built_any);
+    }
+    summary.modules = jobs.len();
+    let total = jobs.len() * 2;
+    let done = AtomicUsize::new(0);
+    let tick = || progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+
+    // 2. Front end: the resources each text declares (from the cache, or by parsing).
+    let mut fronts: Vec<Front> = jobs
+        .par_iter()
+        .map(|job| {
+            let front = front(job, store, &cache);
+            tick();
+            front
+        })
+        .collect();
+
+    // 3. One layout per pass, from all its modules.
+    for (p, pass) in work.iter_mut().enumerate() {
+        let members: Vec<usize> = (0..jobs.len()).filter(|&j| jobs[j].pass == p).collect();
+        let mut declared: Vec<&[Declared]> = Vec::new();
+        let mut owners = Vec::new();
+        for &j in &members {
+            match &fronts[j] {
+                Ok((d, _)) => {
+                    declared.push(d);
+                    owners.push(j);
+                }
+                Err(error) => {
+                    diagnostics.push(error.clone());
+                    pass.failed = true;
+                }
+            }
+        }
+        let (layout, clashes) = bind::layout(&declared);
+        for (m, d, message) in clashes {
+            let job = &jobs[owners[m]];
+            let range = declared[m][d].range;
+            let mapper = Mapper { map: &job.map, store };
+            let diagnostic = Diagnostic::error("K0406", message).help(
+                "give each resource its own slot, or leave out `@group`/`@binding` and let kiln assign them",
+            );
+            let mut diagnostic = mapper.diagnostic_at(
+                diagnostic,
+                vec![(range.0 as usize..range.1 as usize, "declared here".into())],
+            );
+            diagnostic.notes.push(job.context.clone());
+            diagnostics.push(diagnostic);
+            pass.failed = true;
+        }
+        pass.layout = layout;
+    }
+
+    // 4. Stage modules: cached, or compiled in parallel.
+    let outcomes: Vec<StageOutcome> = jobs
+        .par_iter()
+        .zip(fronts.par_iter_mut())
+        .map(|(job, front)| {
+            let pass = &work[job.pass];
+            let outcome = match front {
+                Err(_) => None,
+                Ok(_) if pass.failed => None,
+                Ok((declared, module)) => {
+                    Some(stage_module(job, declared, module.take(), pass, options, store, &cache))
+                }
+            };
+            tick();
+            outcome
+        })
+        .collect();
+    let mut stages: Vec<Option<CachedStage>> = Vec::with_capacity(jobs.len());
+    for (job, outcome) in jobs.iter().zip(outcomes) {
+        match outcome {
+            Some(Ok((stage, compiled, written))) => {
+                summary.compiled += usize::from(compiled);
+                summary.reused += usize::from(!compiled);
+                summary.bytes_written += written;
+                stages.push(Some(stage));
+            }
+            Some(Err(mut error)) => {
+                error.notes.push(job.context.clone());
+                diagnostics.push(error);
+                stages.push(None);
+            }
+            None => stages.push(None),
+        }
+    }
+
+    // 5. The manifest, in catalogue order.
+    let manifest = manifest(store, catalog, &work, &jobs, &stages);
+    if options.write && !diagnostics::has_errors(&diagnostics) {
+        let mut text = serde_json::to_string_pretty(&manifest).unwrap_or_default();
+        text.push('\n');
+        let path = options.output.join("manifest.json");
+        // An unchanged manifest is not rewritten, so a no-op build touches nothing.
+        if std::fs::read(&path).ok().as_deref() != Some(text.as_bytes()) {
+            match super::write_atomically(&path, text.as_bytes()) {
+                Ok(()) => summary.bytes_written += text.len() as u64,
+                Err(error) => diagnostics.push(write_failure(&options.output, &error)),
+            }
+        }
+    }
+    diagnostics::dedup(&mut diagnostics);
+    BuildResult { manifest, summary, diagnostics }
+}
+
+fn write_failure(output: &std::path::Path, error: &std::io::Error) -> Diagnostic {
+    Diagnostic::error("K0410", format!("cannot write to `{}`: {error}", output.display()))
+}
+
+fn select_variants(
+    shader: &CatalogShader,
+    pass: &CatalogPass,
+    program: &CatalogProgram,
+    selection: VariantSelection,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Vec<Variant> {
+    if !program.variants.is_empty() {
+        return program.variants.clone();
+    }
+    match selection {
+        VariantSelection::Used => Vec::new(),
+        VariantSelection::DefaultsAndEachKeyword => program.keywords.defaults_and_each_keyword(),
+        VariantSelection::All { limit } => match program.keywords.possible() {
+            Some(n) if n <= limit => program.keywords.enumerate(&[], true),
+            count => {
+                let count = count.map_or("more than 2^128".to_string(), |n| n.to_string());
+                let span =
+                    program.pragmas.keyword_sets.first().map(|s| s.span).unwrap_or(shader.shader.name.span);
+                diagnostics.push(
+                    Diagnostic::error(
+                        "K0408",
+                        format!(
+                            "pass {} of `{}` has {count} variants, over the limit of {limit}",
+                            pass.index, shader.shader.name.value
+                        ),
+                    )
+                    .at(span, "its keyword sets multiply to that many")
+                    .help("check the variants materials use with `kiln check` (without `--all-variants`)"),
+                );
+                Vec::new()
+            }
+        },
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn add_job<'a>(
+    store: &SourceStore,
+    includes: &Includes,
+    shader: &CatalogShader,
+    pass: &CatalogPass,
+    program: &'a CatalogProgram,
+    variant: &Variant,
+    stage: Stage,
+    pass_index: usize,
+    jobs: &mut Vec<Job<'a>>,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Option<usize> {
+    let entry = match stage {
+        Stage::Vertex => program.pragmas.vertex.as_ref()?,
+        Stage::Fragment => program.pragmas.fragment.as_ref()?,
+    };
+    let keywords: Vec<&str> = program.keywords.keywords(program.keywords_for(variant, stage)).collect();
+    let all: Vec<&str> = program.keywords.keywords(&variant.bits).collect();
+    let shown = if all.is_empty() { "(no keywords)".to_string() } else { all.join(" ") };
+    let context = format!(
+        "in variant `{shown}` of `{}` pass {}, {} stage",
+        shader.shader.name.value,
+        pass.index,
+        stage.name()
+    );
+    let wgsl = program.wgsl.as_ref()?;
+    let out = preprocess(includes, store, wgsl, &keywords, stage);
+    let failed = diagnostics::has_errors(&out.diagnostics);
+    diagnostics.extend(out.diagnostics.into_iter().map(|d| d.note(context.clone())));
+    if failed {
+        return None;
+    }
+    let allowed = Allowed::for_variant(&program.pragmas, &all);
+    let text_hash = hash(out.text.as_bytes());
+    let existing = jobs.iter().position(|j| {
+        j.pass == pass_index && j.stage == stage && j.text_hash == text_hash && j.allowed == allowed
+    });
+    if existing.is_some() {
+        return existing;
+    }
+    jobs.push(Job {
+        pass: pass_index,
+        stage,
+        entry: &entry.value,
+        entry_pragma: entry.span,
+        text: out.text,
+        map: out.source_map,
+        text_hash,
+        allowed,
+        keywords: keywords.iter().map(|k| k.to_string()).collect(),
+        context,
+    });
+    Some(jobs.len() - 1)
+}
+
+fn front(job: &Job, store: &SourceStore, cache: &Cache) -> Front {
+    if let Some(declared) = cache.front(&job.text_hash) {
+        return Ok((declared, None));
+    }
+    let mapper = Mapper { map: &job.map, store };
+    let module = parse(&job.text, &mapper).map_err(|d| d.note(job.context.clone()))?;
+    let declared = bind::declared(&module);
+    // A cache that cannot be written only costs speed next time.
+    let _ = cache.put_front(&job.text_hash, &declared);
+    Ok((declared, Some(module)))
+}
+
+fn stage_module(
+    job: &Job,
+    declared: &[Declared],
+    module: Option<naga::Module>,
+    pass: &PassWork,
+    options: &BuildOptions,
+    store: &SourceStore,
+    cache: &Cache,
+) -> Result<(CachedStage, bool, u64), Diagnostic> {
+    let slots: Vec<String> = declared
+        .iter()
+        .filter_map(|d| pass.layout.slots.get(&d.name).map(|(g, b)| format!("{}@{g}/{b}", d.name)))
+        .collect();
+    let backends: Vec<&str> =
+        options.backends.iter().map(|b| if *b == Backend::Wgsl { "wgsl" } else { "spirv" }).collect();
+    let key = hash(
+        format!(
+            "{}\n{}\n{}\n{}\n{}\n{}\nkiln {}\n{NAGA_VERSION}",
+            job.text_hash,
+            job.stage.name(),
+            job.entry,
+            job.allowed.key(),
+            slots.join(","),
+            backends.join(","),
+            env!("CARGO_PKG_VERSION")
+        )
+        .as_bytes(),
+    );
+    if let Some(cached) = cache.stage(&key) {
+        return Ok((cached, false, 0));
+    }
+    let mapper = Mapper { map: &job.map, store };
+    let module = match module {
+        Some(module) => module,
+        None => parse(&job.text, &mapper)?,
+    };
+    let request = StageRequest {
+        text: &job.text,
+        stage: job.stage,
+        entry: job.entry,
+        entry_pragma: job.entry_pragma,
+        allowed: &job.allowed,
+        layout: &pass.layout,
+        backends: &options.backends,
+    };
+    let output = stage::compile(module, &request, &mapper)?;
+    let io = |e: std::io::Error| write_failure(&options.output, &e);
+    let mut written = 0;
+    let wgsl = match &output.wgsl {
+        Some(text) => {
+            let (file, bytes) = cache.module(text.as_bytes(), "wgsl").map_err(io)?;
+            written += bytes;
+            Some(file)
+        }
+        None => None,
+    };
+    let spirv = match &output.spirv {
+        Some(words) => {
+            let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+            let (file, count) = cache.module(&bytes, "spv").map_err(io)?;
+            written += count;
+            Some(file)
+        }
+        None => None,
+    };
+    let stage = CachedStage { wgsl, spirv, reflection: output.reflection };
+    let _ = cache.put_stage(&key, &stage);
+    Ok((stage, true, written))
+}
+
+fn manifest(
+    store: &SourceStore,
+    catalog: &Catalog,
+    work: &[PassWork],
+    jobs: &[Job],
+    stages: &[Option<CachedStage>],
+) -> Manifest {
+    let mut shaders = Vec::new();
+    for shader in &catalog.shaders {
+        let passes: Vec<&PassWork> = work.iter().filter(|w| std::ptr::eq(w.shader, shader)).collect();
+        if passes.is_empty() {
+            continue;
+        }
+        let passes: Vec<PassManifest> =
+            passes.iter().map(|w| pass_manifest(store, catalog, w, jobs, stages)).collect();
+        shaders.push(ShaderManifest {
+            name: shader.shader.name.value.clone(),
+            file: store.name(shader.file).to_string(),
+            properties: properties(&shader.shader, &passes),
+            passes,
+        });
+    }
+    Manifest { schema_version: SCHEMA_VERSION, kiln_version: env!("CARGO_PKG_VERSION").to_string(), shaders }
+}
+
+fn pass_manifest(
+    store: &SourceStore,
+    catalog: &Catalog,
+    work: &PassWork,
+    jobs: &[Job],
+    stages: &[Option<CachedStage>],
+) -> PassManifest {
+    let shader = &work.shader.shader;
+    let mut entries: BTreeMap<(u32, u32), LayoutEntry> = BTreeMap::new();
+    let mut variants = Vec::new();
+    for (variant, stage_jobs) in work.variants.iter().zip(&work.stages) {
+        let [vertex, fragment] = stage_jobs.map(|j| j.and_then(|j| Some((j, stages[j].as_ref()?))));
+        let mut blocks: Vec<UniformBlock> = Vec::new();
+        let mut stage_manifest = |found: Option<(usize, &CachedStage)>, name: &str| {
+            let (j, stage) = found?;
+            let reflection: &StageReflection = &stage.reflection;
+            for b in &reflection.bindings {
+                let entry = entries.entry((b.group, b.binding)).or_insert_with(|| LayoutEntry {
+                    binding: b.binding,
+                    name: b.name.clone(),
+                    visibility: Vec::new(),
+                    resource: b.resource.clone(),
+                });
+                if !entry.visibility.iter().any(|v| v == name) {
+                    entry.visibility.push(name.to_string());
+                }
+            }
+            for block in &reflection.uniform_blocks {
+                if !blocks.iter().any(|b| b.name == block.name) {
+                    blocks.push(block.clone());
+                }
+            }
+            Some(StageManifest {
+                module: stage
+                    .wgsl
+                    .as_ref()
+                    .or(stage.spirv.as_ref())
+                    .map_or_else(|| format!("job{j}"), |f| f.hash.clone()),
+                entry_point: reflection.entry_point.clone(),
+                keywords: jobs[j].keywords.clone(),
+                wgsl: stage.wgsl.clone(),
+                spirv: stage.spirv.clone(),
+                inputs: reflection.inputs.clone(),
+                outputs: reflection.outputs.clone(),
+                bindings: reflection.bindings.iter().map(|b| [b.group, b.binding]).collect(),
+            })
+        };
+        let vertex = stage_manifest(vertex, "vertex");
+        let fragment = stage_manifest(fragment, "fragment");
+        blocks.sort_by(|a, b| a.name.cmp(&b.name));
+        variants.push(VariantManifest {
+            key: variant.bits.key(),
+            keywords: work.program.keywords.keywords(&variant.bits).map(str::to_string).collect(),
+            materials: variant.materials.iter().map(|&m| catalog.materials[m].name.clone()).collect(),
+            vertex,
+            fragment,
+            uniform_blocks: blocks,
+        });
+    }
+    let mut groups: BTreeMap<u32, Vec<LayoutEntry>> = BTreeMap::new();
+    for ((group, _), mut entry) in entries {
+        entry.visibility.sort();
+        groups.entry(group).or_default().push(entry);
+    }
+    let render_state = work
+        .shader
+        .shader
+        .subshaders
+        .get(work.pass.subshader)
+        .map(|sub| &sub.state.render_state)
+        .into_iter()
+        .flatten()
+        .chain(work.shader.pass_ast(work.pass).map(|p| &p.state.render_state).into_iter().flatten())
+        .map(|command| {
+            let text = store.slice(command.span).to_string();
+            let properties = property_references(&text)
+                .into_iter()
+                .map(|name| PropertyReference {
+                    default: shader
+                        .property(name)
+                        .map_or(serde_json::Value::Null, |p| default_json(&p.default.value)),
+                    name: name.to_string(),
+                })
+                .collect();
+            RenderState { command: text, properties }
+        })
+        .collect();
+    PassManifest {
+        subshader: work.pass.subshader,
+        index: work.pass.index,
+        name: work.pass.name.clone(),
+        tags: work.pass.tags.clone(),
+        render_state,
+        keyword_sets: work
+            .program
+            .keywords
+            .sets()
+            .iter()
+            .map(|set| KeywordSetManifest {
+                kind: set.kind.name().to_string(),
+                scope: if set.scope == KeywordScope::Local { "local" } else { "global" }.to_string(),
+                stage: set.stage.name().to_string(),
+                keywords: set
+                    .options
+                    .iter()
+                    .map(|o| o.keyword.clone().unwrap_or_else(|| "_".into()))
+                    .collect(),
+            })
+            .collect(),
+        layout: groups.into_iter().map(|(group, entries)| BindGroup { group, entries }).collect(),
+        variants,
+    }
+}
+
+fn default_json(default: &PropertyDefault) -> serde_json::Value {
+    match default {
+        PropertyDefault::Number(n) => serde_json::json!(n),
+        PropertyDefault::Vector(v) => serde_json::json!(v),
+        PropertyDefault::Texture { name, .. } => serde_json::json!(name),
+    }
+}
+
+/// The shader's properties, with their place in the material block (from the first variant that
+/// has one) and their texture bindings.
+fn properties(shader: &Shader, passes: &[PassManifest]) -> Vec<PropertyManifest> {
+    let material_block = passes
+        .iter()
+        .flat_map(|p| &p.variants)
+        .flat_map(|v| &v.uniform_blocks)
+        .find(|b| b.name == "UnityPerMaterial");
+    let mut bindings: HashMap<&str, [u32; 2]> = HashMap::new();
+    for pass in passes {
+        for group in &pass.layout {
+            for entry in &group.entries {
+                if matches!(entry.resource, Resource::Texture { .. } | Resource::StorageTexture { .. }) {
+                    bindings.entry(entry.name.as_str()).or_insert([group.group, entry.binding]);
+                }
+            }
+        }
+    }
+    shader
+        .properties
+        .iter()
+        .map(|p| PropertyManifest {
+            name: p.name.value.clone(),
+            display_name: p.display_name.value.clone(),
+            ty: match p.ty.value {
+                PropertyType::Range { min, max } => format!("Range({min}, {max})"),
+                other => other.name().to_string(),
+            },
+            default: default_json(&p.default.value),
+            offset: material_block
+                .and_then(|b| b.members.iter().find(|m| m.name == p.name.value))
+                .map(|m| m.offset),
+            binding: bindings.get(p.name.value.as_str()).copied(),
+        })
+        .collect()
+}

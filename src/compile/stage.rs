@@ -1,0 +1,145 @@
+//! One stage module: a parsed variant text, bound to its pass layout, cut down to its entry
+//! point, validated with what its target allows, and written as WGSL and SPIR-V.
+
+use super::bind::{self, PassLayout};
+use super::target::Allowed;
+use super::{Mapper, validate};
+use crate::config::Backend;
+use crate::diagnostics::Diagnostic;
+use crate::preprocess::Stage;
+use crate::reflect::{StageReflection, reflect_stage};
+use crate::source::Span;
+use naga::valid::ValidationFlags;
+
+/// What a stage module compiles to.
+pub struct StageOutput {
+    pub wgsl: Option<String>,
+    pub spirv: Option<Vec<u32>>,
+    pub reflection: StageReflection,
+}
+
+pub struct StageRequest<'a> {
+    /// The preprocessed text, for locating declarations naga gives no span for.
+    pub text: &'a str,
+    pub stage: Stage,
+    pub entry: &'a str,
+    /// The `#pragma vertex`/`fragment` naming the entry point, for "not found" errors.
+    pub entry_pragma: Span,
+    pub allowed: &'a Allowed,
+    pub layout: &'a PassLayout,
+    pub backends: &'a [Backend],
+}
+
+fn naga_stage(stage: Stage) -> naga::ShaderStage {
+    match stage {
+        Stage::Vertex => naga::ShaderStage::Vertex,
+        Stage::Fragment => naga::ShaderStage::Fragment,
+    }
+}
+
+pub fn compile(
+    mut module: naga::Module,
+    request: &StageRequest,
+    mapper: &Mapper,
+) -> Result<StageOutput, Diagnostic> {
+    let stage = naga_stage(request.stage);
+    if !module.entry_points.iter().any(|e| e.name == request.entry && e.stage == stage) {
+        let other = module.entry_points.iter().find(|e| e.name == request.entry);
+        let d = Diagnostic::error(
+            "K0403",
+            format!("{} entry point `{}` not found", request.stage.name(), request.entry),
+        )
+        .at(request.entry_pragma, "named here");
+        return Err(match other {
+            Some(e) => d.help(format!(
+                "`{}` is a {:?} entry point; mark it `@{}`",
+                e.name,
+                e.stage,
+                request.stage.name()
+            )),
+            None => d.help(format!(
+                "define `@{} fn {}(...)` in the program or its includes",
+                request.stage.name(),
+                request.entry
+            )),
+        });
+    }
+    bind::apply(&mut module, request.layout);
+    module.entry_points.retain(|e| e.name == request.entry && e.stage == stage);
+    naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+    let info = validate(&module, ValidationFlags::all(), request.allowed.capabilities(), mapper)?;
+    check_limits(&module, request, mapper)?;
+
+    let wgsl = if request.backends.contains(&Backend::Wgsl) {
+        let text = naga::back::wgsl::write_string(&module, &info, naga::back::wgsl::WriterFlags::empty())
+            .map_err(|e| backend_error("WGSL", e.to_string()))?;
+        Some(text)
+    } else {
+        None
+    };
+    let spirv = if request.backends.contains(&Backend::Spirv) {
+        let options = naga::back::spv::Options {
+            flags: naga::back::spv::WriterFlags::empty(),
+            ..naga::back::spv::Options::default()
+        };
+        let pipeline =
+            naga::back::spv::PipelineOptions { shader_stage: stage, entry_point: request.entry.to_string() };
+        let words = naga::back::spv::write_vec(&module, &info, &options, Some(&pipeline))
+            .map_err(|e| backend_error("SPIR-V", e.to_string()))?;
+        Some(words)
+    } else {
+        None
+    };
+    Ok(StageOutput { wgsl, spirv, reflection: reflect_stage(&module, request.entry) })
+}
+
+fn backend_error(backend: &str, message: String) -> Diagnostic {
+    Diagnostic::error("K0409", format!("the {backend} writer failed: {message}"))
+        .note("naga validated the module, so this is a gap in naga's back end; please report it")
+}
+
+/// Interpolators and colour targets beyond what the variant's target allows.
+fn check_limits(module: &naga::Module, request: &StageRequest, mapper: &Mapper) -> Result<(), Diagnostic> {
+    let Some(entry) = module.entry_points.first() else { return Ok(()) };
+    let Some(result) = &entry.function.result else { return Ok(()) };
+    let mut locations = Vec::new();
+    count_locations(module, result.ty, result.binding.as_ref(), &mut locations);
+    let (limit, what, code, raise) = match request.stage {
+        Stage::Vertex => (
+            request.allowed.max_interpolators(),
+            "interpolators",
+            "K0404",
+            "interpolators15 or interpolators32",
+        ),
+        Stage::Fragment => (request.allowed.max_color_targets(), "colour targets", "K0405", "mrt4 or mrt8"),
+    };
+    let used = locations.len() as u32;
+    if used <= limit {
+        return Ok(());
+    }
+    let needle = format!("fn {}", request.entry);
+    let declaration = request.text.find(&needle).map(|at| at + 3..at + needle.len());
+    let d = Diagnostic::error(
+        code,
+        format!("`{}` writes {used} {what}; target {} allows {limit}", request.entry, request.allowed.level),
+    )
+    .help(format!("raise `#pragma target`, or `#pragma require {raise}`"));
+    Err(mapper.diagnostic_at(d, declaration.into_iter().map(|r| (r, "declared here".to_string())).collect()))
+}
+
+fn count_locations(
+    module: &naga::Module,
+    ty: naga::Handle<naga::Type>,
+    binding: Option<&naga::Binding>,
+    out: &mut Vec<u32>,
+) {
+    match (binding, &module.types[ty].inner) {
+        (Some(naga::Binding::Location { location, .. }), _) => out.push(*location),
+        (None, naga::TypeInner::Struct { members, .. }) => {
+            for m in members {
+                count_locations(module, m.ty, m.binding.as_ref(), out);
+            }
+        }
+        _ => {}
+    }
+}

@@ -1,0 +1,125 @@
+//! `manifest.json`: everything a renderer needs to use a project's compiled variants, as its own
+//! versioned serde schema (documented in docs/manifest.md), built by explicit conversion.
+
+use super::{Attribute, Resource, UniformBlock};
+use serde::{Deserialize, Serialize};
+
+/// Raised whenever a field changes meaning or is removed (adding fields keeps it).
+pub const SCHEMA_VERSION: u32 = 1;
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Manifest {
+    pub schema_version: u32,
+    pub kiln_version: String,
+    pub shaders: Vec<ShaderManifest>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ShaderManifest {
+    pub name: String,
+    pub file: String,
+    pub properties: Vec<PropertyManifest>,
+    pub passes: Vec<PassManifest>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PropertyManifest {
+    pub name: String,
+    pub display_name: String,
+    #[serde(rename = "type")]
+    pub ty: String,
+    pub default: serde_json::Value,
+    /// Byte offset in the material uniform block (`UnityPerMaterial`), when the shader has it there.
+    pub offset: Option<u32>,
+    /// `[group, binding]` of a texture property's texture.
+    pub binding: Option<[u32; 2]>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PassManifest {
+    pub subshader: usize,
+    pub index: usize,
+    pub name: Option<String>,
+    pub tags: Vec<(String, String)>,
+    pub render_state: Vec<RenderState>,
+    pub keyword_sets: Vec<KeywordSetManifest>,
+    /// One bind group layout for every variant of the pass.
+    pub layout: Vec<BindGroup>,
+    pub variants: Vec<VariantManifest>,
+}
+
+/// A render-state command as written, with the properties it refers to resolved.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RenderState {
+    pub command: String,
+    pub properties: Vec<PropertyReference>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PropertyReference {
+    pub name: String,
+    pub default: serde_json::Value,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct KeywordSetManifest {
+    pub kind: String,
+    pub scope: String,
+    pub stage: String,
+    /// `_` is the all-off choice.
+    pub keywords: Vec<String>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BindGroup {
+    pub group: u32,
+    pub entries: Vec<LayoutEntry>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LayoutEntry {
+    pub binding: u32,
+    pub name: String,
+    /// The stages any variant uses it in: `vertex`, `fragment`.
+    pub visibility: Vec<String>,
+    pub resource: Resource,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct VariantManifest {
+    /// The keyword bits in hexadecimal (see docs/project.md).
+    pub key: String,
+    pub keywords: Vec<String>,
+    /// The materials that need it (empty for variants built without materials).
+    pub materials: Vec<String>,
+    pub vertex: Option<StageManifest>,
+    pub fragment: Option<StageManifest>,
+    /// Every uniform block the variant's stages use, laid out by naga.
+    pub uniform_blocks: Vec<UniformBlock>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StageManifest {
+    /// Identifies the stage module: variants with the same id share it.
+    pub module: String,
+    pub entry_point: String,
+    pub keywords: Vec<String>,
+    pub wgsl: Option<FileRef>,
+    pub spirv: Option<FileRef>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub inputs: Vec<Attribute>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub outputs: Vec<Attribute>,
+    /// `[group, binding]` of each resource the module uses.
+    pub bindings: Vec<[u32; 2]>,
+}
+
+/// A file under the output folder.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FileRef {
+    /// Relative to the output folder, with `/` separators.
+    pub path: String,
+    /// BLAKE3, 128 bits in hexadecimal.
+    pub hash: String,
+    pub size: u64,
+}

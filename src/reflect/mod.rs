@@ -1,0 +1,273 @@
+//! Reflection: what a compiled stage module needs from the renderer (vertex inputs, fragment
+//! outputs, bindings, uniform block layouts from naga's `Layouter`), and the manifest model
+//! (`manifest.rs`) that collects it for a whole project.
+
+pub mod manifest;
+
+use naga::proc::Layouter;
+use naga::{
+    AddressSpace, ArraySize, Binding, Handle, ImageClass, ImageDimension, Module, ScalarKind, Type, TypeInner,
+};
+use serde::{Deserialize, Serialize};
+
+/// What one stage module exposes. Stored in the build cache, so a rebuild needs no naga.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StageReflection {
+    pub entry_point: String,
+    /// Vertex stage: the vertex attributes it reads.
+    pub inputs: Vec<Attribute>,
+    /// Fragment stage: the colour targets it writes.
+    pub outputs: Vec<Attribute>,
+    /// The resources the module uses (after compaction to its entry point), by group and binding.
+    pub bindings: Vec<BindingInfo>,
+    pub uniform_blocks: Vec<UniformBlock>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Attribute {
+    pub location: u32,
+    pub name: String,
+    /// WebGPU vertex or texel format, such as `float32x3`.
+    pub format: String,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BindingInfo {
+    pub group: u32,
+    pub binding: u32,
+    pub name: String,
+    pub resource: Resource,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum Resource {
+    Uniform { type_name: String, size: u32 },
+    Storage { type_name: String, read_only: bool },
+    Texture { dimension: String, sample_type: String, multisampled: bool },
+    StorageTexture { dimension: String, format: String, access: String },
+    Sampler { comparison: bool },
+    Other { description: String },
+}
+
+/// A uniform buffer's struct, laid out by naga.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct UniformBlock {
+    /// The global variable's name (`_CustomLight`).
+    pub name: String,
+    pub type_name: String,
+    pub size: u32,
+    pub alignment: u32,
+    pub members: Vec<Member>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Member {
+    pub name: String,
+    #[serde(rename = "type")]
+    pub ty: String,
+    pub offset: u32,
+    pub size: u32,
+    pub alignment: u32,
+    /// For arrays: the element stride and the length (`None` for a runtime-sized array).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub array_stride: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub array_length: Option<u32>,
+}
+
+/// Reflects a module compacted to one entry point.
+pub fn reflect_stage(module: &Module, entry_point: &str) -> StageReflection {
+    let mut layouter = Layouter::default();
+    // A module that validated always lays out; an error would leave sizes at 0, not crash.
+    let _ = layouter.update(module.to_ctx());
+    let mut reflection = StageReflection {
+        entry_point: entry_point.to_string(),
+        inputs: Vec::new(),
+        outputs: Vec::new(),
+        bindings: Vec::new(),
+        uniform_blocks: Vec::new(),
+    };
+    if let Some(entry) = module.entry_points.iter().find(|e| e.name == entry_point) {
+        if entry.stage == naga::ShaderStage::Vertex {
+            for argument in &entry.function.arguments {
+                let name = argument.name.clone().unwrap_or_default();
+                locations(module, argument.ty, argument.binding.as_ref(), &name, &mut reflection.inputs);
+            }
+        }
+        if entry.stage == naga::ShaderStage::Fragment
+            && let Some(result) = &entry.function.result
+        {
+            locations(module, result.ty, result.binding.as_ref(), "", &mut reflection.outputs);
+        }
+    }
+    for (_, global) in module.global_variables.iter() {
+        let Some(binding) = &global.binding else { continue };
+        let name = global.name.clone().unwrap_or_default();
+        let resource = resource(module, &layouter, global.space, global.ty);
+        if global.space == AddressSpace::Uniform
+            && let TypeInner::Struct { members, span } = &module.types[global.ty].inner
+        {
+            reflection.uniform_blocks.push(UniformBlock {
+                name: name.clone(),
+                type_name: type_name(module, global.ty),
+                size: *span,
+                alignment: layouter[global.ty].alignment.round_up(1),
+                members: members
+                    .iter()
+                    .map(|m| {
+                        let (array_stride, array_length) = match &module.types[m.ty].inner {
+                            TypeInner::Array { size, stride, .. } => (
+                                Some(*stride),
+                                match size {
+                                    ArraySize::Constant(n) => Some(n.get()),
+                                    _ => None,
+                                },
+                            ),
+                            _ => (None, None),
+                        };
+                        Member {
+                            name: m.name.clone().unwrap_or_default(),
+                            ty: type_name(module, m.ty),
+                            offset: m.offset,
+                            size: layouter[m.ty].size,
+                            alignment: layouter[m.ty].alignment.round_up(1),
+                            array_stride,
+                            array_length,
+                        }
+                    })
+                    .collect(),
+            });
+        }
+        reflection.bindings.push(BindingInfo {
+            group: binding.group,
+            binding: binding.binding,
+            name,
+            resource,
+        });
+    }
+    reflection.bindings.sort_by_key(|b| (b.group, b.binding));
+    reflection
+}
+
+/// `@location` bindings of an argument or result, flattening structs.
+fn locations(
+    module: &Module,
+    ty: Handle<Type>,
+    binding: Option<&Binding>,
+    name: &str,
+    out: &mut Vec<Attribute>,
+) {
+    match (binding, &module.types[ty].inner) {
+        (Some(Binding::Location { location, .. }), _) => out.push(Attribute {
+            location: *location,
+            name: name.to_string(),
+            format: format(&module.types[ty].inner),
+        }),
+        (None, TypeInner::Struct { members, .. }) => {
+            for member in members {
+                let member_name = member.name.clone().unwrap_or_default();
+                locations(module, member.ty, member.binding.as_ref(), &member_name, out);
+            }
+        }
+        _ => {}
+    }
+    out.sort_by_key(|a| a.location);
+}
+
+/// The WebGPU vertex format of a scalar or vector type (`float32x3`).
+fn format(inner: &TypeInner) -> String {
+    let (scalar, count) = match inner {
+        TypeInner::Scalar(scalar) => (*scalar, 1),
+        TypeInner::Vector { size, scalar } => (*scalar, *size as u32),
+        _ => return "unsupported".into(),
+    };
+    let kind = match scalar.kind {
+        ScalarKind::Float => "float",
+        ScalarKind::Sint => "sint",
+        ScalarKind::Uint => "uint",
+        _ => "unsupported",
+    };
+    let bits = u32::from(scalar.width) * 8;
+    if count == 1 { format!("{kind}{bits}") } else { format!("{kind}{bits}x{count}") }
+}
+
+fn resource(module: &Module, layouter: &Layouter, space: AddressSpace, ty: Handle<Type>) -> Resource {
+    match (space, &module.types[ty].inner) {
+        (AddressSpace::Uniform, _) => {
+            Resource::Uniform { type_name: type_name(module, ty), size: layouter[ty].size }
+        }
+        (AddressSpace::Storage { access }, _) => Resource::Storage {
+            type_name: type_name(module, ty),
+            read_only: !access.contains(naga::StorageAccess::STORE),
+        },
+        (_, TypeInner::Sampler { comparison }) => Resource::Sampler { comparison: *comparison },
+        (_, TypeInner::Image { dim, arrayed, class }) => {
+            let dimension = dimension(*dim, *arrayed);
+            match class {
+                ImageClass::Sampled { kind, multi } => Resource::Texture {
+                    dimension,
+                    sample_type: match kind {
+                        ScalarKind::Sint => "sint",
+                        ScalarKind::Uint => "uint",
+                        _ => "float",
+                    }
+                    .into(),
+                    multisampled: *multi,
+                },
+                ImageClass::Depth { multi } => {
+                    Resource::Texture { dimension, sample_type: "depth".into(), multisampled: *multi }
+                }
+                ImageClass::Storage { format, access } => Resource::StorageTexture {
+                    dimension,
+                    format: format!("{format:?}").to_lowercase(),
+                    access: format!("{access:?}").to_lowercase(),
+                },
+                other => Resource::Other { description: format!("{other:?}") },
+            }
+        }
+        (_, other) => Resource::Other { description: format!("{other:?}") },
+    }
+}
+
+fn dimension(dim: ImageDimension, arrayed: bool) -> String {
+    let base = match dim {
+        ImageDimension::D1 => "1d",
+        ImageDimension::D2 => "2d",
+        ImageDimension::D3 => "3d",
+        ImageDimension::Cube => "cube",
+    };
+    if arrayed { format!("{base}_array") } else { base.to_string() }
+}
+
+/// The WGSL spelling of a type (`array<vec4<f32>, 4>`), or a struct's name.
+pub fn type_name(module: &Module, ty: Handle<Type>) -> String {
+    let t = &module.types[ty];
+    if let Some(name) = &t.name {
+        return name.clone();
+    }
+    let scalar = |s: naga::Scalar| match (s.kind, s.width) {
+        (ScalarKind::Float, 2) => "f16".to_string(),
+        (ScalarKind::Float, 8) => "f64".to_string(),
+        (ScalarKind::Float, _) => "f32".to_string(),
+        (ScalarKind::Sint, 8) => "i64".to_string(),
+        (ScalarKind::Sint, _) => "i32".to_string(),
+        (ScalarKind::Uint, 8) => "u64".to_string(),
+        (ScalarKind::Uint, _) => "u32".to_string(),
+        (ScalarKind::Bool, _) => "bool".to_string(),
+        (kind, width) => format!("{kind:?}{width}"),
+    };
+    match &t.inner {
+        TypeInner::Scalar(s) => scalar(*s),
+        TypeInner::Vector { size, scalar: s } => format!("vec{}<{}>", *size as u32, scalar(*s)),
+        TypeInner::Matrix { columns, rows, scalar: s } => {
+            format!("mat{}x{}<{}>", *columns as u32, *rows as u32, scalar(*s))
+        }
+        TypeInner::Array { base, size, .. } => match size {
+            ArraySize::Constant(n) => format!("array<{}, {n}>", type_name(module, *base)),
+            _ => format!("array<{}>", type_name(module, *base)),
+        },
+        TypeInner::Atomic(s) => format!("atomic<{}>", scalar(*s)),
+        other => format!("{other:?}"),
+    }
+}

@@ -1,0 +1,224 @@
+//! `kiln build` and `kiln check`: the example project builds with a golden manifest, layouts are
+//! shared by a pass's variants, a second build compiles nothing, output is the same whatever the
+//! thread count, and every bad build input has a pinned diagnostic.
+
+use crate::support::{fixture_files, kiln, root};
+use expect_test::expect_file;
+use kiln::compile::{BuildResult, VariantSelection};
+use kiln::diagnostics::{Diagnostic, has_errors, render_plain};
+use kiln::project::{BuildMode, build_project};
+use kiln::reflect::manifest::Manifest;
+use kiln::source::SourceStore;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+fn build_into(
+    project: &str,
+    output: &Path,
+    threads: Option<usize>,
+) -> (BuildResult, Vec<Diagnostic>, SourceStore) {
+    let mut store = SourceStore::new();
+    let mode = BuildMode {
+        write: true,
+        output: Some(output.to_path_buf()),
+        unused_shaders: VariantSelection::Used,
+        threads,
+    };
+    let (result, diagnostics) =
+        build_project(&mut store, &[PathBuf::from(project)], &mode, &|_, _| {}).expect("project exists");
+    (result, diagnostics, store)
+}
+
+fn read_manifest(output: &Path) -> Manifest {
+    serde_json::from_slice(&std::fs::read(output.join("manifest.json")).expect("manifest written"))
+        .expect("manifest parses")
+}
+
+#[test]
+fn the_example_project_builds_with_a_golden_manifest() {
+    let output = tempfile::tempdir().expect("temp dir");
+    let (result, mut diagnostics, store) = build_into("fixtures/project", output.path(), None);
+    diagnostics.extend(result.diagnostics);
+    assert!(diagnostics.is_empty(), "{}", render_plain(&store, &diagnostics));
+    assert_eq!((result.summary.shaders, result.summary.passes, result.summary.variants), (3, 3, 10));
+    let text = std::fs::read_to_string(output.path().join("manifest.json")).expect("manifest");
+    expect_file![root().join("tests/golden/build/manifest.json")].assert_eq(&text);
+
+    // Every module file named in the manifest exists with its size and hash.
+    let manifest = read_manifest(output.path());
+    for variant in manifest.shaders.iter().flat_map(|s| &s.passes).flat_map(|p| &p.variants) {
+        for stage in [&variant.vertex, &variant.fragment].into_iter().flatten() {
+            for file in [&stage.wgsl, &stage.spirv].into_iter().flatten() {
+                let bytes = std::fs::read(output.path().join(&file.path)).expect("module file");
+                assert_eq!(bytes.len() as u64, file.size);
+                assert_eq!(&blake3::hash(&bytes).to_hex()[..32], file.hash);
+            }
+        }
+    }
+}
+
+#[test]
+fn custom_light_has_the_seed_layout() {
+    let output = tempfile::tempdir().expect("temp dir");
+    build_into("fixtures/project", output.path(), None);
+    let manifest = read_manifest(output.path());
+    let lit = manifest.shaders.iter().find(|s| s.name == "Custom RP/Lit").expect("Lit");
+    for variant in &lit.passes[0].variants {
+        let light =
+            variant.uniform_blocks.iter().find(|b| b.name == "_CustomLight").expect("_CustomLight used");
+        assert_eq!(light.size, 144);
+        let members: Vec<(&str, u32, Option<u32>, Option<u32>)> = light
+            .members
+            .iter()
+            .map(|m| (m.name.as_str(), m.offset, m.array_stride, m.array_length))
+            .collect();
+        assert_eq!(
+            members,
+            [
+                ("_DirectionalLightCount", 0, None, None),
+                ("_DirectionalLightColors", 16, Some(16), Some(4)),
+                ("_DirectionalLightDirections", 80, Some(16), Some(4)),
+            ]
+        );
+    }
+    // Material properties know their place in the material block.
+    let offsets: BTreeMap<&str, Option<u32>> =
+        lit.properties.iter().map(|p| (p.name.as_str(), p.offset)).collect();
+    assert_eq!(offsets["_BaseColor"], Some(16));
+    assert_eq!(offsets["_Smoothness"], Some(40));
+}
+
+#[test]
+fn a_pass_has_one_layout_and_fragment_keywords_share_the_vertex_module() {
+    let output = tempfile::tempdir().expect("temp dir");
+    build_into("fixtures/project", output.path(), None);
+    let manifest = read_manifest(output.path());
+    for pass in manifest.shaders.iter().flat_map(|s| &s.passes) {
+        let mut slots: BTreeMap<[u32; 2], &str> = BTreeMap::new();
+        for group in &pass.layout {
+            for entry in &group.entries {
+                assert!(slots.insert([group.group, entry.binding], &entry.name).is_none());
+            }
+        }
+        for variant in &pass.variants {
+            for stage in [&variant.vertex, &variant.fragment].into_iter().flatten() {
+                for binding in &stage.bindings {
+                    assert!(slots.contains_key(binding), "{binding:?} of a variant is in the pass layout");
+                }
+            }
+        }
+    }
+    let complex = manifest.shaders.iter().find(|s| s.name == "Custom RP/Complex").expect("Complex");
+    let variants = &complex.passes[0].variants;
+    let plain = variants.iter().find(|v| v.keywords.is_empty()).expect("plain");
+    let emission = variants.iter().find(|v| v.keywords == ["_EMISSION_MAP"]).expect("emission");
+    let module =
+        |v: &kiln::reflect::manifest::VariantManifest| v.vertex.as_ref().expect("vertex").module.clone();
+    assert_eq!(module(plain), module(emission), "`_EMISSION_MAP` is fragment-only");
+    assert_ne!(
+        plain.fragment.as_ref().expect("fragment").module,
+        emission.fragment.as_ref().expect("fragment").module
+    );
+}
+
+#[test]
+fn a_second_build_compiles_nothing_and_writes_nothing() {
+    let output = tempfile::tempdir().expect("temp dir");
+    let (first, _, _) = build_into("fixtures/project", output.path(), None);
+    assert!(first.summary.compiled > 0);
+    let (second, _, _) = build_into("fixtures/project", output.path(), None);
+    assert_eq!(second.summary.compiled, 0);
+    assert_eq!(second.summary.reused, second.summary.modules);
+    assert_eq!(second.summary.bytes_written, 0);
+    let cli = kiln(&["build", "fixtures/project", "--output", output.path().to_str().expect("utf-8")]);
+    assert_eq!(cli.status.code(), Some(0));
+    let summary = String::from_utf8_lossy(&cli.stderr);
+    assert!(summary.contains("(0 compiled, 19 reused from cache), 0 bytes written"), "{summary}");
+}
+
+/// Every file under a folder, with its bytes.
+fn snapshot(folder: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
+    walkdir::WalkDir::new(folder)
+        .into_iter()
+        .filter_map(Result::ok)
+        .filter(|e| e.file_type().is_file())
+        .map(|e| {
+            (
+                e.path().strip_prefix(folder).expect("under").to_path_buf(),
+                std::fs::read(e.path()).expect("read"),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn output_is_identical_with_one_or_two_threads() {
+    let one = tempfile::tempdir().expect("temp dir");
+    let two = tempfile::tempdir().expect("temp dir");
+    build_into("fixtures/project", one.path(), Some(1));
+    build_into("fixtures/project", two.path(), Some(2));
+    let (a, b) = (snapshot(one.path()), snapshot(two.path()));
+    assert!(a.len() > 20);
+    assert_eq!(a.keys().collect::<Vec<_>>(), b.keys().collect::<Vec<_>>());
+    assert!(a == b, "byte-identical folders");
+}
+
+#[test]
+fn check_covers_shaders_no_material_uses() {
+    let check = |args: &[&str]| {
+        let output = kiln(args);
+        assert_eq!(output.status.code(), Some(0), "{}", String::from_utf8_lossy(&output.stderr));
+        String::from_utf8_lossy(&output.stderr).into_owned()
+    };
+    // Defaults and each keyword alone: Lit 3, Unlit 2, Complex 5.
+    assert!(check(&["check", "fixtures/project/shaders"]).contains("10 variants"));
+    assert!(check(&["check", "fixtures/project/shaders", "--all-variants"]).contains("18 variants"));
+    // `check` writes nothing.
+    assert!(!root().join("fixtures/project/shaders/build").exists());
+}
+
+#[test]
+fn every_bad_build_input_has_a_pinned_diagnostic() {
+    let files = fixture_files("fixtures/bad/build", "shader");
+    assert!(files.len() >= 6);
+    for path in files {
+        let mut store = SourceStore::new();
+        let mode = BuildMode {
+            write: false,
+            output: None,
+            unused_shaders: VariantSelection::All { limit: 4096 },
+            threads: Some(1),
+        };
+        let (result, mut diagnostics) =
+            build_project(&mut store, std::slice::from_ref(&path), &mode, &|_, _| {}).expect("exists");
+        diagnostics.extend(result.diagnostics);
+        assert!(has_errors(&diagnostics), "{}", path.display());
+        expect_file![root().join(path.with_extension("stderr"))]
+            .assert_eq(&render_plain(&store, &diagnostics));
+        let cli = kiln(&["check", path.to_str().expect("utf-8"), "--all-variants", "--format", "json"]);
+        assert_eq!(cli.status.code(), Some(1));
+        let json: serde_json::Value = serde_json::from_slice(&cli.stdout).expect("json");
+        assert!(!json["diagnostics"].as_array().expect("array").is_empty());
+    }
+}
+
+#[test]
+fn reflect_prints_one_variant() {
+    let output = kiln(&["reflect", "fixtures/project/shaders/Lit.shader", "--keywords", "_CLIPPING"]);
+    assert_eq!(output.status.code(), Some(0), "{}", String::from_utf8_lossy(&output.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+    assert_eq!(json["variant"]["keywords"], serde_json::json!(["_CLIPPING"]));
+    let inputs = &json["variant"]["vertex"]["inputs"];
+    assert_eq!(inputs[0]["format"], "float32x3");
+    assert_eq!(inputs[2]["format"], "float32x2");
+}
+
+#[test]
+fn an_unwritable_output_is_a_diagnostic() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let blocker = dir.path().join("output");
+    std::fs::write(&blocker, "a file where the output folder should be").expect("write");
+    let (result, _, _) = build_into("fixtures/project", &blocker, None);
+    assert!(result.diagnostics.iter().any(|d| d.code == "K0410"), "{:?}", result.diagnostics);
+    assert_eq!(std::fs::read_to_string(&blocker).expect("read"), "a file where the output folder should be");
+}

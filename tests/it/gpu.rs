@@ -1,0 +1,198 @@
+//! Every emitted variant, WGSL and SPIR-V, loaded into a real device and turned into a render
+//! pipeline with the manifest's layout (lavapipe in CI). Without an adapter the test says why and
+//! passes, unless `KILN_REQUIRE_GPU=1` (set by CI) makes that a failure.
+
+use kiln::compile::VariantSelection;
+use kiln::project::{BuildMode, build_project};
+use kiln::reflect::Resource;
+use kiln::reflect::manifest::{Manifest, PassManifest, StageManifest};
+use kiln::source::SourceStore;
+use std::path::{Path, PathBuf};
+
+fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle());
+    let adapter = match pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
+    {
+        Ok(adapter) => adapter,
+        Err(error) => {
+            let reason = format!("no GPU adapter ({error}); install mesa-vulkan-drivers for lavapipe");
+            assert!(
+                std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
+                "KILN_REQUIRE_GPU=1 but {reason}"
+            );
+            println!("skipping the GPU test: {reason}");
+            return None;
+        }
+    };
+    let name = adapter.get_info().name;
+    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))
+        .expect("a device from the adapter");
+    Some((device, queue, name))
+}
+
+fn layout_entry(binding: u32, visibility: &[String], resource: &Resource) -> wgpu::BindGroupLayoutEntry {
+    let mut stages = wgpu::ShaderStages::NONE;
+    for stage in visibility {
+        stages |= if stage == "vertex" { wgpu::ShaderStages::VERTEX } else { wgpu::ShaderStages::FRAGMENT };
+    }
+    let ty = match resource {
+        Resource::Uniform { size, .. } => wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: wgpu::BufferSize::new(u64::from(*size)),
+        },
+        Resource::Texture { .. } => wgpu::BindingType::Texture {
+            sample_type: wgpu::TextureSampleType::Float { filterable: true },
+            view_dimension: wgpu::TextureViewDimension::D2,
+            multisampled: false,
+        },
+        Resource::Sampler { .. } => wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+        other => panic!("the example project has no {other:?}"),
+    };
+    wgpu::BindGroupLayoutEntry { binding, visibility: stages, ty, count: None }
+}
+
+fn vertex_format(name: &str) -> wgpu::VertexFormat {
+    match name {
+        "float32" => wgpu::VertexFormat::Float32,
+        "float32x2" => wgpu::VertexFormat::Float32x2,
+        "float32x3" => wgpu::VertexFormat::Float32x3,
+        "float32x4" => wgpu::VertexFormat::Float32x4,
+        other => panic!("unexpected vertex format {other}"),
+    }
+}
+
+enum Source {
+    Wgsl,
+    SpirV,
+}
+
+fn module(
+    device: &wgpu::Device,
+    output: &Path,
+    stage: &StageManifest,
+    source: &Source,
+) -> wgpu::ShaderModule {
+    let source = match source {
+        Source::Wgsl => {
+            let file = stage.wgsl.as_ref().expect("WGSL emitted");
+            wgpu::ShaderSource::Wgsl(std::fs::read_to_string(output.join(&file.path)).expect("read").into())
+        }
+        Source::SpirV => {
+            let file = stage.spirv.as_ref().expect("SPIR-V emitted");
+            let bytes = std::fs::read(output.join(&file.path)).expect("read");
+            assert_eq!(bytes.len() % 4, 0);
+            let words: Vec<u32> =
+                bytes.chunks_exact(4).map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]])).collect();
+            wgpu::ShaderSource::SpirV(words.into())
+        }
+    };
+    device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(&stage.module), source })
+}
+
+fn pipelines(device: &wgpu::Device, output: &Path, pass: &PassManifest, source: &Source) -> usize {
+    let groups = pass.layout.iter().map(|g| g.group + 1).max().unwrap_or(0);
+    let layouts: Vec<wgpu::BindGroupLayout> = (0..groups)
+        .map(|group| {
+            let entries: Vec<wgpu::BindGroupLayoutEntry> = pass
+                .layout
+                .iter()
+                .filter(|g| g.group == group)
+                .flat_map(|g| &g.entries)
+                .map(|e| layout_entry(e.binding, &e.visibility, &e.resource))
+                .collect();
+            device
+                .create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: None, entries: &entries })
+        })
+        .collect();
+    let layout_refs: Vec<Option<&wgpu::BindGroupLayout>> = layouts.iter().map(Some).collect();
+    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: None,
+        bind_group_layouts: &layout_refs,
+        immediate_size: 0,
+    });
+    let mut count = 0;
+    for variant in &pass.variants {
+        let vertex = variant.vertex.as_ref().expect("vertex stage");
+        let fragment = variant.fragment.as_ref().expect("fragment stage");
+        let mut offset = 0;
+        let attributes: Vec<wgpu::VertexAttribute> = vertex
+            .inputs
+            .iter()
+            .map(|input| {
+                let format = vertex_format(&input.format);
+                let attribute = wgpu::VertexAttribute { format, offset, shader_location: input.location };
+                offset += format.size();
+                attribute
+            })
+            .collect();
+        let buffers = [Some(wgpu::VertexBufferLayout {
+            array_stride: offset,
+            step_mode: wgpu::VertexStepMode::Vertex,
+            attributes: &attributes,
+        })];
+        let targets: Vec<Option<wgpu::ColorTargetState>> =
+            fragment.outputs.iter().map(|_| Some(wgpu::TextureFormat::Rgba8Unorm.into())).collect();
+        let (vertex_module, fragment_module) =
+            (module(device, output, vertex, source), module(device, output, fragment, source));
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let _pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(&variant.key),
+            layout: Some(&pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &vertex_module,
+                entry_point: Some(&vertex.entry_point),
+                compilation_options: Default::default(),
+                buffers: &buffers,
+            },
+            primitive: wgpu::PrimitiveState::default(),
+            depth_stencil: None,
+            multisample: wgpu::MultisampleState::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &fragment_module,
+                entry_point: Some(&fragment.entry_point),
+                compilation_options: Default::default(),
+                targets: &targets,
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        if let Some(error) = pollster::block_on(scope.pop()) {
+            panic!(
+                "variant {:?} ({}): {error}",
+                variant.keywords,
+                if matches!(source, Source::Wgsl) { "WGSL" } else { "SPIR-V" }
+            );
+        }
+        count += 1;
+    }
+    count
+}
+
+#[test]
+fn every_variant_makes_a_render_pipeline() {
+    let Some((device, _queue, adapter)) = device() else { return };
+    let output = tempfile::tempdir().expect("temp dir");
+    let mut store = SourceStore::new();
+    let mode = BuildMode {
+        write: true,
+        output: Some(output.path().to_path_buf()),
+        unused_shaders: VariantSelection::Used,
+        threads: None,
+    };
+    let (result, diagnostics) =
+        build_project(&mut store, &[PathBuf::from("fixtures/project")], &mode, &|_, _| {})
+            .expect("project exists");
+    assert!(diagnostics.is_empty() && result.diagnostics.is_empty());
+    let manifest: Manifest =
+        serde_json::from_slice(&std::fs::read(output.path().join("manifest.json")).expect("manifest"))
+            .expect("parses");
+    let mut made = 0;
+    for pass in manifest.shaders.iter().flat_map(|s| &s.passes) {
+        for source in [Source::Wgsl, Source::SpirV] {
+            made += pipelines(&device, output.path(), pass, &source);
+        }
+    }
+    assert_eq!(made, 2 * result.summary.variants);
+    println!("{made} render pipelines created on {adapter}");
+}
