@@ -222,3 +222,57 @@ fn an_unwritable_output_is_a_diagnostic() {
     assert!(result.diagnostics.iter().any(|d| d.code == "K0410"), "{:?}", result.diagnostics);
     assert_eq!(std::fs::read_to_string(&blocker).expect("read"), "a file where the output folder should be");
 }
+
+#[test]
+fn the_build_script_api_reruns_on_every_file_read_and_nothing_else() {
+    let out = tempfile::tempdir().expect("temp dir");
+    let output = kiln::Build::new("fixtures/project").out_dir(out.path()).execute().expect("builds");
+    let mut reruns: Vec<String> = output
+        .cargo_lines
+        .iter()
+        .filter_map(|l| l.strip_prefix("cargo:rerun-if-changed="))
+        .map(|p| p.replace('\\', "/"))
+        .collect();
+    reruns.sort();
+    let mut expected: Vec<String> = ["fixtures/project/kiln.toml".to_string()]
+        .into_iter()
+        .chain(fixture_files("fixtures/project/shaders", "shader").iter().map(|p| p.display().to_string()))
+        .chain(fixture_files("fixtures/project/shaders", "wgsl").iter().map(|p| p.display().to_string()))
+        .chain(fixture_files("fixtures/project/materials", "mat").iter().map(|p| p.display().to_string()))
+        .collect();
+    expected.sort();
+    assert_eq!(reruns, expected, "the bundled library is embedded, so it is not a file to watch");
+    assert!(output.cargo_lines.iter().all(|l| l.starts_with("cargo:rerun-if-changed=")), "no warnings here");
+    assert!(output.module.ends_with("kiln_shaders.rs"));
+}
+
+#[test]
+fn the_generated_module_asserts_every_uniform_layout() {
+    let out = tempfile::tempdir().expect("temp dir");
+    let output = kiln::Build::new("fixtures/project").out_dir(out.path()).execute().expect("builds");
+    let module = std::fs::read_to_string(&output.module).expect("generated");
+    for line in [
+        "pub mod custom_rp_lit {",
+        "const _: () = assert!(core::mem::size_of::<CustomLight>() == 144);",
+        "const _: () = assert!(core::mem::offset_of!(CustomLight, _DirectionalLightCount) == 0);",
+        "const _: () = assert!(core::mem::offset_of!(CustomLight, _DirectionalLightColors) == 16);",
+        "const _: () = assert!(core::mem::offset_of!(CustomLight, _DirectionalLightDirections) == 80);",
+        "pub _DirectionalLightColors: [[f32; 4]; 4],",
+        "pub _pad0: [u8; 12],",
+    ] {
+        assert!(module.contains(line), "the generated module has `{line}`");
+    }
+    // The renderer example compiles this module, so a wrong assertion would fail its build.
+}
+
+#[test]
+fn a_build_script_error_reads_like_a_compiler_error() {
+    let out = tempfile::tempdir().expect("temp dir");
+    let error =
+        kiln::Build::new("fixtures/bad/preprocess/unterminated_if.shader").out_dir(out.path()).execute();
+    let Err(error) = error else { panic!("the build fails") };
+    let shown = format!("{error:?}");
+    assert!(shown.contains("error[K0305]: `#if` without `#endif`"), "{shown}");
+    assert!(shown.contains("fixtures/bad/preprocess/unterminated_if.wgsl:3:1"), "{shown}");
+    assert!(!out.path().join("kiln_shaders.rs").exists());
+}

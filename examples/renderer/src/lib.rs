@@ -1,0 +1,595 @@
+//! A headless wgpu renderer for the seed's scene, using only what kiln generated in `build.rs`:
+//! variant lookup by keywords, bind group layouts and `#[repr(C)]` uniform structs. Also a CPU
+//! f64 reference of the same scene (analytic spheres, kiln's reference lighting) and an image
+//! comparison.
+
+pub mod scene;
+
+mod shaders {
+    include!(concat!(env!("OUT_DIR"), "/kiln_shaders.rs"));
+}
+
+use kiln::reference as r;
+pub use scene::Scene;
+use shaders::custom_rp_lit as lit;
+
+/// An RGBA image, 8 bits per channel, rows top to bottom.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    pub pixels: Vec<u8>,
+}
+
+impl Image {
+    pub fn write_png(&self, path: &std::path::Path) -> Result<(), Box<dyn std::error::Error>> {
+        let file = std::io::BufWriter::new(std::fs::File::create(path)?);
+        let mut encoder = png::Encoder::new(file, self.width, self.height);
+        encoder.set_color(png::ColorType::Rgba);
+        encoder.set_depth(png::BitDepth::Eight);
+        encoder.write_header()?.write_image_data(&self.pixels)?;
+        Ok(())
+    }
+}
+
+type Mat4 = [[f64; 4]; 4];
+
+fn mat_mul(a: &Mat4, b: &Mat4) -> Mat4 {
+    // Column-major, as WGSL: m[column][row].
+    let mut out = [[0.0; 4]; 4];
+    for c in 0..4 {
+        for row in 0..4 {
+            out[c][row] = (0..4).map(|k| a[k][row] * b[c][k]).sum();
+        }
+    }
+    out
+}
+
+fn normalize(v: r::Vec3) -> r::Vec3 {
+    r::scale(v, 1.0 / r::dot(v, v).sqrt())
+}
+
+fn cross(a: r::Vec3, b: r::Vec3) -> r::Vec3 {
+    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+}
+
+/// The camera's basis and projection, shared by the GPU and the reference.
+struct View {
+    eye: r::Vec3,
+    forward: r::Vec3,
+    right: r::Vec3,
+    up: r::Vec3,
+    tan_half_fov: f64,
+    aspect: f64,
+}
+
+const NEAR: f64 = 0.1;
+const FAR: f64 = 100.0;
+
+impl View {
+    fn new(scene: &Scene) -> View {
+        let eye = scene.camera.position;
+        let forward = normalize(r::add(scene.camera.target, r::scale(eye, -1.0)));
+        let right = normalize(cross(forward, [0.0, 1.0, 0.0]));
+        let up = cross(right, forward);
+        View {
+            eye,
+            forward,
+            right,
+            up,
+            tan_half_fov: (scene.camera.fov_y_degrees.to_radians() / 2.0).tan(),
+            aspect: f64::from(scene.width) / f64::from(scene.height),
+        }
+    }
+
+    /// Right-handed view and a [0, 1]-depth perspective projection, as wgpu expects.
+    fn view_projection(&self) -> Mat4 {
+        let (s, u, f, e) = (self.right, self.up, self.forward, self.eye);
+        let view = [
+            [s[0], u[0], -f[0], 0.0],
+            [s[1], u[1], -f[1], 0.0],
+            [s[2], u[2], -f[2], 0.0],
+            [-r::dot(s, e), -r::dot(u, e), r::dot(f, e), 1.0],
+        ];
+        let y = 1.0 / self.tan_half_fov;
+        let x = y / self.aspect;
+        let z = FAR / (NEAR - FAR);
+        let projection =
+            [[x, 0.0, 0.0, 0.0], [0.0, y, 0.0, 0.0], [0.0, 0.0, z, -1.0], [0.0, 0.0, z * NEAR, 0.0]];
+        mat_mul(&projection, &view)
+    }
+
+    /// The ray through the centre of pixel (x, y).
+    fn ray(&self, scene: &Scene, x: u32, y: u32) -> r::Vec3 {
+        let ndc_x = (f64::from(x) + 0.5) / f64::from(scene.width) * 2.0 - 1.0;
+        let ndc_y = 1.0 - (f64::from(y) + 0.5) / f64::from(scene.height) * 2.0;
+        let d = r::add(
+            self.forward,
+            r::add(
+                r::scale(self.right, ndc_x * self.tan_half_fov * self.aspect),
+                r::scale(self.up, ndc_y * self.tan_half_fov),
+            ),
+        );
+        normalize(d)
+    }
+}
+
+fn to_f32<const N: usize>(v: [f64; N]) -> [f32; N] {
+    v.map(|x| x as f32)
+}
+
+fn mat_f32(m: &Mat4) -> [[f32; 4]; 4] {
+    m.map(to_f32)
+}
+
+/// Drawing order: opaque and clipped objects first, then blended ones back to front.
+fn draw_order(scene: &Scene) -> Vec<usize> {
+    let distance = |i: usize| {
+        let d = r::add(scene.objects[i].position, r::scale(scene.camera.position, -1.0));
+        r::dot(d, d)
+    };
+    let (mut blended, opaque): (Vec<usize>, Vec<usize>) =
+        (0..scene.objects.len()).partition(|&i| scene.objects[i].material.blends());
+    blended.sort_by(|&a, &b| distance(b).total_cmp(&distance(a)));
+    opaque.into_iter().chain(blended).collect()
+}
+
+/// A UV sphere of radius 1: interleaved position, normal, uv.
+fn sphere_mesh(rings: u32, segments: u32) -> (Vec<f32>, Vec<u32>) {
+    let mut vertices = Vec::new();
+    for ring in 0..=rings {
+        let v = f64::from(ring) / f64::from(rings);
+        let theta = v * std::f64::consts::PI;
+        for segment in 0..=segments {
+            let u = f64::from(segment) / f64::from(segments);
+            let phi = u * std::f64::consts::TAU;
+            let n = [theta.sin() * phi.cos(), theta.cos(), -theta.sin() * phi.sin()];
+            vertices.extend(to_f32(n));
+            vertices.extend(to_f32(n));
+            vertices.extend([u as f32, v as f32]);
+        }
+    }
+    let mut indices = Vec::new();
+    for ring in 0..rings {
+        for segment in 0..segments {
+            let a = ring * (segments + 1) + segment;
+            let b = a + segments + 1;
+            indices.extend([a, b, a + 1, a + 1, b, b + 1]);
+        }
+    }
+    (vertices, indices)
+}
+
+/// A device, or why there is none.
+pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle());
+    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
+        .map_err(|e| format!("no GPU adapter ({e}); install mesa-vulkan-drivers for lavapipe"))?;
+    let name = adapter.get_info().name;
+    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))
+        .map_err(|e| format!("no device: {e}"))?;
+    Ok((device, queue, name))
+}
+
+fn layout_entries(pass: &shaders::Pass, group: u32) -> Vec<wgpu::BindGroupLayoutEntry> {
+    pass.layout
+        .iter()
+        .filter(|e| e.group == group)
+        .map(|e| {
+            let mut visibility = wgpu::ShaderStages::NONE;
+            if e.vertex {
+                visibility |= wgpu::ShaderStages::VERTEX;
+            }
+            if e.fragment {
+                visibility |= wgpu::ShaderStages::FRAGMENT;
+            }
+            let ty = match e.kind {
+                shaders::BindingKind::Uniform { size } => wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Uniform,
+                    has_dynamic_offset: false,
+                    min_binding_size: wgpu::BufferSize::new(size),
+                },
+                shaders::BindingKind::Texture { .. } => wgpu::BindingType::Texture {
+                    sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                    multisampled: false,
+                },
+                shaders::BindingKind::Sampler { .. } => {
+                    wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering)
+                }
+                other => panic!("the Lit pass binds no {other:?}"),
+            };
+            wgpu::BindGroupLayoutEntry { binding: e.binding, visibility, ty, count: None }
+        })
+        .collect()
+}
+
+/// Renders the scene with the compiled Lit variants.
+pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, scene: &Scene) -> Result<Image, String> {
+    use wgpu::util::DeviceExt;
+    let pass = &lit::PASS_0;
+    let view = View::new(scene);
+    let uniform = |contents: &[u8]| {
+        device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: None,
+            contents,
+            usage: wgpu::BufferUsages::UNIFORM,
+        })
+    };
+    let layouts: Vec<wgpu::BindGroupLayout> = (0..3)
+        .map(|g| {
+            device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+                label: None,
+                entries: &layout_entries(pass, g),
+            })
+        })
+        .collect();
+    let white = device.create_texture_with_data(
+        queue,
+        &wgpu::TextureDescriptor {
+            label: Some("white"),
+            size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: 1 },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: wgpu::TextureFormat::Rgba8Unorm,
+            usage: wgpu::TextureUsages::TEXTURE_BINDING,
+            view_formats: &[],
+        },
+        wgpu::util::TextureDataOrder::LayerMajor,
+        &[255, 255, 255, 255],
+    );
+    let white_view = white.create_view(&Default::default());
+    let sampler = device.create_sampler(&wgpu::SamplerDescriptor::default());
+
+    // Everything a binding of the pass may name, by name.
+    let per_frame = lit::PerFrame {
+        unity_MatrixVP: mat_f32(&view.view_projection()),
+        _WorldSpaceCameraPos: to_f32(view.eye),
+        ..bytemuck::Zeroable::zeroed()
+    };
+    let mut light = lit::CustomLight {
+        _DirectionalLightCount: scene.lights.len() as i32,
+        ..bytemuck::Zeroable::zeroed()
+    };
+    for (i, l) in scene.lights.iter().take(4).enumerate() {
+        let d = normalize(l.direction);
+        light._DirectionalLightColors[i] = to_f32([l.color[0], l.color[1], l.color[2], 0.0]);
+        light._DirectionalLightDirections[i] = to_f32([d[0], d[1], d[2], 0.0]);
+    }
+    let frame_buffers = [uniform(bytemuck::bytes_of(&per_frame)), uniform(bytemuck::bytes_of(&light))];
+    let bind = |group: u32, buffers: &[(&str, &wgpu::Buffer)]| {
+        let entries: Vec<wgpu::BindGroupEntry> = pass
+            .layout
+            .iter()
+            .filter(|e| e.group == group)
+            .map(|e| {
+                let resource = match e.kind {
+                    shaders::BindingKind::Texture { .. } => wgpu::BindingResource::TextureView(&white_view),
+                    shaders::BindingKind::Sampler { .. } => wgpu::BindingResource::Sampler(&sampler),
+                    _ => buffers
+                        .iter()
+                        .find(|(n, _)| *n == e.name)
+                        .map(|(_, b)| b.as_entire_binding())
+                        .expect("a buffer for every uniform"),
+                };
+                wgpu::BindGroupEntry { binding: e.binding, resource }
+            })
+            .collect();
+        device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &layouts[group as usize],
+            entries: &entries,
+        })
+    };
+    let frame_group = bind(0, &[("UnityPerFrame", &frame_buffers[0]), ("_CustomLight", &frame_buffers[1])]);
+
+    let layout_refs: Vec<Option<&wgpu::BindGroupLayout>> = layouts.iter().map(Some).collect();
+    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+        label: None,
+        bind_group_layouts: &layout_refs,
+        immediate_size: 0,
+    });
+    let (vertices, indices) = sphere_mesh(96, 192);
+    let vertex_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: None,
+        contents: bytemuck::cast_slice(&vertices),
+        usage: wgpu::BufferUsages::VERTEX,
+    });
+    let index_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: None,
+        contents: bytemuck::cast_slice(&indices),
+        usage: wgpu::BufferUsages::INDEX,
+    });
+
+    let size = wgpu::Extent3d { width: scene.width, height: scene.height, depth_or_array_layers: 1 };
+    let target = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("colour"),
+        size,
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba8Unorm,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        view_formats: &[],
+    });
+    let depth = device.create_texture(&wgpu::TextureDescriptor {
+        label: Some("depth"),
+        size,
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Depth32Float,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
+        view_formats: &[],
+    });
+    let (target_view, depth_view) =
+        (target.create_view(&Default::default()), depth.create_view(&Default::default()));
+
+    // Per object: its pipeline (variant + render state) and bind groups.
+    let mut draws = Vec::new();
+    for index in draw_order(scene) {
+        let object = &scene.objects[index];
+        let m = &object.material;
+        let variant = pass.variant(&m.keywords()).map_err(|e| e.to_string())?;
+        let (vertex, fragment) =
+            (variant.vertex.as_ref().expect("vertex"), variant.fragment.as_ref().expect("fragment"));
+        let module = |wgsl: &str| {
+            device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: None,
+                source: wgpu::ShaderSource::Wgsl(wgsl.into()),
+            })
+        };
+        let (vertex_module, fragment_module) = (module(vertex.wgsl), module(fragment.wgsl));
+        let attributes = [
+            wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 0, shader_location: 0 },
+            wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 12, shader_location: 1 },
+            wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x2, offset: 24, shader_location: 2 },
+        ];
+        let blend = if m.premultiplies() {
+            Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING)
+        } else if m.blends() {
+            Some(wgpu::BlendState::ALPHA_BLENDING)
+        } else {
+            None
+        };
+        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(variant.key),
+            layout: Some(&pipeline_layout),
+            vertex: wgpu::VertexState {
+                module: &vertex_module,
+                entry_point: Some(vertex.entry_point),
+                compilation_options: Default::default(),
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: 32,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &attributes,
+                })],
+            },
+            primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
+            depth_stencil: Some(wgpu::DepthStencilState {
+                format: wgpu::TextureFormat::Depth32Float,
+                depth_write_enabled: Some(!m.blends()),
+                depth_compare: Some(wgpu::CompareFunction::LessEqual),
+                stencil: Default::default(),
+                bias: Default::default(),
+            }),
+            multisample: Default::default(),
+            fragment: Some(wgpu::FragmentState {
+                module: &fragment_module,
+                entry_point: Some(fragment.entry_point),
+                compilation_options: Default::default(),
+                targets: &[Some(wgpu::ColorTargetState {
+                    format: wgpu::TextureFormat::Rgba8Unorm,
+                    blend,
+                    write_mask: wgpu::ColorWrites::ALL,
+                })],
+            }),
+            multiview_mask: None,
+            cache: None,
+        });
+        let material = lit::LitMaterial {
+            _BaseMap_ST: [1.0, 1.0, 0.0, 0.0],
+            _BaseColor: to_f32(m.color),
+            _Cutoff: m.cutoff as f32,
+            _Metallic: m.metallic as f32,
+            _Smoothness: m.smoothness as f32,
+            ..bytemuck::Zeroable::zeroed()
+        };
+        let (p, s) = (object.position, object.radius);
+        let draw = lit::PerDraw {
+            unity_ObjectToWorld: mat_f32(&[
+                [s, 0.0, 0.0, 0.0],
+                [0.0, s, 0.0, 0.0],
+                [0.0, 0.0, s, 0.0],
+                [p[0], p[1], p[2], 1.0],
+            ]),
+            unity_WorldToObject: mat_f32(&[
+                [1.0 / s, 0.0, 0.0, 0.0],
+                [0.0, 1.0 / s, 0.0, 0.0],
+                [0.0, 0.0, 1.0 / s, 0.0],
+                [-p[0] / s, -p[1] / s, -p[2] / s, 1.0],
+            ]),
+        };
+        let material_buffer = uniform(bytemuck::bytes_of(&material));
+        let draw_buffer = uniform(bytemuck::bytes_of(&draw));
+        let groups =
+            [bind(1, &[("UnityPerMaterial", &material_buffer)]), bind(2, &[("UnityPerDraw", &draw_buffer)])];
+        draws.push((pipeline, groups));
+    }
+
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let bg = scene.background;
+        let mut render_pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: None,
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &target_view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color { r: bg[0], g: bg[1], b: bg[2], a: 1.0 }),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &depth_view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: None,
+            }),
+            ..Default::default()
+        });
+        render_pass.set_bind_group(0, &frame_group, &[]);
+        render_pass.set_vertex_buffer(0, vertex_buffer.slice(..));
+        render_pass.set_index_buffer(index_buffer.slice(..), wgpu::IndexFormat::Uint32);
+        for (pipeline, groups) in &draws {
+            render_pass.set_pipeline(pipeline);
+            render_pass.set_bind_group(1, &groups[0], &[]);
+            render_pass.set_bind_group(2, &groups[1], &[]);
+            render_pass.draw_indexed(0..indices.len() as u32, 0, 0..1);
+        }
+    }
+    let row = (scene.width * 4).div_ceil(256) * 256;
+    let readback = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: u64::from(row * scene.height),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    encoder.copy_texture_to_buffer(
+        target.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &readback,
+            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: None },
+        },
+        size,
+    );
+    queue.submit([encoder.finish()]);
+    readback.map_async(wgpu::MapMode::Read, .., |_| {});
+    device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| e.to_string())?;
+    let mapped = readback.get_mapped_range(..).map_err(|e| e.to_string())?;
+    let mut pixels = Vec::with_capacity((scene.width * scene.height * 4) as usize);
+    for y in 0..scene.height {
+        let start = (y * row) as usize;
+        pixels.extend_from_slice(&mapped[start..start + (scene.width * 4) as usize]);
+    }
+    Ok(Image { width: scene.width, height: scene.height, pixels })
+}
+
+/// The scene drawn on the CPU in f64: analytic spheres, kiln's reference lighting, the same
+/// blending and order. Also returns, per pixel, whether it sits on an object's silhouette, where
+/// a tessellated sphere and an analytic one legitimately differ.
+pub fn reference(scene: &Scene) -> (Vec<[f64; 3]>, Vec<bool>) {
+    let view = View::new(scene);
+    let lights: Vec<r::Light> =
+        scene.lights.iter().map(|l| r::Light { color: l.color, direction: normalize(l.direction) }).collect();
+    let order = draw_order(scene);
+    let (w, h) = (scene.width, scene.height);
+    let mut colors = vec![[0.0; 3]; (w * h) as usize];
+    // What each pixel sees: the opaque object and the set of blended ones in front of it.
+    let mut ids = vec![(usize::MAX, 0u64); (w * h) as usize];
+    for y in 0..h {
+        for x in 0..w {
+            let ray = view.ray(scene, x, y);
+            let hit = |i: usize| -> Option<f64> {
+                let o = &scene.objects[i];
+                let oc = r::add(view.eye, r::scale(o.position, -1.0));
+                let b = r::dot(oc, ray);
+                let c = r::dot(oc, oc) - o.radius * o.radius;
+                let disc = b * b - c;
+                (disc >= 0.0).then(|| -b - disc.sqrt()).filter(|t| *t > 0.0)
+            };
+            let visible = |i: usize| {
+                let m = &scene.objects[i].material;
+                !m.clips() || m.color[3] >= m.cutoff
+            };
+            let mut color = scene.background;
+            let mut depth = f64::INFINITY;
+            let mut id = (usize::MAX, 0u64);
+            for &i in &order {
+                let Some(t) = hit(i) else { continue };
+                let m = &scene.objects[i].material;
+                if t > depth || !visible(i) {
+                    continue;
+                }
+                let point = r::add(view.eye, r::scale(ray, t));
+                let surface = r::Surface {
+                    normal: normalize(r::add(point, r::scale(scene.objects[i].position, -1.0))),
+                    view_direction: normalize(r::add(view.eye, r::scale(point, -1.0))),
+                    color: [m.color[0], m.color[1], m.color[2]],
+                    alpha: m.color[3],
+                    metallic: m.metallic,
+                    smoothness: m.smoothness,
+                };
+                let brdf = r::get_brdf(&surface, m.premultiplies());
+                let lit = r::lighting(&surface, &brdf, &lights).map(|c| c.clamp(0.0, 1.0));
+                let a = surface.alpha.clamp(0.0, 1.0);
+                color = if m.premultiplies() {
+                    [0, 1, 2].map(|k| lit[k] + color[k] * (1.0 - a))
+                } else if m.blends() {
+                    [0, 1, 2].map(|k| lit[k] * a + color[k] * (1.0 - a))
+                } else {
+                    depth = t;
+                    lit
+                };
+                if m.blends() {
+                    id.1 |= 1 << (i % 64);
+                } else {
+                    id.0 = i;
+                }
+            }
+            colors[(y * w + x) as usize] = color;
+            ids[(y * w + x) as usize] = id;
+        }
+    }
+    // A pixel whose neighbours see another object (or the background) is on a silhouette.
+    let edge = (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| {
+            let id = ids[(y * w + x) as usize];
+            [(-1i64, 0i64), (1, 0), (0, -1), (0, 1)].iter().any(|(dx, dy)| {
+                let (nx, ny) = (i64::from(x) + dx, i64::from(y) + dy);
+                nx >= 0
+                    && ny >= 0
+                    && nx < i64::from(w)
+                    && ny < i64::from(h)
+                    && ids[(ny as u32 * w + nx as u32) as usize] != id
+            })
+        })
+        .collect();
+    (colors, edge)
+}
+
+/// Largest and mean absolute per-channel difference (0..1) between the rendered image and the
+/// reference, over the pixels not on a silhouette, and how many pixels were compared.
+pub fn compare(image: &Image, reference: &[[f64; 3]], edge: &[bool]) -> (f64, f64, usize) {
+    let (mut max, mut sum, mut count) = (0.0f64, 0.0, 0usize);
+    for (i, expected) in reference.iter().enumerate() {
+        if edge[i] {
+            continue;
+        }
+        for (k, want) in expected.iter().enumerate() {
+            let got = f64::from(image.pixels[i * 4 + k]) / 255.0;
+            let error = (got - want.clamp(0.0, 1.0)).abs();
+            max = max.max(error);
+            sum += error;
+        }
+        count += 1;
+    }
+    (max, sum / (3 * count.max(1)) as f64, count)
+}
+
+/// The reference as an image, for looking at side by side.
+pub fn reference_image(scene: &Scene, colors: &[[f64; 3]]) -> Image {
+    let pixels = colors
+        .iter()
+        .flat_map(|c| {
+            let [r, g, b] = c.map(|v| (v.clamp(0.0, 1.0) * 255.0).round() as u8);
+            [r, g, b, 255]
+        })
+        .collect();
+    Image { width: scene.width, height: scene.height, pixels }
+}

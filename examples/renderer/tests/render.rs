@@ -1,0 +1,75 @@
+//! The renderer on a real device (lavapipe in CI) against the CPU f64 reference, and the build
+//! following the scene: a material's preset decides which variants exist.
+
+use kiln_renderer::{Scene, compare, device, reference, render};
+use std::collections::BTreeSet;
+use std::path::Path;
+
+/// Per channel, 0..1, over pixels off the silhouettes. Measured on lavapipe: max 0.0111, mean
+/// 0.0011 (8-bit output, f32 shading, a 96 x 192 tessellated sphere against an analytic one).
+const MAX_ERROR: f64 = 0.03;
+const MEAN_ERROR: f64 = 0.003;
+
+#[test]
+fn the_scene_matches_the_f64_reference() {
+    let (device, queue, adapter) = match device() {
+        Ok(found) => found,
+        Err(reason) => {
+            assert!(
+                std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
+                "KILN_REQUIRE_GPU=1 but {reason}"
+            );
+            println!("skipping the render test: {reason}");
+            return;
+        }
+    };
+    let scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
+    let image = render(&device, &queue, &scene).expect("renders");
+    let (colors, edge) = reference(&scene);
+    let (max, mean, pixels) = compare(&image, &colors, &edge);
+    println!("{adapter}: max error {max:.4}, mean {mean:.5} over {pixels} pixels");
+    assert!(pixels > 50_000, "most of the image is compared");
+    assert!(max <= MAX_ERROR && mean <= MEAN_ERROR, "max {max}, mean {mean}");
+    // Not a blank image: the spheres are lit.
+    assert!(image.pixels.chunks(4).filter(|p| p[0] > 100 || p[1] > 100 || p[2] > 100).count() > 2000);
+}
+
+/// The keyword sets of the variants kiln builds for a scene.
+fn variants_for(scene: &Scene) -> BTreeSet<Vec<String>> {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let materials = dir.path().join("materials");
+    std::fs::create_dir(&materials).expect("mkdir");
+    for (name, text) in scene.material_files() {
+        std::fs::write(materials.join(name), text).expect("write");
+    }
+    let shaders = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/project/shaders");
+    let output = kiln::Build::new(shaders)
+        .materials(materials)
+        .out_dir(dir.path().join("out"))
+        .execute()
+        .expect("builds");
+    output
+        .manifest
+        .shaders
+        .iter()
+        .flat_map(|s| &s.passes)
+        .flat_map(|p| &p.variants)
+        .map(|v| v.keywords.clone())
+        .collect()
+}
+
+#[test]
+fn a_material_preset_decides_the_variants_built() {
+    let scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
+    let built = variants_for(&scene);
+    let expected: BTreeSet<Vec<String>> =
+        [vec![], vec!["_CLIPPING".to_string()], vec!["_PREMULTIPLY_ALPHA".to_string()]].into_iter().collect();
+    assert_eq!(built, expected);
+
+    // The one clipped sphere becomes opaque: its variant is no longer built.
+    let mut changed = scene.clone();
+    let clipped = changed.objects.iter_mut().find(|o| o.material.clips()).expect("a clipped object");
+    clipped.material.preset = "Opaque".into();
+    let rebuilt = variants_for(&changed);
+    assert_eq!(rebuilt, expected.iter().filter(|k| **k != ["_CLIPPING"]).cloned().collect());
+}

@@ -1,0 +1,138 @@
+//! The API for renderer crates' `build.rs`: build a project into `OUT_DIR`, generate the Rust
+//! module, and speak cargo's protocol: `cargo:rerun-if-changed` for every file read and nothing
+//! else, `cargo:warning` for warnings, readable errors.
+//!
+//! [`Build::run`] is the one place in the library that prints: to stdout, for cargo.
+
+use crate::compile::{BuildSummary, VariantSelection};
+use crate::diagnostics::{self, Severity, render_plain};
+use crate::project::{BuildMode, ProjectError, build_project};
+use crate::reflect::manifest::Manifest;
+use crate::source::SourceStore;
+use std::path::PathBuf;
+
+/// A kiln build from a build script.
+///
+/// ```no_run
+/// // build.rs
+/// fn main() -> Result<(), kiln::BuildError> {
+///     kiln::Build::new("shaders").run()?;
+///     Ok(())
+/// }
+/// // src/shaders.rs
+/// // include!(concat!(env!("OUT_DIR"), "/kiln_shaders.rs"));
+/// ```
+#[derive(Debug, Clone)]
+pub struct Build {
+    paths: Vec<PathBuf>,
+    out_dir: Option<PathBuf>,
+    threads: Option<usize>,
+}
+
+/// What a build script gets back.
+#[derive(Debug)]
+pub struct BuildOutput {
+    /// The generated module: `include!` it.
+    pub module: PathBuf,
+    pub manifest: Manifest,
+    pub summary: BuildSummary,
+    /// `cargo:...` lines: what [`Build::run`] printed (or would print).
+    pub cargo_lines: Vec<String>,
+}
+
+/// Why a build script fails. Its `Debug` is the rendered diagnostics, because that is what
+/// `fn main() -> Result<..>` shows.
+#[derive(thiserror::Error)]
+pub enum BuildError {
+    #[error("kiln found errors in the shaders:\n{rendered}")]
+    Diagnostics { rendered: String, cargo_lines: Vec<String> },
+    #[error(transparent)]
+    Project(#[from] ProjectError),
+    #[error("OUT_DIR is not set: kiln::Build runs from a build script, or give it `out_dir`")]
+    NoOutDir,
+    #[error("cannot write `{path}`: {source}")]
+    Write { path: PathBuf, source: std::io::Error },
+}
+
+impl std::fmt::Debug for BuildError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        std::fmt::Display::fmt(self, f)
+    }
+}
+
+impl Build {
+    /// A build of the project folder (its `kiln.toml`, or the defaults).
+    pub fn new(project: impl Into<PathBuf>) -> Build {
+        Build { paths: vec![project.into()], out_dir: None, threads: None }
+    }
+
+    /// Also use the `.mat` files under this folder (a scene's materials, say).
+    pub fn materials(mut self, folder: impl Into<PathBuf>) -> Build {
+        self.paths.push(folder.into());
+        self
+    }
+
+    /// Where to write (default: `OUT_DIR`).
+    pub fn out_dir(mut self, dir: impl Into<PathBuf>) -> Build {
+        self.out_dir = Some(dir.into());
+        self
+    }
+
+    pub fn threads(mut self, threads: usize) -> Build {
+        self.threads = Some(threads);
+        self
+    }
+
+    /// Builds, prints the cargo lines, and returns what was built.
+    pub fn run(self) -> Result<BuildOutput, BuildError> {
+        let result = self.execute();
+        let lines = match &result {
+            Ok(output) => &output.cargo_lines,
+            Err(BuildError::Diagnostics { cargo_lines, .. }) => cargo_lines,
+            Err(_) => return result,
+        };
+        for line in lines {
+            println!("{line}");
+        }
+        result
+    }
+
+    /// Builds without printing anything.
+    pub fn execute(self) -> Result<BuildOutput, BuildError> {
+        let out_dir = match self.out_dir.clone().or_else(|| std::env::var_os("OUT_DIR").map(PathBuf::from)) {
+            Some(dir) => dir,
+            None => return Err(BuildError::NoOutDir),
+        };
+        let output = out_dir.join("kiln");
+        let mut store = SourceStore::new();
+        let mode = BuildMode {
+            write: true,
+            output: Some(output.clone()),
+            unused_shaders: VariantSelection::Used,
+            threads: self.threads,
+        };
+        let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
+        problems.extend(result.diagnostics);
+        let mut cargo_lines: Vec<String> =
+            store.files_read().map(|path| format!("cargo:rerun-if-changed={}", path.display())).collect();
+        cargo_lines.sort();
+        cargo_lines.dedup();
+        for warning in problems.iter().filter(|d| d.severity == Severity::Warning) {
+            // cargo shows one line per warning; the rendered form spans several.
+            for line in
+                render_plain(&store, std::slice::from_ref(warning)).lines().filter(|l| !l.trim().is_empty())
+            {
+                cargo_lines.push(format!("cargo:warning={line}"));
+            }
+        }
+        if diagnostics::has_errors(&problems) {
+            return Err(BuildError::Diagnostics { rendered: render_plain(&store, &problems), cargo_lines });
+        }
+        let absolute = std::fs::canonicalize(&output).unwrap_or(output);
+        let module = out_dir.join("kiln_shaders.rs");
+        let text = crate::codegen::generate(&result.manifest, &absolute);
+        crate::compile::write_atomically(&module, text.as_bytes())
+            .map_err(|source| BuildError::Write { path: module.clone(), source })?;
+        Ok(BuildOutput { module, manifest: result.manifest, summary: result.summary, cargo_lines })
+    }
+}
