@@ -166,6 +166,11 @@ impl SourceStore {
         &self.text(span.file)[span.range()]
     }
 
+    /// Every file of the store (read from disk or added), in the order it came in.
+    pub fn ids(&self) -> impl Iterator<Item = FileId> + use<> {
+        (0..self.files.len() as u32).map(FileId)
+    }
+
     /// Every file read from disk, in the order it was read.
     pub fn files_read(&self) -> impl Iterator<Item = &Path> {
         self.files.iter().filter_map(|f| f.path.as_deref())

@@ -3,7 +3,7 @@
 //! and the manifest assembled in a fixed order so that output never depends on the thread count.
 
 use super::bind::{self, Declared, PassLayout};
-use super::cache::{Cache, CachedStage, hash};
+use super::cache::{Cache, CachedStage, PassIndex, Recorded, hash};
 use super::stage::{self, StageRequest};
 use super::target::Allowed;
 use super::{Mapper, parse};
@@ -98,9 +98,9 @@ struct PassWork<'a> {
 /// parsed (kept so the stage phase does not parse again).
 type Front = Result<(Vec<Declared>, Option<naga::Module>), Diagnostic>;
 
-/// A stage module from the cache or freshly compiled (`true`), with the bytes written; `None`
-/// when its pass could not be laid out.
-type StageOutcome = Option<Result<(CachedStage, bool, u64), Diagnostic>>;
+/// A stage module from the cache or freshly compiled (`true`), with its cache key and the bytes
+/// written; `None` when its pass could not be laid out.
+type StageOutcome = Option<Result<(CachedStage, String, bool, u64), Diagnostic>>;
 
 /// Builds (or, without `write`, checks) every WGSL pass of the catalogue.
 pub fn build(
@@ -132,62 +132,35 @@ fn build_in_pool(
     let cache = Cache::new(&options.output, options.write);
     let mut summary = BuildSummary::default();
 
-    // 1. Variants and their preprocessed stage texts, identical ones merged per pass.
-    let mut work: Vec<PassWork> = Vec::new();
-    let mut jobs: Vec<Job> = Vec::new();
-    for shader in &catalog.shaders {
-        let mut built_any = false;
-        for pass in &shader.passes {
-            let Some(program) = pass.program.as_ref().filter(|p| p.wgsl.is_some()) else { continue };
-            let variants = select_variants(shader, pass, program, options.unused_shaders, &mut diagnostics);
-            if variants.is_empty() {
-                continue;
-            }
-            built_any = true;
-            let index = work.len();
-            let stages = variants
-                .iter()
-                .map(|variant| {
-                    [Stage::Vertex, Stage::Fragment].map(|stage| {
-                        add_job(
-                            store,
-                            includes,
-                            shader,
-                            pass,
-                            program,
-                            variant,
-                            stage,
-                            index,
-                            &mut jobs,
-                            &mut diagnostics,
-                        )
-                    })
-                })
-                .collect();
-            summary.variants += variants.len();
-            summary.passes += 1;
-            work.push(PassWork {
-                shader,
-                pass,
-                program,
-                variants,
-                stages,
-                layout: PassLayout::default(),
-                failed: false,
-            });
-        }
-        summary.shaders += usize::from(built_any);
+    // Nothing changed since a clean build: no preprocessing, no naga, nothing written.
+    let inputs = inputs_key(store, options);
+    if let Some((manifest, counts)) = cache.unchanged(&inputs) {
+        let summary = BuildSummary {
+            shaders: counts.shaders,
+            passes: counts.passes,
+            variants: counts.variants,
+            modules: counts.modules,
+            reused: counts.modules,
+            ..BuildSummary::default()
+        };
+        return BuildResult { summary, manifest, diagnostics };
     }
+
+    // 1. Variants and their preprocessed stage texts, identical ones merged per pass.
+    let (mut work, jobs) =
+        plan(store, includes, catalog, options.unused_shaders, &mut summary, &mut diagnostics);
     summary.modules = jobs.len();
     let total = jobs.len() * 2;
     let done = AtomicUsize::new(0);
     let tick = || progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
 
     // 2. Front end: the resources each text declares (from the cache, or by parsing).
+    let pass_keys: Vec<String> = work.iter().map(|w| pass_key(store, w)).collect();
+    let indexes: Vec<PassIndex> = pass_keys.iter().map(|k| cache.pass_index(k)).collect();
     let mut fronts: Vec<Front> = jobs
         .par_iter()
         .map(|job| {
-            let front = front(job, store, &cache);
+            let front = front(job, store, &indexes[job.pass]);
             tick();
             front
         })
@@ -238,21 +211,33 @@ fn build_in_pool(
             let outcome = match front {
                 Err(_) => None,
                 Ok(_) if pass.failed => None,
-                Ok((declared, module)) => {
-                    Some(stage_module(job, declared, module.take(), pass, options, store, &cache))
-                }
+                Ok((declared, module)) => Some(stage_module(
+                    job,
+                    declared,
+                    module.take(),
+                    pass,
+                    options,
+                    store,
+                    &cache,
+                    &indexes[job.pass],
+                )),
             };
             tick();
             outcome
         })
         .collect();
     let mut stages: Vec<Option<CachedStage>> = Vec::with_capacity(jobs.len());
-    for (job, outcome) in jobs.iter().zip(outcomes) {
+    let mut fresh: Vec<PassIndex> = vec![PassIndex::default(); work.len()];
+    for ((job, outcome), front) in jobs.iter().zip(outcomes).zip(&fronts) {
+        if let Ok((declared, _)) = front {
+            fresh[job.pass].front.insert(job.text_hash.clone(), declared.clone());
+        }
         match outcome {
-            Some(Ok((stage, compiled, written))) => {
+            Some(Ok((stage, key, compiled, written))) => {
                 summary.compiled += usize::from(compiled);
                 summary.reused += usize::from(!compiled);
                 summary.bytes_written += written;
+                fresh[job.pass].stage.insert(key, stage.clone());
                 stages.push(Some(stage));
             }
             Some(Err(mut error)) => {
@@ -261,6 +246,13 @@ fn build_in_pool(
                 stages.push(None);
             }
             None => stages.push(None),
+        }
+    }
+
+    for ((key, old), new) in pass_keys.iter().zip(&indexes).zip(&fresh) {
+        if old != new {
+            // A cache that cannot be written only costs speed next time.
+            let _ = cache.put_pass_index(key, new);
         }
     }
 
@@ -279,7 +271,91 @@ fn build_in_pool(
         }
     }
     diagnostics::dedup(&mut diagnostics);
+    if options.write && diagnostics.is_empty() {
+        // Only costs a full pass next time if it cannot be written.
+        let _ = cache.record_inputs(&Recorded {
+            key: inputs,
+            shaders: summary.shaders,
+            passes: summary.passes,
+            variants: summary.variants,
+            modules: summary.modules,
+        });
+    }
     BuildResult { manifest, summary, diagnostics }
+}
+
+/// Everything a build's outcome depends on: every file's name and text (shaders, includes,
+/// materials, the project file, the bundled library) and the options.
+fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String {
+    let mut hasher = blake3::Hasher::new();
+    for file in store.ids() {
+        let (name, text) = (store.name(file), store.text(file));
+        hasher.update(&(name.len() as u64).to_le_bytes());
+        hasher.update(name.as_bytes());
+        hasher.update(&(text.len() as u64).to_le_bytes());
+        hasher.update(text.as_bytes());
+    }
+    let options = format!(
+        "{:?}{:?}{}{NAGA_VERSION}",
+        options.backends,
+        options.unused_shaders,
+        env!("CARGO_PKG_VERSION")
+    );
+    hasher.update(options.as_bytes());
+    hasher.finalize().to_hex()[..32].to_string()
+}
+
+/// The passes to build and their distinct stage modules, preprocessed.
+fn plan<'a>(
+    store: &SourceStore,
+    includes: &Includes,
+    catalog: &'a Catalog,
+    selection: VariantSelection,
+    summary: &mut BuildSummary,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> (Vec<PassWork<'a>>, Vec<Job<'a>>) {
+    let mut work: Vec<PassWork> = Vec::new();
+    let mut jobs: Vec<Job> = Vec::new();
+    for shader in &catalog.shaders {
+        let mut built_any = false;
+        for pass in &shader.passes {
+            let Some(program) = pass.program.as_ref().filter(|p| p.wgsl.is_some()) else { continue };
+            let variants = select_variants(shader, pass, program, selection, diagnostics);
+            if variants.is_empty() {
+                continue;
+            }
+            built_any = true;
+            let index = work.len();
+            let stages =
+                add_jobs(store, includes, shader, pass, program, &variants, index, &mut jobs, diagnostics);
+            summary.variants += variants.len();
+            summary.passes += 1;
+            work.push(PassWork {
+                shader,
+                pass,
+                program,
+                variants,
+                stages,
+                layout: PassLayout::default(),
+                failed: false,
+            });
+        }
+        summary.shaders += usize::from(built_any);
+    }
+    (work, jobs)
+}
+
+/// The distinct preprocessed stage texts a build of the catalogue compiles, with their stage and
+/// entry point: what naga alone would have to parse, validate and emit for the same output (used
+/// by the benchmarks to compare kiln with naga).
+pub fn stage_texts(
+    store: &SourceStore,
+    includes: &Includes,
+    catalog: &Catalog,
+) -> Vec<(Stage, String, String)> {
+    let (_, jobs) =
+        plan(store, includes, catalog, VariantSelection::Used, &mut BuildSummary::default(), &mut Vec::new());
+    jobs.into_iter().map(|j| (j.stage, j.entry.to_string(), j.text)).collect()
 }
 
 fn write_failure(output: &std::path::Path, error: &std::io::Error) -> Diagnostic {
@@ -322,74 +398,116 @@ fn select_variants(
     }
 }
 
+/// One stage of one variant, to preprocess.
+struct Request<'a> {
+    stage: Stage,
+    entry: &'a crate::source::Spanned<String>,
+    keywords: Vec<String>,
+    allowed: Allowed,
+    context: String,
+}
+
+/// The distinct stage texts of a pass's variants: each (stage, stage keywords, target) is
+/// preprocessed once, in parallel, and identical texts become one job. Returns each variant's
+/// vertex and fragment job.
 #[allow(clippy::too_many_arguments)]
-fn add_job<'a>(
+fn add_jobs<'a>(
     store: &SourceStore,
     includes: &Includes,
     shader: &CatalogShader,
     pass: &CatalogPass,
     program: &'a CatalogProgram,
-    variant: &Variant,
-    stage: Stage,
+    variants: &[Variant],
     pass_index: usize,
     jobs: &mut Vec<Job<'a>>,
     diagnostics: &mut Vec<Diagnostic>,
-) -> Option<usize> {
-    let entry = match stage {
-        Stage::Vertex => program.pragmas.vertex.as_ref()?,
-        Stage::Fragment => program.pragmas.fragment.as_ref()?,
-    };
-    let keywords: Vec<&str> = program.keywords.keywords(program.keywords_for(variant, stage)).collect();
-    let all: Vec<&str> = program.keywords.keywords(&variant.bits).collect();
-    let shown = if all.is_empty() { "(no keywords)".to_string() } else { all.join(" ") };
-    let context = format!(
-        "in variant `{shown}` of `{}` pass {}, {} stage",
-        shader.shader.name.value,
-        pass.index,
-        stage.name()
-    );
-    let wgsl = program.wgsl.as_ref()?;
-    let out = preprocess(includes, store, wgsl, &keywords, stage);
-    let failed = diagnostics::has_errors(&out.diagnostics);
-    diagnostics.extend(out.diagnostics.into_iter().map(|d| d.note(context.clone())));
-    if failed {
-        return None;
+) -> Vec<[Option<usize>; 2]> {
+    let Some(wgsl) = program.wgsl.as_ref() else { return vec![[None, None]; variants.len()] };
+    let mut requests: Vec<Request> = Vec::new();
+    let mut request_of: HashMap<(Stage, crate::keywords::KeywordBits, String), usize> = HashMap::new();
+    let mut per_variant: Vec<[Option<usize>; 2]> = Vec::with_capacity(variants.len());
+    for variant in variants {
+        let all: Vec<&str> = program.keywords.keywords(&variant.bits).collect();
+        let allowed = Allowed::for_variant(&program.pragmas, &all);
+        let shown = if all.is_empty() { "(no keywords)".to_string() } else { all.join(" ") };
+        per_variant.push([Stage::Vertex, Stage::Fragment].map(|stage| {
+            let entry = match stage {
+                Stage::Vertex => program.pragmas.vertex.as_ref()?,
+                Stage::Fragment => program.pragmas.fragment.as_ref()?,
+            };
+            let bits = program.keywords_for(variant, stage);
+            let key = (stage, bits.clone(), allowed.key());
+            Some(*request_of.entry(key).or_insert_with(|| {
+                requests.push(Request {
+                    stage,
+                    entry,
+                    keywords: program.keywords.keywords(bits).map(str::to_string).collect(),
+                    allowed: allowed.clone(),
+                    context: format!(
+                        "in variant `{shown}` of `{}` pass {}, {} stage",
+                        shader.shader.name.value,
+                        pass.index,
+                        stage.name()
+                    ),
+                });
+                requests.len() - 1
+            }))
+        }));
     }
-    let allowed = Allowed::for_variant(&program.pragmas, &all);
-    let text_hash = hash(out.text.as_bytes());
-    let existing = jobs.iter().position(|j| {
-        j.pass == pass_index && j.stage == stage && j.text_hash == text_hash && j.allowed == allowed
-    });
-    if existing.is_some() {
-        return existing;
+    let outputs: Vec<_> = requests
+        .par_iter()
+        .map(|r| {
+            let keywords: Vec<&str> = r.keywords.iter().map(String::as_str).collect();
+            preprocess(includes, store, wgsl, &keywords, r.stage)
+        })
+        .collect();
+    // Different keywords can still give the same text (a keyword no `#if` of this stage tests).
+    let mut job_of_text: HashMap<(Stage, String, String), usize> = HashMap::new();
+    let mut job_of_request: Vec<Option<usize>> = Vec::with_capacity(requests.len());
+    for (request, out) in requests.into_iter().zip(outputs) {
+        let failed = diagnostics::has_errors(&out.diagnostics);
+        diagnostics.extend(out.diagnostics.into_iter().map(|d| d.note(request.context.clone())));
+        if failed {
+            job_of_request.push(None);
+            continue;
+        }
+        let text_hash = hash(out.text.as_bytes());
+        let key = (request.stage, text_hash.clone(), request.allowed.key());
+        let job = *job_of_text.entry(key).or_insert_with(|| {
+            jobs.push(Job {
+                pass: pass_index,
+                stage: request.stage,
+                entry: &request.entry.value,
+                entry_pragma: request.entry.span,
+                text: out.text,
+                map: out.source_map,
+                text_hash,
+                keywords: request.keywords,
+                allowed: request.allowed,
+                context: request.context,
+            });
+            jobs.len() - 1
+        });
+        job_of_request.push(Some(job));
     }
-    jobs.push(Job {
-        pass: pass_index,
-        stage,
-        entry: &entry.value,
-        entry_pragma: entry.span,
-        text: out.text,
-        map: out.source_map,
-        text_hash,
-        allowed,
-        keywords: keywords.iter().map(|k| k.to_string()).collect(),
-        context,
-    });
-    Some(jobs.len() - 1)
+    per_variant.into_iter().map(|stages| stages.map(|r| r.and_then(|r| job_of_request[r]))).collect()
 }
 
-fn front(job: &Job, store: &SourceStore, cache: &Cache) -> Front {
-    if let Some(declared) = cache.front(&job.text_hash) {
-        return Ok((declared, None));
+/// Identifies a pass across builds: its shader file and place.
+fn pass_key(store: &SourceStore, work: &PassWork) -> String {
+    hash(format!("{}#{}.{}", store.name(work.shader.file), work.pass.subshader, work.pass.index).as_bytes())
+}
+
+fn front(job: &Job, store: &SourceStore, index: &PassIndex) -> Front {
+    if let Some(declared) = index.front.get(&job.text_hash) {
+        return Ok((declared.clone(), None));
     }
     let mapper = Mapper { map: &job.map, store };
     let module = parse(&job.text, &mapper).map_err(|d| d.note(job.context.clone()))?;
-    let declared = bind::declared(&module);
-    // A cache that cannot be written only costs speed next time.
-    let _ = cache.put_front(&job.text_hash, &declared);
-    Ok((declared, Some(module)))
+    Ok((bind::declared(&module), Some(module)))
 }
 
+#[allow(clippy::too_many_arguments)]
 fn stage_module(
     job: &Job,
     declared: &[Declared],
@@ -398,7 +516,8 @@ fn stage_module(
     options: &BuildOptions,
     store: &SourceStore,
     cache: &Cache,
-) -> Result<(CachedStage, bool, u64), Diagnostic> {
+    index: &PassIndex,
+) -> Result<(CachedStage, String, bool, u64), Diagnostic> {
     let slots: Vec<String> = declared
         .iter()
         .filter_map(|d| pass.layout.slots.get(&d.name).map(|(g, b)| format!("{}@{g}/{b}", d.name)))
@@ -418,8 +537,8 @@ fn stage_module(
         )
         .as_bytes(),
     );
-    if let Some(cached) = cache.stage(&key) {
-        return Ok((cached, false, 0));
+    if let Some(cached) = index.stage.get(&key).filter(|c| cache.present(c)) {
+        return Ok((cached.clone(), key, false, 0));
     }
     let mapper = Mapper { map: &job.map, store };
     let module = match module {
@@ -456,8 +575,7 @@ fn stage_module(
         None => None,
     };
     let stage = CachedStage { wgsl, spirv, reflection: output.reflection };
-    let _ = cache.put_stage(&key, &stage);
-    Ok((stage, true, written))
+    Ok((stage, key, true, written))
 }
 
 fn manifest(

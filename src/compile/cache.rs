@@ -13,6 +13,24 @@ pub fn hash(bytes: &[u8]) -> String {
     digest.to_hex()[..32].to_string()
 }
 
+/// A pass's cache: the resources each stage text declares (by text hash), and each compiled stage
+/// module (by its full key).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+pub struct PassIndex {
+    pub front: std::collections::BTreeMap<String, Vec<Declared>>,
+    pub stage: std::collections::BTreeMap<String, CachedStage>,
+}
+
+/// The last clean build: its inputs' hash and its counts.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Recorded {
+    pub key: String,
+    pub shaders: usize,
+    pub passes: usize,
+    pub variants: usize,
+    pub modules: usize,
+}
+
 /// What the cache remembers of a compiled stage module.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CachedStage {
@@ -50,27 +68,52 @@ impl Cache {
         write_atomically(&self.entry(kind, key), &bytes)
     }
 
-    /// The resources a preprocessed text declares, by the text's hash.
-    pub fn front(&self, text_hash: &str) -> Option<Vec<Declared>> {
-        self.read("front", text_hash)
+    /// What the last build of a pass left: one file per pass, read once and written once, so
+    /// that the cache costs two file operations per pass rather than per module.
+    pub fn pass_index(&self, pass: &str) -> PassIndex {
+        self.read("pass", pass).unwrap_or_default()
     }
 
-    pub fn put_front(&self, text_hash: &str, declared: &[Declared]) -> std::io::Result<()> {
-        self.put("front", text_hash, &declared)
+    pub fn put_pass_index(&self, pass: &str, index: &PassIndex) -> std::io::Result<()> {
+        self.put("pass", pass, index)
     }
 
-    /// A compiled stage module, if its files are still in place.
-    pub fn stage(&self, key: &str) -> Option<CachedStage> {
-        let cached: CachedStage = self.read("stage", key)?;
+    /// Whether a cached stage module's files are still in place.
+    pub fn present(&self, stage: &CachedStage) -> bool {
         let present = |file: &Option<FileRef>| {
             file.as_ref()
                 .is_none_or(|f| std::fs::metadata(self.output.join(&f.path)).is_ok_and(|m| m.len() == f.size))
         };
-        (present(&cached.wgsl) && present(&cached.spirv)).then_some(cached)
+        present(&stage.wgsl) && present(&stage.spirv)
     }
 
-    pub fn put_stage(&self, key: &str, stage: &CachedStage) -> std::io::Result<()> {
-        self.put("stage", key, stage)
+    /// The previous build's manifest, when that build had exactly these inputs (`key`), ended
+    /// without a diagnostic, and all of its files are still in place.
+    pub fn unchanged(&self, key: &str) -> Option<(crate::reflect::manifest::Manifest, Recorded)> {
+        let recorded: Recorded = self.read("build", "inputs")?;
+        if recorded.key != key {
+            return None;
+        }
+        let manifest: crate::reflect::manifest::Manifest =
+            serde_json::from_slice(&std::fs::read(self.output.join("manifest.json")).ok()?).ok()?;
+        let files = manifest
+            .shaders
+            .iter()
+            .flat_map(|s| &s.passes)
+            .flat_map(|p| &p.variants)
+            .flat_map(|v| [&v.vertex, &v.fragment])
+            .flatten()
+            .flat_map(|stage| [&stage.wgsl, &stage.spirv])
+            .flatten();
+        let present = files
+            .into_iter()
+            .all(|f| std::fs::metadata(self.output.join(&f.path)).is_ok_and(|m| m.len() == f.size));
+        present.then_some((manifest, recorded))
+    }
+
+    /// Records that a build with these inputs finished cleanly.
+    pub fn record_inputs(&self, recorded: &Recorded) -> std::io::Result<()> {
+        self.put("build", "inputs", recorded)
     }
 
     /// Stores a module's bytes under their hash (`modules/HASH.EXT`); returns the reference and
@@ -97,7 +140,10 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     std::fs::create_dir_all(folder)?;
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let temporary = folder.join(format!(".{name}.{}.tmp", std::process::id()));
+    // Unique per write: two jobs may store the same content-addressed module at once.
+    static WRITES: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let unique = WRITES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let temporary = folder.join(format!(".{name}.{}.{unique}.tmp", std::process::id()));
     std::fs::write(&temporary, bytes)?;
     std::fs::rename(&temporary, path).inspect_err(|_| {
         let _ = std::fs::remove_file(&temporary);

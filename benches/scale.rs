@@ -1,0 +1,209 @@
+//! kiln against naga alone, and scaling from 10 to 10,000 used variants, in one run:
+//! `cargo bench --bench scale` (sizes: `-- 10,100,1000,10000`). For each size it generates a
+//! synthetic project (shaders with the Lit pass as their body, eight `shader_feature_fragment`
+//! sets and a `multi_compile_fragment` set, materials choosing distinct combinations), then
+//! measures: naga alone (parse, validate, WGSL and SPIR-V) on the very stage texts kiln compiles;
+//! kiln's cold build; a no-op rebuild; a rebuild after touching one include; kiln's peak memory.
+//! Results and how to read them: docs/performance.md.
+
+use kiln::catalog::{CatalogInput, catalog};
+use kiln::compile::{VariantSelection, stage_texts};
+use kiln::preprocess::{Includes, Stage};
+use kiln::project::{BuildMode, build_project, load_files, open_workspace};
+use kiln::source::SourceStore;
+use rayon::prelude::*;
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+const SETS: usize = 8;
+/// Shaders include one of these; touching one recompiles a tenth of the shaders.
+const SHARED_INCLUDES: usize = 10;
+
+/// Writes a project with about `variants` used variants; returns its folder's shader count.
+fn generate(dir: &Path, variants: usize) -> usize {
+    let per_shader = variants.min(100);
+    let shaders = variants.div_ceil(per_shader);
+    let materials_per_shader = per_shader / 2;
+    let lit = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/project/shaders/LitPass.wgsl"),
+    )
+    .expect("LitPass.wgsl");
+    std::fs::create_dir_all(dir.join("shaders")).expect("mkdir");
+    std::fs::create_dir_all(dir.join("materials")).expect("mkdir");
+    std::fs::write(dir.join("kiln.toml"), "shaders = [\"shaders\"]\nmaterials = [\"materials\"]\n")
+        .expect("write");
+    // The Lit pass, with each keyword changing the fragment's colour.
+    let mut tweaks = String::new();
+    for k in 0..SETS {
+        let _ = write!(
+            tweaks,
+            "#if defined(_F{k})\n    color = color * {} + vec3<f32>(0.001);\n#endif\n",
+            1.0 + k as f32 / 100.0
+        );
+    }
+    tweaks.push_str("#if defined(_MC)\n    color = color.bgr;\n#endif\n    color = color * SharedTint();\n");
+    let pass = lit.replace(
+        "    let color = GetLighting(surface, brdf);\n",
+        &format!("    var color = GetLighting(surface, brdf);\n{tweaks}"),
+    );
+    assert!(pass != lit, "the Lit pass still has the line the generator extends");
+    std::fs::write(dir.join("shaders/SynthPass.wgsl"), pass).expect("write");
+    for s in 0..SHARED_INCLUDES {
+        std::fs::write(
+            dir.join(format!("shaders/Shared{s}.wgsl")),
+            format!("#pragma once\nfn SharedTint() -> f32 {{\n    return {};\n}}\n", 1.0 - s as f32 / 100.0),
+        )
+        .expect("write");
+    }
+    let lit_shader = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/project/shaders/Lit.shader"),
+    )
+    .expect("Lit");
+    let mut pragmas: String =
+        (0..SETS).map(|k| format!("            #pragma shader_feature_fragment _ _F{k}\n")).collect();
+    pragmas.push_str("            #pragma multi_compile_fragment _ _MC\n");
+    // The Lit pass's own features stay declared (the materials leave them off).
+    pragmas.push_str("            #pragma shader_feature _CLIPPING\n            #pragma shader_feature _PREMULTIPLY_ALPHA\n");
+    for i in 0..shaders {
+        let text = lit_shader
+            .replace("Shader \"Custom RP/Lit\"", &format!("Shader \"Synthetic/S{i}\""))
+            .replace("            #pragma shader_feature _CLIPPING\n            #pragma shader_feature _PREMULTIPLY_ALPHA\n", &pragmas)
+            .replace("#include \"LitPass.wgsl\"", &format!("#include \"Shared{}.wgsl\"\n            #include \"SynthPass.wgsl\"", i % SHARED_INCLUDES));
+        std::fs::write(dir.join(format!("shaders/S{i:05}.shader")), text).expect("write");
+        for m in 0..materials_per_shader {
+            let keywords: Vec<String> =
+                (0..SETS).filter(|b| m & (1 << b) != 0).map(|b| format!("\"_F{b}\"")).collect();
+            std::fs::write(
+                dir.join(format!("materials/S{i:05}_M{m:03}.mat")),
+                format!("shader = \"Synthetic/S{i}\"\nkeywords = [{}]\n", keywords.join(", ")),
+            )
+            .expect("write");
+        }
+    }
+    shaders
+}
+
+/// Peak resident memory since the last reset, in MiB (Linux; 0 elsewhere).
+fn peak_mib() -> f64 {
+    let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
+    let kib: f64 = status
+        .lines()
+        .find_map(|l| l.strip_prefix("VmHWM:"))
+        .and_then(|v| v.trim().trim_end_matches("kB").trim().parse().ok())
+        .unwrap_or(0.0);
+    kib / 1024.0
+}
+
+fn reset_peak() {
+    let _ = std::fs::write("/proc/self/clear_refs", "5");
+}
+
+fn kiln_build(project: &Path, output: &Path) -> (kiln::compile::BuildSummary, Duration) {
+    let started = Instant::now();
+    let mut store = SourceStore::new();
+    let mode = BuildMode {
+        write: true,
+        output: Some(output.to_path_buf()),
+        unused_shaders: VariantSelection::Used,
+        threads: None,
+    };
+    let (result, diagnostics) =
+        build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
+    let mut all = diagnostics;
+    all.extend(result.diagnostics);
+    assert!(
+        all.is_empty(),
+        "the synthetic project builds cleanly: {}",
+        kiln::diagnostics::render_plain(&store, &all)
+    );
+    (result.summary, started.elapsed())
+}
+
+/// naga alone on kiln's stage texts: parse, validate, write WGSL and SPIR-V.
+fn naga_alone(project: &Path) -> (usize, Duration) {
+    let mut store = SourceStore::new();
+    let (workspace, _) = open_workspace(&mut store, &[project.to_path_buf()]).expect("project");
+    let mut includes = Includes::new(workspace.include.clone().expect("include config"));
+    let (shaders, _) = load_files(&mut store, &workspace.shaders);
+    let (materials, _) = load_files(&mut store, &workspace.materials);
+    let input = CatalogInput { shaders, materials, always_include: Vec::new() };
+    let (catalog, _) = catalog(&mut store, &mut includes, &input);
+    let texts = stage_texts(&store, &includes, &catalog);
+    let started = Instant::now();
+    texts.par_iter().for_each(|(stage, entry, text)| {
+        let module = naga::front::wgsl::parse_str(text).expect("parses");
+        let flags = naga::valid::ValidationFlags::all() - naga::valid::ValidationFlags::BINDINGS;
+        let info = naga::valid::Validator::new(flags, naga::valid::Capabilities::empty())
+            .validate(&module)
+            .expect("valid");
+        let wgsl = naga::back::wgsl::write_string(&module, &info, naga::back::wgsl::WriterFlags::empty())
+            .expect("wgsl");
+        let options = naga::back::spv::Options { fake_missing_bindings: true, ..Default::default() };
+        let shader_stage =
+            if *stage == Stage::Vertex { naga::ShaderStage::Vertex } else { naga::ShaderStage::Fragment };
+        let pipeline = naga::back::spv::PipelineOptions { shader_stage, entry_point: entry.clone() };
+        let spirv = naga::back::spv::write_vec(&module, &info, &options, Some(&pipeline)).expect("spir-v");
+        std::hint::black_box((wgsl, spirv));
+    });
+    (texts.len(), started.elapsed())
+}
+
+fn main() {
+    let sizes: Vec<usize> = std::env::args()
+        .skip(1)
+        .find(|a| a.chars().next().is_some_and(|c| c.is_ascii_digit()))
+        .map(|a| a.split(',').filter_map(|n| n.parse().ok()).collect())
+        .unwrap_or_else(|| vec![10, 100, 1000, 10000]);
+    println!("{} threads", rayon::current_num_threads());
+    println!(
+        "{:>8} {:>7} {:>7} {:>10} {:>10} {:>7} {:>10} {:>14} {:>9} {:>12}",
+        "variants",
+        "modules",
+        "vertex",
+        "naga",
+        "kiln cold",
+        "ratio",
+        "no-op",
+        "touch include",
+        "recompiled",
+        "peak memory"
+    );
+    for size in sizes {
+        let dir: PathBuf = tempfile::tempdir().expect("temp dir").keep();
+        let shaders = generate(&dir.join("project"), size);
+        let (project, output) = (dir.join("project"), dir.join("out"));
+        let (modules, naga) = naga_alone(&project);
+        reset_peak();
+        let (cold, cold_time) = kiln_build(&project, &output);
+        let memory = peak_mib();
+        assert_eq!(cold.modules, modules, "kiln compiles the texts naga was given");
+        let (noop, noop_time) = kiln_build(&project, &output);
+        assert_eq!(noop.compiled, 0);
+        // Touch one of the shared includes: only the shaders that include it recompile.
+        let touched = project.join("shaders/Shared0.wgsl");
+        let text = std::fs::read_to_string(&touched).expect("read");
+        std::fs::write(&touched, text.replace("return ", "return 0.5 + 0.5 * ")).expect("write");
+        let (touch, touch_time) = kiln_build(&project, &output);
+        let including = shaders.div_ceil(SHARED_INCLUDES);
+        let vertex_jobs = shaders; // one vertex module per shader: its keywords are fragment-only
+        println!(
+            "{:>8} {:>7} {:>7} {:>10.2?} {:>10.2?} {:>6.2}x {:>10.2?} {:>14.2?} {:>9} {:>9.1} MiB",
+            cold.variants,
+            cold.modules,
+            vertex_jobs,
+            naga,
+            cold_time,
+            cold_time.as_secs_f64() / naga.as_secs_f64(),
+            noop_time,
+            touch_time,
+            format!("{}/{}", touch.compiled, cold.modules),
+            memory
+        );
+        assert!(
+            touch.compiled <= cold.modules * including / shaders + 1,
+            "only what includes the file recompiles"
+        );
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
