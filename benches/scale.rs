@@ -99,11 +99,12 @@ fn reset_peak() {
     let _ = std::fs::write("/proc/self/clear_refs", "5");
 }
 
-fn kiln_build(project: &Path, output: &Path) -> (kiln::compile::BuildSummary, Duration) {
+/// `kiln build` (or, without `write`, `kiln check`: the same work, nothing written).
+fn kiln_build(project: &Path, output: &Path, write: bool) -> (kiln::compile::BuildSummary, Duration) {
     let started = Instant::now();
     let mut store = SourceStore::new();
     let mode = BuildMode {
-        write: true,
+        write,
         output: Some(output.to_path_buf()),
         unused_shaders: VariantSelection::Used,
         threads: None,
@@ -157,44 +158,50 @@ fn main() {
         .unwrap_or_else(|| vec![10, 100, 1000, 10000]);
     println!("{} threads", rayon::current_num_threads());
     println!(
-        "{:>8} {:>7} {:>7} {:>10} {:>10} {:>7} {:>10} {:>14} {:>9} {:>12}",
+        "{:>8} {:>7} {:>6} {:>9} {:>10} {:>6} {:>10} {:>6} {:>9} {:>9} {:>10} {:>10}",
         "variants",
         "modules",
         "vertex",
         "naga",
-        "kiln cold",
+        "kiln check",
+        "ratio",
+        "kiln build",
         "ratio",
         "no-op",
-        "touch include",
+        "touch",
         "recompiled",
-        "peak memory"
+        "peak mem"
     );
     for size in sizes {
         let dir: PathBuf = tempfile::tempdir().expect("temp dir").keep();
         let shaders = generate(&dir.join("project"), size);
         let (project, output) = (dir.join("project"), dir.join("out"));
         let (modules, naga) = naga_alone(&project);
+        let (_, check_time) = kiln_build(&project, &dir.join("unused"), false);
         reset_peak();
-        let (cold, cold_time) = kiln_build(&project, &output);
+        let (cold, cold_time) = kiln_build(&project, &output, true);
         let memory = peak_mib();
         assert_eq!(cold.modules, modules, "kiln compiles the texts naga was given");
-        let (noop, noop_time) = kiln_build(&project, &output);
+        let (noop, noop_time) = kiln_build(&project, &output, true);
         assert_eq!(noop.compiled, 0);
         // Touch one of the shared includes: only the shaders that include it recompile.
         let touched = project.join("shaders/Shared0.wgsl");
         let text = std::fs::read_to_string(&touched).expect("read");
         std::fs::write(&touched, text.replace("return ", "return 0.5 + 0.5 * ")).expect("write");
-        let (touch, touch_time) = kiln_build(&project, &output);
+        let (touch, touch_time) = kiln_build(&project, &output, true);
         let including = shaders.div_ceil(SHARED_INCLUDES);
         let vertex_jobs = shaders; // one vertex module per shader: its keywords are fragment-only
+        let ratio = |t: Duration| t.as_secs_f64() / naga.as_secs_f64();
         println!(
-            "{:>8} {:>7} {:>7} {:>10.2?} {:>10.2?} {:>6.2}x {:>10.2?} {:>14.2?} {:>9} {:>9.1} MiB",
+            "{:>8} {:>7} {:>6} {:>9.2?} {:>10.2?} {:>5.2}x {:>10.2?} {:>5.2}x {:>9.2?} {:>9.2?} {:>10} {:>6.0} MiB",
             cold.variants,
             cold.modules,
             vertex_jobs,
             naga,
+            check_time,
+            ratio(check_time),
             cold_time,
-            cold_time.as_secs_f64() / naga.as_secs_f64(),
+            ratio(cold_time),
             noop_time,
             touch_time,
             format!("{}/{}", touch.compiled, cold.modules),

@@ -49,7 +49,7 @@ fn field_name(name: &str) -> String {
 /// Emits one struct per distinct uniform block type of the shader.
 pub fn uniform_structs(out: &mut String, shader: &ShaderManifest) {
     let mut emitted: Vec<(String, UniformBlock)> = Vec::new();
-    let blocks = shader.passes.iter().flat_map(|p| &p.variants).flat_map(|v| &v.uniform_blocks);
+    let blocks = shader.passes.iter().flat_map(|p| &p.uniform_blocks);
     for block in blocks {
         if emitted.iter().any(|(_, b)| b.type_name == block.type_name && b.members == block.members) {
             continue;

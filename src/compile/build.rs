@@ -154,106 +154,67 @@ fn build_in_pool(
     let done = AtomicUsize::new(0);
     let tick = || progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
 
-    // 2. Front end: the resources each text declares (from the cache, or by parsing).
-    let pass_keys: Vec<String> = work.iter().map(|w| pass_key(store, w)).collect();
-    let indexes: Vec<PassIndex> = pass_keys.iter().map(|k| cache.pass_index(k)).collect();
-    let mut fronts: Vec<Front> = jobs
-        .par_iter()
-        .map(|job| {
-            let front = front(job, store, &indexes[job.pass]);
-            tick();
-            front
-        })
-        .collect();
-
-    // 3. One layout per pass, from all its modules.
+    // 2-4, pass by pass, so that only one pass's parsed modules are in memory at a time: the
+    // resources each text declares (cache or parse), one layout, then the stage modules (cache or
+    // compile), each step in parallel over the pass's jobs.
+    let mut stages: Vec<Option<CachedStage>> = vec![None; jobs.len()];
+    let mut start = 0;
     for (p, pass) in work.iter_mut().enumerate() {
-        let members: Vec<usize> = (0..jobs.len()).filter(|&j| jobs[j].pass == p).collect();
-        let mut declared: Vec<&[Declared]> = Vec::new();
-        let mut owners = Vec::new();
-        for &j in &members {
-            match &fronts[j] {
-                Ok((d, _)) => {
-                    declared.push(d);
-                    owners.push(j);
+        let end = start + jobs[start..].iter().take_while(|j| j.pass == p).count();
+        let members = &jobs[start..end];
+        let key = pass_key(store, pass);
+        let index = cache.pass_index(&key);
+        let mut fronts: Vec<Front> = members
+            .par_iter()
+            .map(|job| {
+                let front = front(job, store, &index);
+                tick();
+                front
+            })
+            .collect();
+        lay_out(pass, members, &fronts, store, &mut diagnostics);
+        let pass = &*pass;
+        let outcomes: Vec<StageOutcome> = members
+            .par_iter()
+            .zip(fronts.par_iter_mut())
+            .map(|(job, front)| {
+                let outcome = match front {
+                    Err(_) => None,
+                    Ok(_) if pass.failed => None,
+                    Ok((declared, module)) => {
+                        Some(stage_module(job, declared, module.take(), pass, options, store, &cache, &index))
+                    }
+                };
+                tick();
+                outcome
+            })
+            .collect();
+        let mut fresh = PassIndex::default();
+        for (i, (outcome, front)) in outcomes.into_iter().zip(&fronts).enumerate() {
+            let job = &members[i];
+            if let Ok((declared, _)) = front {
+                fresh.front.insert(job.text_hash.clone(), declared.clone());
+            }
+            match outcome {
+                Some(Ok((stage, key, compiled, written))) => {
+                    summary.compiled += usize::from(compiled);
+                    summary.reused += usize::from(!compiled);
+                    summary.bytes_written += written;
+                    fresh.stage.insert(key, stage.clone());
+                    stages[start + i] = Some(stage);
                 }
-                Err(error) => {
-                    diagnostics.push(error.clone());
-                    pass.failed = true;
+                Some(Err(mut error)) => {
+                    error.notes.push(job.context.clone());
+                    diagnostics.push(error);
                 }
+                None => {}
             }
         }
-        let (layout, clashes) = bind::layout(&declared);
-        for (m, d, message) in clashes {
-            let job = &jobs[owners[m]];
-            let range = declared[m][d].range;
-            let mapper = Mapper { map: &job.map, store };
-            let diagnostic = Diagnostic::error("K0406", message).help(
-                "give each resource its own slot, or leave out `@group`/`@binding` and let kiln assign them",
-            );
-            let mut diagnostic = mapper.diagnostic_at(
-                diagnostic,
-                vec![(range.0 as usize..range.1 as usize, "declared here".into())],
-            );
-            diagnostic.notes.push(job.context.clone());
-            diagnostics.push(diagnostic);
-            pass.failed = true;
-        }
-        pass.layout = layout;
-    }
-
-    // 4. Stage modules: cached, or compiled in parallel.
-    let outcomes: Vec<StageOutcome> = jobs
-        .par_iter()
-        .zip(fronts.par_iter_mut())
-        .map(|(job, front)| {
-            let pass = &work[job.pass];
-            let outcome = match front {
-                Err(_) => None,
-                Ok(_) if pass.failed => None,
-                Ok((declared, module)) => Some(stage_module(
-                    job,
-                    declared,
-                    module.take(),
-                    pass,
-                    options,
-                    store,
-                    &cache,
-                    &indexes[job.pass],
-                )),
-            };
-            tick();
-            outcome
-        })
-        .collect();
-    let mut stages: Vec<Option<CachedStage>> = Vec::with_capacity(jobs.len());
-    let mut fresh: Vec<PassIndex> = vec![PassIndex::default(); work.len()];
-    for ((job, outcome), front) in jobs.iter().zip(outcomes).zip(&fronts) {
-        if let Ok((declared, _)) = front {
-            fresh[job.pass].front.insert(job.text_hash.clone(), declared.clone());
-        }
-        match outcome {
-            Some(Ok((stage, key, compiled, written))) => {
-                summary.compiled += usize::from(compiled);
-                summary.reused += usize::from(!compiled);
-                summary.bytes_written += written;
-                fresh[job.pass].stage.insert(key, stage.clone());
-                stages.push(Some(stage));
-            }
-            Some(Err(mut error)) => {
-                error.notes.push(job.context.clone());
-                diagnostics.push(error);
-                stages.push(None);
-            }
-            None => stages.push(None),
-        }
-    }
-
-    for ((key, old), new) in pass_keys.iter().zip(&indexes).zip(&fresh) {
-        if old != new {
+        if fresh != index {
             // A cache that cannot be written only costs speed next time.
-            let _ = cache.put_pass_index(key, new);
+            let _ = cache.put_pass_index(&key, &fresh);
         }
+        start = end;
     }
 
     // 5. The manifest, in catalogue order.
@@ -303,6 +264,45 @@ fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String {
     );
     hasher.update(options.as_bytes());
     hasher.finalize().to_hex()[..32].to_string()
+}
+
+/// One layout for a pass from the resources of all its modules, or the reasons there is none.
+fn lay_out(
+    pass: &mut PassWork,
+    members: &[Job],
+    fronts: &[Front],
+    store: &SourceStore,
+    diagnostics: &mut Vec<Diagnostic>,
+) {
+    let mut declared: Vec<&[Declared]> = Vec::new();
+    let mut owners = Vec::new();
+    for (j, front) in fronts.iter().enumerate() {
+        match front {
+            Ok((d, _)) => {
+                declared.push(d);
+                owners.push(j);
+            }
+            Err(error) => {
+                diagnostics.push(error.clone());
+                pass.failed = true;
+            }
+        }
+    }
+    let (layout, clashes) = bind::layout(&declared);
+    for (m, d, message) in clashes {
+        let job = &members[owners[m]];
+        let range = declared[m][d].range;
+        let mapper = Mapper { map: &job.map, store };
+        let diagnostic = Diagnostic::error("K0406", message).help(
+            "give each resource its own slot, or leave out `@group`/`@binding` and let kiln assign them",
+        );
+        let mut diagnostic = mapper
+            .diagnostic_at(diagnostic, vec![(range.0 as usize..range.1 as usize, "declared here".into())]);
+        diagnostic.notes.push(job.context.clone());
+        diagnostics.push(diagnostic);
+        pass.failed = true;
+    }
+    pass.layout = layout;
 }
 
 /// The passes to build and their distinct stage modules, preprocessed.
@@ -613,9 +613,11 @@ fn pass_manifest(
     let shader = &work.shader.shader;
     let mut entries: BTreeMap<(u32, u32), LayoutEntry> = BTreeMap::new();
     let mut variants = Vec::new();
+    // Distinct uniform block layouts of the pass; variants refer to them by index.
+    let mut layouts: Vec<UniformBlock> = Vec::new();
     for (variant, stage_jobs) in work.variants.iter().zip(&work.stages) {
         let [vertex, fragment] = stage_jobs.map(|j| j.and_then(|j| Some((j, stages[j].as_ref()?))));
-        let mut blocks: Vec<UniformBlock> = Vec::new();
+        let mut blocks: Vec<usize> = Vec::new();
         let mut stage_manifest = |found: Option<(usize, &CachedStage)>, name: &str| {
             let (j, stage) = found?;
             let reflection: &StageReflection = &stage.reflection;
@@ -631,8 +633,12 @@ fn pass_manifest(
                 }
             }
             for block in &reflection.uniform_blocks {
-                if !blocks.iter().any(|b| b.name == block.name) {
-                    blocks.push(block.clone());
+                let index = layouts.iter().position(|b| b == block).unwrap_or_else(|| {
+                    layouts.push(block.clone());
+                    layouts.len() - 1
+                });
+                if !blocks.contains(&index) {
+                    blocks.push(index);
                 }
             }
             Some(StageManifest {
@@ -652,7 +658,7 @@ fn pass_manifest(
         };
         let vertex = stage_manifest(vertex, "vertex");
         let fragment = stage_manifest(fragment, "fragment");
-        blocks.sort_by(|a, b| a.name.cmp(&b.name));
+        blocks.sort_by(|&a, &b| layouts[a].name.cmp(&layouts[b].name));
         variants.push(VariantManifest {
             key: variant.bits.key(),
             keywords: work.program.keywords.keywords(&variant.bits).map(str::to_string).collect(),
@@ -713,6 +719,7 @@ fn pass_manifest(
             })
             .collect(),
         layout: groups.into_iter().map(|(group, entries)| BindGroup { group, entries }).collect(),
+        uniform_blocks: layouts,
         variants,
     }
 }
@@ -728,11 +735,7 @@ fn default_json(default: &PropertyDefault) -> serde_json::Value {
 /// The shader's properties, with their place in the material block (from the first variant that
 /// has one) and their texture bindings.
 fn properties(shader: &Shader, passes: &[PassManifest]) -> Vec<PropertyManifest> {
-    let material_block = passes
-        .iter()
-        .flat_map(|p| &p.variants)
-        .flat_map(|v| &v.uniform_blocks)
-        .find(|b| b.name == "UnityPerMaterial");
+    let material_block = passes.iter().flat_map(|p| &p.uniform_blocks).find(|b| b.name == "UnityPerMaterial");
     let mut bindings: HashMap<&str, [u32; 2]> = HashMap::new();
     for pass in passes {
         for group in &pass.layout {

@@ -5,7 +5,7 @@ use super::{Attribute, Resource, UniformBlock};
 use serde::{Deserialize, Serialize};
 
 /// Raised whenever a field changes meaning or is removed (adding fields keeps it).
-pub const SCHEMA_VERSION: u32 = 1;
+pub const SCHEMA_VERSION: u32 = 2;
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Manifest {
@@ -45,6 +45,8 @@ pub struct PassManifest {
     pub keyword_sets: Vec<KeywordSetManifest>,
     /// One bind group layout for every variant of the pass.
     pub layout: Vec<BindGroup>,
+    /// The distinct uniform block layouts of the pass's variants, laid out by naga.
+    pub uniform_blocks: Vec<UniformBlock>,
     pub variants: Vec<VariantManifest>,
 }
 
@@ -94,8 +96,9 @@ pub struct VariantManifest {
     pub materials: Vec<String>,
     pub vertex: Option<StageManifest>,
     pub fragment: Option<StageManifest>,
-    /// Every uniform block the variant's stages use, laid out by naga.
-    pub uniform_blocks: Vec<UniformBlock>,
+    /// The uniform blocks the variant's stages use: indices into the pass's `uniform_blocks`,
+    /// by block name.
+    pub uniform_blocks: Vec<usize>,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

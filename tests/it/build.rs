@@ -63,9 +63,14 @@ fn custom_light_has_the_seed_layout() {
     build_into("fixtures/project", output.path(), None);
     let manifest = read_manifest(output.path());
     let lit = manifest.shaders.iter().find(|s| s.name == "Custom RP/Lit").expect("Lit");
-    for variant in &lit.passes[0].variants {
-        let light =
-            variant.uniform_blocks.iter().find(|b| b.name == "_CustomLight").expect("_CustomLight used");
+    let pass = &lit.passes[0];
+    for variant in &pass.variants {
+        let light = variant
+            .uniform_blocks
+            .iter()
+            .map(|&i| &pass.uniform_blocks[i])
+            .find(|b| b.name == "_CustomLight")
+            .expect("_CustomLight used");
         assert_eq!(light.size, 144);
         let members: Vec<(&str, u32, Option<u32>, Option<u32>)> = light
             .members
