@@ -46,6 +46,28 @@ fn GetBRDF(surface: Surface, applyAlphaToDiffuse: bool) -> BRDF {
     return brdf;
 }
 
+// Roughness is kept at or above this in the stable form, so that r^2 stays a normal f32 (and
+// f16) number instead of flushing to zero.
+#define KILN_MIN_ROUGHNESS 0.002
+
+#if defined(_SPECULAR_STABLE)
+// The same model, written to avoid cancellation: d = (1 - (N.H)^2) + (N.H)^2 r^2 + 0.00001 with
+// 1 - (N.H)^2 taken from |N x H|^2 (Lagrange's identity), exact where N.H is near 1 and the
+// seed's form loses every digit of 1 - (N.H)^2.
+fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
+    let h = SafeNormalize(light.direction + surface.viewDirection);
+    let nh = saturate(dot(surface.normal, h));
+    let nxh = cross(surface.normal, h);
+    let oneMinusNh2 = saturate(dot(nxh, nxh));
+    let lh2 = Square(saturate(dot(light.direction, h)));
+    let roughness = max(brdf.roughness, KILN_MIN_ROUGHNESS);
+    let r2 = Square(roughness);
+    let d2 = Square(oneMinusNh2 + nh * nh * r2 + 0.00001);
+    let normalization = roughness * 4.0 + 2.0;
+    return r2 / (d2 * max(0.1, lh2) * normalization);
+}
+#else
+// The seed's minimal Cook-Torrance exactly as written:
 // r^2 / (d^2 * max(0.1, (L.H)^2) * (4r + 2)) with d = (N.H)^2 (r^2 - 1) + 1.00001.
 fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
     let h = SafeNormalize(light.direction + surface.viewDirection);
@@ -56,6 +78,7 @@ fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
     let normalization = brdf.roughness * 4.0 + 2.0;
     return r2 / (d2 * max(0.1, lh2) * normalization);
 }
+#endif
 
 fn DirectBRDF(surface: Surface, brdf: BRDF, light: Light) -> vec3<f32> {
     return SpecularStrength(surface, brdf, light) * brdf.specular + brdf.diffuse;

@@ -15,6 +15,13 @@ fn GetLightingForLight(surface: Surface, brdf: BRDF, light: Light) -> vec3<f32> 
     return IncomingLight(surface, light) * DirectBRDF(surface, brdf, light);
 }
 
+#if defined(_SINGLE_DIRECTIONAL_LIGHT)
+// Specialised for scenes with one directional light: no loop, the first light or none.
+fn GetLighting(surface: Surface, brdf: BRDF) -> vec3<f32> {
+    let lit = GetLightingForLight(surface, brdf, GetDirectionalLight(0));
+    return select(vec3<f32>(0.0), lit, GetDirectionalLightCount() > 0);
+}
+#else
 fn GetLighting(surface: Surface, brdf: BRDF) -> vec3<f32> {
     var color = vec3<f32>(0.0);
     for (var i = 0; i < GetDirectionalLightCount(); i++) {
@@ -22,5 +29,6 @@ fn GetLighting(surface: Surface, brdf: BRDF) -> vec3<f32> {
     }
     return color;
 }
+#endif
 
 #endif

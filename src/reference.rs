@@ -97,6 +97,16 @@ pub fn specular_strength(surface: &Surface, brdf: &Brdf, light: &Light) -> f64 {
     r2 / (d2 * lh2.max(0.1) * normalization)
 }
 
+/// The roughness floor of the stable form (`KILN_MIN_ROUGHNESS` in BRDF.wgsl).
+pub const MIN_ROUGHNESS: f64 = 0.002;
+
+/// The model the stable form (`_SPECULAR_STABLE`) computes: the seed's, with roughness at least
+/// [`MIN_ROUGHNESS`]. In exact arithmetic the rest of that form is the same formula.
+pub fn specular_strength_stable(surface: &Surface, brdf: &Brdf, light: &Light) -> f64 {
+    let clamped = Brdf { roughness: brdf.roughness.max(MIN_ROUGHNESS), ..*brdf };
+    specular_strength(surface, &clamped, light)
+}
+
 pub fn direct_brdf(surface: &Surface, brdf: &Brdf, light: &Light) -> Vec3 {
     add(scale(brdf.specular, specular_strength(surface, brdf, light)), brdf.diffuse)
 }

@@ -118,8 +118,8 @@ const INJECTIONS: &[Injection] = &[
     },
     Injection {
         file: "BRDF.wgsl",
-        needle: "let r2 = Square(",
-        replacement: "let r2 = Sqaure(",
+        needle: "let d2 = Square(nh2 *",
+        replacement: "let d2 = Sqaure(nh2 *",
         at: "Sqaure",
     },
     Injection {

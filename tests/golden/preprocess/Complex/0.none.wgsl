@@ -133,6 +133,10 @@ fn GetBRDF(surface: Surface, applyAlphaToDiffuse: bool) -> BRDF {
     return brdf;
 }
 
+// Roughness is kept at or above this in the stable form, so that r^2 stays a normal f32 (and
+// f16) number instead of flushing to zero.
+
+// The seed's minimal Cook-Torrance exactly as written:
 // r^2 / (d^2 * max(0.1, (L.H)^2) * (4r + 2)) with d = (N.H)^2 (r^2 - 1) + 1.00001.
 fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
     let h = SafeNormalize(light.direction + surface.viewDirection);
@@ -257,14 +261,19 @@ fn ComplexPassFragment(input: Varyings) -> @location(0) vec4<f32> {
 // 93-94 <- <kiln>/shaderlib/BRDF.wgsl:1-2
 // 95 <- <kiln>/shaderlib/BRDF.wgsl:5
 // 96-97 <- <kiln>/shaderlib/BRDF.wgsl:9-10
-// 98-149 <- <kiln>/shaderlib/BRDF.wgsl:12-63
-// 150 <- <kiln>/shaderlib/Lighting.wgsl:1
-// 151 <- <kiln>/shaderlib/Lighting.wgsl:4
-// 152-169 <- <kiln>/shaderlib/Lighting.wgsl:8-25
-// 170-211 <- fixtures/project/shaders/ComplexPass.wgsl:11-52
-// 212 <- fixtures/project/shaders/ComplexPass.wgsl:56
-// 213-216 <- fixtures/project/shaders/ComplexPass.wgsl:58-61
-// 217-220 <- fixtures/project/shaders/ComplexPass.wgsl:67-70
-// 221 <- fixtures/project/shaders/ComplexPass.wgsl:74
-// 222-238 <- fixtures/project/shaders/ComplexPass.wgsl:76-92
-// 239 <- fixtures/project/shaders/Complex.shader:26
+// 98-136 <- <kiln>/shaderlib/BRDF.wgsl:12-50
+// 137 <- <kiln>/shaderlib/BRDF.wgsl:52
+// 138-148 <- <kiln>/shaderlib/BRDF.wgsl:70-80
+// 149-153 <- <kiln>/shaderlib/BRDF.wgsl:82-86
+// 154 <- <kiln>/shaderlib/Lighting.wgsl:1
+// 155 <- <kiln>/shaderlib/Lighting.wgsl:4
+// 156-165 <- <kiln>/shaderlib/Lighting.wgsl:8-17
+// 166-172 <- <kiln>/shaderlib/Lighting.wgsl:25-31
+// 173 <- <kiln>/shaderlib/Lighting.wgsl:33
+// 174-215 <- fixtures/project/shaders/ComplexPass.wgsl:11-52
+// 216 <- fixtures/project/shaders/ComplexPass.wgsl:56
+// 217-220 <- fixtures/project/shaders/ComplexPass.wgsl:58-61
+// 221-224 <- fixtures/project/shaders/ComplexPass.wgsl:67-70
+// 225 <- fixtures/project/shaders/ComplexPass.wgsl:74
+// 226-242 <- fixtures/project/shaders/ComplexPass.wgsl:76-92
+// 243 <- fixtures/project/shaders/Complex.shader:26

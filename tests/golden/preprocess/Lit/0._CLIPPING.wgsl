@@ -132,6 +132,10 @@ fn GetBRDF(surface: Surface, applyAlphaToDiffuse: bool) -> BRDF {
     return brdf;
 }
 
+// Roughness is kept at or above this in the stable form, so that r^2 stays a normal f32 (and
+// f16) number instead of flushing to zero.
+
+// The seed's minimal Cook-Torrance exactly as written:
 // r^2 / (d^2 * max(0.1, (L.H)^2) * (4r + 2)) with d = (N.H)^2 (r^2 - 1) + 1.00001.
 fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
     let h = SafeNormalize(light.direction + surface.viewDirection);
@@ -243,13 +247,18 @@ fn LitPassFragment(input: Varyings) -> @location(0) vec4<f32> {
 // 92-93 <- <kiln>/shaderlib/BRDF.wgsl:1-2
 // 94 <- <kiln>/shaderlib/BRDF.wgsl:5
 // 95-96 <- <kiln>/shaderlib/BRDF.wgsl:9-10
-// 97-148 <- <kiln>/shaderlib/BRDF.wgsl:12-63
-// 149 <- <kiln>/shaderlib/Lighting.wgsl:1
-// 150 <- <kiln>/shaderlib/Lighting.wgsl:4
-// 151-168 <- <kiln>/shaderlib/Lighting.wgsl:8-25
-// 169-209 <- fixtures/project/shaders/LitPass.wgsl:10-50
-// 210-212 <- fixtures/project/shaders/LitPass.wgsl:52-54
-// 213-219 <- fixtures/project/shaders/LitPass.wgsl:56-62
-// 220 <- fixtures/project/shaders/LitPass.wgsl:66
-// 221-224 <- fixtures/project/shaders/LitPass.wgsl:68-71
-// 225 <- fixtures/project/shaders/Lit.shader:31
+// 97-135 <- <kiln>/shaderlib/BRDF.wgsl:12-50
+// 136 <- <kiln>/shaderlib/BRDF.wgsl:52
+// 137-147 <- <kiln>/shaderlib/BRDF.wgsl:70-80
+// 148-152 <- <kiln>/shaderlib/BRDF.wgsl:82-86
+// 153 <- <kiln>/shaderlib/Lighting.wgsl:1
+// 154 <- <kiln>/shaderlib/Lighting.wgsl:4
+// 155-164 <- <kiln>/shaderlib/Lighting.wgsl:8-17
+// 165-171 <- <kiln>/shaderlib/Lighting.wgsl:25-31
+// 172 <- <kiln>/shaderlib/Lighting.wgsl:33
+// 173-213 <- fixtures/project/shaders/LitPass.wgsl:10-50
+// 214-216 <- fixtures/project/shaders/LitPass.wgsl:52-54
+// 217-223 <- fixtures/project/shaders/LitPass.wgsl:56-62
+// 224 <- fixtures/project/shaders/LitPass.wgsl:66
+// 225-228 <- fixtures/project/shaders/LitPass.wgsl:68-71
+// 229 <- fixtures/project/shaders/Lit.shader:31
