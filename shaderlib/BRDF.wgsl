@@ -52,13 +52,16 @@ fn GetBRDF(surface: Surface, applyAlphaToDiffuse: bool) -> BRDF {
 
 #if defined(_SPECULAR_STABLE)
 // The same model, written to avoid cancellation: d = (1 - (N.H)^2) + (N.H)^2 r^2 + 0.00001 with
-// 1 - (N.H)^2 taken from |N x H|^2 (Lagrange's identity), exact where N.H is near 1 and the
-// seed's form loses every digit of 1 - (N.H)^2.
+// 1 - (N.H)^2 taken from |N x H|^2 (Lagrange's identity: 1 - (N.H)^2 = 1 - |N|^2|H|^2 + |N x H|^2),
+// exact where N.H is near 1 and the seed's form loses every digit of 1 - (N.H)^2. The identity's
+// first term is rounding noise for unit vectors and is dropped then; it is kept when N or H is
+// degenerate (a zero half vector when L = -V, a zero or denormal normal).
 fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
     let h = SafeNormalize(light.direction + surface.viewDirection);
     let nh = saturate(dot(surface.normal, h));
     let nxh = cross(surface.normal, h);
-    let oneMinusNh2 = saturate(dot(nxh, nxh));
+    let deficit = 1.0 - dot(surface.normal, surface.normal) * dot(h, h);
+    let oneMinusNh2 = saturate(dot(nxh, nxh) + select(deficit, 0.0, abs(deficit) < 1e-3));
     let lh2 = Square(saturate(dot(light.direction, h)));
     let roughness = max(brdf.roughness, KILN_MIN_ROUGHNESS);
     let r2 = Square(roughness);

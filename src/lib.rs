@@ -17,6 +17,7 @@
 // matters; boxing each one would only add noise.
 #![allow(clippy::result_large_err)]
 
+pub mod accuracy;
 mod build_script;
 pub mod catalog;
 pub mod codegen;

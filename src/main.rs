@@ -76,6 +76,9 @@ enum Command {
         #[arg(long, value_delimiter = ',')]
         keywords: Vec<String>,
     },
+    /// Measure the shader library's formulations against the f64 reference on hard cases, on
+    /// the GPU (the speed-against-error table of docs/accuracy.md).
+    Accuracy,
     /// Create materials and apply presets to them.
     #[command(subcommand)]
     Material(MaterialCommand),
@@ -155,6 +158,7 @@ fn main() -> ExitCode {
                 Err(error) => usage_failure(&error.to_string()),
             }
         }
+        Command::Accuracy => accuracy(),
         Command::Material(command) => {
             let done = match command {
                 MaterialCommand::New { path, shader, preset, project } => {
@@ -170,6 +174,23 @@ fn main() -> ExitCode {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(error) => usage_failure(&error.to_string()),
             }
+        }
+    }
+}
+
+fn accuracy() -> ExitCode {
+    let (device, queue, adapter, timestamps) = match kiln::accuracy::gpu::device() {
+        Ok(found) => found,
+        Err(reason) => return usage_failure(&reason),
+    };
+    match kiln::accuracy::gpu::run(&device, &queue, timestamps) {
+        Ok((rows, timings, method)) => {
+            print_out(&kiln::accuracy::render(&adapter, &rows, &timings, &method));
+            ExitCode::SUCCESS
+        }
+        Err(error) => {
+            eprintln!("error: {error}");
+            ExitCode::from(1)
         }
     }
 }

@@ -1,6 +1,7 @@
 //! kiln's integration tests: one binary, one module per concern. Golden files are regenerated
 //! with `UPDATE_EXPECT=1 cargo test`, then reviewed like code.
 
+mod accuracy;
 mod bad;
 mod build;
 mod cli;

@@ -264,8 +264,8 @@ fn ComplexPassFragment(input: Varyings) -> @location(0) vec4<f32> {
 // 96-97 <- <kiln>/shaderlib/BRDF.wgsl:9-10
 // 98-136 <- <kiln>/shaderlib/BRDF.wgsl:12-50
 // 137 <- <kiln>/shaderlib/BRDF.wgsl:52
-// 138-148 <- <kiln>/shaderlib/BRDF.wgsl:70-80
-// 149-153 <- <kiln>/shaderlib/BRDF.wgsl:82-86
+// 138-148 <- <kiln>/shaderlib/BRDF.wgsl:73-83
+// 149-153 <- <kiln>/shaderlib/BRDF.wgsl:85-89
 // 154 <- <kiln>/shaderlib/Lighting.wgsl:1
 // 155 <- <kiln>/shaderlib/Lighting.wgsl:4
 // 156-165 <- <kiln>/shaderlib/Lighting.wgsl:8-17

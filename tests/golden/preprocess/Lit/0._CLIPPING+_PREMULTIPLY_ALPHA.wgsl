@@ -249,8 +249,8 @@ fn LitPassFragment(input: Varyings) -> @location(0) vec4<f32> {
 // 95-96 <- <kiln>/shaderlib/BRDF.wgsl:9-10
 // 97-135 <- <kiln>/shaderlib/BRDF.wgsl:12-50
 // 136 <- <kiln>/shaderlib/BRDF.wgsl:52
-// 137-147 <- <kiln>/shaderlib/BRDF.wgsl:70-80
-// 148-152 <- <kiln>/shaderlib/BRDF.wgsl:82-86
+// 137-147 <- <kiln>/shaderlib/BRDF.wgsl:73-83
+// 148-152 <- <kiln>/shaderlib/BRDF.wgsl:85-89
 // 153 <- <kiln>/shaderlib/Lighting.wgsl:1
 // 154 <- <kiln>/shaderlib/Lighting.wgsl:4
 // 155-164 <- <kiln>/shaderlib/Lighting.wgsl:8-17

@@ -1,0 +1,430 @@
+//! Runs the compiled library functions on an adapter: the program below includes the library as
+//! any pass would, kiln preprocesses and compiles it per formulation, and compute entry points
+//! evaluate the hard cases (one result per case) or time the formulations compute-bound (many
+//! evaluations per invocation, kept in registers).
+
+use super::{Case, Formulation, Row, Timing, hard_cases, reference, reference_lights, stats};
+use crate::compile::Bindings;
+use crate::preprocess::{IncludeConfig, Includes, Stage, preprocess};
+use crate::source::{SourceStore, Span};
+use wgpu::util::DeviceExt;
+
+/// The harness, a WGSL program in kiln's dialect.
+const HARNESS: &str = r#"
+#include "Lighting.wgsl"
+
+struct Case {
+    normal: vec4<f32>,
+    view: vec4<f32>,
+    light_direction: vec4<f32>,
+    light_color: vec4<f32>,
+    color: vec4<f32>,
+    // metallic, smoothness, premultiply (0 or 1)
+    params: vec4<f32>,
+}
+
+@group(3) @binding(0) var<storage, read> cases: array<Case>;
+@group(3) @binding(1) var<storage, read_write> results: array<vec4<f32>>;
+
+fn CaseSurface(c: Case) -> Surface {
+    var surface: Surface;
+    surface.normal = c.normal.xyz;
+    surface.viewDirection = c.view.xyz;
+    surface.color = c.color.rgb;
+    surface.alpha = c.color.a;
+    surface.metallic = c.params.x;
+    surface.smoothness = c.params.y;
+    return surface;
+}
+
+fn CaseLight(c: Case) -> Light {
+    var light: Light;
+    light.color = c.light_color.xyz;
+    light.direction = c.light_direction.xyz;
+    return light;
+}
+
+@compute @workgroup_size(64)
+fn OneLight(@builtin(global_invocation_id) id: vec3<u32>) {
+    if (id.x >= arrayLength(&cases)) {
+        return;
+    }
+    let c = cases[id.x];
+    let surface = CaseSurface(c);
+    let brdf = GetBRDF(surface, c.params.z > 0.5);
+    results[id.x] = vec4<f32>(GetLightingForLight(surface, brdf, CaseLight(c)), 0.0);
+}
+
+@compute @workgroup_size(64)
+fn AllLights(@builtin(global_invocation_id) id: vec3<u32>) {
+    if (id.x >= arrayLength(&cases)) {
+        return;
+    }
+    let c = cases[id.x];
+    let surface = CaseSurface(c);
+    let brdf = GetBRDF(surface, c.params.z > 0.5);
+    results[id.x] = vec4<f32>(GetLighting(surface, brdf), 0.0);
+}
+
+// Compute-bound: each invocation evaluates EVALUATIONS inputs, each derived from the last in
+// registers, and writes one value, so memory traffic is 1/EVALUATIONS of the work.
+const EVALUATIONS: u32 = 256u;
+
+@compute @workgroup_size(64)
+fn TimeOneLight(@builtin(global_invocation_id) id: vec3<u32>) {
+    let c = cases[id.x % arrayLength(&cases)];
+    let surface = CaseSurface(c);
+    let brdf = GetBRDF(surface, false);
+    var light = CaseLight(c);
+    var sum = vec3<f32>(0.0);
+    for (var k = 0u; k < EVALUATIONS; k++) {
+        light.direction = SafeNormalize(light.direction + vec3<f32>(1e-3, 0.0, 0.0));
+        sum += GetLightingForLight(surface, brdf, light);
+    }
+    results[id.x] = vec4<f32>(sum, 0.0);
+}
+
+@compute @workgroup_size(64)
+fn TimeAllLights(@builtin(global_invocation_id) id: vec3<u32>) {
+    let c = cases[id.x % arrayLength(&cases)];
+    var surface = CaseSurface(c);
+    let brdf = GetBRDF(surface, false);
+    var sum = vec3<f32>(0.0);
+    for (var k = 0u; k < EVALUATIONS; k++) {
+        surface.viewDirection = SafeNormalize(surface.viewDirection + vec3<f32>(1e-3, 0.0, 0.0));
+        sum += GetLighting(surface, brdf);
+    }
+    results[id.x] = vec4<f32>(sum, 0.0);
+}
+"#;
+
+const EVALUATIONS: u32 = 256;
+
+/// Invocations per timing dispatch: enough to fill a CPU rasteriser by default; a large GPU needs
+/// more to be busy (`KILN_ACCURACY_INVOCATIONS`, docs/accuracy.md).
+fn timing_invocations() -> u32 {
+    // One dimension of workgroups: WebGPU allows at most 65,535 of them.
+    let most = 65_535 * 64;
+    std::env::var("KILN_ACCURACY_INVOCATIONS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(64 * 1024)
+        .min(most)
+}
+
+/// The WGSL kiln emits for one entry point of the harness with these keywords.
+pub fn harness_wgsl(keywords: &[&str], entry: &str) -> Result<(String, Bindings), String> {
+    let mut store = SourceStore::new();
+    let file = store.add("accuracy-harness.wgsl", HARNESS);
+    let mut includes = Includes::new(IncludeConfig::new(Vec::new()));
+    let (program, found) = includes.load_program(&mut store, &[Span::new(file, 0..HARNESS.len())]);
+    let out = preprocess(&includes, &store, &program, keywords, Stage::Fragment);
+    let problems: Vec<_> = found.into_iter().chain(out.diagnostics.iter().cloned()).collect();
+    if crate::diagnostics::has_errors(&problems) {
+        return Err(crate::diagnostics::render_plain(&store, &problems));
+    }
+    crate::compile::compile_compute(&out, &store, entry, naga::valid::Capabilities::empty())
+        .map_err(|errors| crate::diagnostics::render_plain(&store, &errors))
+}
+
+fn case_bytes(cases: &[Case]) -> Vec<u8> {
+    let mut bytes = Vec::with_capacity(cases.len() * 96);
+    for c in cases {
+        let s = &c.surface;
+        let v4 = |v: [f64; 3], w: f64| [v[0], v[1], v[2], w];
+        let values = [
+            v4(s.normal, 0.0),
+            v4(s.view_direction, 0.0),
+            v4(c.light.direction, 0.0),
+            v4(c.light.color, 0.0),
+            v4(s.color, s.alpha),
+            [s.metallic, s.smoothness, if c.premultiply { 1.0 } else { 0.0 }, 0.0],
+        ];
+        for value in values.iter().flatten() {
+            bytes.extend((*value as f32).to_le_bytes());
+        }
+    }
+    bytes
+}
+
+/// `_CustomLight`: count at 0, colours at 16, directions at 80, 144 bytes.
+fn light_bytes(lights: &[crate::reference::Light], count: i32) -> Vec<u8> {
+    let mut bytes = vec![0u8; 144];
+    bytes[0..4].copy_from_slice(&count.to_le_bytes());
+    for (i, light) in lights.iter().take(4).enumerate() {
+        for k in 0..3 {
+            let at = 16 + i * 16 + k * 4;
+            bytes[at..at + 4].copy_from_slice(&(light.color[k] as f32).to_le_bytes());
+            let at = 80 + i * 16 + k * 4;
+            bytes[at..at + 4].copy_from_slice(&(light.direction[k] as f32).to_le_bytes());
+        }
+    }
+    bytes
+}
+
+struct Harness<'a> {
+    device: &'a wgpu::Device,
+    queue: &'a wgpu::Queue,
+    timestamps: bool,
+}
+
+impl Harness<'_> {
+    fn pipeline(
+        &self,
+        keywords: &[&str],
+        entry: &str,
+    ) -> Result<(wgpu::ComputePipeline, Option<(u32, u32)>), String> {
+        let (wgsl, bound) = harness_wgsl(keywords, entry)?;
+        let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(entry),
+            source: wgpu::ShaderSource::Wgsl(wgsl.into()),
+        });
+        let pipeline = self.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(entry),
+            layout: None,
+            module: &module,
+            entry_point: Some(entry),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        Ok((pipeline, bound.get("_CustomLight").copied()))
+    }
+
+    /// Runs `pipeline` over `invocations`, returning the results and the GPU time in ns (from
+    /// timestamp queries when the adapter has them, else from the CPU around the submission).
+    fn dispatch(
+        &self,
+        pipeline: &(wgpu::ComputePipeline, Option<(u32, u32)>),
+        cases: &[Case],
+        light: Option<&[u8]>,
+        invocations: u32,
+    ) -> (Vec<[f32; 3]>, f64) {
+        let device = self.device;
+        let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+            label: Some("cases"),
+            contents: &case_bytes(cases),
+            usage: wgpu::BufferUsages::STORAGE,
+        });
+        let size = u64::from(invocations) * 16;
+        let output = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("results"),
+            size,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
+        let readback = device.create_buffer(&wgpu::BufferDescriptor {
+            label: None,
+            size,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let (pipeline, light_slot) = pipeline;
+        let io = device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: None,
+            layout: &pipeline.get_bind_group_layout(3),
+            entries: &[
+                wgpu::BindGroupEntry { binding: 0, resource: input.as_entire_binding() },
+                wgpu::BindGroupEntry { binding: 1, resource: output.as_entire_binding() },
+            ],
+        });
+        let light_group = light_slot.zip(light).map(|((group, binding), bytes)| {
+            let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("_CustomLight"),
+                contents: bytes,
+                usage: wgpu::BufferUsages::UNIFORM,
+            });
+            let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: None,
+                layout: &pipeline.get_bind_group_layout(group),
+                entries: &[wgpu::BindGroupEntry { binding, resource: buffer.as_entire_binding() }],
+            });
+            (group, bind_group)
+        });
+        let queries = self.timestamps.then(|| {
+            let set = device.create_query_set(&wgpu::QuerySetDescriptor {
+                label: None,
+                ty: wgpu::QueryType::Timestamp,
+                count: 2,
+            });
+            let resolve = device.create_buffer(&wgpu::BufferDescriptor {
+                label: None,
+                size: 16,
+                usage: wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC,
+                mapped_at_creation: false,
+            });
+            let read = device.create_buffer(&wgpu::BufferDescriptor {
+                label: None,
+                size: 16,
+                usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+                mapped_at_creation: false,
+            });
+            (set, resolve, read)
+        });
+        let mut encoder = device.create_command_encoder(&Default::default());
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: None,
+                timestamp_writes: queries.as_ref().map(|(set, _, _)| wgpu::ComputePassTimestampWrites {
+                    query_set: set,
+                    beginning_of_pass_write_index: Some(0),
+                    end_of_pass_write_index: Some(1),
+                }),
+            });
+            pass.set_pipeline(pipeline);
+            pass.set_bind_group(3, &io, &[]);
+            if let Some((group, bind_group)) = &light_group {
+                pass.set_bind_group(*group, bind_group, &[]);
+            }
+            pass.dispatch_workgroups(invocations.div_ceil(64), 1, 1);
+        }
+        encoder.copy_buffer_to_buffer(&output, 0, &readback, 0, size);
+        if let Some((set, resolve, read)) = &queries {
+            encoder.resolve_query_set(set, 0..2, resolve, 0);
+            encoder.copy_buffer_to_buffer(resolve, 0, read, 0, 16);
+        }
+        let started = std::time::Instant::now();
+        self.queue.submit([encoder.finish()]);
+        readback.map_async(wgpu::MapMode::Read, .., |_| {});
+        if let Some((_, _, read)) = &queries {
+            read.map_async(wgpu::MapMode::Read, .., |_| {});
+        }
+        let _ = device.poll(wgpu::PollType::wait_indefinitely());
+        let wall = started.elapsed().as_nanos() as f64;
+        let nanoseconds = match &queries {
+            Some((_, _, read)) => match read.get_mapped_range(..) {
+                Ok(bytes) => {
+                    let stamp =
+                        |at: usize| u64::from_le_bytes(bytes[at..at + 8].try_into().unwrap_or_default());
+                    (stamp(8).saturating_sub(stamp(0))) as f64 * f64::from(self.queue.get_timestamp_period())
+                }
+                Err(_) => wall,
+            },
+            None => wall,
+        };
+        let results = match readback.get_mapped_range(..) {
+            Ok(bytes) => bytes
+                .chunks_exact(16)
+                .map(|c| [0, 4, 8].map(|o| f32::from_le_bytes(c[o..o + 4].try_into().unwrap_or_default())))
+                .collect(),
+            Err(_) => Vec::new(),
+        };
+        (results, nanoseconds)
+    }
+
+    /// Median time per evaluation of a timing kernel, over several dispatches.
+    fn time(
+        &self,
+        keywords: &[&str],
+        entry: &str,
+        cases: &[Case],
+        light: Option<&[u8]>,
+    ) -> Result<f64, String> {
+        let pipeline = self.pipeline(keywords, entry)?;
+        let invocations = timing_invocations();
+        let _ = self.dispatch(&pipeline, cases, light, invocations);
+        let mut times: Vec<f64> =
+            (0..7).map(|_| self.dispatch(&pipeline, cases, light, invocations).1).collect();
+        times.sort_by(f64::total_cmp);
+        Ok(times[3] / (f64::from(invocations) * f64::from(EVALUATIONS)))
+    }
+}
+
+/// Requests a device with timestamp queries when the adapter has them.
+pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String, bool), String> {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle());
+    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+        power_preference: wgpu::PowerPreference::HighPerformance,
+        ..Default::default()
+    }))
+    .map_err(|e| format!("no GPU adapter ({e})"))?;
+    let info = adapter.get_info();
+    let timestamps = adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY);
+    let required_features =
+        if timestamps { wgpu::Features::TIMESTAMP_QUERY } else { wgpu::Features::empty() };
+    let (device, queue) = pollster::block_on(
+        adapter.request_device(&wgpu::DeviceDescriptor { required_features, ..Default::default() }),
+    )
+    .map_err(|e| format!("no device: {e}"))?;
+    Ok((device, queue, format!("{} ({:?}, {:?})", info.name, info.device_type, info.backend), timestamps))
+}
+
+/// Every formulation on every hard-case set, and the timings. The last value says how the times
+/// were taken.
+pub fn run(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    timestamps: bool,
+) -> Result<(Vec<Row>, Vec<Timing>, String), String> {
+    let harness = Harness { device, queue, timestamps };
+    let sets = hard_cases();
+    let mut rows = Vec::new();
+    for formulation in Formulation::ALL {
+        let one = harness.pipeline(formulation.keywords(), "OneLight")?;
+        let all = harness.pipeline(formulation.keywords(), "AllLights")?;
+        for set in &sets {
+            let (gpu, references): (Vec<[f32; 3]>, Vec<[f64; 3]>) = match &set.lights {
+                None => {
+                    let (results, _) = harness.dispatch(&one, &set.cases, None, set.cases.len() as u32);
+                    (results, set.cases.iter().map(|c| reference(c, formulation)).collect())
+                }
+                Some((lights, counts)) => set
+                    .cases
+                    .iter()
+                    .zip(counts)
+                    .map(|(case, &count)| {
+                        let bytes = light_bytes(lights, count);
+                        let (results, _) =
+                            harness.dispatch(&all, std::slice::from_ref(case), Some(&bytes), 1);
+                        (results[0], reference_lights(case, lights, count, formulation))
+                    })
+                    .unzip(),
+            };
+            rows.push(Row {
+                formulation: formulation.name(),
+                set: set.name.clone(),
+                stats: stats(&gpu, &references),
+            });
+        }
+    }
+    // Timing on ordinary inputs (the metallic set: random directions, both metal kinds).
+    let ordinary = &sets.iter().find(|s| s.name.starts_with("metallic")).ok_or("no ordinary set")?.cases;
+    let light_set = sets.iter().find_map(|s| s.lights.as_ref()).ok_or("no light set")?;
+    let one_light = light_bytes(&light_set.0, 1);
+    let four_lights = light_bytes(&light_set.0, 4);
+    let mut timings = Vec::new();
+    for formulation in Formulation::ALL {
+        timings.push(Timing {
+            what: format!("{}: one light (GetLightingForLight)", formulation.name()),
+            nanoseconds_per_evaluation: harness.time(
+                formulation.keywords(),
+                "TimeOneLight",
+                ordinary,
+                None,
+            )?,
+        });
+    }
+    for (what, keywords, bytes) in [
+        ("stable: GetLighting loop, 4 lights", vec!["_SPECULAR_STABLE"], &four_lights),
+        ("stable: GetLighting loop, 1 light", vec!["_SPECULAR_STABLE"], &one_light),
+        (
+            "stable: _SINGLE_DIRECTIONAL_LIGHT, 1 light",
+            vec!["_SPECULAR_STABLE", "_SINGLE_DIRECTIONAL_LIGHT"],
+            &one_light,
+        ),
+    ] {
+        timings.push(Timing {
+            what: what.to_string(),
+            nanoseconds_per_evaluation: harness.time(&keywords, "TimeAllLights", ordinary, Some(bytes))?,
+        });
+    }
+    let method = format!(
+        "Times: {} over {} invocations x {EVALUATIONS} evaluations each (inputs derived in registers, one write per invocation), median of 7 dispatches.",
+        if timestamps {
+            "GPU timestamp queries around the compute pass"
+        } else {
+            "CPU wall time around submit and wait (no timestamp queries on this adapter)"
+        },
+        timing_invocations()
+    );
+    Ok((rows, timings, method))
+}

@@ -1,0 +1,342 @@
+//! Shader numerics, measured: generated hard-case inputs, the f64 reference of each formulation
+//! the library offers, the error statistics (relative error, ULPs, NaN/Inf), and (with the `gpu`
+//! feature) a harness that runs the compiled library functions on a real adapter.
+
+#[cfg(feature = "gpu")]
+pub mod gpu;
+
+use crate::reference::{self as r, Brdf, Light, Surface};
+use std::fmt::Write as _;
+
+/// A way the library computes the specular term, chosen by keyword.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Formulation {
+    /// The seed's minimal Cook-Torrance exactly as written.
+    Seed,
+    /// `_SPECULAR_STABLE`: the same model without cancellation, roughness floored.
+    Stable,
+}
+
+impl Formulation {
+    pub const ALL: [Formulation; 2] = [Formulation::Seed, Formulation::Stable];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Formulation::Seed => "seed",
+            Formulation::Stable => "stable",
+        }
+    }
+
+    /// The keywords that select it.
+    pub fn keywords(self) -> &'static [&'static str] {
+        match self {
+            Formulation::Seed => &[],
+            Formulation::Stable => &["_SPECULAR_STABLE"],
+        }
+    }
+}
+
+/// One evaluation: a surface lit by one light.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Case {
+    pub surface: Surface,
+    pub light: Light,
+    pub premultiply: bool,
+}
+
+/// A generated set of hard cases.
+#[derive(Debug, Clone)]
+pub struct CaseSet {
+    pub name: String,
+    pub cases: Vec<Case>,
+    /// For the light-count set: lights in `_CustomLight` and the count to upload per case.
+    pub lights: Option<(Vec<Light>, Vec<i32>)>,
+}
+
+/// Rounds to what an f32 input holds, so that input rounding is not counted as error.
+fn f32_exact(x: f64) -> f64 {
+    f64::from(x as f32)
+}
+
+fn round_case(case: Case) -> Case {
+    let v = |v: r::Vec3| v.map(f32_exact);
+    let s = case.surface;
+    Case {
+        surface: Surface {
+            normal: v(s.normal),
+            view_direction: v(s.view_direction),
+            color: v(s.color),
+            alpha: f32_exact(s.alpha),
+            metallic: f32_exact(s.metallic),
+            smoothness: f32_exact(s.smoothness),
+        },
+        light: Light { color: v(case.light.color), direction: v(case.light.direction) },
+        premultiply: case.premultiply,
+    }
+}
+
+/// A deterministic generator (xorshift), so the sets are the same on every machine.
+struct Random(u64);
+
+impl Random {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    fn direction(&mut self) -> r::Vec3 {
+        loop {
+            let v = [self.next() * 2.0 - 1.0, self.next() * 2.0 - 1.0, self.next() * 2.0 - 1.0];
+            let len = r::dot(v, v).sqrt();
+            if len > 0.1 && len <= 1.0 {
+                return r::scale(v, 1.0 / len);
+            }
+        }
+    }
+
+    /// A direction above the surface (y > 0).
+    fn upper_direction(&mut self) -> r::Vec3 {
+        let d = self.direction();
+        let up = [d[0], d[1].abs().max(0.05), d[2]];
+        r::scale(up, 1.0 / r::dot(up, up).sqrt())
+    }
+}
+
+fn surface(normal: r::Vec3, view: r::Vec3, smoothness: f64, metallic: f64) -> Surface {
+    Surface { normal, view_direction: view, color: [0.9, 0.6, 0.3], alpha: 1.0, metallic, smoothness }
+}
+
+const WHITE: r::Vec3 = [1.0, 1.0, 1.0];
+
+/// Every hard-case set, generated (never hand-picked).
+pub fn hard_cases() -> Vec<CaseSet> {
+    let mut sets = Vec::new();
+    let set = |name: String, cases: Vec<Case>| CaseSet {
+        name,
+        cases: cases.into_iter().map(round_case).collect(),
+        lights: None,
+    };
+    let up = [0.0, 1.0, 0.0];
+    // n.h -> 1: the light approaches the mirror direction of the view, from 1 to 1e-7 radians.
+    for smoothness in [0.9, 0.95, 0.99, 0.999, 1.0] {
+        let a: f64 = 0.5;
+        let view = [a.sin(), a.cos(), 0.0];
+        let cases = (0..64)
+            .map(|k| {
+                let delta = 10f64.powf(-(k as f64) * 7.0 / 63.0);
+                let b = a + delta;
+                let light = Light { color: WHITE, direction: [-b.sin(), b.cos(), 0.0] };
+                Case { surface: surface(up, view, smoothness, 0.0), light, premultiply: false }
+            })
+            .collect();
+        sets.push(set(format!("n.h -> 1, smoothness {smoothness}"), cases));
+    }
+    let mut random = Random(0x9e37_79b9_7f4a_7c15);
+    // L = -V: the half vector is zero.
+    let cases = (0..64)
+        .map(|_| {
+            let view = random.direction();
+            let light = Light { color: WHITE, direction: r::scale(view, -1.0) };
+            Case {
+                surface: surface(random.direction(), view, random.next(), random.next()),
+                light,
+                premultiply: false,
+            }
+        })
+        .collect();
+    sets.push(set("L = -V".into(), cases));
+    // Zero-length and denormal normals.
+    let normals: [r::Vec3; 6] = [
+        [0.0; 3],
+        [1e-40, 0.0, 0.0],
+        [0.0, 1e-39, 0.0],
+        [1e-20, 1e-20, 0.0],
+        [0.0, 1e-45, 0.0],
+        [1e-38, 1e-38, 1e-38],
+    ];
+    let cases = (0..64)
+        .map(|k| {
+            let view = random.upper_direction();
+            let light = Light { color: WHITE, direction: random.upper_direction() };
+            Case { surface: surface(normals[k % normals.len()], view, 0.5, 0.0), light, premultiply: false }
+        })
+        .collect();
+    sets.push(set("zero and denormal normals".into(), cases));
+    // Grazing n.l and n.v: elevations from 0.1 down to 1e-7 radians.
+    let cases = (0..64)
+        .map(|k| {
+            let e = 10f64.powf(-1.0 - (k as f64) * 6.0 / 63.0);
+            let light = Light { color: WHITE, direction: [e.cos(), e.sin(), 0.0] };
+            let view = [-(e * 0.5).cos() * 0.6, (e * 0.5).sin(), (e * 0.5).cos() * 0.8];
+            Case {
+                surface: surface(up, r::scale(view, 1.0 / r::dot(view, view).sqrt()), 0.8, 0.5),
+                light,
+                premultiply: false,
+            }
+        })
+        .collect();
+    sets.push(set("grazing n.l and n.v".into(), cases));
+    // HDR light colours from 1e-6 to 1e5.
+    let cases = (0..64)
+        .map(|k| {
+            let intensity = 10f64.powf(-6.0 + (k as f64) * 11.0 / 63.0);
+            let light = Light {
+                color: [intensity, intensity * 0.5, intensity * 0.25],
+                direction: random.upper_direction(),
+            };
+            Case {
+                surface: surface(up, random.upper_direction(), random.next(), random.next()),
+                light,
+                premultiply: false,
+            }
+        })
+        .collect();
+    sets.push(set("light colours 1e-6 to 1e5".into(), cases));
+    // Metallic 0 and 1.
+    let cases = (0..64)
+        .map(|k| {
+            let light = Light { color: WHITE, direction: random.upper_direction() };
+            let metallic = (k % 2) as f64;
+            Case {
+                surface: surface(up, random.upper_direction(), random.next(), metallic),
+                light,
+                premultiply: false,
+            }
+        })
+        .collect();
+    sets.push(set("metallic 0 and 1".into(), cases));
+    // Alpha 0, premultiplied.
+    let cases = (0..64)
+        .map(|_| {
+            let light = Light { color: WHITE, direction: random.upper_direction() };
+            let mut s = surface(up, random.upper_direction(), random.next(), random.next());
+            s.alpha = 0.0;
+            Case { surface: s, light, premultiply: true }
+        })
+        .collect();
+    sets.push(set("alpha 0 with premultiply".into(), cases));
+    // Light counts 0..4 and one above the maximum, through `GetLighting` and `_CustomLight`.
+    let lights: Vec<Light> = (0..4)
+        .map(|i| Light { color: [1.0, 0.8 - 0.1 * i as f64, 0.5], direction: random.upper_direction() })
+        .map(|l| Light { color: l.color.map(f32_exact), direction: l.direction.map(f32_exact) })
+        .collect();
+    let counts: Vec<i32> = (0..6).collect();
+    let cases = counts
+        .iter()
+        .map(|_| Case {
+            surface: surface(up, random.upper_direction(), 0.7, 0.3),
+            light: lights[0],
+            premultiply: false,
+        })
+        .map(round_case)
+        .collect();
+    sets.push(CaseSet { name: "light counts 0 to 5".into(), cases, lights: Some((lights, counts)) });
+    sets
+}
+
+/// The f64 reference of what a formulation computes for one case (lit colour of one light).
+pub fn reference(case: &Case, formulation: Formulation) -> r::Vec3 {
+    let brdf: Brdf = r::get_brdf(&case.surface, case.premultiply);
+    let specular = match formulation {
+        Formulation::Seed => r::specular_strength(&case.surface, &brdf, &case.light),
+        Formulation::Stable => r::specular_strength_stable(&case.surface, &brdf, &case.light),
+    };
+    let direct = r::add(r::scale(brdf.specular, specular), brdf.diffuse);
+    r::mul(r::incoming_light(&case.surface, &case.light), direct)
+}
+
+/// The reference of the light-count set: `GetLighting` over the first `count` lights (at most 4).
+pub fn reference_lights(case: &Case, lights: &[Light], count: i32, formulation: Formulation) -> r::Vec3 {
+    let used = lights.iter().take(count.clamp(0, r::MAX_DIRECTIONAL_LIGHT_COUNT as i32) as usize);
+    used.fold([0.0; 3], |sum, light| r::add(sum, reference(&Case { light: *light, ..*case }, formulation)))
+}
+
+/// Results smaller than this are compared absolutely: f32 denormals (below 1.2e-38) are flushed to
+/// zero by GPUs, which is not an error of the formula.
+pub const ABSOLUTE_FLOOR: f64 = 1e-30;
+
+/// Error statistics of one formulation on one set.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Stats {
+    pub cases: usize,
+    /// Normwise relative error: max over components of |gpu - ref| / max(|ref|, 1e-30), over cases.
+    pub max_relative: f64,
+    pub mean_relative: f64,
+    /// Distance in units in the last place between the GPU's f32 and the reference rounded to f32.
+    pub max_ulps: u64,
+    pub nan_or_inf: usize,
+}
+
+fn ulps(a: f32, b: f32) -> u64 {
+    let key = |x: f32| {
+        let bits = x.to_bits() as i64;
+        if bits < 0 { i64::from(i32::MIN) - bits } else { bits }
+    };
+    if a == b { 0 } else { (key(a) - key(b)).unsigned_abs() }
+}
+
+/// Compares GPU results with references.
+pub fn stats(gpu: &[[f32; 3]], references: &[r::Vec3]) -> Stats {
+    let mut stats =
+        Stats { cases: gpu.len(), max_relative: 0.0, mean_relative: 0.0, max_ulps: 0, nan_or_inf: 0 };
+    let mut sum = 0.0;
+    for (g, want) in gpu.iter().zip(references) {
+        if g.iter().any(|x| !x.is_finite()) {
+            stats.nan_or_inf += 1;
+            continue;
+        }
+        let scale = want.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let difference = (0..3).fold(0.0f64, |m, k| m.max((f64::from(g[k]) - want[k]).abs()));
+        // Below ABSOLUTE_FLOOR a difference is not a relative error: GPUs flush denormals.
+        let relative = difference / scale.max(ABSOLUTE_FLOOR);
+        stats.max_relative = stats.max_relative.max(relative);
+        sum += relative;
+        for k in 0..3 {
+            stats.max_ulps = stats.max_ulps.max(ulps(g[k], want[k] as f32));
+        }
+    }
+    let finite = stats.cases - stats.nan_or_inf;
+    stats.mean_relative = if finite > 0 { sum / finite as f64 } else { 0.0 };
+    stats
+}
+
+/// One line of the speed-against-error table.
+#[derive(Debug, Clone)]
+pub struct Row {
+    pub formulation: &'static str,
+    pub set: String,
+    pub stats: Stats,
+}
+
+/// A timing of one kernel.
+#[derive(Debug, Clone)]
+pub struct Timing {
+    pub what: String,
+    pub nanoseconds_per_evaluation: f64,
+}
+
+/// The report `kiln accuracy` prints.
+pub fn render(adapter: &str, rows: &[Row], timings: &[Timing], method: &str) -> String {
+    let mut out = format!("adapter: {adapter}\n\n");
+    let _ = writeln!(
+        out,
+        "{:<10} {:<30} {:>5} {:>12} {:>12} {:>10} {:>8}",
+        "formula", "hard cases", "n", "max rel", "mean rel", "max ulp", "NaN/Inf"
+    );
+    for row in rows {
+        let s = &row.stats;
+        let _ = writeln!(
+            out,
+            "{:<10} {:<30} {:>5} {:>12.3e} {:>12.3e} {:>10} {:>8}",
+            row.formulation, row.set, s.cases, s.max_relative, s.mean_relative, s.max_ulps, s.nan_or_inf
+        );
+    }
+    let _ = writeln!(out, "\n{:<58} {:>12}", "GPU time per evaluation", "ns");
+    for timing in timings {
+        let _ = writeln!(out, "{:<58} {:>12.4}", timing.what, timing.nanoseconds_per_evaluation);
+    }
+    let _ = writeln!(out, "\n{method}");
+    out
+}
