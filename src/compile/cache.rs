@@ -54,17 +54,26 @@ impl Cache {
         self.output.join(".cache").join(kind).join(format!("{key}.json"))
     }
 
+    /// Entries are `HASH\nJSON`: an unreadable, truncated or altered entry (the hash of its JSON
+    /// no longer matches) is a miss, and the work is redone, never trusted.
     fn read<T: for<'de> Deserialize<'de>>(&self, kind: &str, key: &str) -> Option<T> {
-        // An unreadable or damaged entry is a miss: the work is redone, never trusted.
         let bytes = std::fs::read(self.entry(kind, key)).ok()?;
-        serde_json::from_slice(&bytes).ok()
+        let split = bytes.iter().position(|&b| b == b'\n')?;
+        let (recorded, json) = (&bytes[..split], &bytes[split + 1..]);
+        if recorded != hash(json).as_bytes() {
+            return None;
+        }
+        serde_json::from_slice(json).ok()
     }
 
     fn put<T: Serialize>(&self, kind: &str, key: &str, value: &T) -> std::io::Result<()> {
         if !self.write {
             return Ok(());
         }
-        let bytes = serde_json::to_vec(value).map_err(std::io::Error::other)?;
+        let json = serde_json::to_vec(value).map_err(std::io::Error::other)?;
+        let mut bytes = hash(&json).into_bytes();
+        bytes.push(b'\n');
+        bytes.extend(json);
         write_atomically(&self.entry(kind, key), &bytes)
     }
 
@@ -123,7 +132,9 @@ impl Cache {
         let path = format!("modules/{hash}.{extension}");
         let full = self.output.join(&path);
         let size = bytes.len() as u64;
-        let present = std::fs::metadata(&full).is_ok_and(|m| m.len() == size);
+        // A file already there is kept only if it is intact.
+        let present = std::fs::metadata(&full).is_ok_and(|m| m.len() == size)
+            && std::fs::read(&full).is_ok_and(|existing| existing == bytes);
         let written = if self.write && !present {
             write_atomically(&full, bytes)?;
             size

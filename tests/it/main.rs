@@ -6,6 +6,7 @@ mod bad;
 mod build;
 mod cli;
 mod gpu;
+mod integrity;
 mod list;
 mod materials;
 mod parse;

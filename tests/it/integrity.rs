@@ -1,0 +1,129 @@
+//! Output integrity: a build killed half way leaves the previous manifest and its files intact
+//! and the next build finishes; damaged cache entries and module files are detected by their
+//! hashes and rebuilt, never used.
+
+use crate::support::root;
+use kiln::compile::VariantSelection;
+use kiln::project::{BuildMode, build_project};
+use kiln::reflect::manifest::Manifest;
+use kiln::source::SourceStore;
+use std::path::Path;
+use std::time::Duration;
+
+/// A project with one shader of eight fragment keyword sets and `materials` materials.
+fn synthetic_project(dir: &Path, materials: usize) {
+    let shaders = root().join("fixtures/project/shaders");
+    std::fs::create_dir_all(dir.join("materials")).expect("mkdir");
+    let pass = std::fs::read_to_string(shaders.join("LitPass.wgsl")).expect("LitPass");
+    let tweaks: String = (0..8).map(|k| format!("#if defined(_F{k})\n    color = color * 1.0{k};\n#endif\n")).collect();
+    let pass = pass.replace(
+        "    let color = GetLighting(surface, brdf);\n",
+        &format!("    var color = GetLighting(surface, brdf) * TINT;\n{tweaks}"),
+    );
+    std::fs::write(dir.join("SynthPass.wgsl"), pass).expect("write");
+    std::fs::write(dir.join("Tint.wgsl"), "#define TINT 1.0\n").expect("write");
+    let pragmas: String = (0..8).map(|k| format!("            #pragma shader_feature_fragment _ _F{k}\n")).collect();
+    let shader = std::fs::read_to_string(shaders.join("Lit.shader"))
+        .expect("Lit")
+        .replace("#pragma shader_feature _PREMULTIPLY_ALPHA\n", &format!("#pragma shader_feature _PREMULTIPLY_ALPHA\n{pragmas}"))
+        .replace("#include \"LitPass.wgsl\"", "#include \"Tint.wgsl\"\n            #include \"SynthPass.wgsl\"");
+    std::fs::write(dir.join("Synth.shader"), shader).expect("write");
+    for m in 0..materials {
+        let keywords: Vec<String> = (0..8).filter(|b| m & (1 << b) != 0).map(|b| format!("\"_F{b}\"")).collect();
+        let text = format!("shader = \"Custom RP/Lit\"\nkeywords = [{}]\n", keywords.join(", "));
+        std::fs::write(dir.join(format!("materials/M{m:03}.mat")), text).expect("write");
+    }
+}
+
+fn build(project: &Path, output: &Path) -> kiln::compile::BuildSummary {
+    let mut store = SourceStore::new();
+    let mode = BuildMode { write: true, output: Some(output.to_path_buf()), unused_shaders: VariantSelection::Used, threads: None };
+    let (result, mut diagnostics) = build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
+    diagnostics.extend(result.diagnostics);
+    assert!(diagnostics.is_empty(), "{}", kiln::diagnostics::render_plain(&store, &diagnostics));
+    result.summary
+}
+
+/// The manifest in `output`, with every file it names checked against its hash.
+fn verified_manifest(output: &Path) -> Manifest {
+    let manifest: Manifest =
+        serde_json::from_slice(&std::fs::read(output.join("manifest.json")).expect("manifest")).expect("manifest parses");
+    for variant in manifest.shaders.iter().flat_map(|s| &s.passes).flat_map(|p| &p.variants) {
+        for stage in [&variant.vertex, &variant.fragment].into_iter().flatten() {
+            for file in [&stage.wgsl, &stage.spirv].into_iter().flatten() {
+                let bytes = std::fs::read(output.join(&file.path)).expect("module file");
+                assert_eq!(&blake3::hash(&bytes).to_hex()[..32], file.hash, "{} is intact", file.path);
+            }
+        }
+    }
+    manifest
+}
+
+#[test]
+fn a_killed_build_leaves_the_previous_outputs_and_the_next_build_finishes() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (project, output) = (dir.path().join("project"), dir.path().join("out"));
+    synthetic_project(&project, 160);
+    build(&project, &output);
+    let before = std::fs::read(output.join("manifest.json")).expect("manifest");
+    for (round, delay) in [30u64, 120, 400].into_iter().enumerate() {
+        // Every round changes what must be compiled, then kills the build part of the way in.
+        std::fs::write(project.join("Tint.wgsl"), format!("#define TINT 1.{round}\n")).expect("write");
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kiln"))
+            .args(["build", project.to_str().expect("utf-8"), "--output", output.to_str().expect("utf-8")])
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("kiln starts");
+        std::thread::sleep(Duration::from_millis(delay));
+        let _ = child.kill();
+        let _ = child.wait();
+        // Either the old manifest or a complete new one, and every file it names is intact.
+        let now = std::fs::read(output.join("manifest.json")).expect("a manifest is always there");
+        verified_manifest(&output);
+        if now != before {
+            assert!(serde_json::from_slice::<Manifest>(&now).is_ok(), "a new manifest is only ever a whole one");
+        }
+        let summary = build(&project, &output);
+        assert_eq!(summary.variants, 160);
+        verified_manifest(&output);
+    }
+}
+
+#[test]
+fn damaged_cache_entries_and_modules_are_rebuilt_never_used() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = dir.path().join("out");
+    let first = build(&root().join("fixtures/project"), &output);
+    let manifest = verified_manifest(&output);
+    let files: Vec<String> = manifest
+        .shaders
+        .iter()
+        .flat_map(|s| &s.passes)
+        .flat_map(|p| &p.variants)
+        .flat_map(|v| [&v.vertex, &v.fragment])
+        .flatten()
+        .flat_map(|s| [&s.wgsl, &s.spirv])
+        .flatten()
+        .map(|f| f.path.clone())
+        .collect();
+    // Flip bytes in one module (same size), truncate another, and damage every pass index.
+    let flipped = output.join(&files[0]);
+    let mut bytes = std::fs::read(&flipped).expect("read");
+    bytes[10] ^= 0x55;
+    std::fs::write(&flipped, &bytes).expect("write");
+    let truncated = output.join(&files[files.len() - 1]);
+    let bytes = std::fs::read(&truncated).expect("read");
+    std::fs::write(&truncated, &bytes[..bytes.len() / 2]).expect("write");
+    for entry in std::fs::read_dir(output.join(".cache/pass")).expect("pass index").flatten() {
+        let mut text = std::fs::read(entry.path()).expect("read");
+        let last = text.len() - 2;
+        text[last] ^= 0x01;
+        std::fs::write(entry.path(), text).expect("write");
+    }
+    let second = build(&root().join("fixtures/project"), &output);
+    assert_eq!(second.compiled, first.compiled, "nothing damaged was trusted: everything compiled again");
+    verified_manifest(&output);
+    // And with everything repaired, a third build is a no-op again.
+    let third = build(&root().join("fixtures/project"), &output);
+    assert_eq!(third.compiled, 0);
+}
