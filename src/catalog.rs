@@ -11,6 +11,13 @@ use crate::shaderlab::parse_shader;
 use crate::shaderlab::pragma::{PragmaSource, ProgramPragmas, collect_pragmas};
 use crate::source::{FileId, SourceStore};
 
+/// More keywords than this in one pass is refused (each is a bit of every variant key, and no
+/// real pass comes close).
+pub const MAX_KEYWORDS_PER_PASS: usize = 256;
+
+/// An always-included shader whose pass has more variants than this is refused, with the count.
+pub const MAX_ALWAYS_INCLUDED_VARIANTS: u128 = 65_536;
+
 /// The files a job looks at.
 #[derive(Debug, Clone, Default)]
 pub struct CatalogInput {
@@ -130,6 +137,23 @@ pub fn catalog(
             .collect();
         let users: Vec<usize> = (0..materials.len()).filter(|&m| materials[m].shader == index).collect();
         for program in shader.passes.iter_mut().filter_map(|p| p.program.as_mut()) {
+            let possible = program.keywords.possible();
+            if everything && possible.is_none_or(|n| n > MAX_ALWAYS_INCLUDED_VARIANTS) {
+                let count = possible.map_or("more than 2^128".to_string(), |n| n.to_string());
+                let span = program.pragmas.keyword_sets.first().map_or(shader.shader.name.span, |s| s.span);
+                diagnostics.push(
+                    Diagnostic::error(
+                        "K0411",
+                        format!("`{}` is always included but has {count} variants", shader.shader.name.value),
+                    )
+                    .at(span, "its keyword sets multiply to that many")
+                    .note(format!(
+                        "an always-included pass may have at most {MAX_ALWAYS_INCLUDED_VARIANTS} variants"
+                    ))
+                    .help("remove it from `always_include` and let materials choose its variants"),
+                );
+                continue;
+            }
             program.variants = program.keywords.enumerate(&keywords, everything);
             // Point at materials of the catalog, not of this shader's list.
             for variant in &mut program.variants {
@@ -227,6 +251,26 @@ fn load_program(
         (pragmas, None)
     };
     let keywords = PassKeywords::new(pragmas.variant_sets());
+    if keywords.names().len() > MAX_KEYWORDS_PER_PASS {
+        // Point at the first keyword over the limit.
+        let span = pragmas
+            .keyword_sets
+            .iter()
+            .flat_map(|s| s.options.iter().filter(|o| o.keyword.is_some()))
+            .nth(MAX_KEYWORDS_PER_PASS)
+            .map_or(programs[0].span, |o| o.span);
+        diagnostics.push(
+            Diagnostic::error("K0212", format!("the pass declares {} keywords", keywords.names().len()))
+                .at(
+                    span,
+                    format!(
+                        "keyword {} of a pass that may have {MAX_KEYWORDS_PER_PASS}",
+                        MAX_KEYWORDS_PER_PASS + 1
+                    ),
+                )
+                .help("split the pass, or make run-time choices `dynamic_branch` keywords"),
+        );
+    }
     CatalogProgram { language, pragmas, wgsl, keywords, variants: Vec::new() }
 }
 

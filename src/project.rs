@@ -301,6 +301,9 @@ pub fn load_files(store: &mut SourceStore, paths: &[PathBuf]) -> (Vec<FileId>, V
             Err(error @ LoadError::Io { .. }) => {
                 diagnostics.push(Diagnostic::error("K0002", error.to_string()))
             }
+            Err(error @ LoadError::TooLarge { .. }) => {
+                diagnostics.push(Diagnostic::error("K0004", error.to_string()))
+            }
         }
     }
     (ids, diagnostics)

@@ -84,7 +84,13 @@ pub enum LoadError {
     Io { path: PathBuf, source: std::io::Error },
     #[error("`{path}` is not valid UTF-8 (first bad byte at offset {offset})")]
     NotUtf8 { path: PathBuf, offset: usize },
+    #[error("`{path}` is {size} bytes, more than the {MAX_FILE_SIZE} bytes kiln reads")]
+    TooLarge { path: PathBuf, size: u64 },
 }
+
+/// Files larger than this are refused: no shader, include or material is anywhere near it, and
+/// spans are 32-bit.
+pub const MAX_FILE_SIZE: u64 = 16 * 1024 * 1024;
 
 struct SourceFile {
     name: String,
@@ -113,6 +119,10 @@ impl SourceStore {
 
     /// Reads a file from disk and records it as read.
     pub fn load(&mut self, path: &Path) -> Result<FileId, LoadError> {
+        let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
+        if size > MAX_FILE_SIZE {
+            return Err(LoadError::TooLarge { path: path.to_path_buf(), size });
+        }
         let bytes =
             std::fs::read(path).map_err(|source| LoadError::Io { path: path.to_path_buf(), source })?;
         let text = String::from_utf8(bytes).map_err(|e| LoadError::NotUtf8 {

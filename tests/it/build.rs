@@ -281,3 +281,17 @@ fn a_build_script_error_reads_like_a_compiler_error() {
     assert!(shown.contains("fixtures/bad/preprocess/unterminated_if.wgsl:3:1"), "{shown}");
     assert!(!out.path().join("kiln_shaders.rs").exists());
 }
+
+#[test]
+fn an_always_included_shader_with_too_many_variants_is_refused_with_the_count() {
+    let mut store = SourceStore::new();
+    let mode =
+        BuildMode { write: false, output: None, unused_shaders: VariantSelection::Used, threads: Some(1) };
+    let path = PathBuf::from("fixtures/bad/always_include");
+    let (result, mut diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
+    diagnostics.extend(result.diagnostics);
+    assert!(has_errors(&diagnostics));
+    assert_eq!(result.summary.variants, 0, "nothing is built whole");
+    expect_file![root().join("fixtures/bad/always_include/kiln.stderr")]
+        .assert_eq(&render_plain(&store, &diagnostics));
+}

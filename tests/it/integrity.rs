@@ -15,21 +15,30 @@ fn synthetic_project(dir: &Path, materials: usize) {
     let shaders = root().join("fixtures/project/shaders");
     std::fs::create_dir_all(dir.join("materials")).expect("mkdir");
     let pass = std::fs::read_to_string(shaders.join("LitPass.wgsl")).expect("LitPass");
-    let tweaks: String = (0..8).map(|k| format!("#if defined(_F{k})\n    color = color * 1.0{k};\n#endif\n")).collect();
+    let tweaks: String =
+        (0..8).map(|k| format!("#if defined(_F{k})\n    color = color * 1.0{k};\n#endif\n")).collect();
     let pass = pass.replace(
         "    let color = GetLighting(surface, brdf);\n",
         &format!("    var color = GetLighting(surface, brdf) * TINT;\n{tweaks}"),
     );
     std::fs::write(dir.join("SynthPass.wgsl"), pass).expect("write");
     std::fs::write(dir.join("Tint.wgsl"), "#define TINT 1.0\n").expect("write");
-    let pragmas: String = (0..8).map(|k| format!("            #pragma shader_feature_fragment _ _F{k}\n")).collect();
+    let pragmas: String =
+        (0..8).map(|k| format!("            #pragma shader_feature_fragment _ _F{k}\n")).collect();
     let shader = std::fs::read_to_string(shaders.join("Lit.shader"))
         .expect("Lit")
-        .replace("#pragma shader_feature _PREMULTIPLY_ALPHA\n", &format!("#pragma shader_feature _PREMULTIPLY_ALPHA\n{pragmas}"))
-        .replace("#include \"LitPass.wgsl\"", "#include \"Tint.wgsl\"\n            #include \"SynthPass.wgsl\"");
+        .replace(
+            "#pragma shader_feature _PREMULTIPLY_ALPHA\n",
+            &format!("#pragma shader_feature _PREMULTIPLY_ALPHA\n{pragmas}"),
+        )
+        .replace(
+            "#include \"LitPass.wgsl\"",
+            "#include \"Tint.wgsl\"\n            #include \"SynthPass.wgsl\"",
+        );
     std::fs::write(dir.join("Synth.shader"), shader).expect("write");
     for m in 0..materials {
-        let keywords: Vec<String> = (0..8).filter(|b| m & (1 << b) != 0).map(|b| format!("\"_F{b}\"")).collect();
+        let keywords: Vec<String> =
+            (0..8).filter(|b| m & (1 << b) != 0).map(|b| format!("\"_F{b}\"")).collect();
         let text = format!("shader = \"Custom RP/Lit\"\nkeywords = [{}]\n", keywords.join(", "));
         std::fs::write(dir.join(format!("materials/M{m:03}.mat")), text).expect("write");
     }
@@ -37,8 +46,14 @@ fn synthetic_project(dir: &Path, materials: usize) {
 
 fn build(project: &Path, output: &Path) -> kiln::compile::BuildSummary {
     let mut store = SourceStore::new();
-    let mode = BuildMode { write: true, output: Some(output.to_path_buf()), unused_shaders: VariantSelection::Used, threads: None };
-    let (result, mut diagnostics) = build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
+    let mode = BuildMode {
+        write: true,
+        output: Some(output.to_path_buf()),
+        unused_shaders: VariantSelection::Used,
+        threads: None,
+    };
+    let (result, mut diagnostics) =
+        build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
     diagnostics.extend(result.diagnostics);
     assert!(diagnostics.is_empty(), "{}", kiln::diagnostics::render_plain(&store, &diagnostics));
     result.summary
@@ -47,7 +62,8 @@ fn build(project: &Path, output: &Path) -> kiln::compile::BuildSummary {
 /// The manifest in `output`, with every file it names checked against its hash.
 fn verified_manifest(output: &Path) -> Manifest {
     let manifest: Manifest =
-        serde_json::from_slice(&std::fs::read(output.join("manifest.json")).expect("manifest")).expect("manifest parses");
+        serde_json::from_slice(&std::fs::read(output.join("manifest.json")).expect("manifest"))
+            .expect("manifest parses");
     for variant in manifest.shaders.iter().flat_map(|s| &s.passes).flat_map(|p| &p.variants) {
         for stage in [&variant.vertex, &variant.fragment].into_iter().flatten() {
             for file in [&stage.wgsl, &stage.spirv].into_iter().flatten() {
@@ -81,7 +97,10 @@ fn a_killed_build_leaves_the_previous_outputs_and_the_next_build_finishes() {
         let now = std::fs::read(output.join("manifest.json")).expect("a manifest is always there");
         verified_manifest(&output);
         if now != before {
-            assert!(serde_json::from_slice::<Manifest>(&now).is_ok(), "a new manifest is only ever a whole one");
+            assert!(
+                serde_json::from_slice::<Manifest>(&now).is_ok(),
+                "a new manifest is only ever a whole one"
+            );
         }
         let summary = build(&project, &output);
         assert_eq!(summary.variants, 160);

@@ -123,3 +123,17 @@ proptest! {
         let _ = kiln::diagnostics::render_plain(&store, &diagnostics);
     }
 }
+
+#[test]
+fn a_file_over_the_size_limit_is_refused_not_read() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("huge.shader");
+    let file = std::fs::File::create(&path).expect("create");
+    file.set_len(kiln::source::MAX_FILE_SIZE + 1).expect("sparse file");
+    let mut store = SourceStore::new();
+    let (ids, diagnostics) = kiln::project::load_files(&mut store, &[path]);
+    assert!(ids.is_empty());
+    assert_eq!(diagnostics.len(), 1);
+    assert_eq!(diagnostics[0].code, "K0004");
+    assert!(diagnostics[0].message.contains("more than the 16777216 bytes"), "{}", diagnostics[0].message);
+}
