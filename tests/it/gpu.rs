@@ -10,24 +10,17 @@ use kiln::source::SourceStore;
 use std::path::{Path, PathBuf};
 
 fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle());
-    let adapter = match pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
-    {
-        Ok(adapter) => adapter,
-        Err(error) => {
-            let reason = format!("no GPU adapter ({error}); install mesa-vulkan-drivers for lavapipe");
+    match kiln::accuracy::gpu::device() {
+        Ok((device, queue, adapter, _)) => Some((device, queue, adapter)),
+        Err(reason) => {
             assert!(
                 std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
                 "KILN_REQUIRE_GPU=1 but {reason}"
             );
-            println!("skipping the GPU test: {reason}");
-            return None;
+            println!("skipping the GPU test: {reason}; install mesa-vulkan-drivers for lavapipe");
+            None
         }
-    };
-    let name = adapter.get_info().name;
-    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))
-        .expect("a device from the adapter");
-    Some((device, queue, name))
+    }
 }
 
 fn layout_entry(binding: u32, visibility: &[String], resource: &Resource) -> wgpu::BindGroupLayoutEntry {
