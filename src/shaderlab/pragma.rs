@@ -358,7 +358,8 @@ fn pragma_lines(source: PragmaSource) -> Vec<PragmaLine> {
                 if at_end {
                     break;
                 }
-                if raw[i..].starts_with("*/") {
+                // Bytes, not `str`: `i` may sit inside a multi-byte character.
+                if bytes[i..].starts_with(b"*/") {
                     in_block_comment = false;
                     i += 2;
                 } else {
@@ -366,16 +367,16 @@ fn pragma_lines(source: PragmaSource) -> Vec<PragmaLine> {
                 }
                 continue;
             }
-            let stop = at_end || raw[i..].starts_with("//") || raw[i..].starts_with("/*");
+            let stop = at_end || bytes[i..].starts_with(b"//") || bytes[i..].starts_with(b"/*");
             let space = !at_end && bytes[i].is_ascii_whitespace();
             if stop || space {
                 if let Some(start) = token_start.take() {
                     tokens.push((start, &raw[start..i]));
                 }
-                if at_end || raw[i..].starts_with("//") {
+                if at_end || bytes[i..].starts_with(b"//") {
                     break;
                 }
-                if raw[i..].starts_with("/*") {
+                if bytes[i..].starts_with(b"/*") {
                     in_block_comment = true;
                     i += 2;
                     continue;

@@ -137,3 +137,15 @@ fn a_file_over_the_size_limit_is_refused_not_read() {
     assert_eq!(diagnostics[0].code, "K0004");
     assert!(diagnostics[0].message.contains("more than the 16777216 bytes"), "{}", diagnostics[0].message);
 }
+
+/// Found by the `shader_parser` fuzz target: a multi-byte character (here a byte-order mark)
+/// right before a comment in a program block panicked the pragma scanner.
+#[test]
+fn a_multibyte_character_before_a_comment_in_a_program() {
+    for text in [
+        "Shader \"A\" { SubShader { Pass { CGPROGRAM\n a\u{feff}/* b */ c\n #pragma vertex v \u{feff}// x\nENDCG } } }",
+        "Shader \"A\" { SubShader { Pass { WGSLPROGRAM\n/* \u{e9}\u{feff}*/ #pragma fragment f\u{feff}\nENDWGSL } } }",
+    ] {
+        list_text(text);
+    }
+}
