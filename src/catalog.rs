@@ -3,7 +3,7 @@
 //! them, and each pass's keywords and used variants.
 
 use crate::diagnostics::{self, Diagnostic};
-use crate::keywords::{PassKeywords, Variant};
+use crate::keywords::{MAX_VARIANTS_PER_PASS, PassKeywords, Variant};
 use crate::material::{Material, ShaderEntry, load_material};
 use crate::preprocess::{Includes, Program, load_pass};
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
@@ -14,9 +14,6 @@ use crate::source::{FileId, SourceStore};
 /// More keywords than this in one pass is refused (each is a bit of every variant key, and no
 /// real pass comes close).
 pub const MAX_KEYWORDS_PER_PASS: usize = 256;
-
-/// An always-included shader whose pass has more variants than this is refused, with the count.
-pub const MAX_ALWAYS_INCLUDED_VARIANTS: u128 = 65_536;
 
 /// The files a job looks at.
 #[derive(Debug, Clone, Default)]
@@ -137,24 +134,27 @@ pub fn catalog(
             .collect();
         let users: Vec<usize> = (0..materials.len()).filter(|&m| materials[m].shader == index).collect();
         for program in shader.passes.iter_mut().filter_map(|p| p.program.as_mut()) {
-            let possible = program.keywords.possible();
-            if everything && possible.is_none_or(|n| n > MAX_ALWAYS_INCLUDED_VARIANTS) {
-                let count = possible.map_or("more than 2^128".to_string(), |n| n.to_string());
-                let span = program.pragmas.keyword_sets.first().map_or(shader.shader.name.span, |s| s.span);
-                diagnostics.push(
-                    Diagnostic::error(
-                        "K0411",
-                        format!("`{}` is always included but has {count} variants", shader.shader.name.value),
-                    )
-                    .at(span, "its keyword sets multiply to that many")
-                    .note(format!(
-                        "an always-included pass may have at most {MAX_ALWAYS_INCLUDED_VARIANTS} variants"
-                    ))
-                    .help("remove it from `always_include` and let materials choose its variants"),
-                );
-                continue;
+            match program.keywords.enumerate(&keywords, everything) {
+                Ok(variants) => program.variants = variants,
+                Err(count) => {
+                    let span =
+                        program.pragmas.keyword_sets.first().map_or(shader.shader.name.span, |s| s.span);
+                    let why = if everything {
+                        "it is always included"
+                    } else {
+                        "its materials and multi_compile sets"
+                    };
+                    diagnostics.push(
+                        Diagnostic::error(
+                            "K0411",
+                            format!("`{}` would build {count} variants of one pass", shader.shader.name.value),
+                        )
+                        .at(span, format!("{why} multiply to that many"))
+                        .note(format!("a pass may have at most {MAX_VARIANTS_PER_PASS} variants built"))
+                        .help("make run-time choices `dynamic_branch` keywords, or use fewer multi_compile sets"),
+                    );
+                }
             }
-            program.variants = program.keywords.enumerate(&keywords, everything);
             // Point at materials of the catalog, not of this shader's list.
             for variant in &mut program.variants {
                 for m in &mut variant.materials {

@@ -6,6 +6,9 @@ use crate::preprocess::Stage;
 use crate::shaderlab::pragma::{KeywordKind, KeywordSet, KeywordStage};
 use std::collections::HashMap;
 
+/// A pass may have at most this many variants built: more is refused, with the count.
+pub const MAX_VARIANTS_PER_PASS: u128 = 65_536;
+
 /// Some of a pass's keywords: bit i stands for the pass's i-th keyword.
 #[derive(Debug, Clone, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct KeywordBits(Vec<u64>);
@@ -138,10 +141,18 @@ impl PassKeywords {
     }
 
     /// The variants the materials need (each given as its enabled keywords), or every variant
-    /// when `everything` (a shader the project always includes). Sorted by their choices.
-    pub fn enumerate(&self, materials: &[Vec<&str>], everything: bool) -> Vec<Variant> {
+    /// when `everything` (a shader the project always includes). Sorted by their choices. More
+    /// than [`MAX_VARIANTS_PER_PASS`] is refused with the count it would have been, before
+    /// anything that size is built.
+    pub fn enumerate(&self, materials: &[Vec<&str>], everything: bool) -> Result<Vec<Variant>, u128> {
         let features: Vec<usize> = self.indices(KeywordKind::ShaderFeature);
         let multi: Vec<usize> = self.indices(KeywordKind::MultiCompile);
+        let size = |sets: &[usize]| {
+            sets.iter().try_fold(1u128, |n, &s| n.checked_mul(self.sets[s].options.len() as u128))
+        };
+        if everything && size(&features).is_none_or(|n| n > MAX_VARIANTS_PER_PASS) {
+            return Err(self.possible().unwrap_or(u128::MAX));
+        }
         // Distinct projections onto the shader_feature sets, each with the materials needing it.
         let mut projections: Vec<(Vec<usize>, Vec<usize>)> = Vec::new();
         let mut index: HashMap<Vec<usize>, usize> = HashMap::new();
@@ -159,6 +170,13 @@ impl PassKeywords {
             });
             projections[slot].1.push(m);
         }
+        if projections.is_empty() {
+            return Ok(Vec::new());
+        }
+        let total = size(&multi).and_then(|n| n.checked_mul(projections.len() as u128)).unwrap_or(u128::MAX);
+        if total > MAX_VARIANTS_PER_PASS {
+            return Err(total);
+        }
         let combos = self.product(&multi);
         let mut variants = Vec::with_capacity(projections.len() * combos.len());
         for (projection, users) in &projections {
@@ -171,7 +189,7 @@ impl PassKeywords {
             }
         }
         variants.sort_by(|a, b| a.choices.cmp(&b.choices));
-        variants
+        Ok(variants)
     }
 
     /// For checking a shader no material uses yet: the default variant (each set's off choice, or

@@ -3,7 +3,7 @@
 
 mod enumerate;
 
-pub use enumerate::{KeywordBits, PassKeywords, Variant};
+pub use enumerate::{KeywordBits, MAX_VARIANTS_PER_PASS, PassKeywords, Variant};
 
 use crate::preprocess::Stage;
 use crate::shaderlab::pragma::{KeywordSet, KeywordStage};

@@ -91,7 +91,8 @@ fn the_seed_listing_of_eight_variants() {
         set(KeywordKind::MultiCompile, &["_", "VERTEXLIGHT_ON"]),
         set(KeywordKind::ShaderFeature, &["_", "_METALLIC_MAP"]),
     ]);
-    let variants = pass.enumerate(&[vec![], vec!["_METALLIC_MAP"], vec!["_METALLIC_MAP"]], false);
+    let variants =
+        pass.enumerate(&[vec![], vec!["_METALLIC_MAP"], vec!["_METALLIC_MAP"]], false).expect("small");
     let listed: Vec<String> =
         variants.iter().map(|v| pass.keywords(&v.bits).collect::<Vec<_>>().join(" ")).collect();
     assert_eq!(
@@ -110,8 +111,8 @@ fn the_seed_listing_of_eight_variants() {
     // Only the metallic-map users need the metallic variants.
     assert_eq!(variants[1].materials, [1, 2]);
     // Without materials nothing is built; always-included, everything is.
-    assert!(pass.enumerate(&[], false).is_empty());
-    assert_eq!(pass.enumerate(&[], true).len(), 8);
+    assert!(pass.enumerate(&[], false).expect("small").is_empty());
+    assert_eq!(pass.enumerate(&[], true).expect("small").len(), 8);
 }
 
 proptest! {
@@ -143,7 +144,7 @@ proptest! {
             .collect();
         let refs: Vec<Vec<&str>> = materials.iter().map(|m| m.iter().map(String::as_str).collect()).collect();
         let pass = PassKeywords::new(sets.clone());
-        let variants = pass.enumerate(&refs, false);
+        let variants = pass.enumerate(&refs, false).expect("small");
 
         let multi: usize = sets.iter().filter(|s| s.kind == KeywordKind::MultiCompile).map(|s| s.options.len()).product();
         let projections: HashSet<Vec<String>> = materials.iter().map(|m| { let mut m = m.clone(); m.sort(); m }).collect();
@@ -257,4 +258,17 @@ fn material_new_and_preset_write_files_that_load() {
     ]);
     assert_eq!(refused.status.code(), Some(2));
     assert!(!unlit.exists());
+}
+
+/// Found by the `shader_parser` fuzz target: a pass with many `multi_compile` sets and no
+/// materials built the whole multi_compile product (out of memory). Nothing is built without a
+/// material, and an over-large product is refused with its size.
+#[test]
+fn a_huge_multi_compile_product_is_never_materialised() {
+    let sets: Vec<KeywordSet> =
+        (0..30).map(|i| set(KeywordKind::MultiCompile, &["_", &format!("_M{i}")])).collect();
+    let pass = PassKeywords::new(sets);
+    assert_eq!(pass.enumerate(&[], false), Ok(Vec::new()));
+    assert_eq!(pass.enumerate(&[vec![]], false).map(|v| v.len()), Err(1 << 30));
+    assert_eq!(pass.enumerate(&[], true).map(|v| v.len()), Err(1 << 30));
 }
