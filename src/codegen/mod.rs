@@ -156,13 +156,13 @@ fn shader_module(out: &mut String, shader: &ShaderManifest, output: &Path) {
     let _ = writeln!(out, "pub mod {} {{", module_name(&shader.name));
     let _ = writeln!(out, "    pub const NAME: &str = {:?};", shader.name);
     for pass in &shader.passes {
-        pass_static(out, shader, pass, output);
+        pass_static(out, pass, output);
     }
     layout::uniform_structs(out, shader);
     out.push_str("}\n");
 }
 
-fn pass_static(out: &mut String, shader: &ShaderManifest, pass: &PassManifest, output: &Path) {
+fn pass_static(out: &mut String, pass: &PassManifest, output: &Path) {
     let keywords: Vec<String> = pass
         .keyword_sets
         .iter()
@@ -225,7 +225,6 @@ fn pass_static(out: &mut String, shader: &ShaderManifest, pass: &PassManifest, o
         out.push_str("            },\n");
     }
     out.push_str("        ],\n    };\n");
-    let _ = shader;
 }
 
 fn stage(out: &mut String, name: &str, stage: Option<&StageManifest>, output: &Path) {
