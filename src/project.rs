@@ -2,14 +2,13 @@
 //! build scripts. This is the only place besides [`SourceStore`] that touches the file system:
 //! stages get file ids, never paths.
 
-use crate::catalog::{CatalogInput, catalog};
+use crate::catalog::{Catalog, CatalogInput, CatalogProgram, catalog};
 use crate::compile::{BuildOptions, BuildResult, VariantSelection, build};
 use crate::config::ProjectConfig;
 use crate::diagnostics::{self, Diagnostic};
-use crate::keywords::{VariantError, select_variant, stage_keywords};
-use crate::listing::program_blocks;
+use crate::keywords::{Variant, VariantError, select_variant};
 use crate::material::Preset;
-use crate::preprocess::{IncludeConfig, Includes, Preprocessed, Stage, load_pass, preprocess};
+use crate::preprocess::{IncludeConfig, Includes, Preprocessed, Stage, preprocess};
 use crate::shaderlab::ast::ProgramLanguage;
 use crate::shaderlab::parse_shader;
 use crate::source::{FileId, LoadError, SourceStore};
@@ -130,33 +129,69 @@ pub struct VariantRequest {
     pub stage: Stage,
 }
 
-/// Preprocesses one variant of one pass. `Err` is a request that names nothing (exit code 2);
-/// mistakes in the files are diagnostics, and the text is `None` when any of them is an error.
+/// A requested variant of a pass of one shader file, with the catalogue it was found in.
+struct Requested {
+    catalog: Catalog,
+    includes: Includes,
+    /// Index of the pass in `catalog.shaders[0].passes`.
+    pass: usize,
+    variant: Variant,
+}
+
+impl Requested {
+    fn program(&self) -> &CatalogProgram {
+        // `requested_variant` only returns passes with a WGSL program.
+        self.catalog.shaders[0].passes[self.pass].program.as_ref().expect("a program")
+    }
+}
+
+/// Loads the shader and finds the variant a request names. `Err` is a request that names nothing
+/// (exit code 2); mistakes in the files are diagnostics, and there is no `Requested` when any of
+/// them is an error.
+fn requested_variant(
+    store: &mut SourceStore,
+    request: &VariantRequest,
+) -> Result<(Option<Requested>, Vec<Diagnostic>), ProjectError> {
+    let file = store.load(&request.shader)?;
+    let mut includes = Includes::new(include_config(std::slice::from_ref(&request.shader)));
+    let input = CatalogInput { shaders: vec![file], ..CatalogInput::default() };
+    let (catalog, diagnostics) = catalog(store, &mut includes, &input);
+    let Some(shader) = catalog.shaders.first() else { return Ok((None, diagnostics)) };
+    let not_found = || ProjectError::PassNotFound {
+        shader: shader.shader.name.value.clone(),
+        selector: request.pass.clone(),
+    };
+    let chosen =
+        shader.shader.find_pass(request.pass.as_deref()).map(|(_, pass)| pass).ok_or_else(not_found)?;
+    let pass = (0..shader.passes.len())
+        .find(|&i| shader.pass_ast(&shader.passes[i]).is_some_and(|p| std::ptr::eq(p, chosen)))
+        .ok_or_else(not_found)?;
+    let program = shader.passes[pass].program.as_ref().ok_or_else(not_found)?;
+    if program.language != ProgramLanguage::Wgsl {
+        return Err(ProjectError::NotWgsl { language: program.language.name() });
+    }
+    let keywords = select_variant(program.keywords.sets(), &request.keywords)?;
+    let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
+    let variant = program.keywords.variant_of(&keywords);
+    if diagnostics::has_errors(&diagnostics) {
+        return Ok((None, diagnostics));
+    }
+    Ok((Some(Requested { catalog, includes, pass, variant }), diagnostics))
+}
+
+/// Preprocesses one variant of one pass for one stage (a `_fragment` keyword is not defined in
+/// the vertex stage). The text is `None` when any diagnostic is an error.
 pub fn preprocess_variant(
     store: &mut SourceStore,
     request: &VariantRequest,
 ) -> Result<(Option<Preprocessed>, Vec<Diagnostic>), ProjectError> {
-    let file = store.load(&request.shader)?;
-    let parsed = parse_shader(store, file);
-    let mut diagnostics = parsed.diagnostics;
-    let Some(shader) = parsed.shader else { return Ok((None, diagnostics)) };
-    let not_found =
-        || ProjectError::PassNotFound { shader: shader.name.value.clone(), selector: request.pass.clone() };
-    let (sub, pass) = shader.find_pass(request.pass.as_deref()).ok_or_else(not_found)?;
-    let language = pass.programs.first().ok_or_else(not_found)?.language;
-    if language != ProgramLanguage::Wgsl {
-        return Err(ProjectError::NotWgsl { language: language.name() });
-    }
-    let mut includes = Includes::new(include_config(std::slice::from_ref(&request.shader)));
-    let (program, loaded) = load_pass(&mut includes, store, &program_blocks(&shader, sub, &pass.programs));
-    diagnostics.extend(loaded);
-    let sets = program.pragmas.variant_sets();
-    let keywords = select_variant(&sets, &request.keywords)?;
-    if diagnostics::has_errors(&diagnostics) {
-        return Ok((None, diagnostics));
-    }
-    let keywords = stage_keywords(&sets, &keywords, request.stage);
-    let output = preprocess(&includes, store, &program.program, &keywords, request.stage);
+    let (requested, mut diagnostics) = requested_variant(store, request)?;
+    let Some(requested) = requested else { return Ok((None, diagnostics)) };
+    let program = requested.program();
+    let Some(wgsl) = program.wgsl.as_ref() else { return Ok((None, diagnostics)) };
+    let keywords: Vec<&str> =
+        program.keywords.keywords(program.keywords_for(&requested.variant, request.stage)).collect();
+    let output = preprocess(&requested.includes, store, wgsl, &keywords, request.stage);
     diagnostics.extend(output.diagnostics.iter().cloned());
     let ok = !diagnostics::has_errors(&output.diagnostics);
     Ok((ok.then_some(output), diagnostics))
@@ -355,37 +390,15 @@ pub fn reflect_variant(
     store: &mut SourceStore,
     request: &VariantRequest,
 ) -> Result<(Option<serde_json::Value>, Vec<Diagnostic>), ProjectError> {
-    let file = store.load(&request.shader)?;
-    let mut includes = Includes::new(include_config(std::slice::from_ref(&request.shader)));
-    let input = CatalogInput { shaders: vec![file], ..CatalogInput::default() };
-    let (mut catalog, mut diagnostics) = catalog(store, &mut includes, &input);
-    let Some(shader) = catalog.shaders.first_mut() else { return Ok((None, diagnostics)) };
-    let not_found = || ProjectError::PassNotFound {
-        shader: shader.shader.name.value.clone(),
-        selector: request.pass.clone(),
+    let (requested, mut diagnostics) = requested_variant(store, request)?;
+    let Some(Requested { mut catalog, includes, pass: index, variant }) = requested else {
+        return Ok((None, diagnostics));
     };
-    let chosen = shader
-        .shader
-        .find_pass(request.pass.as_deref())
-        .map(|(_, pass)| pass as *const _)
-        .ok_or_else(not_found)?;
-    let index = (0..shader.passes.len())
-        .find(|&i| shader.pass_ast(&shader.passes[i]).is_some_and(|p| std::ptr::eq(p, chosen)))
-        .ok_or_else(not_found)?;
-    let program = shader.passes[index].program.as_ref().ok_or_else(not_found)?;
-    if program.language != ProgramLanguage::Wgsl {
-        return Err(ProjectError::NotWgsl { language: program.language.name() });
-    }
-    let keywords = select_variant(program.keywords.sets(), &request.keywords)?;
-    let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
-    let variant = program.keywords.variant_of(&keywords);
-    for (i, pass) in shader.passes.iter_mut().enumerate() {
+    // Only the requested variant is built.
+    for (i, pass) in catalog.shaders[0].passes.iter_mut().enumerate() {
         if let Some(program) = pass.program.as_mut() {
             program.variants = if i == index { vec![variant.clone()] } else { Vec::new() };
         }
-    }
-    if diagnostics::has_errors(&diagnostics) {
-        return Ok((None, diagnostics));
     }
     let options = BuildOptions {
         output: request

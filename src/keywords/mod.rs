@@ -5,8 +5,7 @@ mod enumerate;
 
 pub use enumerate::{KeywordBits, MAX_VARIANTS_PER_PASS, PassKeywords, Variant};
 
-use crate::preprocess::Stage;
-use crate::shaderlab::pragma::{KeywordSet, KeywordStage};
+use crate::shaderlab::pragma::KeywordSet;
 
 /// Why a requested keyword combination is not a variant of the pass.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -45,22 +44,4 @@ pub fn select_variant(sets: &[KeywordSet], requested: &[String]) -> Result<Vec<S
         chosen.or_else(default).map(str::to_string)
     });
     Ok(keywords.collect())
-}
-
-/// The keywords of a variant that are defined when preprocessing `stage`: a keyword declared with
-/// a stage suffix (`shader_feature_fragment`) exists only in that stage, so the other stage's
-/// text, and module, does not fork on it.
-pub fn stage_keywords<'a>(sets: &[KeywordSet], keywords: &'a [String], stage: Stage) -> Vec<&'a str> {
-    let affects = |set: &KeywordSet| match set.stage {
-        KeywordStage::All => true,
-        KeywordStage::Vertex => stage == Stage::Vertex,
-        KeywordStage::Fragment => stage == Stage::Fragment,
-        // Stages WGSL has no such stage for never see the keyword.
-        _ => false,
-    };
-    keywords
-        .iter()
-        .filter(|k| sets.iter().filter(|s| s.keywords().any(|d| d == k.as_str())).any(affects))
-        .map(String::as_str)
-        .collect()
 }
