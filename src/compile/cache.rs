@@ -105,17 +105,11 @@ impl Cache {
         }
         let manifest: crate::reflect::manifest::Manifest =
             serde_json::from_slice(&std::fs::read(self.output.join("manifest.json")).ok()?).ok()?;
-        let files = manifest
-            .shaders
-            .iter()
-            .flat_map(|s| &s.passes)
-            .flat_map(|p| &p.variants)
-            .flat_map(|v| [&v.vertex, &v.fragment])
-            .flatten()
-            .flat_map(|stage| [&stage.wgsl, &stage.spirv])
-            .flatten();
-        let present = files
-            .into_iter()
+        // Each file once, checked in parallel: this is the whole cost of a no-op build.
+        use rayon::prelude::*;
+        let present = manifest
+            .files()
+            .par_iter()
             .all(|f| std::fs::metadata(self.output.join(&f.path)).is_ok_and(|m| m.len() == f.size));
         present.then_some((manifest, recorded))
     }

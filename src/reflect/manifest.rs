@@ -14,6 +14,26 @@ pub struct Manifest {
     pub shaders: Vec<ShaderManifest>,
 }
 
+impl Manifest {
+    /// Every stage module of every variant (a module shared by variants comes once per variant).
+    pub fn stages(&self) -> impl Iterator<Item = &StageManifest> {
+        self.shaders
+            .iter()
+            .flat_map(|s| &s.passes)
+            .flat_map(|p| &p.variants)
+            .flat_map(|v| [&v.vertex, &v.fragment])
+            .flatten()
+    }
+
+    /// Every output file the manifest names, each once, in path order.
+    pub fn files(&self) -> Vec<&FileRef> {
+        let mut files: Vec<&FileRef> = self.stages().flat_map(|s| [&s.wgsl, &s.spirv]).flatten().collect();
+        files.sort_by(|a, b| a.path.cmp(&b.path));
+        files.dedup_by(|a, b| a.path == b.path);
+        files
+    }
+}
+
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ShaderManifest {
     pub name: String,

@@ -64,13 +64,9 @@ fn verified_manifest(output: &Path) -> Manifest {
     let manifest: Manifest =
         serde_json::from_slice(&std::fs::read(output.join("manifest.json")).expect("manifest"))
             .expect("manifest parses");
-    for variant in manifest.shaders.iter().flat_map(|s| &s.passes).flat_map(|p| &p.variants) {
-        for stage in [&variant.vertex, &variant.fragment].into_iter().flatten() {
-            for file in [&stage.wgsl, &stage.spirv].into_iter().flatten() {
-                let bytes = std::fs::read(output.join(&file.path)).expect("module file");
-                assert_eq!(&blake3::hash(&bytes).to_hex()[..32], file.hash, "{} is intact", file.path);
-            }
-        }
+    for file in manifest.files() {
+        let bytes = std::fs::read(output.join(&file.path)).expect("module file");
+        assert_eq!(&blake3::hash(&bytes).to_hex()[..32], file.hash, "{} is intact", file.path);
     }
     manifest
 }
@@ -114,17 +110,7 @@ fn damaged_cache_entries_and_modules_are_rebuilt_never_used() {
     let output = dir.path().join("out");
     let first = build(&root().join("fixtures/project"), &output);
     let manifest = verified_manifest(&output);
-    let files: Vec<String> = manifest
-        .shaders
-        .iter()
-        .flat_map(|s| &s.passes)
-        .flat_map(|p| &p.variants)
-        .flat_map(|v| [&v.vertex, &v.fragment])
-        .flatten()
-        .flat_map(|s| [&s.wgsl, &s.spirv])
-        .flatten()
-        .map(|f| f.path.clone())
-        .collect();
+    let files: Vec<String> = manifest.files().iter().map(|f| f.path.clone()).collect();
     // Flip bytes in one module (same size), truncate another, and damage every pass index.
     let flipped = output.join(&files[0]);
     let mut bytes = std::fs::read(&flipped).expect("read");
