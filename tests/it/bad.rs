@@ -2,9 +2,7 @@
 //! golden, and is an error (never a panic, never success). `fixtures/warn/` holds inputs that
 //! only warn.
 
-use crate::support::{fixture_files, kiln, load};
-use expect_test::expect_file;
-use kiln::diagnostics::{has_errors, render_plain};
+use crate::support::{assert_pinned, fixture_files, kiln, load};
 
 fn check(folder: &str, expect_errors: bool) {
     let files = fixture_files(folder, "shader");
@@ -19,15 +17,7 @@ fn check(folder: &str, expect_errors: bool) {
             &kiln::catalog::CatalogInput { shaders: ids, ..Default::default() },
         );
         diagnostics.extend(found);
-        assert_eq!(
-            has_errors(&diagnostics),
-            expect_errors,
-            "{}: errors expected: {expect_errors}",
-            path.display()
-        );
-        assert!(!diagnostics.is_empty(), "{} reports nothing", path.display());
-        let golden = crate::support::root().join(path.with_extension("stderr"));
-        expect_file![golden].assert_eq(&render_plain(&store, &diagnostics));
+        assert_pinned(&path, &store, &diagnostics, expect_errors);
     }
 }
 

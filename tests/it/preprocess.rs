@@ -266,15 +266,7 @@ fn check_folder(folder: &str, expect_errors: bool) {
     for path in files {
         let mut store = SourceStore::new();
         let (_, diagnostics) = preprocess_variant(&mut store, &request_for(&path)).expect("request is valid");
-        assert_eq!(
-            has_errors(&diagnostics),
-            expect_errors,
-            "{}: errors expected: {expect_errors}",
-            path.display()
-        );
-        assert!(!diagnostics.is_empty(), "{} reports nothing", path.display());
-        expect_file![root().join(path.with_extension("stderr"))]
-            .assert_eq(&render_plain(&store, &diagnostics));
+        crate::support::assert_pinned(&path, &store, &diagnostics, expect_errors);
     }
 }
 

@@ -41,3 +41,13 @@ pub fn kiln(args: &[&str]) -> Output {
         .output()
         .expect("kiln binary runs")
 }
+
+/// Pins a fixture's diagnostics in the `.stderr` file beside it, after checking that there are
+/// some and that they include an error exactly when one is expected.
+pub fn assert_pinned(fixture: &Path, store: &SourceStore, diagnostics: &[Diagnostic], expect_errors: bool) {
+    let rendered = kiln::diagnostics::render_plain(store, diagnostics);
+    let errors = kiln::diagnostics::has_errors(diagnostics);
+    assert_eq!(errors, expect_errors, "{}: errors expected: {expect_errors}\n{rendered}", fixture.display());
+    assert!(!diagnostics.is_empty(), "{} reports nothing", fixture.display());
+    expect_test::expect_file![root().join(fixture.with_extension("stderr"))].assert_eq(&rendered);
+}
