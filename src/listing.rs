@@ -3,7 +3,7 @@
 
 use crate::catalog::{Catalog, CatalogInput, CatalogPass, catalog};
 use crate::diagnostics::Diagnostic;
-use crate::material::{Material, MaterialValue, Preset, enum_names};
+use crate::material::{Material, MaterialValue, Preset, enum_name};
 use crate::preprocess::Includes;
 use crate::shaderlab::ast::Shader;
 use crate::shaderlab::pragma::{KeywordScope, KeywordSet, ProgramPragmas};
@@ -159,13 +159,7 @@ fn material_listing(store: &SourceStore, shader: &Shader, material: &Material) -
         .into_iter()
         .filter_map(|name| {
             let shown = match material.values.get(&name)? {
-                MaterialValue::Number(n) => {
-                    let named = shader
-                        .property(&name)
-                        .and_then(enum_names)
-                        .and_then(|names| names.into_iter().find(|(_, v)| v == n).map(|(label, _)| label));
-                    named.unwrap_or_else(|| n.to_string())
-                }
+                MaterialValue::Number(n) => enum_name(shader, &name, *n).unwrap_or_else(|| n.to_string()),
                 other => format!("{other:?}"),
             };
             Some((name, shown))

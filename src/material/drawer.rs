@@ -92,6 +92,12 @@ const UNITY_ENUMS: &[(&str, &[(&str, f64)])] = &[
     ),
 ];
 
+/// The name a property's `[Enum]` or `[KeywordEnum]` drawer gives `value`, if any.
+pub fn enum_name(shader: &crate::shaderlab::ast::Shader, property: &str, value: f64) -> Option<String> {
+    let names = enum_names(shader.property(property)?)?;
+    names.into_iter().find(|(_, v)| *v == value).map(|(name, _)| name)
+}
+
 /// The `(name, value)` pairs of a property's `[Enum]` or `[KeywordEnum]` drawer, if it has one.
 pub fn enum_names(property: &Property) -> Option<Vec<(String, f64)>> {
     property.attributes.iter().find_map(|attribute| match &attribute.kind {

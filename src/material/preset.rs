@@ -1,7 +1,7 @@
 //! The seed's four presets, exactly as its shader GUI sets them, and their application to a
 //! material document (keeping its other values and comments).
 
-use super::drawer::{KeywordDrawer, enum_names};
+use super::drawer::{KeywordDrawer, enum_name};
 use crate::shaderlab::ast::Shader;
 use toml_edit::{DocumentMut, Item, Value};
 
@@ -68,11 +68,7 @@ impl Preset {
 /// How a number is written in a material: the drawer's name for it when it has one, else the
 /// number (an integer when it is one).
 pub fn value_for(shader: &Shader, property: &str, value: f64) -> Value {
-    let named = shader
-        .property(property)
-        .and_then(enum_names)
-        .and_then(|names| names.into_iter().find(|(_, v)| *v == value).map(|(n, _)| n));
-    match named {
+    match enum_name(shader, property, value) {
         Some(name) => Value::from(name),
         None if value.fract() == 0.0 && value.abs() < 1e15 => Value::from(value as i64),
         None => Value::from(value),
