@@ -136,14 +136,13 @@ pub fn compile_compute(
     let mut module = parse(&preprocessed.text, &mapper).map_err(|d| vec![d])?;
     let (layout, _) = bind::layout(&[&bind::declared(&module)]);
     bind::apply(&mut module, &layout);
-    module.entry_points.retain(|e| e.name == entry && e.stage == naga::ShaderStage::Compute);
-    if module.entry_points.is_empty() {
+    let compute = naga::ShaderStage::Compute;
+    if !module.entry_points.iter().any(|e| e.name == entry && e.stage == compute) {
         return Err(vec![Diagnostic::error("K0403", format!("compute entry point `{entry}` not found"))]);
     }
-    naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
-    let info = validate(&module, ValidationFlags::all(), capabilities, &mapper).map_err(|d| vec![d])?;
-    let wgsl = naga::back::wgsl::write_string(&module, &info, naga::back::wgsl::WriterFlags::empty())
-        .map_err(|e| vec![Diagnostic::error("K0409", format!("the WGSL writer failed: {e}"))])?;
+    let info =
+        stage::keep_entry_point(&mut module, entry, compute, capabilities, &mapper).map_err(|d| vec![d])?;
+    let wgsl = stage::write_wgsl(&module, &info).map_err(|d| vec![d])?;
     let used: Bindings = module
         .global_variables
         .iter()

@@ -65,18 +65,11 @@ pub fn compile(
         });
     }
     bind::apply(&mut module, request.layout);
-    module.entry_points.retain(|e| e.name == request.entry && e.stage == stage);
-    naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
-    let info = validate(&module, ValidationFlags::all(), request.allowed.capabilities(), mapper)?;
+    let info = keep_entry_point(&mut module, request.entry, stage, request.allowed.capabilities(), mapper)?;
     check_limits(&module, request, mapper)?;
 
-    let wgsl = if request.backends.contains(&Backend::Wgsl) {
-        let text = naga::back::wgsl::write_string(&module, &info, naga::back::wgsl::WriterFlags::empty())
-            .map_err(|e| backend_error("WGSL", e.to_string()))?;
-        Some(text)
-    } else {
-        None
-    };
+    let wgsl =
+        if request.backends.contains(&Backend::Wgsl) { Some(write_wgsl(&module, &info)?) } else { None };
     let spirv = if request.backends.contains(&Backend::Spirv) {
         let options = naga::back::spv::Options {
             flags: naga::back::spv::WriterFlags::empty(),
@@ -91,6 +84,27 @@ pub fn compile(
         None
     };
     Ok(StageOutput { wgsl, spirv, reflection: reflect_stage(&module, request.entry) })
+}
+
+/// Cuts a bound module down to one entry point and what it uses, then validates it.
+pub(super) fn keep_entry_point(
+    module: &mut naga::Module,
+    entry: &str,
+    stage: naga::ShaderStage,
+    capabilities: naga::valid::Capabilities,
+    mapper: &Mapper,
+) -> Result<naga::valid::ModuleInfo, Diagnostic> {
+    module.entry_points.retain(|e| e.name == entry && e.stage == stage);
+    naga::compact::compact(module, naga::compact::KeepUnused::No);
+    validate(module, ValidationFlags::all(), capabilities, mapper)
+}
+
+pub(super) fn write_wgsl(
+    module: &naga::Module,
+    info: &naga::valid::ModuleInfo,
+) -> Result<String, Diagnostic> {
+    naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
+        .map_err(|e| backend_error("WGSL", e.to_string()))
 }
 
 fn backend_error(backend: &str, message: String) -> Diagnostic {
