@@ -48,7 +48,7 @@ fn main() {
     let mut count = 0;
     for _ in 0..21 {
         let start = Instant::now();
-        count = black_box(pass.enumerate(&refs, false).expect("within the limit")).len();
+        count = black_box(pass.enumerate(&refs, false, None).expect("within the limit")).len();
         times.push(start.elapsed());
     }
     times.sort();

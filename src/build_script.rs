@@ -27,6 +27,7 @@ pub struct Build {
     paths: Vec<PathBuf>,
     out_dir: Option<PathBuf>,
     threads: Option<usize>,
+    global_keywords: Option<Vec<String>>,
 }
 
 /// What a build script gets back.
@@ -63,7 +64,7 @@ impl std::fmt::Debug for BuildError {
 impl Build {
     /// A build of the project folder (its `kiln.toml`, or the defaults).
     pub fn new(project: impl Into<PathBuf>) -> Build {
-        Build { paths: vec![project.into()], out_dir: None, threads: None }
+        Build { paths: vec![project.into()], out_dir: None, threads: None, global_keywords: None }
     }
 
     /// Also use the `.mat` files under this folder (a scene's materials, say).
@@ -80,6 +81,15 @@ impl Build {
 
     pub fn threads(mut self, threads: usize) -> Build {
         self.threads = Some(threads);
+        self
+    }
+
+    /// The renderer's global keyword state, known from the scene: each `multi_compile` set is
+    /// built only with the option these choose (its keyword, else `_`). Replaces the project's
+    /// `global_keywords`. A scene with one directional light, say, gives
+    /// `["_SINGLE_DIRECTIONAL_LIGHT"]` and gets no variant with the general light loop.
+    pub fn global_keywords<S: Into<String>>(mut self, keywords: impl IntoIterator<Item = S>) -> Build {
+        self.global_keywords = Some(keywords.into_iter().map(Into::into).collect());
         self
     }
 
@@ -110,6 +120,7 @@ impl Build {
             output: Some(output.clone()),
             unused_shaders: VariantSelection::Used,
             threads: self.threads,
+            global_keywords: self.global_keywords,
         };
         let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
         problems.extend(result.diagnostics);

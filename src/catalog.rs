@@ -8,8 +8,9 @@ use crate::material::{Material, ShaderEntry, load_material};
 use crate::preprocess::{Includes, Program, load_pass};
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
 use crate::shaderlab::parse_shader;
-use crate::shaderlab::pragma::{PragmaSource, ProgramPragmas, collect_pragmas};
-use crate::source::{FileId, SourceStore};
+use crate::shaderlab::pragma::{KeywordKind, PragmaSource, ProgramPragmas, collect_pragmas};
+use crate::source::{FileId, SourceStore, Spanned};
+use std::collections::HashSet;
 
 /// More keywords than this in one pass is refused (each is a bit of every variant key, and no
 /// real pass comes close).
@@ -22,6 +23,9 @@ pub struct CatalogInput {
     pub materials: Vec<FileId>,
     /// Shaders built whole, whatever the materials (by name).
     pub always_include: Vec<String>,
+    /// The renderer's global keyword state, where the project knows it (`kiln.toml`'s
+    /// `global_keywords`): multi_compile sets are built only with the option it chooses.
+    pub global_keywords: Option<Vec<Spanned<String>>>,
 }
 
 pub struct Catalog {
@@ -125,6 +129,11 @@ pub fn catalog(
         materials.extend(material);
     }
 
+    let global: Option<Vec<&str>> =
+        input.global_keywords.as_ref().map(|g| g.iter().map(|k| k.value.as_str()).collect());
+    if let Some(global) = &input.global_keywords {
+        diagnostics.extend(unknown_global_keywords(&shaders, global));
+    }
     for (index, shader) in shaders.iter_mut().enumerate() {
         let everything = input.always_include.contains(&shader.shader.name.value);
         let keywords: Vec<Vec<&str>> = materials
@@ -134,7 +143,7 @@ pub fn catalog(
             .collect();
         let users: Vec<usize> = (0..materials.len()).filter(|&m| materials[m].shader == index).collect();
         for program in shader.passes.iter_mut().filter_map(|p| p.program.as_mut()) {
-            match program.keywords.enumerate(&keywords, everything) {
+            match program.keywords.enumerate(&keywords, everything, global.as_deref()) {
                 Ok(variants) => program.variants = variants,
                 Err(count) => {
                     let span =
@@ -166,6 +175,28 @@ pub fn catalog(
     // Include blocks and files are shared by passes: report each of their problems once.
     diagnostics::dedup(&mut diagnostics);
     (Catalog { shaders, materials }, diagnostics)
+}
+
+/// A global keyword no pass has in a multi_compile set chooses nothing: most likely a typo.
+fn unknown_global_keywords(shaders: &[CatalogShader], global: &[Spanned<String>]) -> Vec<Diagnostic> {
+    let declared: HashSet<&str> = shaders
+        .iter()
+        .flat_map(|s| &s.passes)
+        .filter_map(|p| p.program.as_ref())
+        .flat_map(|p| p.keywords.sets())
+        .filter(|set| set.kind == KeywordKind::MultiCompile)
+        .flat_map(|set| set.options.iter().filter_map(|o| o.keyword.as_deref()))
+        .collect();
+    global
+        .iter()
+        .filter(|k| !declared.contains(k.value.as_str()))
+        .map(|k| {
+            let message = format!("global keyword `{}` is in no multi_compile set", k.value);
+            Diagnostic::warning("K0213", message)
+                .at(k.span, "no pass declares it")
+                .help("global keywords choose options of `#pragma multi_compile` sets; check the spelling")
+        })
+        .collect()
 }
 
 fn passes(

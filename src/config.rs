@@ -23,6 +23,10 @@ pub struct ProjectConfig {
     pub backends: Vec<Backend>,
     /// Shaders built with every variant, whether or not a material uses them (by shader name).
     pub always_include: Vec<String>,
+    /// The renderer's global keyword state, when it is known (a scene's light setup, say): each
+    /// `multi_compile` set is then built only with the option these choose (see
+    /// [`crate::keywords::GlobalKeywords`]). Unset: every option of every set.
+    pub global_keywords: Option<Vec<toml::Spanned<String>>>,
     /// Warnings count as errors.
     pub strict: bool,
 }
@@ -43,6 +47,7 @@ impl Default for ProjectConfig {
             output: PathBuf::from("build/kiln"),
             backends: vec![Backend::Wgsl, Backend::Spirv],
             always_include: Vec::new(),
+            global_keywords: None,
             strict: false,
         }
     }
@@ -57,7 +62,7 @@ pub fn parse_config(store: &SourceStore, file: FileId) -> (ProjectConfig, Vec<Di
             let message = error.message().trim().trim_end_matches('.').to_string();
             let diagnostic = Diagnostic::error("K0003", "invalid `kiln.toml`")
                 .at(span, message)
-                .help("fields are shaders, materials, include_paths, output, backends, always_include and strict (docs/project.md)");
+                .help("fields are shaders, materials, include_paths, output, backends, always_include, global_keywords and strict (docs/project.md)");
             (ProjectConfig::default(), vec![diagnostic])
         }
     }

@@ -2,7 +2,6 @@
 //! Exit codes: 0 success, 1 diagnostics with errors, 2 usage or I/O failure.
 
 use clap::{Parser, Subcommand, ValueEnum};
-use kiln::catalog::CatalogInput;
 use kiln::compile::VariantSelection;
 use kiln::diagnostics::{self, Diagnostic};
 use kiln::preprocess::{Includes, Stage};
@@ -133,7 +132,13 @@ fn main() -> ExitCode {
             preprocess(&VariantRequest { shader, pass, keywords, stage })
         }
         Command::Build { project, threads, output } => {
-            let mode = BuildMode { write: true, output, unused_shaders: VariantSelection::Used, threads };
+            let mode = BuildMode {
+                write: true,
+                output,
+                unused_shaders: VariantSelection::Used,
+                threads,
+                global_keywords: None,
+            };
             build(project, mode, Format::Text)
         }
         Command::Check { project, format, all_variants } => {
@@ -142,7 +147,17 @@ fn main() -> ExitCode {
             } else {
                 VariantSelection::DefaultsAndEachKeyword
             };
-            build(project, BuildMode { write: false, output: None, unused_shaders, threads: None }, format)
+            build(
+                project,
+                BuildMode {
+                    write: false,
+                    output: None,
+                    unused_shaders,
+                    threads: None,
+                    global_keywords: None,
+                },
+                format,
+            )
         }
         Command::Reflect { shader, pass, keywords } => {
             let mut store = SourceStore::new();
@@ -273,7 +288,7 @@ fn list(paths: Vec<PathBuf>, format: Format, show_materials: bool) -> ExitCode {
     problems.extend(found);
     let (materials, found) = kiln::project::load_files(&mut store, &workspace.materials);
     problems.extend(found);
-    let input = CatalogInput { shaders, materials, always_include: workspace.always_include.clone() };
+    let input = workspace.catalog_input(shaders, materials);
     let (listing, diagnostics) = kiln::listing::list_shaders(&mut store, &mut includes, &input);
     problems.extend(diagnostics);
     if workspace.strict {

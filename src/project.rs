@@ -11,7 +11,7 @@ use crate::material::Preset;
 use crate::preprocess::{IncludeConfig, Includes, Preprocessed, Stage, preprocess};
 use crate::shaderlab::ast::ProgramLanguage;
 use crate::shaderlab::parse_shader;
-use crate::source::{FileId, LoadError, SourceStore};
+use crate::source::{FileId, LoadError, SourceStore, Span, Spanned};
 use std::path::{Path, PathBuf};
 
 /// Host failures: what was asked for cannot be read at all.
@@ -218,7 +218,22 @@ pub struct Workspace {
     pub materials: Vec<PathBuf>,
     pub include: Option<IncludeConfig>,
     pub always_include: Vec<String>,
+    /// `kiln.toml`'s `global_keywords`, gathered from every project folder that sets it.
+    pub global_keywords: Option<Vec<Spanned<String>>>,
     pub strict: bool,
+}
+
+impl Workspace {
+    /// What the catalogue is built from: the loaded shader and material files, with this
+    /// workspace's settings.
+    pub fn catalog_input(&self, shaders: Vec<FileId>, materials: Vec<FileId>) -> CatalogInput {
+        CatalogInput {
+            shaders,
+            materials,
+            always_include: self.always_include.clone(),
+            global_keywords: self.global_keywords.clone(),
+        }
+    }
 }
 
 /// Gathers the shaders, materials and include settings of `paths` (see [`Workspace`]); a
@@ -246,6 +261,11 @@ pub fn open_workspace(
             let file = store.load(&config_path)?;
             let (config, problems) = crate::config::parse_config(store, file);
             diagnostics.extend(problems);
+            if let Some(global) = &config.global_keywords {
+                let spanned =
+                    global.iter().map(|k| Spanned::new(k.get_ref().clone(), Span::new(file, k.span())));
+                workspace.global_keywords.get_or_insert_with(Vec::new).extend(spanned);
+            }
             config
         } else {
             ProjectConfig::default()
@@ -352,6 +372,8 @@ pub struct BuildMode {
     pub output: Option<PathBuf>,
     pub unused_shaders: VariantSelection,
     pub threads: Option<usize>,
+    /// Overrides the projects' `global_keywords` (a build script that knows the scene).
+    pub global_keywords: Option<Vec<String>>,
 }
 
 /// Builds (or checks) the projects and files at `paths`. `Err` only when a path does not exist.
@@ -367,7 +389,10 @@ pub fn build_project(
     diagnostics.extend(found);
     let (materials, found) = load_files(store, &workspace.materials);
     diagnostics.extend(found);
-    let input = CatalogInput { shaders, materials, always_include: workspace.always_include.clone() };
+    let mut input = workspace.catalog_input(shaders, materials);
+    if let Some(global) = &mode.global_keywords {
+        input.global_keywords = Some(given_global_keywords(store, global));
+    }
     let (catalog, found) = catalog(store, &mut includes, &input);
     diagnostics.extend(found);
     let options = BuildOptions {
@@ -382,6 +407,22 @@ pub fn build_project(
         diagnostics::promote_warnings(&mut diagnostics);
     }
     Ok((result, diagnostics))
+}
+
+/// Global keywords given by a caller become a source of their own, a keyword a line, so that
+/// diagnostics can point at them and the no-op check sees them change.
+fn given_global_keywords(store: &mut SourceStore, keywords: &[String]) -> Vec<Spanned<String>> {
+    let text: String = keywords.iter().map(|k| format!("{k}\n")).collect();
+    let file = store.add("<global keywords given to the build>", text);
+    let mut start = 0;
+    keywords
+        .iter()
+        .map(|k| {
+            let span = Span::new(file, start..start + k.len());
+            start += k.len() + 1;
+            Spanned::new(k.clone(), span)
+        })
+        .collect()
 }
 
 /// `kiln reflect`: compiles one variant of one pass (writing nothing) and returns its bind group

@@ -1,5 +1,6 @@
 //! Builds exactly the shader variants the scene's materials use: the scene's materials become
-//! `.mat` files in OUT_DIR, and kiln builds the bundled Lit shader with them.
+//! `.mat` files in OUT_DIR, and kiln builds the bundled Lit shader with them, specialised for the
+//! scene's lights.
 
 // Only the material conversion is needed here; the renderer uses the rest.
 #[allow(dead_code)]
@@ -20,6 +21,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for (name, text) in scene.material_files() {
         std::fs::write(materials.join(name), text)?;
     }
-    kiln::Build::new(manifest_dir.join("../../fixtures/project/shaders")).materials(materials).run()?;
+    kiln::Build::new(manifest_dir.join("../../fixtures/project/shaders"))
+        .materials(materials)
+        .global_keywords(scene.global_keywords())
+        .run()?;
     Ok(())
 }

@@ -376,7 +376,7 @@ fn select_variants(
         VariantSelection::Used => Vec::new(),
         VariantSelection::DefaultsAndEachKeyword => program.keywords.defaults_and_each_keyword(),
         VariantSelection::All { limit } => match program.keywords.possible() {
-            Some(n) if n <= limit => program.keywords.enumerate(&[], true).unwrap_or_default(),
+            Some(n) if n <= limit => program.keywords.enumerate(&[], true, None).unwrap_or_default(),
             count => {
                 let count = count.map_or("more than 2^128".to_string(), |n| n.to_string());
                 let span =

@@ -129,35 +129,57 @@ impl PassKeywords {
         self.sets.iter().try_fold(1u128, |n, set| n.checked_mul(set.options.len() as u128))
     }
 
-    /// The option a material's keywords choose in a shader_feature set: its keyword, else the off
-    /// choice, else (an error the material reported) the first option.
-    fn choose(&self, set: usize, keywords: &[&str]) -> usize {
+    /// The option `keywords` choose in a set: its keyword, else the off choice.
+    fn chosen(&self, set: usize, keywords: &[&str]) -> Option<usize> {
         let options = &self.sets[set].options;
         options
             .iter()
             .position(|o| o.keyword.as_deref().is_some_and(|k| keywords.contains(&k)))
             .or_else(|| options.iter().position(|o| o.keyword.is_none()))
-            .unwrap_or(0)
+    }
+
+    /// The option a material's keywords choose in a shader_feature set, or (an error the material
+    /// reported) the first option.
+    fn choose(&self, set: usize, keywords: &[&str]) -> usize {
+        self.chosen(set, keywords).unwrap_or(0)
+    }
+
+    /// The options of a multi_compile set that are built: all of them, or, with the renderer's
+    /// global keyword state known, the one it chooses (a set with neither one of those keywords
+    /// nor `_` keeps all: the renderer may turn on any of them).
+    fn built_options(&self, set: usize, global: Option<&[&str]>) -> Vec<usize> {
+        match global.and_then(|global| self.chosen(set, global)) {
+            Some(option) => vec![option],
+            None => (0..self.sets[set].options.len()).collect(),
+        }
     }
 
     /// The variants the materials need (each given as its enabled keywords), or every variant
     /// when `everything` (a shader the project always includes). Sorted by their choices. More
     /// than [`MAX_VARIANTS_PER_PASS`] is refused with the count it would have been, before
-    /// anything that size is built.
-    pub fn enumerate(&self, materials: &[Vec<&str>], everything: bool) -> Result<Vec<Variant>, u128> {
+    /// anything that size is built. `global` is the renderer's global keyword state where it is
+    /// known: each multi_compile set is then built with only the option it chooses.
+    pub fn enumerate(
+        &self,
+        materials: &[Vec<&str>],
+        everything: bool,
+        global: Option<&[&str]>,
+    ) -> Result<Vec<Variant>, u128> {
         let features: Vec<usize> = self.indices(KeywordKind::ShaderFeature);
         let multi: Vec<usize> = self.indices(KeywordKind::MultiCompile);
-        let size = |sets: &[usize]| {
-            sets.iter().try_fold(1u128, |n, &s| n.checked_mul(self.sets[s].options.len() as u128))
-        };
-        if everything && size(&features).is_none_or(|n| n > MAX_VARIANTS_PER_PASS) {
+        let feature_options: Vec<Vec<usize>> =
+            features.iter().map(|&s| (0..self.sets[s].options.len()).collect()).collect();
+        let multi_options: Vec<Vec<usize>> = multi.iter().map(|&s| self.built_options(s, global)).collect();
+        let size =
+            |options: &[Vec<usize>]| options.iter().try_fold(1u128, |n, o| n.checked_mul(o.len() as u128));
+        if everything && size(&feature_options).is_none_or(|n| n > MAX_VARIANTS_PER_PASS) {
             return Err(self.possible().unwrap_or(u128::MAX));
         }
         // Distinct projections onto the shader_feature sets, each with the materials needing it.
         let mut projections: Vec<(Vec<usize>, Vec<usize>)> = Vec::new();
         let mut index: HashMap<Vec<usize>, usize> = HashMap::new();
         if everything {
-            for choice in self.product(&features) {
+            for choice in product(&feature_options) {
                 index.insert(choice.clone(), projections.len());
                 projections.push((choice, Vec::new()));
             }
@@ -173,11 +195,12 @@ impl PassKeywords {
         if projections.is_empty() {
             return Ok(Vec::new());
         }
-        let total = size(&multi).and_then(|n| n.checked_mul(projections.len() as u128)).unwrap_or(u128::MAX);
+        let total =
+            size(&multi_options).and_then(|n| n.checked_mul(projections.len() as u128)).unwrap_or(u128::MAX);
         if total > MAX_VARIANTS_PER_PASS {
             return Err(total);
         }
-        let combos = self.product(&multi);
+        let combos = product(&multi_options);
         let mut variants = Vec::with_capacity(projections.len() * combos.len());
         for (projection, users) in &projections {
             for combo in &combos {
@@ -235,21 +258,20 @@ impl PassKeywords {
     fn indices(&self, kind: KeywordKind) -> Vec<usize> {
         (0..self.sets.len()).filter(|&i| self.sets[i].kind == kind).collect()
     }
+}
 
-    /// Every combination of one option per set of `sets`, in lexicographic order.
-    fn product(&self, sets: &[usize]) -> Vec<Vec<usize>> {
-        sets.iter().fold(vec![Vec::new()], |partial, &set| {
-            let options = self.sets[set].options.len();
-            partial
-                .iter()
-                .flat_map(|prefix| {
-                    (0..options).map(move |o| {
-                        let mut next = prefix.clone();
-                        next.push(o);
-                        next
-                    })
+/// Every combination of one option from each list, in lexicographic order.
+fn product(options: &[Vec<usize>]) -> Vec<Vec<usize>> {
+    options.iter().fold(vec![Vec::new()], |partial, choices| {
+        partial
+            .iter()
+            .flat_map(|prefix| {
+                choices.iter().map(move |&o| {
+                    let mut next = prefix.clone();
+                    next.push(o);
+                    next
                 })
-                .collect()
-        })
-    }
+            })
+            .collect()
+    })
 }

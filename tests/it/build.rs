@@ -23,6 +23,7 @@ fn build_into(
         output: Some(output.to_path_buf()),
         unused_shaders: VariantSelection::Used,
         threads,
+        global_keywords: None,
     };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from(project)], &mode, &|_, _| {}).expect("project exists");
@@ -171,9 +172,10 @@ fn check_covers_shaders_no_material_uses() {
         assert_eq!(output.status.code(), Some(0), "{}", String::from_utf8_lossy(&output.stderr));
         String::from_utf8_lossy(&output.stderr).into_owned()
     };
-    // Defaults and each keyword alone: Lit 3, Unlit 2, Complex 5.
-    assert!(check(&["check", "fixtures/project/shaders"]).contains("10 variants"));
-    assert!(check(&["check", "fixtures/project/shaders", "--all-variants"]).contains("18 variants"));
+    // Defaults and each keyword alone: Lit 4, Unlit 2, Complex 5.
+    assert!(check(&["check", "fixtures/project/shaders"]).contains("11 variants"));
+    // Lit 8, Unlit 2, Complex 12.
+    assert!(check(&["check", "fixtures/project/shaders", "--all-variants"]).contains("22 variants"));
     // `check` writes nothing.
     assert!(!root().join("fixtures/project/shaders/build").exists());
 }
@@ -189,6 +191,7 @@ fn every_bad_build_input_has_a_pinned_diagnostic() {
             output: None,
             unused_shaders: VariantSelection::All { limit: 4096 },
             threads: Some(1),
+            global_keywords: None,
         };
         let (result, mut diagnostics) =
             build_project(&mut store, std::slice::from_ref(&path), &mode, &|_, _| {}).expect("exists");
@@ -279,8 +282,13 @@ fn a_build_script_error_reads_like_a_compiler_error() {
 #[test]
 fn an_always_included_shader_with_too_many_variants_is_refused_with_the_count() {
     let mut store = SourceStore::new();
-    let mode =
-        BuildMode { write: false, output: None, unused_shaders: VariantSelection::Used, threads: Some(1) };
+    let mode = BuildMode {
+        write: false,
+        output: None,
+        unused_shaders: VariantSelection::Used,
+        threads: Some(1),
+        global_keywords: None,
+    };
     let path = PathBuf::from("fixtures/bad/always_include");
     let (result, mut diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
     diagnostics.extend(result.diagnostics);

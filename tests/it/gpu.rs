@@ -172,6 +172,7 @@ fn every_variant_makes_a_render_pipeline() {
         output: Some(output.path().to_path_buf()),
         unused_shaders: VariantSelection::Used,
         threads: None,
+        global_keywords: None,
     };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from("fixtures/project")], &mode, &|_, _| {})

@@ -4,7 +4,6 @@
 
 use crate::support::{fixture_files, kiln, root};
 use expect_test::expect_file;
-use kiln::catalog::CatalogInput;
 use kiln::diagnostics::{has_errors, render_plain};
 use kiln::keywords::PassKeywords;
 use kiln::listing::list_shaders;
@@ -25,7 +24,7 @@ fn list(paths: &[PathBuf]) -> (kiln::listing::Listing, String, bool) {
     diagnostics.extend(found);
     let (materials, found) = load_files(&mut store, &workspace.materials);
     diagnostics.extend(found);
-    let input = CatalogInput { shaders, materials, always_include: workspace.always_include.clone() };
+    let input = workspace.catalog_input(shaders, materials);
     let (listing, found) = list_shaders(&mut store, &mut includes, &input);
     diagnostics.extend(found);
     (listing, render_plain(&store, &diagnostics), has_errors(&diagnostics))
@@ -92,7 +91,7 @@ fn the_seed_listing_of_eight_variants() {
         set(KeywordKind::ShaderFeature, &["_", "_METALLIC_MAP"]),
     ]);
     let variants =
-        pass.enumerate(&[vec![], vec!["_METALLIC_MAP"], vec!["_METALLIC_MAP"]], false).expect("small");
+        pass.enumerate(&[vec![], vec!["_METALLIC_MAP"], vec!["_METALLIC_MAP"]], false, None).expect("small");
     let listed: Vec<String> =
         variants.iter().map(|v| pass.keywords(&v.bits).collect::<Vec<_>>().join(" ")).collect();
     assert_eq!(
@@ -111,8 +110,8 @@ fn the_seed_listing_of_eight_variants() {
     // Only the metallic-map users need the metallic variants.
     assert_eq!(variants[1].materials, [1, 2]);
     // Without materials nothing is built; always-included, everything is.
-    assert!(pass.enumerate(&[], false).expect("small").is_empty());
-    assert_eq!(pass.enumerate(&[], true).expect("small").len(), 8);
+    assert!(pass.enumerate(&[], false, None).expect("small").is_empty());
+    assert_eq!(pass.enumerate(&[], true, None).expect("small").len(), 8);
 }
 
 proptest! {
@@ -144,7 +143,7 @@ proptest! {
             .collect();
         let refs: Vec<Vec<&str>> = materials.iter().map(|m| m.iter().map(String::as_str).collect()).collect();
         let pass = PassKeywords::new(sets.clone());
-        let variants = pass.enumerate(&refs, false).expect("small");
+        let variants = pass.enumerate(&refs, false, None).expect("small");
 
         let multi: usize = sets.iter().filter(|s| s.kind == KeywordKind::MultiCompile).map(|s| s.options.len()).product();
         let projections: HashSet<Vec<String>> = materials.iter().map(|m| { let mut m = m.clone(); m.sort(); m }).collect();
@@ -174,6 +173,25 @@ fn every_bad_material_has_a_pinned_diagnostic() {
         let cli = kiln(&["list", shader.to_str().expect("utf-8"), material.to_str().expect("utf-8")]);
         assert_eq!(cli.status.code(), Some(if warning_only { 0 } else { 1 }), "{}", material.display());
     }
+}
+
+#[test]
+fn global_keywords_choose_one_option_of_each_multi_compile_set() {
+    let project = PathBuf::from("fixtures/warn/global_keywords");
+    let (listing, rendered, errors) = list(std::slice::from_ref(&project));
+    assert!(!errors);
+    expect_file![root().join("fixtures/warn/global_keywords/kiln.stderr")].assert_eq(&rendered);
+    // The light set takes its listed keyword, the shadow set `_`, the fog set (no `_`) both.
+    assert_eq!(
+        used_keywords(&listing, "Warn/Lights"),
+        [vec!["_SINGLE_DIRECTIONAL_LIGHT", "_FOG_LINEAR"], vec!["_SINGLE_DIRECTIONAL_LIGHT", "_FOG_EXP"]]
+    );
+    // Without a known state every option is built.
+    let dir = tempfile::tempdir().expect("temp dir");
+    std::fs::copy(project.join("Lights.shader"), dir.path().join("Lights.shader")).expect("copy");
+    std::fs::write(dir.path().join("kiln.toml"), "always_include = [\"Warn/Lights\"]\n").expect("write");
+    let (listing, _, _) = list(&[dir.path().to_path_buf()]);
+    assert_eq!(used_keywords(&listing, "Warn/Lights").len(), 8);
 }
 
 #[test]
@@ -268,7 +286,7 @@ fn a_huge_multi_compile_product_is_never_materialised() {
     let sets: Vec<KeywordSet> =
         (0..30).map(|i| set(KeywordKind::MultiCompile, &["_", &format!("_M{i}")])).collect();
     let pass = PassKeywords::new(sets);
-    assert_eq!(pass.enumerate(&[], false), Ok(Vec::new()));
-    assert_eq!(pass.enumerate(&[vec![]], false).map(|v| v.len()), Err(1 << 30));
-    assert_eq!(pass.enumerate(&[], true).map(|v| v.len()), Err(1 << 30));
+    assert_eq!(pass.enumerate(&[], false, None), Ok(Vec::new()));
+    assert_eq!(pass.enumerate(&[vec![]], false, None).map(|v| v.len()), Err(1 << 30));
+    assert_eq!(pass.enumerate(&[], true, None).map(|v| v.len()), Err(1 << 30));
 }

@@ -68,8 +68,8 @@ fn every_fixture_variant_preprocesses_to_golden_wgsl_that_naga_accepts() {
             }
         }
     }
-    // Lit 2 x 2, Unlit 2, Complex 2 x 3 x 2.
-    assert_eq!(checked, 18);
+    // Lit 2 x 2 x 2, Unlit 2, Complex 2 x 3 x 2.
+    assert_eq!(checked, 22);
 }
 
 #[test]

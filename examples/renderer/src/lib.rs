@@ -331,7 +331,8 @@ pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, scene: &Scene) -> Resu
     for index in draw_order(scene) {
         let object = &scene.objects[index];
         let m = &object.material;
-        let variant = pass.variant(&m.keywords()).map_err(|e| e.to_string())?;
+        let keywords = [m.keywords(), scene.global_keywords()].concat();
+        let variant = pass.variant(&keywords).map_err(|e| e.to_string())?;
         let (vertex, fragment) =
             (variant.vertex.as_ref().expect("vertex"), variant.fragment.as_ref().expect("fragment"));
         let module = |wgsl: &str| {

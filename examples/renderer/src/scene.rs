@@ -63,6 +63,12 @@ impl Scene {
         toml::from_str(text)
     }
 
+    /// The global keywords the scene runs with, which the build specialises for: with one light,
+    /// the lighting without the loop over lights.
+    pub fn global_keywords(&self) -> Vec<&'static str> {
+        if self.lights.len() == 1 { vec!["_SINGLE_DIRECTIONAL_LIGHT"] } else { Vec::new() }
+    }
+
     /// One kiln material file per object: `(file name, TOML text)`.
     pub fn material_files(&self) -> Vec<(String, String)> {
         self.objects

@@ -34,7 +34,7 @@ fn the_scene_matches_the_f64_reference() {
     assert!(image.pixels.chunks(4).filter(|p| p[0] > 100 || p[1] > 100 || p[2] > 100).count() > 2000);
 }
 
-/// The keyword sets of the variants kiln builds for a scene.
+/// The keyword sets of the variants kiln builds for a scene, as its build script builds them.
 fn variants_for(scene: &Scene) -> BTreeSet<Vec<String>> {
     let dir = tempfile::tempdir().expect("temp dir");
     let materials = dir.path().join("materials");
@@ -45,6 +45,7 @@ fn variants_for(scene: &Scene) -> BTreeSet<Vec<String>> {
     let shaders = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/project/shaders");
     let output = kiln::Build::new(shaders)
         .materials(materials)
+        .global_keywords(scene.global_keywords())
         .out_dir(dir.path().join("out"))
         .execute()
         .expect("builds");
@@ -72,4 +73,18 @@ fn a_material_preset_decides_the_variants_built() {
     clipped.material.preset = "Opaque".into();
     let rebuilt = variants_for(&changed);
     assert_eq!(rebuilt, expected.iter().filter(|k| **k != ["_CLIPPING"]).cloned().collect());
+}
+
+#[test]
+fn a_scene_with_one_light_gets_only_the_single_light_variants() {
+    let mut scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
+    scene.lights.truncate(1);
+    let built = variants_for(&scene);
+    let single = |mut keywords: Vec<&str>| {
+        keywords.push("_SINGLE_DIRECTIONAL_LIGHT");
+        keywords.into_iter().map(String::from).collect::<Vec<_>>()
+    };
+    let expected: BTreeSet<Vec<String>> =
+        [single(vec![]), single(vec!["_CLIPPING"]), single(vec!["_PREMULTIPLY_ALPHA"])].into_iter().collect();
+    assert_eq!(built, expected);
 }

@@ -1,5 +1,6 @@
 // kiln preprocess fixtures/project/shaders/Lit.shader --pass 0
 
+            // The renderer's light setup: with one directional light, no loop over lights.
 // LitPass.wgsl: the seed's lit pass. Alpha clipping and premultiplied alpha are shader features.
 
 // Common.wgsl: small helpers and space transforms every other library file may use.
@@ -228,33 +229,34 @@ fn LitPassFragment(input: Varyings) -> @location(0) vec4<f32> {
 
 // ---- source map: output lines <- original lines ----
 // 1 <- fixtures/project/shaders/Lit.shader:24
-// 2 <- fixtures/project/shaders/LitPass.wgsl:1
-// 3 <- fixtures/project/shaders/LitPass.wgsl:4
-// 4 <- <kiln>/shaderlib/Common.wgsl:1
-// 5 <- <kiln>/shaderlib/Common.wgsl:4
-// 6-8 <- <kiln>/shaderlib/Input.wgsl:1-3
-// 9-22 <- <kiln>/shaderlib/Input.wgsl:6-19
-// 23-24 <- <kiln>/shaderlib/Common.wgsl:6-7
-// 25-49 <- <kiln>/shaderlib/Common.wgsl:9-33
-// 50 <- <kiln>/shaderlib/Surface.wgsl:1
-// 51-61 <- <kiln>/shaderlib/Surface.wgsl:4-14
-// 62 <- <kiln>/shaderlib/Light.wgsl:1
-// 63 <- <kiln>/shaderlib/Light.wgsl:4
-// 64-91 <- <kiln>/shaderlib/Light.wgsl:6-33
-// 92-93 <- <kiln>/shaderlib/BRDF.wgsl:1-2
-// 94 <- <kiln>/shaderlib/BRDF.wgsl:5
-// 95-96 <- <kiln>/shaderlib/BRDF.wgsl:9-10
-// 97-135 <- <kiln>/shaderlib/BRDF.wgsl:12-50
-// 136 <- <kiln>/shaderlib/BRDF.wgsl:52
-// 137-147 <- <kiln>/shaderlib/BRDF.wgsl:73-83
-// 148-152 <- <kiln>/shaderlib/BRDF.wgsl:85-89
-// 153 <- <kiln>/shaderlib/Lighting.wgsl:1
-// 154 <- <kiln>/shaderlib/Lighting.wgsl:4
-// 155-164 <- <kiln>/shaderlib/Lighting.wgsl:8-17
-// 165-171 <- <kiln>/shaderlib/Lighting.wgsl:25-31
-// 172 <- <kiln>/shaderlib/Lighting.wgsl:33
-// 173-213 <- fixtures/project/shaders/LitPass.wgsl:10-50
-// 214-220 <- fixtures/project/shaders/LitPass.wgsl:56-62
-// 221 <- fixtures/project/shaders/LitPass.wgsl:66
-// 222-225 <- fixtures/project/shaders/LitPass.wgsl:68-71
-// 226 <- fixtures/project/shaders/Lit.shader:31
+// 2 <- fixtures/project/shaders/Lit.shader:28
+// 3 <- fixtures/project/shaders/LitPass.wgsl:1
+// 4 <- fixtures/project/shaders/LitPass.wgsl:4
+// 5 <- <kiln>/shaderlib/Common.wgsl:1
+// 6 <- <kiln>/shaderlib/Common.wgsl:4
+// 7-9 <- <kiln>/shaderlib/Input.wgsl:1-3
+// 10-23 <- <kiln>/shaderlib/Input.wgsl:6-19
+// 24-25 <- <kiln>/shaderlib/Common.wgsl:6-7
+// 26-50 <- <kiln>/shaderlib/Common.wgsl:9-33
+// 51 <- <kiln>/shaderlib/Surface.wgsl:1
+// 52-62 <- <kiln>/shaderlib/Surface.wgsl:4-14
+// 63 <- <kiln>/shaderlib/Light.wgsl:1
+// 64 <- <kiln>/shaderlib/Light.wgsl:4
+// 65-92 <- <kiln>/shaderlib/Light.wgsl:6-33
+// 93-94 <- <kiln>/shaderlib/BRDF.wgsl:1-2
+// 95 <- <kiln>/shaderlib/BRDF.wgsl:5
+// 96-97 <- <kiln>/shaderlib/BRDF.wgsl:9-10
+// 98-136 <- <kiln>/shaderlib/BRDF.wgsl:12-50
+// 137 <- <kiln>/shaderlib/BRDF.wgsl:52
+// 138-148 <- <kiln>/shaderlib/BRDF.wgsl:73-83
+// 149-153 <- <kiln>/shaderlib/BRDF.wgsl:85-89
+// 154 <- <kiln>/shaderlib/Lighting.wgsl:1
+// 155 <- <kiln>/shaderlib/Lighting.wgsl:4
+// 156-165 <- <kiln>/shaderlib/Lighting.wgsl:8-17
+// 166-172 <- <kiln>/shaderlib/Lighting.wgsl:25-31
+// 173 <- <kiln>/shaderlib/Lighting.wgsl:33
+// 174-214 <- fixtures/project/shaders/LitPass.wgsl:10-50
+// 215-221 <- fixtures/project/shaders/LitPass.wgsl:56-62
+// 222 <- fixtures/project/shaders/LitPass.wgsl:66
+// 223-226 <- fixtures/project/shaders/LitPass.wgsl:68-71
+// 227 <- fixtures/project/shaders/Lit.shader:33

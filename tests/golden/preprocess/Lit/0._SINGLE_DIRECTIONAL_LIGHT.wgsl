@@ -1,0 +1,260 @@
+// kiln preprocess fixtures/project/shaders/Lit.shader --pass 0 --keywords _SINGLE_DIRECTIONAL_LIGHT
+
+            // The renderer's light setup: with one directional light, no loop over lights.
+// LitPass.wgsl: the seed's lit pass. Alpha clipping and premultiplied alpha are shader features.
+
+// Common.wgsl: small helpers and space transforms every other library file may use.
+
+// Input.wgsl: the per-frame and per-object uniforms the renderer provides (Unity's names, so
+// ported code reads the same). kiln binds them by update frequency: `UnityPerFrame` with the
+// lights in group 0, `UnityPerDraw` in group 2.
+
+struct PerFrame {
+    unity_MatrixVP: mat4x4<f32>,
+    _WorldSpaceCameraPos: vec3<f32>,
+}
+
+struct PerDraw {
+    unity_ObjectToWorld: mat4x4<f32>,
+    unity_WorldToObject: mat4x4<f32>,
+}
+
+var<uniform> UnityPerFrame: PerFrame;
+var<uniform> UnityPerDraw: PerDraw;
+
+
+// The smallest normal f32: clamping a squared length to it keeps inverseSqrt finite.
+
+fn Square(v: f32) -> f32 {
+    return v * v;
+}
+
+// Normalises v, or returns zero for a zero-length vector instead of NaN (L = -V makes the half
+// vector zero, where normalize() would divide by zero).
+fn SafeNormalize(v: vec3<f32>) -> vec3<f32> {
+    return v * inverseSqrt(max(dot(v, v), 1.17549435e-38));
+}
+
+fn TransformObjectToWorld(positionOS: vec3<f32>) -> vec3<f32> {
+    return (UnityPerDraw.unity_ObjectToWorld * vec4<f32>(positionOS, 1.0)).xyz;
+}
+
+fn TransformWorldToHClip(positionWS: vec3<f32>) -> vec4<f32> {
+    return UnityPerFrame.unity_MatrixVP * vec4<f32>(positionWS, 1.0);
+}
+
+// Normals go through the inverse transpose of object-to-world; multiplying the row vector by
+// world-to-object is exactly that, and stays correct under non-uniform scale.
+fn TransformObjectToWorldNormal(normalOS: vec3<f32>) -> vec3<f32> {
+    return SafeNormalize((vec4<f32>(normalOS, 0.0) * UnityPerDraw.unity_WorldToObject).xyz);
+}
+
+// Surface.wgsl: what lighting needs to know about the point being shaded.
+
+struct Surface {
+    normal: vec3<f32>,
+    // From the surface towards the camera, normalised.
+    viewDirection: vec3<f32>,
+    color: vec3<f32>,
+    alpha: f32,
+    metallic: f32,
+    smoothness: f32,
+}
+
+// Light.wgsl: up to four directional lights, uploaded by the renderer in `_CustomLight`.
+
+
+// Layout (std140-like, from naga): count at 0, colours at 16, directions at 80, 144 bytes.
+struct CustomLight {
+    _DirectionalLightCount: i32,
+    _DirectionalLightColors: array<vec4<f32>, 4>,
+    _DirectionalLightDirections: array<vec4<f32>, 4>,
+}
+
+var<uniform> _CustomLight: CustomLight;
+
+struct Light {
+    color: vec3<f32>,
+    // Towards the light (where it comes from), normalised.
+    direction: vec3<f32>,
+}
+
+// A count above the array size would read past the lights the renderer wrote, so it is clamped.
+fn GetDirectionalLightCount() -> i32 {
+    return min(_CustomLight._DirectionalLightCount, 4);
+}
+
+fn GetDirectionalLight(index: i32) -> Light {
+    var light: Light;
+    light.color = _CustomLight._DirectionalLightColors[index].rgb;
+    light.direction = _CustomLight._DirectionalLightDirections[index].xyz;
+    return light;
+}
+
+// BRDF.wgsl: the metallic workflow split into diffuse and specular colours, and the minimal
+// Cook-Torrance specular term Unity's Universal RP uses.
+
+
+// Dielectrics still reflect about 4% of light specularly.
+
+struct BRDF {
+    diffuse: vec3<f32>,
+    specular: vec3<f32>,
+    roughness: f32,
+}
+
+// Maps metallic 0..1 to a diffuse share of 0.96..0, so that no surface loses its highlight.
+fn OneMinusReflectivity(metallic: f32) -> f32 {
+    let range = 1.0 - 0.04;
+    return range - metallic * range;
+}
+
+fn PerceptualSmoothnessToPerceptualRoughness(smoothness: f32) -> f32 {
+    return 1.0 - smoothness;
+}
+
+// Disney's mapping: perceptual roughness is squared.
+fn PerceptualRoughnessToRoughness(perceptualRoughness: f32) -> f32 {
+    return perceptualRoughness * perceptualRoughness;
+}
+
+// With `applyAlphaToDiffuse` the diffuse part is premultiplied by alpha (glass-like blending that
+// keeps the specular highlight); blending with `One`/`OneMinusSrcAlpha` then expects it.
+fn GetBRDF(surface: Surface, applyAlphaToDiffuse: bool) -> BRDF {
+    var brdf: BRDF;
+    let oneMinusReflectivity = OneMinusReflectivity(surface.metallic);
+    brdf.diffuse = surface.color * oneMinusReflectivity;
+    if (applyAlphaToDiffuse) {
+        brdf.diffuse *= surface.alpha;
+    }
+    brdf.specular = mix(vec3<f32>(0.04), surface.color, surface.metallic);
+    let perceptualRoughness = PerceptualSmoothnessToPerceptualRoughness(surface.smoothness);
+    brdf.roughness = PerceptualRoughnessToRoughness(perceptualRoughness);
+    return brdf;
+}
+
+// Roughness is kept at or above this in the stable form, so that r^2 stays a normal f32 (and
+// f16) number instead of flushing to zero.
+
+// The seed's minimal Cook-Torrance exactly as written:
+// r^2 / (d^2 * max(0.1, (L.H)^2) * (4r + 2)) with d = (N.H)^2 (r^2 - 1) + 1.00001.
+fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
+    let h = SafeNormalize(light.direction + surface.viewDirection);
+    let nh2 = Square(saturate(dot(surface.normal, h)));
+    let lh2 = Square(saturate(dot(light.direction, h)));
+    let r2 = Square(brdf.roughness);
+    let d2 = Square(nh2 * (r2 - 1.0) + 1.00001);
+    let normalization = brdf.roughness * 4.0 + 2.0;
+    return r2 / (d2 * max(0.1, lh2) * normalization);
+}
+
+fn DirectBRDF(surface: Surface, brdf: BRDF, light: Light) -> vec3<f32> {
+    return SpecularStrength(surface, brdf, light) * brdf.specular + brdf.diffuse;
+}
+
+// Lighting.wgsl: light arriving at the surface, shaded by the BRDF, summed over the lights.
+
+
+// Light from behind the surface contributes nothing, hence the saturate.
+fn IncomingLight(surface: Surface, light: Light) -> vec3<f32> {
+    return saturate(dot(surface.normal, light.direction)) * light.color;
+}
+
+fn GetLightingForLight(surface: Surface, brdf: BRDF, light: Light) -> vec3<f32> {
+    return IncomingLight(surface, light) * DirectBRDF(surface, brdf, light);
+}
+
+// Specialised for scenes with one directional light: no loop, the first light or none.
+fn GetLighting(surface: Surface, brdf: BRDF) -> vec3<f32> {
+    let lit = GetLightingForLight(surface, brdf, GetDirectionalLight(0));
+    return select(vec3<f32>(0.0), lit, GetDirectionalLightCount() > 0);
+}
+
+
+// The material's properties: one uniform block, as Unity's `UnityPerMaterial` buffer.
+struct LitMaterial {
+    _BaseMap_ST: vec4<f32>,
+    _BaseColor: vec4<f32>,
+    _Cutoff: f32,
+    _Metallic: f32,
+    _Smoothness: f32,
+}
+
+var<uniform> UnityPerMaterial: LitMaterial;
+var _BaseMap: texture_2d<f32>;
+var sampler_BaseMap: sampler;
+
+struct Attributes {
+    @location(0) positionOS: vec3<f32>,
+    @location(1) normalOS: vec3<f32>,
+    @location(2) baseUV: vec2<f32>,
+}
+
+struct Varyings {
+    @builtin(position) positionCS: vec4<f32>,
+    @location(0) positionWS: vec3<f32>,
+    @location(1) normalWS: vec3<f32>,
+    @location(2) baseUV: vec2<f32>,
+}
+
+@vertex
+fn LitPassVertex(input: Attributes) -> Varyings {
+    var output: Varyings;
+    output.positionWS = TransformObjectToWorld(input.positionOS);
+    output.positionCS = TransformWorldToHClip(output.positionWS);
+    output.normalWS = TransformObjectToWorldNormal(input.normalOS);
+    let st = UnityPerMaterial._BaseMap_ST;
+    output.baseUV = input.baseUV * st.xy + st.zw;
+    return output;
+}
+
+@fragment
+fn LitPassFragment(input: Varyings) -> @location(0) vec4<f32> {
+    let base = textureSample(_BaseMap, sampler_BaseMap, input.baseUV) * UnityPerMaterial._BaseColor;
+    var surface: Surface;
+    surface.normal = SafeNormalize(input.normalWS);
+    surface.viewDirection = SafeNormalize(UnityPerFrame._WorldSpaceCameraPos - input.positionWS);
+    surface.color = base.rgb;
+    surface.alpha = base.a;
+    surface.metallic = UnityPerMaterial._Metallic;
+    surface.smoothness = UnityPerMaterial._Smoothness;
+    let brdf = GetBRDF(surface, false);
+    let color = GetLighting(surface, brdf);
+    return vec4<f32>(color, surface.alpha);
+}
+
+            
+
+// ---- source map: output lines <- original lines ----
+// 1 <- fixtures/project/shaders/Lit.shader:24
+// 2 <- fixtures/project/shaders/Lit.shader:28
+// 3 <- fixtures/project/shaders/LitPass.wgsl:1
+// 4 <- fixtures/project/shaders/LitPass.wgsl:4
+// 5 <- <kiln>/shaderlib/Common.wgsl:1
+// 6 <- <kiln>/shaderlib/Common.wgsl:4
+// 7-9 <- <kiln>/shaderlib/Input.wgsl:1-3
+// 10-23 <- <kiln>/shaderlib/Input.wgsl:6-19
+// 24-25 <- <kiln>/shaderlib/Common.wgsl:6-7
+// 26-50 <- <kiln>/shaderlib/Common.wgsl:9-33
+// 51 <- <kiln>/shaderlib/Surface.wgsl:1
+// 52-62 <- <kiln>/shaderlib/Surface.wgsl:4-14
+// 63 <- <kiln>/shaderlib/Light.wgsl:1
+// 64 <- <kiln>/shaderlib/Light.wgsl:4
+// 65-92 <- <kiln>/shaderlib/Light.wgsl:6-33
+// 93-94 <- <kiln>/shaderlib/BRDF.wgsl:1-2
+// 95 <- <kiln>/shaderlib/BRDF.wgsl:5
+// 96-97 <- <kiln>/shaderlib/BRDF.wgsl:9-10
+// 98-136 <- <kiln>/shaderlib/BRDF.wgsl:12-50
+// 137 <- <kiln>/shaderlib/BRDF.wgsl:52
+// 138-148 <- <kiln>/shaderlib/BRDF.wgsl:73-83
+// 149-153 <- <kiln>/shaderlib/BRDF.wgsl:85-89
+// 154 <- <kiln>/shaderlib/Lighting.wgsl:1
+// 155 <- <kiln>/shaderlib/Lighting.wgsl:4
+// 156-165 <- <kiln>/shaderlib/Lighting.wgsl:8-17
+// 166-170 <- <kiln>/shaderlib/Lighting.wgsl:19-23
+// 171 <- <kiln>/shaderlib/Lighting.wgsl:33
+// 172-212 <- fixtures/project/shaders/LitPass.wgsl:10-50
+// 213-219 <- fixtures/project/shaders/LitPass.wgsl:56-62
+// 220 <- fixtures/project/shaders/LitPass.wgsl:66
+// 221-224 <- fixtures/project/shaders/LitPass.wgsl:68-71
+// 225 <- fixtures/project/shaders/Lit.shader:33
