@@ -46,11 +46,33 @@ fn GetBRDF(surface: Surface, applyAlphaToDiffuse: bool) -> BRDF {
     return brdf;
 }
 
-// Roughness is kept at or above this in the stable form, so that r^2 stays a normal f32 (and
-// f16) number instead of flushing to zero.
+// Roughness is kept at or above this in the stable forms, so that r^2 stays a normal f32 number
+// (and, scaled by 2^10, a normal f16 one) instead of flushing to zero.
 #define KILN_MIN_ROUGHNESS 0.002
 
-#if defined(_SPECULAR_STABLE)
+#if defined(_SPECULAR_HALF)
+// The stable form with its arithmetic in half precision, for adapters with `shader-f16`. The pass
+// must begin its program with `enable f16;` and declare `#pragma require native16bit`. f16's
+// smallest normal number is 2^-14, which r^2 = 0.002^2 and (1 - (N.H)^2) near a highlight fall
+// below; so squares are carried scaled by 2^10 (lengths by 2^5), where every term stays normal.
+// The peak, r^2 / d^2, exceeds f16's largest number (65504) for smooth surfaces, so the last
+// square and division are taken in f32.
+fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
+    let h32 = SafeNormalize(light.direction + surface.viewDirection);
+    let n = vec3<f16>(surface.normal);
+    let h = vec3<f16>(h32);
+    let nh = saturate(dot(n, h));
+    let nxh = cross(n, h) * 32.0h;
+    let deficit = 1.0h - dot(n, n) * dot(h, h);
+    let oneMinusNh2 = clamp(dot(nxh, nxh) + select(deficit * 1024.0h, 0.0h, abs(deficit) < 0.01h), 0.0h, 1024.0h);
+    let lh = saturate(dot(vec3<f16>(light.direction), h));
+    let roughness = max(f16(brdf.roughness), f16(KILN_MIN_ROUGHNESS)) * 32.0h;
+    let d = oneMinusNh2 + nh * nh * roughness * roughness + 0.01024h;
+    let q = f32(roughness / d) * 32.0;
+    let normalization = f32(roughness) * 0.125 + 2.0;
+    return q * q / (max(0.1, f32(lh * lh)) * normalization);
+}
+#elif defined(_SPECULAR_STABLE)
 // The same model, written to avoid cancellation: d = (1 - (N.H)^2) + (N.H)^2 r^2 + 0.00001 with
 // 1 - (N.H)^2 taken from |N x H|^2 (Lagrange's identity: 1 - (N.H)^2 = 1 - |N|^2|H|^2 + |N x H|^2),
 // exact where N.H is near 1 and the seed's form loses every digit of 1 - (N.H)^2. The identity's

@@ -194,13 +194,13 @@ fn main() -> ExitCode {
 }
 
 fn accuracy() -> ExitCode {
-    let (device, queue, adapter, timestamps) = match kiln::accuracy::gpu::device() {
+    let gpu = match kiln::accuracy::gpu::device() {
         Ok(found) => found,
         Err(reason) => return usage_failure(&reason),
     };
-    match kiln::accuracy::gpu::run(&device, &queue, timestamps) {
+    match kiln::accuracy::gpu::run(&gpu) {
         Ok((rows, timings, method)) => {
-            print_out(&kiln::accuracy::render(&adapter, &rows, &timings, &method));
+            print_out(&kiln::accuracy::render(&gpu.adapter, &rows, &timings, &method));
             ExitCode::SUCCESS
         }
         Err(error) => {

@@ -11,6 +11,9 @@ use wgpu::util::DeviceExt;
 
 /// The harness, a WGSL program in kiln's dialect.
 const HARNESS: &str = r#"
+#if defined(_SPECULAR_HALF)
+enable f16;
+#endif
 #include "Lighting.wgsl"
 
 struct Case {
@@ -114,6 +117,11 @@ fn timing_invocations() -> u32 {
 
 /// The WGSL kiln emits for one entry point of the harness with these keywords.
 pub fn harness_wgsl(keywords: &[&str], entry: &str) -> Result<(String, Bindings), String> {
+    // What `#pragma require native16bit` gives a pass.
+    let capabilities = match keywords.contains(&"_SPECULAR_HALF") {
+        true => naga::valid::Capabilities::SHADER_FLOAT16,
+        false => naga::valid::Capabilities::empty(),
+    };
     let mut store = SourceStore::new();
     let file = store.add("accuracy-harness.wgsl", HARNESS);
     let mut includes = Includes::new(IncludeConfig::new(Vec::new()));
@@ -123,7 +131,7 @@ pub fn harness_wgsl(keywords: &[&str], entry: &str) -> Result<(String, Bindings)
     if crate::diagnostics::has_errors(&problems) {
         return Err(crate::diagnostics::render_plain(&store, &problems));
     }
-    crate::compile::compile_compute(&out, &store, entry, naga::valid::Capabilities::empty())
+    crate::compile::compile_compute(&out, &store, entry, capabilities)
         .map_err(|errors| crate::diagnostics::render_plain(&store, &errors))
 }
 
@@ -329,8 +337,19 @@ impl Harness<'_> {
     }
 }
 
-/// Requests a device with timestamp queries when the adapter has them.
-pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String, bool), String> {
+/// A device for the harness, with what its adapter offers.
+pub struct Gpu {
+    pub device: wgpu::Device,
+    pub queue: wgpu::Queue,
+    /// The adapter's name, type and backend.
+    pub adapter: String,
+    pub timestamps: bool,
+    /// `shader-f16`: the f16 formulation runs.
+    pub f16: bool,
+}
+
+/// Requests a device with timestamp queries and `shader-f16` where the adapter has them.
+pub fn device() -> Result<Gpu, String> {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle());
     let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
         power_preference: wgpu::PowerPreference::HighPerformance,
@@ -338,27 +357,30 @@ pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String, bool), String> {
     }))
     .map_err(|e| format!("no GPU adapter ({e})"))?;
     let info = adapter.get_info();
-    let timestamps = adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY);
     let required_features =
-        if timestamps { wgpu::Features::TIMESTAMP_QUERY } else { wgpu::Features::empty() };
+        adapter.features() & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::SHADER_F16);
     let (device, queue) = pollster::block_on(
         adapter.request_device(&wgpu::DeviceDescriptor { required_features, ..Default::default() }),
     )
     .map_err(|e| format!("no device: {e}"))?;
-    Ok((device, queue, format!("{} ({:?}, {:?})", info.name, info.device_type, info.backend), timestamps))
+    Ok(Gpu {
+        device,
+        queue,
+        adapter: format!("{} ({:?}, {:?})", info.name, info.device_type, info.backend),
+        timestamps: required_features.contains(wgpu::Features::TIMESTAMP_QUERY),
+        f16: required_features.contains(wgpu::Features::SHADER_F16),
+    })
 }
 
 /// Every formulation on every hard-case set, and the timings. The last value says how the times
 /// were taken.
-pub fn run(
-    device: &wgpu::Device,
-    queue: &wgpu::Queue,
-    timestamps: bool,
-) -> Result<(Vec<Row>, Vec<Timing>, String), String> {
-    let harness = Harness { device, queue, timestamps };
+pub fn run(gpu: &Gpu) -> Result<(Vec<Row>, Vec<Timing>, String), String> {
+    let harness = Harness { device: &gpu.device, queue: &gpu.queue, timestamps: gpu.timestamps };
+    let formulations: Vec<Formulation> =
+        Formulation::ALL.into_iter().filter(|f| gpu.f16 || !f.needs_f16()).collect();
     let sets = hard_cases();
     let mut rows = Vec::new();
-    for formulation in Formulation::ALL {
+    for &formulation in &formulations {
         let one = harness.pipeline(formulation.keywords(), "OneLight")?;
         let all = harness.pipeline(formulation.keywords(), "AllLights")?;
         for set in &sets {
@@ -392,7 +414,7 @@ pub fn run(
     let one_light = light_bytes(&light_set.0, 1);
     let four_lights = light_bytes(&light_set.0, 4);
     let mut timings = Vec::new();
-    for formulation in Formulation::ALL {
+    for &formulation in &formulations {
         timings.push(Timing {
             what: format!("{}: one light (GetLightingForLight)", formulation.name()),
             nanoseconds_per_evaluation: harness.time(
@@ -417,9 +439,13 @@ pub fn run(
             nanoseconds_per_evaluation: harness.time(&keywords, "TimeAllLights", ordinary, Some(bytes))?,
         });
     }
+    let f16 = match gpu.f16 {
+        true => "",
+        false => "The adapter has no shader-f16: the f16 form was not run.\n",
+    };
     let method = format!(
-        "Times: {} over {} invocations x {EVALUATIONS} evaluations each (inputs derived in registers, one write per invocation), median of 7 dispatches.",
-        if timestamps {
+        "{f16}Times: {} over {} invocations x {EVALUATIONS} evaluations each (inputs derived in registers, one write per invocation), median of 7 dispatches.",
+        if gpu.timestamps {
             "GPU timestamp queries around the compute pass"
         } else {
             "CPU wall time around submit and wait (no timestamp queries on this adapter)"

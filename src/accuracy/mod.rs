@@ -15,15 +15,18 @@ pub enum Formulation {
     Seed,
     /// `_SPECULAR_STABLE`: the same model without cancellation, roughness floored.
     Stable,
+    /// `_SPECULAR_HALF`: the stable form in f16 arithmetic (adapters with `shader-f16`).
+    Half,
 }
 
 impl Formulation {
-    pub const ALL: [Formulation; 2] = [Formulation::Seed, Formulation::Stable];
+    pub const ALL: [Formulation; 3] = [Formulation::Seed, Formulation::Stable, Formulation::Half];
 
     pub fn name(self) -> &'static str {
         match self {
             Formulation::Seed => "seed",
             Formulation::Stable => "stable",
+            Formulation::Half => "stable f16",
         }
     }
 
@@ -32,7 +35,13 @@ impl Formulation {
         match self {
             Formulation::Seed => &[],
             Formulation::Stable => &["_SPECULAR_STABLE"],
+            Formulation::Half => &["_SPECULAR_HALF"],
         }
+    }
+
+    /// Needs `shader-f16` (naga's `SHADER_FLOAT16`, wgpu's `SHADER_F16`).
+    pub fn needs_f16(self) -> bool {
+        self == Formulation::Half
     }
 }
 
@@ -241,7 +250,10 @@ pub fn reference(case: &Case, formulation: Formulation) -> r::Vec3 {
     let brdf: Brdf = r::get_brdf(&case.surface, case.premultiply);
     let specular = match formulation {
         Formulation::Seed => r::specular_strength(&case.surface, &brdf, &case.light),
-        Formulation::Stable => r::specular_strength_stable(&case.surface, &brdf, &case.light),
+        // The f16 form computes the stable form's model; its error is its precision's.
+        Formulation::Stable | Formulation::Half => {
+            r::specular_strength_stable(&case.surface, &brdf, &case.light)
+        }
     };
     let direct = r::add(r::scale(brdf.specular, specular), brdf.diffuse);
     r::mul(r::incoming_light(&case.surface, &case.light), direct)

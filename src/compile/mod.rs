@@ -142,7 +142,7 @@ pub fn compile_compute(
     }
     let info =
         stage::keep_entry_point(&mut module, entry, compute, capabilities, &mapper).map_err(|d| vec![d])?;
-    let wgsl = stage::write_wgsl(&module, &info).map_err(|d| vec![d])?;
+    let wgsl = stage::write_wgsl(&module, &info, capabilities).map_err(|d| vec![d])?;
     let used: Bindings = module
         .global_variables
         .iter()

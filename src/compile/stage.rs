@@ -68,8 +68,11 @@ pub fn compile(
     let info = keep_entry_point(&mut module, request.entry, stage, request.allowed.capabilities(), mapper)?;
     check_limits(&module, request, mapper)?;
 
-    let wgsl =
-        if request.backends.contains(&Backend::Wgsl) { Some(write_wgsl(&module, &info)?) } else { None };
+    let wgsl = if request.backends.contains(&Backend::Wgsl) {
+        Some(write_wgsl(&module, &info, request.allowed.capabilities())?)
+    } else {
+        None
+    };
     let spirv = if request.backends.contains(&Backend::Spirv) {
         let options = naga::back::spv::Options {
             flags: naga::back::spv::WriterFlags::empty(),
@@ -99,12 +102,19 @@ pub(super) fn keep_entry_point(
     validate(module, ValidationFlags::all(), capabilities, mapper)
 }
 
+/// WGSL for a validated module. naga's writer emits `enable f16;` only when a type declaration
+/// uses f16, not for f16 arithmetic in expressions (conversions, `h` literals), which the WGSL
+/// front end then rejects; a module allowed f16 always gets the directive.
 pub(super) fn write_wgsl(
     module: &naga::Module,
     info: &naga::valid::ModuleInfo,
+    capabilities: naga::valid::Capabilities,
 ) -> Result<String, Diagnostic> {
-    naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
-        .map_err(|e| backend_error("WGSL", e.to_string()))
+    let wgsl = naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
+        .map_err(|e| backend_error("WGSL", e.to_string()))?;
+    let needs_enable = capabilities.contains(naga::valid::Capabilities::SHADER_FLOAT16)
+        && !wgsl.lines().any(|line| line.trim() == "enable f16;");
+    Ok(if needs_enable { format!("enable f16;\n{wgsl}") } else { wgsl })
 }
 
 fn backend_error(backend: &str, message: String) -> Diagnostic {

@@ -9,6 +9,7 @@ use kiln::diagnostics::{Diagnostic, has_errors, render_plain};
 use kiln::project::{BuildMode, build_project};
 use kiln::reflect::manifest::Manifest;
 use kiln::source::SourceStore;
+use naga::valid::{Capabilities, ValidationFlags};
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -52,6 +53,28 @@ fn the_example_project_builds_with_a_golden_manifest() {
         assert_eq!(bytes.len() as u64, file.size);
         assert_eq!(&blake3::hash(&bytes).to_hex()[..32], file.hash);
     }
+}
+
+#[test]
+fn an_f16_variant_is_written_with_its_enable_directive() {
+    let output = tempfile::tempdir().expect("temp dir");
+    let (result, mut diagnostics, store) = build_into("fixtures/half", output.path(), None);
+    diagnostics.extend(result.diagnostics);
+    assert!(diagnostics.is_empty(), "{}", render_plain(&store, &diagnostics));
+    let manifest = read_manifest(output.path());
+    let fragment = manifest
+        .stages()
+        .find(|s| s.entry_point == "LitPassFragment" && s.keywords == ["_SPECULAR_HALF"])
+        .expect("the f16 variant's fragment stage");
+    let path = output.path().join(&fragment.wgsl.as_ref().expect("WGSL written").path);
+    let wgsl = std::fs::read_to_string(path).expect("WGSL");
+    // naga's writer leaves the directive out when f16 appears only in expressions.
+    assert!(wgsl.starts_with("enable f16;\n"), "{}", &wgsl[..200.min(wgsl.len())]);
+    assert!(wgsl.contains("f16"));
+    let module = naga::front::wgsl::parse_str(&wgsl).expect("the written WGSL parses again");
+    naga::valid::Validator::new(ValidationFlags::all(), Capabilities::SHADER_FLOAT16)
+        .validate(&module)
+        .expect("and validates");
 }
 
 #[test]

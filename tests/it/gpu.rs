@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 
 fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
     match kiln::accuracy::gpu::device() {
-        Ok((device, queue, adapter, _)) => Some((device, queue, adapter)),
+        Ok(gpu) => Some((gpu.device, gpu.queue, gpu.adapter)),
         Err(reason) => {
             assert!(
                 std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
