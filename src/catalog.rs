@@ -8,13 +8,20 @@ use crate::material::{Material, ShaderEntry, load_material};
 use crate::preprocess::{Includes, Program, load_pass};
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
 use crate::shaderlab::parse_shader;
-use crate::shaderlab::pragma::{KeywordKind, PragmaSource, ProgramPragmas, collect_pragmas};
-use crate::source::{FileId, SourceStore, Spanned};
+use crate::shaderlab::pragma::{
+    KeywordKind, KeywordScope, KeywordSet, PragmaSource, ProgramPragmas, collect_pragmas,
+};
+use crate::source::{FileId, SourceStore, Span, Spanned};
 use std::collections::HashSet;
 
 /// More keywords than this in one pass is refused (each is a bit of every variant key, and no
 /// real pass comes close).
 pub const MAX_KEYWORDS_PER_PASS: usize = 256;
+
+/// More distinct global keywords than this in one project is refused. Global keywords share one
+/// name space the renderer sets at run time (a bit each in its global keyword state); local
+/// (`_local`) keywords are per shader and count only against [`MAX_KEYWORDS_PER_PASS`].
+pub const MAX_GLOBAL_KEYWORDS_PER_PROJECT: usize = 4096;
 
 /// The files a job looks at.
 #[derive(Debug, Clone, Default)]
@@ -110,6 +117,8 @@ pub fn catalog(
         }
     }
 
+    diagnostics.extend(too_many_global_keywords(&shaders));
+
     let entries: Vec<ShaderEntry> = shaders
         .iter()
         .map(|s| ShaderEntry {
@@ -177,13 +186,37 @@ pub fn catalog(
     (Catalog { shaders, materials }, diagnostics)
 }
 
-/// A global keyword no pass has in a multi_compile set chooses nothing: most likely a typo.
-fn unknown_global_keywords(shaders: &[CatalogShader], global: &[Spanned<String>]) -> Vec<Diagnostic> {
-    let declared: HashSet<&str> = shaders
+/// Every keyword pragma of every pass.
+fn keyword_sets(shaders: &[CatalogShader]) -> impl Iterator<Item = &KeywordSet> {
+    shaders
         .iter()
         .flat_map(|s| &s.passes)
         .filter_map(|p| p.program.as_ref())
-        .flat_map(|p| p.keywords.sets())
+        .flat_map(|p| &p.pragmas.keyword_sets)
+}
+
+/// Points at the first global keyword over [`MAX_GLOBAL_KEYWORDS_PER_PROJECT`], if any.
+fn too_many_global_keywords(shaders: &[CatalogShader]) -> Option<Diagnostic> {
+    let declared = keyword_sets(shaders)
+        .filter(|set| set.scope == KeywordScope::Global)
+        .flat_map(|set| set.options.iter().filter_map(|o| Some((o.keyword.as_deref()?, o.span))));
+    let mut seen = HashSet::new();
+    let distinct: Vec<(&str, Span)> = declared.filter(|(k, _)| seen.insert(*k)).collect();
+    let (keyword, span) = *distinct.get(MAX_GLOBAL_KEYWORDS_PER_PROJECT)?;
+    let total = distinct.len();
+    Some(
+        Diagnostic::error("K0214", format!("the project declares {total} global keywords"))
+            .at(span, format!("`{keyword}` is global keyword {}", MAX_GLOBAL_KEYWORDS_PER_PROJECT + 1))
+            .note(format!(
+                "a project may have at most {MAX_GLOBAL_KEYWORDS_PER_PROJECT} distinct global keywords"
+            ))
+            .help("make per-shader keywords `_local` (`shader_feature_local`, `multi_compile_local`)"),
+    )
+}
+
+/// A global keyword no pass has in a multi_compile set chooses nothing: most likely a typo.
+fn unknown_global_keywords(shaders: &[CatalogShader], global: &[Spanned<String>]) -> Vec<Diagnostic> {
+    let declared: HashSet<&str> = keyword_sets(shaders)
         .filter(|set| set.kind == KeywordKind::MultiCompile)
         .flat_map(|set| set.options.iter().filter_map(|o| o.keyword.as_deref()))
         .collect();

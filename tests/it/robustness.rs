@@ -149,3 +149,39 @@ fn a_multibyte_character_before_a_comment_in_a_program() {
         list_text(text);
     }
 }
+
+/// 17 shaders of 250 distinct keywords each, a `pragma` line each.
+fn many_keyword_shaders(pragma: &str) -> (SourceStore, Vec<kiln::source::FileId>) {
+    let mut store = SourceStore::new();
+    let files = (0..17)
+        .map(|s| {
+            let pragmas: String = (0..250).map(|k| format!("#pragma {pragma} _S{s}_K{k}\n")).collect();
+            let text = format!(
+                "Shader \"Limits/S{s}\" {{ SubShader {{ Pass {{\nWGSLPROGRAM\n{pragmas}ENDWGSL\n}} }} }}\n"
+            );
+            store.add(format!("limits/S{s:02}.shader"), text)
+        })
+        .collect();
+    (store, files)
+}
+
+fn catalog_of(
+    store: &mut SourceStore,
+    shaders: Vec<kiln::source::FileId>,
+) -> Vec<kiln::diagnostics::Diagnostic> {
+    let mut includes = kiln::preprocess::Includes::new(kiln::preprocess::IncludeConfig::new(Vec::new()));
+    let input = kiln::catalog::CatalogInput { shaders, ..Default::default() };
+    kiln::catalog::catalog(store, &mut includes, &input).1
+}
+
+#[test]
+fn a_project_over_the_global_keyword_limit_is_refused_at_the_first_keyword_over() {
+    let (mut store, files) = many_keyword_shaders("shader_feature");
+    let limit: Vec<_> = catalog_of(&mut store, files).into_iter().filter(|d| d.code == "K0214").collect();
+    assert_eq!(limit.len(), 1);
+    expect_test::expect_file![crate::support::root().join("tests/golden/limits/global_keywords.stderr")]
+        .assert_eq(&kiln::diagnostics::render_plain(&store, &limit));
+    // Local keywords are per shader: the same count of them is fine.
+    let (mut store, files) = many_keyword_shaders("shader_feature_local");
+    assert!(catalog_of(&mut store, files).iter().all(|d| d.code != "K0214"));
+}
