@@ -6,12 +6,18 @@
 mod layout;
 
 use crate::reflect::Resource;
-use crate::reflect::manifest::{FileRef, Manifest, PassManifest, ShaderManifest, StageManifest};
+use crate::reflect::manifest::{Manifest, PassManifest, ShaderManifest, StageManifest};
 use std::fmt::Write as _;
 use std::path::Path;
 
 /// The types every generated module shares, written once at its top.
-const PRELUDE: &str = r#"/// One stage module of a variant.
+const PRELUDE: &str = r#"/// A module's text: its range of a pack (a pass's modules, concatenated).
+const fn module(pack: &'static str, start: usize, end: usize) -> &'static str {
+    let (_, rest) = pack.split_at(start);
+    rest.split_at(end - start).0
+}
+
+/// One stage module of a variant.
 #[derive(Debug)]
 #[allow(dead_code)]
 pub struct Stage {
@@ -127,6 +133,16 @@ pub fn generate(manifest: &Manifest, output: &Path) -> String {
         manifest.kiln_version
     );
     out.push_str(PRELUDE);
+    // Each WGSL pack once; stages are slices of it.
+    let mut packs: Vec<&str> =
+        manifest.stages().filter_map(|s| s.wgsl.as_ref()).map(|f| f.path.as_str()).collect();
+    packs.sort_unstable();
+    packs.dedup();
+    for path in packs {
+        let file = output.join(path).to_string_lossy().replace('\\', "/");
+        let _ = writeln!(out, "const {}: &str = include_str!({file:?});", pack_name(path));
+    }
+    out.push('\n');
     for shader in &manifest.shaders {
         shader_module(&mut out, shader, output);
     }
@@ -227,16 +243,23 @@ fn pass_static(out: &mut String, pass: &PassManifest, output: &Path) {
     out.push_str("        ],\n    };\n");
 }
 
+/// The constant holding a WGSL pack: named by its hash, which names its file.
+fn pack_name(path: &str) -> String {
+    let stem = path.rsplit('/').next().unwrap_or(path).split('.').next().unwrap_or_default();
+    format!("PACK_{}", stem.to_ascii_uppercase())
+}
+
 fn stage(out: &mut String, name: &str, stage: Option<&StageManifest>, output: &Path) {
     let Some(stage) = stage else {
         let _ = writeln!(out, "                {name}: None,");
         return;
     };
-    let file = |f: &FileRef| output.join(&f.path).to_string_lossy().replace('\\', "/");
-    let wgsl = stage.wgsl.as_ref().map_or("\"\"".to_string(), |f| format!("include_str!({:?})", file(f)));
+    let wgsl = stage.wgsl.as_ref().map_or("\"\"".to_string(), |f| {
+        format!("super::module(super::{}, {}, {})", pack_name(&f.path), f.offset, f.end())
+    });
     let spirv = match &stage.spirv {
         // Words, not bytes: a `&[u32]` is aligned, which `include_bytes!` would not be.
-        Some(f) => match std::fs::read(output.join(&f.path)) {
+        Some(f) => match f.read(output) {
             Ok(bytes) => {
                 let words: Vec<String> = bytes
                     .chunks(4)

@@ -4,7 +4,7 @@
 
 use super::bind::{self, Declared, PassLayout};
 use super::cache::{Cache, CachedStage, PassIndex, Recorded, hash};
-use super::stage::{self, StageRequest};
+use super::stage::{self, StageOutput, StageRequest};
 use super::target::Allowed;
 use super::{Mapper, parse};
 use crate::catalog::{Catalog, CatalogPass, CatalogProgram, CatalogShader, property_references};
@@ -100,7 +100,14 @@ type Front = Result<(Vec<Declared>, Option<naga::Module>), Diagnostic>;
 
 /// A stage module from the cache or freshly compiled (`true`), with its cache key and the bytes
 /// written; `None` when its pass could not be laid out.
-type StageOutcome = Option<Result<(CachedStage, String, bool, u64), Diagnostic>>;
+/// A stage module of a pass, with its cache key: reused from the cache, or compiled now and not
+/// yet stored (the pass's compiled modules are packed together once all are done).
+enum Built {
+    Reused(CachedStage),
+    Compiled(StageOutput),
+}
+
+type StageOutcome = Option<Result<(Built, String), Diagnostic>>;
 
 /// Builds (or, without `write`, checks) every WGSL pass of the catalogue.
 pub fn build(
@@ -189,25 +196,50 @@ fn build_in_pool(
                 outcome
             })
             .collect();
+        let compiled: Vec<&StageOutput> = outcomes
+            .iter()
+            .filter_map(|o| match o {
+                Some(Ok((Built::Compiled(output), _))) => Some(output),
+                _ => None,
+            })
+            .collect();
+        let mut files = match pack_pass(&cache, &compiled) {
+            Ok((files, written)) => {
+                summary.bytes_written += written;
+                files.into_iter()
+            }
+            Err(error) => {
+                diagnostics.push(write_failure(&options.output, &error));
+                Vec::new().into_iter()
+            }
+        };
         let mut fresh = PassIndex::default();
         for (i, (outcome, front)) in outcomes.into_iter().zip(&fronts).enumerate() {
             let job = &members[i];
             if let Ok((declared, _)) = front {
                 fresh.front.insert(job.text_hash.clone(), declared.clone());
             }
-            match outcome {
-                Some(Ok((stage, key, compiled, written))) => {
-                    summary.compiled += usize::from(compiled);
-                    summary.reused += usize::from(!compiled);
-                    summary.bytes_written += written;
-                    fresh.stage.insert(key, stage.clone());
-                    stages[start + i] = Some(stage);
+            let stage = match outcome {
+                Some(Ok((Built::Reused(stage), key))) => {
+                    summary.reused += 1;
+                    Some((stage, key))
+                }
+                Some(Ok((Built::Compiled(output), key))) => {
+                    summary.compiled += 1;
+                    // Packing failed: the error is reported, the stage has no files.
+                    let [wgsl, spirv] = files.next().unwrap_or_default();
+                    Some((CachedStage { wgsl, spirv, reflection: output.reflection }, key))
                 }
                 Some(Err(mut error)) => {
                     error.notes.push(job.context.clone());
                     diagnostics.push(error);
+                    None
                 }
-                None => {}
+                None => None,
+            };
+            if let Some((stage, key)) = stage {
+                fresh.stage.insert(key, stage.clone());
+                stages[start + i] = Some(stage);
             }
         }
         if fresh != index {
@@ -517,7 +549,7 @@ fn stage_module(
     store: &SourceStore,
     cache: &Cache,
     index: &PassIndex,
-) -> Result<(CachedStage, String, bool, u64), Diagnostic> {
+) -> Result<(Built, String), Diagnostic> {
     let slots: Vec<String> = declared
         .iter()
         .filter_map(|d| pass.layout.slots.get(&d.name).map(|(g, b)| format!("{}@{g}/{b}", d.name)))
@@ -538,7 +570,7 @@ fn stage_module(
         .as_bytes(),
     );
     if let Some(cached) = index.stage.get(&key).filter(|c| cache.present(c)) {
-        return Ok((cached.clone(), key, false, 0));
+        return Ok((Built::Reused(cached.clone()), key));
     }
     let mapper = Mapper { map: &job.map, store };
     let module = match module {
@@ -554,28 +586,35 @@ fn stage_module(
         layout: &pass.layout,
         backends: &options.backends,
     };
-    let output = stage::compile(module, &request, &mapper)?;
-    let io = |e: std::io::Error| write_failure(&options.output, &e);
+    Ok((Built::Compiled(stage::compile(module, &request, &mapper)?), key))
+}
+
+/// Packs a pass's newly compiled modules, one pack per backend; returns each module's
+/// `[wgsl, spirv]` files, in order, and the bytes written.
+fn pack_pass(cache: &Cache, compiled: &[&StageOutput]) -> std::io::Result<(Vec<[Option<FileRef>; 2]>, u64)> {
+    let mut files: Vec<[Option<FileRef>; 2]> = vec![[None, None]; compiled.len()];
+    let spirv: Vec<Option<Vec<u8>>> = compiled
+        .iter()
+        .map(|o| o.spirv.as_ref().map(|words| words.iter().flat_map(|w| w.to_le_bytes()).collect()))
+        .collect();
+    let wgsl: Vec<Option<&[u8]>> = compiled.iter().map(|o| o.wgsl.as_deref().map(str::as_bytes)).collect();
     let mut written = 0;
-    let wgsl = match &output.wgsl {
-        Some(text) => {
-            let (file, bytes) = cache.module(text.as_bytes(), "wgsl").map_err(io)?;
-            written += bytes;
-            Some(file)
+    for (slot, extension, modules) in
+        [(0, "wgsl.pack", wgsl), (1, "spv.pack", spirv.iter().map(Option::as_deref).collect())]
+    {
+        let present: Vec<(usize, &[u8])> =
+            modules.iter().enumerate().filter_map(|(i, m)| Some((i, (*m)?))).collect();
+        if present.is_empty() {
+            continue;
         }
-        None => None,
-    };
-    let spirv = match &output.spirv {
-        Some(words) => {
-            let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
-            let (file, count) = cache.module(&bytes, "spv").map_err(io)?;
-            written += count;
-            Some(file)
+        let bytes: Vec<&[u8]> = present.iter().map(|(_, m)| *m).collect();
+        let (refs, count) = cache.pack(&bytes, extension)?;
+        written += count;
+        for ((i, _), file) in present.iter().zip(refs) {
+            files[*i][slot] = Some(file);
         }
-        None => None,
-    };
-    let stage = CachedStage { wgsl, spirv, reflection: output.reflection };
-    Ok((stage, key, true, written))
+    }
+    Ok((files, written))
 }
 
 fn manifest(

@@ -1,5 +1,5 @@
-//! The build's files: content-addressed stage modules, the cache that lets an unchanged variant
-//! skip naga entirely, and atomic writes (a temporary file and a rename) for all of them.
+//! The build's files: content-addressed packs of stage modules, the cache that lets an unchanged
+//! variant skip naga entirely, and atomic writes (a temporary file and a rename) for all of them.
 
 use super::bind::Declared;
 use crate::reflect::StageReflection;
@@ -87,12 +87,14 @@ impl Cache {
         self.put("pass", pass, index)
     }
 
+    /// Whether a module's pack is still in place and long enough to hold it.
+    fn in_place(&self, file: &FileRef) -> bool {
+        std::fs::metadata(self.output.join(&file.path)).is_ok_and(|m| m.len() >= file.end())
+    }
+
     /// Whether a cached stage module's files are still in place.
     pub fn present(&self, stage: &CachedStage) -> bool {
-        let present = |file: &Option<FileRef>| {
-            file.as_ref()
-                .is_none_or(|f| std::fs::metadata(self.output.join(&f.path)).is_ok_and(|m| m.len() == f.size))
-        };
+        let present = |file: &Option<FileRef>| file.as_ref().is_none_or(|f| self.in_place(f));
         present(&stage.wgsl) && present(&stage.spirv)
     }
 
@@ -107,10 +109,7 @@ impl Cache {
             serde_json::from_slice(&std::fs::read(self.output.join("manifest.json")).ok()?).ok()?;
         // Each file once, checked in parallel: this is the whole cost of a no-op build.
         use rayon::prelude::*;
-        let present = manifest
-            .files()
-            .par_iter()
-            .all(|f| std::fs::metadata(self.output.join(&f.path)).is_ok_and(|m| m.len() == f.size));
+        let present = manifest.files().par_iter().all(|f| self.in_place(f));
         present.then_some((manifest, recorded))
     }
 
@@ -119,23 +118,34 @@ impl Cache {
         self.put("build", "inputs", recorded)
     }
 
-    /// Stores a module's bytes under their hash (`modules/HASH.EXT`); returns the reference and
-    /// the bytes written (0 when the file was already there).
-    pub fn module(&self, bytes: &[u8], extension: &str) -> std::io::Result<(FileRef, u64)> {
-        let hash = hash(bytes);
-        let path = format!("modules/{hash}.{extension}");
+    /// Stores modules as one pack, the concatenation of their bytes (each distinct module once),
+    /// named by its hash (`modules/HASH.EXT`); returns each module's reference and the bytes
+    /// written (0 when the pack was already there, intact).
+    pub fn pack(&self, modules: &[&[u8]], extension: &str) -> std::io::Result<(Vec<FileRef>, u64)> {
+        let mut bytes = Vec::with_capacity(modules.iter().map(|m| m.len()).sum());
+        let mut placed: std::collections::HashMap<String, u64> = std::collections::HashMap::new();
+        let mut files = Vec::with_capacity(modules.len());
+        for module in modules {
+            let hash = hash(module);
+            let offset = *placed.entry(hash.clone()).or_insert_with(|| {
+                bytes.extend_from_slice(module);
+                (bytes.len() - module.len()) as u64
+            });
+            files.push((offset, module.len() as u64, hash));
+        }
+        let path = format!("modules/{}.{extension}", hash(&bytes));
         let full = self.output.join(&path);
-        let size = bytes.len() as u64;
-        // A file already there is kept only if it is intact.
-        let present = std::fs::metadata(&full).is_ok_and(|m| m.len() == size)
+        let present = std::fs::metadata(&full).is_ok_and(|m| m.len() == bytes.len() as u64)
             && std::fs::read(&full).is_ok_and(|existing| existing == bytes);
-        let written = if self.write && !present {
-            write_atomically(&full, bytes)?;
-            size
+        let written = if self.write && !present && !bytes.is_empty() {
+            write_atomically(&full, &bytes)?;
+            bytes.len() as u64
         } else {
             0
         };
-        Ok((FileRef { path, hash, size }, written))
+        let files =
+            files.into_iter().map(|(offset, size, hash)| FileRef { path: path.clone(), offset, size, hash });
+        Ok((files.collect(), written))
     }
 }
 

@@ -5,7 +5,7 @@ use super::{Attribute, Resource, UniformBlock};
 use serde::{Deserialize, Serialize};
 
 /// Raised whenever a field changes meaning or is removed (adding fields keeps it).
-pub const SCHEMA_VERSION: u32 = 2;
+pub const SCHEMA_VERSION: u32 = 3;
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Manifest {
@@ -28,8 +28,8 @@ impl Manifest {
     /// Every output file the manifest names, each once, in path order.
     pub fn files(&self) -> Vec<&FileRef> {
         let mut files: Vec<&FileRef> = self.stages().flat_map(|s| [&s.wgsl, &s.spirv]).flatten().collect();
-        files.sort_by(|a, b| a.path.cmp(&b.path));
-        files.dedup_by(|a, b| a.path == b.path);
+        files.sort_by(|a, b| (&a.path, a.offset).cmp(&(&b.path, b.offset)));
+        files.dedup_by(|a, b| (&a.path, a.offset) == (&b.path, b.offset));
         files
     }
 }
@@ -137,12 +137,34 @@ pub struct StageManifest {
     pub bindings: Vec<[u32; 2]>,
 }
 
-/// A file under the output folder.
+/// A stage module: `size` bytes at `offset` of a pack file under the output folder. A build
+/// writes the modules it compiles for a pass into one pack per backend, so that a build creates
+/// a few files per pass instead of two per module.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FileRef {
     /// Relative to the output folder, with `/` separators.
     pub path: String,
-    /// BLAKE3, 128 bits in hexadecimal.
-    pub hash: String,
+    pub offset: u64,
     pub size: u64,
+    /// BLAKE3 of the module's bytes, 128 bits in hexadecimal.
+    pub hash: String,
+}
+
+impl FileRef {
+    /// Where the module ends in its pack.
+    pub fn end(&self) -> u64 {
+        self.offset + self.size
+    }
+
+    /// The module's bytes, read from its pack under `output`.
+    pub fn read(&self, output: &std::path::Path) -> std::io::Result<Vec<u8>> {
+        let pack = std::fs::read(output.join(&self.path))?;
+        let range = usize::try_from(self.offset).ok().zip(usize::try_from(self.end()).ok());
+        range.and_then(|(start, end)| pack.get(start..end)).map(<[u8]>::to_vec).ok_or_else(|| {
+            std::io::Error::new(
+                std::io::ErrorKind::UnexpectedEof,
+                format!("`{}` is shorter than its modules", self.path),
+            )
+        })
+    }
 }

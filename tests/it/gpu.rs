@@ -69,11 +69,12 @@ fn module(
     let source = match source {
         Source::Wgsl => {
             let file = stage.wgsl.as_ref().expect("WGSL emitted");
-            wgpu::ShaderSource::Wgsl(std::fs::read_to_string(output.join(&file.path)).expect("read").into())
+            let text = String::from_utf8(file.read(output).expect("read")).expect("UTF-8");
+            wgpu::ShaderSource::Wgsl(text.into())
         }
         Source::SpirV => {
             let file = stage.spirv.as_ref().expect("SPIR-V emitted");
-            let bytes = std::fs::read(output.join(&file.path)).expect("read");
+            let bytes = file.read(output).expect("read");
             assert_eq!(bytes.len() % 4, 0);
             let words: Vec<u32> =
                 bytes.chunks_exact(4).map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]])).collect();

@@ -68,7 +68,7 @@ fn verified_manifest(output: &Path) -> Manifest {
         serde_json::from_slice(&std::fs::read(output.join("manifest.json")).expect("manifest"))
             .expect("manifest parses");
     for file in manifest.files() {
-        let bytes = std::fs::read(output.join(&file.path)).expect("module file");
+        let bytes = file.read(output).expect("module in its pack");
         assert_eq!(&blake3::hash(&bytes).to_hex()[..32], file.hash, "{} is intact", file.path);
     }
     manifest

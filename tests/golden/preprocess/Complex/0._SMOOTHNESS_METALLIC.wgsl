@@ -133,8 +133,8 @@ fn GetBRDF(surface: Surface, applyAlphaToDiffuse: bool) -> BRDF {
     return brdf;
 }
 
-// Roughness is kept at or above this in the stable form, so that r^2 stays a normal f32 (and
-// f16) number instead of flushing to zero.
+// Roughness is kept at or above this in the stable forms, so that r^2 stays a normal f32 number
+// (and, scaled by 2^10, a normal f16 one) instead of flushing to zero.
 
 // The seed's minimal Cook-Torrance exactly as written:
 // r^2 / (d^2 * max(0.1, (L.H)^2) * (4r + 2)) with d = (N.H)^2 (r^2 - 1) + 1.00001.
@@ -263,8 +263,8 @@ fn ComplexPassFragment(input: Varyings) -> @location(0) vec4<f32> {
 // 96-97 <- <kiln>/shaderlib/BRDF.wgsl:9-10
 // 98-136 <- <kiln>/shaderlib/BRDF.wgsl:12-50
 // 137 <- <kiln>/shaderlib/BRDF.wgsl:52
-// 138-148 <- <kiln>/shaderlib/BRDF.wgsl:73-83
-// 149-153 <- <kiln>/shaderlib/BRDF.wgsl:85-89
+// 138-148 <- <kiln>/shaderlib/BRDF.wgsl:95-105
+// 149-153 <- <kiln>/shaderlib/BRDF.wgsl:107-111
 // 154 <- <kiln>/shaderlib/Lighting.wgsl:1
 // 155 <- <kiln>/shaderlib/Lighting.wgsl:4
 // 156-165 <- <kiln>/shaderlib/Lighting.wgsl:8-17
