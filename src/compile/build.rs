@@ -189,7 +189,7 @@ fn build_in_pool(
                     Err(_) => None,
                     Ok(_) if pass.failed => None,
                     Ok((declared, module)) => {
-                        Some(stage_module(job, declared, module.take(), pass, options, store, &cache, &index))
+                        Some(stage_module(job, declared, module.take(), pass, options, store, &index))
                     }
                 };
                 tick();
@@ -539,7 +539,6 @@ fn front(job: &Job, store: &SourceStore, index: &PassIndex) -> Front {
     Ok((bind::declared(&module), Some(module)))
 }
 
-#[allow(clippy::too_many_arguments)]
 fn stage_module(
     job: &Job,
     declared: &[Declared],
@@ -547,7 +546,6 @@ fn stage_module(
     pass: &PassWork,
     options: &BuildOptions,
     store: &SourceStore,
-    cache: &Cache,
     index: &PassIndex,
 ) -> Result<(Built, String), Diagnostic> {
     let slots: Vec<String> = declared
@@ -569,7 +567,7 @@ fn stage_module(
         )
         .as_bytes(),
     );
-    if let Some(cached) = index.stage.get(&key).filter(|c| cache.present(c)) {
+    if let Some(cached) = index.stage.get(&key) {
         return Ok((Built::Reused(cached.clone()), key));
     }
     let mapper = Mapper { map: &job.map, store };

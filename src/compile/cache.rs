@@ -5,6 +5,7 @@ use super::bind::Declared;
 use crate::reflect::StageReflection;
 use crate::reflect::manifest::FileRef;
 use serde::{Deserialize, Serialize};
+use std::collections::{BTreeMap, HashSet};
 use std::path::{Path, PathBuf};
 
 /// A content hash: BLAKE3, 128 bits in hexadecimal.
@@ -17,8 +18,8 @@ pub fn hash(bytes: &[u8]) -> String {
 /// module (by its full key).
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct PassIndex {
-    pub front: std::collections::BTreeMap<String, Vec<Declared>>,
-    pub stage: std::collections::BTreeMap<String, CachedStage>,
+    pub front: BTreeMap<String, Vec<Declared>>,
+    pub stage: BTreeMap<String, CachedStage>,
 }
 
 /// The last clean build: its inputs' hash and its counts.
@@ -78,9 +79,32 @@ impl Cache {
     }
 
     /// What the last build of a pass left: one file per pass, read once and written once, so
-    /// that the cache costs two file operations per pass rather than per module.
+    /// that the cache costs two file operations per pass rather than per module. Stage modules
+    /// whose bytes are missing or damaged are dropped (and so compiled again): each pack they
+    /// point into is read once and every module's range hashed.
     pub fn pass_index(&self, pass: &str) -> PassIndex {
-        self.read("pass", pass).unwrap_or_default()
+        let mut index: PassIndex = self.read("pass", pass).unwrap_or_default();
+        let mut packs: BTreeMap<&str, Vec<&FileRef>> = BTreeMap::new();
+        for file in index.stage.values().flat_map(|s| [&s.wgsl, &s.spirv]).flatten() {
+            packs.entry(&file.path).or_default().push(file);
+        }
+        use rayon::prelude::*;
+        let intact: HashSet<(String, u64)> = packs
+            .par_iter()
+            .flat_map_iter(|(path, files)| {
+                let bytes = std::fs::read(self.output.join(path)).unwrap_or_default();
+                let whole = |f: &&&FileRef| {
+                    let range = usize::try_from(f.offset).ok().zip(usize::try_from(f.end()).ok());
+                    range.and_then(|(start, end)| bytes.get(start..end)).is_some_and(|b| hash(b) == f.hash)
+                };
+                files.iter().filter(whole).map(|f| (f.path.clone(), f.offset)).collect::<Vec<_>>()
+            })
+            .collect();
+        let kept = |file: &Option<FileRef>| {
+            file.as_ref().is_none_or(|f| intact.contains(&(f.path.clone(), f.offset)))
+        };
+        index.stage.retain(|_, stage| kept(&stage.wgsl) && kept(&stage.spirv));
+        index
     }
 
     pub fn put_pass_index(&self, pass: &str, index: &PassIndex) -> std::io::Result<()> {
@@ -90,12 +114,6 @@ impl Cache {
     /// Whether a module's pack is still in place and long enough to hold it.
     fn in_place(&self, file: &FileRef) -> bool {
         std::fs::metadata(self.output.join(&file.path)).is_ok_and(|m| m.len() >= file.end())
-    }
-
-    /// Whether a cached stage module's files are still in place.
-    pub fn present(&self, stage: &CachedStage) -> bool {
-        let present = |file: &Option<FileRef>| file.as_ref().is_none_or(|f| self.in_place(f));
-        present(&stage.wgsl) && present(&stage.spirv)
     }
 
     /// The previous build's manifest, when that build had exactly these inputs (`key`), ended

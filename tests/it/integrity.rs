@@ -135,3 +135,35 @@ fn damaged_cache_entries_and_modules_are_rebuilt_never_used() {
     let third = build(&root().join("fixtures/project"), &output);
     assert_eq!(third.compiled, 0);
 }
+
+#[test]
+fn a_damaged_module_in_a_pack_is_recompiled_though_its_cache_entry_is_intact() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = dir.path().join("out");
+    let first = build(&root().join("fixtures/project"), &output);
+    let manifest = verified_manifest(&output);
+    // Flip one byte inside one module (same size); the pass indexes stay as they were.
+    let victim = manifest.files()[0].clone();
+    let pack = output.join(&victim.path);
+    let mut bytes = std::fs::read(&pack).expect("read");
+    bytes[victim.offset as usize + victim.size as usize / 2] ^= 0x20;
+    std::fs::write(&pack, &bytes).expect("write");
+    // Forget that the last build was clean, as any edit would, so the build looks at each module.
+    std::fs::remove_dir_all(output.join(".cache/build")).expect("remove the inputs record");
+    let second = build(&root().join("fixtures/project"), &output);
+    // Exactly the stage modules whose bytes those were are compiled again (several stage texts
+    // can compile to the same bytes, stored once: a stage is its entry point and keywords).
+    let damaged: std::collections::BTreeSet<(&str, &[String])> = manifest
+        .stages()
+        .filter(|s| {
+            [&s.wgsl, &s.spirv]
+                .into_iter()
+                .flatten()
+                .any(|f| (&f.path, f.offset) == (&victim.path, victim.offset))
+        })
+        .map(|s| (s.entry_point.as_str(), s.keywords.as_slice()))
+        .collect();
+    assert!(!damaged.is_empty() && damaged.len() < first.compiled);
+    assert_eq!(second.compiled, damaged.len());
+    verified_manifest(&output);
+}
