@@ -3,8 +3,8 @@
 //! and the manifest assembled in a fixed order so that output never depends on the thread count.
 
 use super::bind::{self, Declared, PassLayout};
-use super::cache::{Cache, CachedStage, PassIndex, Recorded, hash};
-use super::stage::{self, StageOutput, StageRequest};
+use super::cache::{Cache, CachedStage, ModuleBytes, PassIndex, Recorded, hash};
+use super::stage::{self, StageRequest};
 use super::target::Allowed;
 use super::{Mapper, parse};
 use crate::catalog::{Catalog, CatalogPass, CatalogProgram, CatalogShader, property_references};
@@ -104,7 +104,14 @@ type Front = Result<(Vec<Declared>, Option<naga::Module>), Diagnostic>;
 /// yet stored (the pass's compiled modules are packed together once all are done).
 enum Built {
     Reused(CachedStage),
-    Compiled(StageOutput),
+    Compiled(Compiled),
+}
+
+/// A stage compiled now: its module per backend (`[wgsl, spirv]`), hashed where it was compiled
+/// so that packing, which is serial, only concatenates.
+struct Compiled {
+    modules: [Option<ModuleBytes>; 2],
+    reflection: StageReflection,
 }
 
 type StageOutcome = Option<Result<(Built, String), Diagnostic>>;
@@ -196,7 +203,7 @@ fn build_in_pool(
                 outcome
             })
             .collect();
-        let compiled: Vec<&StageOutput> = outcomes
+        let compiled: Vec<&Compiled> = outcomes
             .iter()
             .filter_map(|o| match o {
                 Some(Ok((Built::Compiled(output), _))) => Some(output),
@@ -224,11 +231,11 @@ fn build_in_pool(
                     summary.reused += 1;
                     Some((stage, key))
                 }
-                Some(Ok((Built::Compiled(output), key))) => {
+                Some(Ok((Built::Compiled(compiled), key))) => {
                     summary.compiled += 1;
                     // Packing failed: the error is reported, the stage has no files.
                     let [wgsl, spirv] = files.next().unwrap_or_default();
-                    Some((CachedStage { wgsl, spirv, reflection: output.reflection }, key))
+                    Some((CachedStage { wgsl, spirv, reflection: compiled.reflection }, key))
                 }
                 Some(Err(mut error)) => {
                     error.notes.push(job.context.clone());
@@ -584,29 +591,26 @@ fn stage_module(
         layout: &pass.layout,
         backends: &options.backends,
     };
-    Ok((Built::Compiled(stage::compile(module, &request, &mapper)?), key))
+    let output = stage::compile(module, &request, &mapper)?;
+    let module = |bytes: Vec<u8>| ModuleBytes { hash: hash(&bytes), bytes };
+    let spirv = output.spirv.map(|words| module(words.iter().flat_map(|w| w.to_le_bytes()).collect()));
+    let modules = [output.wgsl.map(|text| module(text.into_bytes())), spirv];
+    Ok((Built::Compiled(Compiled { modules, reflection: output.reflection }), key))
 }
 
 /// Packs a pass's newly compiled modules, one pack per backend; returns each module's
 /// `[wgsl, spirv]` files, in order, and the bytes written.
-fn pack_pass(cache: &Cache, compiled: &[&StageOutput]) -> std::io::Result<(Vec<[Option<FileRef>; 2]>, u64)> {
+fn pack_pass(cache: &Cache, compiled: &[&Compiled]) -> std::io::Result<(Vec<[Option<FileRef>; 2]>, u64)> {
     let mut files: Vec<[Option<FileRef>; 2]> = vec![[None, None]; compiled.len()];
-    let spirv: Vec<Option<Vec<u8>>> = compiled
-        .iter()
-        .map(|o| o.spirv.as_ref().map(|words| words.iter().flat_map(|w| w.to_le_bytes()).collect()))
-        .collect();
-    let wgsl: Vec<Option<&[u8]>> = compiled.iter().map(|o| o.wgsl.as_deref().map(str::as_bytes)).collect();
     let mut written = 0;
-    for (slot, extension, modules) in
-        [(0, "wgsl.pack", wgsl), (1, "spv.pack", spirv.iter().map(Option::as_deref).collect())]
-    {
-        let present: Vec<(usize, &[u8])> =
-            modules.iter().enumerate().filter_map(|(i, m)| Some((i, (*m)?))).collect();
+    for (slot, extension) in [(0, "wgsl.pack"), (1, "spv.pack")] {
+        let present: Vec<(usize, &ModuleBytes)> =
+            compiled.iter().enumerate().filter_map(|(i, c)| Some((i, c.modules[slot].as_ref()?))).collect();
         if present.is_empty() {
             continue;
         }
-        let bytes: Vec<&[u8]> = present.iter().map(|(_, m)| *m).collect();
-        let (refs, count) = cache.pack(&bytes, extension)?;
+        let modules: Vec<&ModuleBytes> = present.iter().map(|(_, m)| *m).collect();
+        let (refs, count) = cache.pack(&modules, extension)?;
         written += count;
         for ((i, _), file) in present.iter().zip(refs) {
             files[*i][slot] = Some(file);

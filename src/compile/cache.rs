@@ -5,7 +5,7 @@ use super::bind::Declared;
 use crate::reflect::StageReflection;
 use crate::reflect::manifest::FileRef;
 use serde::{Deserialize, Serialize};
-use std::collections::{BTreeMap, HashSet};
+use std::collections::{BTreeMap, HashMap, HashSet};
 use std::path::{Path, PathBuf};
 
 /// A content hash: BLAKE3, 128 bits in hexadecimal.
@@ -137,21 +137,22 @@ impl Cache {
     }
 
     /// Stores modules as one pack, the concatenation of their bytes (each distinct module once),
-    /// named by its hash (`modules/HASH.EXT`); returns each module's reference and the bytes
-    /// written (0 when the pack was already there, intact).
-    pub fn pack(&self, modules: &[&[u8]], extension: &str) -> std::io::Result<(Vec<FileRef>, u64)> {
-        let mut bytes = Vec::with_capacity(modules.iter().map(|m| m.len()).sum());
-        let mut placed: std::collections::HashMap<String, u64> = std::collections::HashMap::new();
+    /// named by the hash of their hashes, which fix its bytes (`modules/HASH.EXT`); returns each
+    /// module's reference and the bytes written (0 when the pack was already there, intact).
+    pub fn pack(&self, modules: &[&ModuleBytes], extension: &str) -> std::io::Result<(Vec<FileRef>, u64)> {
+        let mut bytes = Vec::with_capacity(modules.iter().map(|m| m.bytes.len()).sum());
+        let mut placed: HashMap<&str, u64> = HashMap::new();
+        let mut names = String::new();
         let mut files = Vec::with_capacity(modules.len());
         for module in modules {
-            let hash = hash(module);
-            let offset = *placed.entry(hash.clone()).or_insert_with(|| {
-                bytes.extend_from_slice(module);
-                (bytes.len() - module.len()) as u64
+            let offset = *placed.entry(&module.hash).or_insert_with(|| {
+                names.push_str(&module.hash);
+                bytes.extend_from_slice(&module.bytes);
+                (bytes.len() - module.bytes.len()) as u64
             });
-            files.push((offset, module.len() as u64, hash));
+            files.push((offset, module));
         }
-        let path = format!("modules/{}.{extension}", hash(&bytes));
+        let path = format!("modules/{}.{extension}", hash(names.as_bytes()));
         let full = self.output.join(&path);
         let present = std::fs::metadata(&full).is_ok_and(|m| m.len() == bytes.len() as u64)
             && std::fs::read(&full).is_ok_and(|existing| existing == bytes);
@@ -161,10 +162,20 @@ impl Cache {
         } else {
             0
         };
-        let files =
-            files.into_iter().map(|(offset, size, hash)| FileRef { path: path.clone(), offset, size, hash });
-        Ok((files.collect(), written))
+        let file = |(offset, module): (u64, &&ModuleBytes)| FileRef {
+            path: path.clone(),
+            offset,
+            size: module.bytes.len() as u64,
+            hash: module.hash.clone(),
+        };
+        Ok((files.into_iter().map(file).collect(), written))
     }
+}
+
+/// A compiled module's bytes and their [`hash`].
+pub struct ModuleBytes {
+    pub bytes: Vec<u8>,
+    pub hash: String,
 }
 
 /// Writes through a temporary file in the same folder and a rename, so a reader never sees half a
