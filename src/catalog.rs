@@ -12,6 +12,7 @@ use crate::shaderlab::pragma::{
     KeywordKind, KeywordScope, KeywordSet, PragmaSource, ProgramPragmas, collect_pragmas,
 };
 use crate::source::{FileId, SourceStore, Span, Spanned};
+use rayon::prelude::*;
 use std::collections::HashSet;
 
 /// More keywords than this in one pass is refused (each is a bit of every variant key, and no
@@ -131,9 +132,12 @@ pub fn catalog(
                 .collect(),
         })
         .collect();
+    // Materials are many and independent: resolved in parallel, kept in their order.
+    let store_view: &SourceStore = store;
+    let resolved: Vec<(Option<Material>, Vec<Diagnostic>)> =
+        input.materials.par_iter().map(|&file| load_material(store_view, file, &entries)).collect();
     let mut materials = Vec::new();
-    for &file in &input.materials {
-        let (material, found) = load_material(store, file, &entries);
+    for (material, found) in resolved {
         diagnostics.extend(found);
         materials.extend(material);
     }

@@ -347,8 +347,8 @@ pub fn find_files(paths: &[PathBuf], extension: &str) -> Result<Vec<PathBuf>, Pr
 pub fn load_files(store: &mut SourceStore, paths: &[PathBuf]) -> (Vec<FileId>, Vec<Diagnostic>) {
     let mut ids = Vec::new();
     let mut diagnostics = Vec::new();
-    for path in paths {
-        match store.load(path) {
+    for loaded in store.load_all(paths) {
+        match loaded {
             Ok(id) => ids.push(id),
             Err(error @ LoadError::NotUtf8 { .. }) => {
                 diagnostics.push(Diagnostic::error("K0001", error.to_string()).help("save the file as UTF-8"))

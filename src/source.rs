@@ -99,6 +99,26 @@ struct SourceFile {
     line_starts: Vec<usize>,
 }
 
+impl SourceFile {
+    fn new(name: String, path: Option<PathBuf>, text: String) -> SourceFile {
+        let line_starts = codespan_reporting::files::line_starts(&text).collect();
+        SourceFile { name, path, text, line_starts }
+    }
+}
+
+/// Reads a UTF-8 file of at most [`MAX_FILE_SIZE`] bytes.
+fn read_file(path: &Path) -> Result<SourceFile, LoadError> {
+    let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
+    if size > MAX_FILE_SIZE {
+        return Err(LoadError::TooLarge { path: path.to_path_buf(), size });
+    }
+    let bytes = std::fs::read(path).map_err(|source| LoadError::Io { path: path.to_path_buf(), source })?;
+    let text = String::from_utf8(bytes)
+        .map_err(|e| LoadError::NotUtf8 { path: path.to_path_buf(), offset: e.utf8_error().valid_up_to() })?;
+    let name = path.to_string_lossy().replace('\\', "/");
+    Ok(SourceFile::new(name, Some(path.to_path_buf()), text))
+}
+
 /// Every file a run has seen, with its text and line index.
 #[derive(Default)]
 pub struct SourceStore {
@@ -119,18 +139,16 @@ impl SourceStore {
 
     /// Reads a file from disk and records it as read.
     pub fn load(&mut self, path: &Path) -> Result<FileId, LoadError> {
-        let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
-        if size > MAX_FILE_SIZE {
-            return Err(LoadError::TooLarge { path: path.to_path_buf(), size });
-        }
-        let bytes =
-            std::fs::read(path).map_err(|source| LoadError::Io { path: path.to_path_buf(), source })?;
-        let text = String::from_utf8(bytes).map_err(|e| LoadError::NotUtf8 {
-            path: path.to_path_buf(),
-            offset: e.utf8_error().valid_up_to(),
-        })?;
-        let name = path.to_string_lossy().replace('\\', "/");
-        Ok(self.push(name, Some(path.to_path_buf()), text))
+        let file = read_file(path)?;
+        Ok(self.push_file(file))
+    }
+
+    /// [`SourceStore::load`] for many files, read in parallel (a project's materials); the ids
+    /// come in the order of `paths`.
+    pub fn load_all(&mut self, paths: &[PathBuf]) -> Vec<Result<FileId, LoadError>> {
+        use rayon::prelude::*;
+        let files: Vec<Result<SourceFile, LoadError>> = paths.par_iter().map(|p| read_file(p)).collect();
+        files.into_iter().map(|file| file.map(|f| self.push_file(f))).collect()
     }
 
     /// The canonical path of an existing regular file (symlinks resolved), or `None` when there is
@@ -151,9 +169,12 @@ impl SourceStore {
     }
 
     fn push(&mut self, name: String, path: Option<PathBuf>, text: String) -> FileId {
-        let line_starts = codespan_reporting::files::line_starts(&text).collect();
+        self.push_file(SourceFile::new(name, path, text))
+    }
+
+    fn push_file(&mut self, file: SourceFile) -> FileId {
         let id = FileId(self.files.len() as u32);
-        self.files.push(SourceFile { name, path, text, line_starts });
+        self.files.push(file);
         id
     }
 
