@@ -98,8 +98,6 @@ struct PassWork<'a> {
 /// parsed (kept so the stage phase does not parse again).
 type Front = Result<(Vec<Declared>, Option<naga::Module>), Diagnostic>;
 
-/// A stage module from the cache or freshly compiled (`true`), with its cache key and the bytes
-/// written; `None` when its pass could not be laid out.
 /// A stage module of a pass, with its cache key: reused from the cache, or compiled now and not
 /// yet stored (the pass's compiled modules are packed together once all are done).
 enum Built {
@@ -114,6 +112,7 @@ struct Compiled {
     reflection: StageReflection,
 }
 
+/// `None` when the stage's pass could not be laid out.
 type StageOutcome = Option<Result<(Built, String), Diagnostic>>;
 
 /// Builds (or, without `write`, checks) every WGSL pass of the catalogue.

@@ -4,6 +4,7 @@
 use super::bind::Declared;
 use crate::reflect::StageReflection;
 use crate::reflect::manifest::FileRef;
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::path::{Path, PathBuf};
@@ -88,7 +89,6 @@ impl Cache {
         for file in index.stage.values().flat_map(|s| [&s.wgsl, &s.spirv]).flatten() {
             packs.entry(&file.path).or_default().push(file);
         }
-        use rayon::prelude::*;
         let intact: HashSet<(String, u64)> = packs
             .par_iter()
             .flat_map_iter(|(path, files)| {
@@ -126,7 +126,6 @@ impl Cache {
         let manifest: crate::reflect::manifest::Manifest =
             serde_json::from_slice(&std::fs::read(self.output.join("manifest.json")).ok()?).ok()?;
         // Each file once, checked in parallel: this is the whole cost of a no-op build.
-        use rayon::prelude::*;
         let present = manifest.files().par_iter().all(|f| self.in_place(f));
         present.then_some((manifest, recorded))
     }
