@@ -167,92 +167,32 @@ fn build_in_pool(
     let done = AtomicUsize::new(0);
     let tick = || progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
 
-    // 2-4, pass by pass, so that only one pass's parsed modules are in memory at a time: the
-    // resources each text declares (cache or parse), one layout, then the stage modules (cache or
-    // compile), each step in parallel over the pass's jobs.
-    let mut stages: Vec<Option<CachedStage>> = vec![None; jobs.len()];
+    // 2-4, a group of passes at a time, as many as there are threads: each pass's resources
+    // (cache or parse), one layout, then its stage modules (cache or compile) and its packs. The
+    // passes of a group run at once, so one pass's serial steps overlap another's naga work, and
+    // only a group's parsed modules are in memory. Results are merged in pass order.
+    let mut ranges = Vec::with_capacity(work.len());
     let mut start = 0;
-    for (p, pass) in work.iter_mut().enumerate() {
+    for p in 0..work.len() {
         let end = start + jobs[start..].iter().take_while(|j| j.pass == p).count();
-        let members = &jobs[start..end];
-        let key = pass_key(store, pass);
-        let index = cache.pass_index(&key);
-        let mut fronts: Vec<Front> = members
-            .par_iter()
-            .map(|job| {
-                let front = front(job, store, &index);
-                tick();
-                front
-            })
-            .collect();
-        lay_out(pass, members, &fronts, store, &mut diagnostics);
-        let pass = &*pass;
-        let outcomes: Vec<StageOutcome> = members
-            .par_iter()
-            .zip(fronts.par_iter_mut())
-            .map(|(job, front)| {
-                let outcome = match front {
-                    Err(_) => None,
-                    Ok(_) if pass.failed => None,
-                    Ok((declared, module)) => {
-                        Some(stage_module(job, declared, module.take(), pass, options, store, &index))
-                    }
-                };
-                tick();
-                outcome
-            })
-            .collect();
-        let compiled: Vec<&Compiled> = outcomes
-            .iter()
-            .filter_map(|o| match o {
-                Some(Ok((Built::Compiled(output), _))) => Some(output),
-                _ => None,
-            })
-            .collect();
-        let mut files = match pack_pass(&cache, &compiled) {
-            Ok((files, written)) => {
-                summary.bytes_written += written;
-                files.into_iter()
-            }
-            Err(error) => {
-                diagnostics.push(write_failure(&options.output, &error));
-                Vec::new().into_iter()
-            }
-        };
-        let mut fresh = PassIndex::default();
-        for (i, (outcome, front)) in outcomes.into_iter().zip(&fronts).enumerate() {
-            let job = &members[i];
-            if let Ok((declared, _)) = front {
-                fresh.front.insert(job.text_hash.clone(), declared.clone());
-            }
-            let stage = match outcome {
-                Some(Ok((Built::Reused(stage), key))) => {
-                    summary.reused += 1;
-                    Some((stage, key))
-                }
-                Some(Ok((Built::Compiled(compiled), key))) => {
-                    summary.compiled += 1;
-                    // Packing failed: the error is reported, the stage has no files.
-                    let [wgsl, spirv] = files.next().unwrap_or_default();
-                    Some((CachedStage { wgsl, spirv, reflection: compiled.reflection }, key))
-                }
-                Some(Err(mut error)) => {
-                    error.notes.push(job.context.clone());
-                    diagnostics.push(error);
-                    None
-                }
-                None => None,
-            };
-            if let Some((stage, key)) = stage {
-                fresh.stage.insert(key, stage.clone());
-                stages[start + i] = Some(stage);
-            }
-        }
-        if fresh != index {
-            // A cache that cannot be written only costs speed next time.
-            let _ = cache.put_pass_index(&key, &fresh);
-        }
+        ranges.push(start..end);
         start = end;
+    }
+    let group = rayon::current_num_threads().max(1);
+    let mut stages: Vec<Option<CachedStage>> = Vec::with_capacity(jobs.len());
+    for (passes, ranges) in work.chunks_mut(group).zip(ranges.chunks(group)) {
+        let built: Vec<PassBuilt> = passes
+            .par_iter_mut()
+            .zip(ranges)
+            .map(|(pass, range)| build_pass(pass, &jobs[range.clone()], store, options, &cache, &tick))
+            .collect();
+        for pass in built {
+            summary.compiled += pass.compiled;
+            summary.reused += pass.reused;
+            summary.bytes_written += pass.bytes_written;
+            diagnostics.extend(pass.diagnostics);
+            stages.extend(pass.stages);
+        }
     }
 
     // 5. The manifest, in catalogue order.
@@ -543,6 +483,108 @@ fn front(job: &Job, store: &SourceStore, index: &PassIndex) -> Front {
     let mapper = Mapper { map: &job.map, store };
     let module = parse(&job.text, &mapper).map_err(|d| d.note(job.context.clone()))?;
     Ok((bind::declared(&module), Some(module)))
+}
+
+/// What building one pass gives: a stage per job (`None` where it failed), its diagnostics and
+/// its share of the summary.
+struct PassBuilt {
+    stages: Vec<Option<CachedStage>>,
+    diagnostics: Vec<Diagnostic>,
+    compiled: usize,
+    reused: usize,
+    bytes_written: u64,
+}
+
+/// One pass: the resources each text declares (cache or parse), one layout, then the stage
+/// modules (cache or compile), each step in parallel over the pass's jobs; then its packs and
+/// its cache index.
+fn build_pass(
+    pass: &mut PassWork,
+    members: &[Job],
+    store: &SourceStore,
+    options: &BuildOptions,
+    cache: &Cache,
+    tick: &(dyn Fn() + Sync),
+) -> PassBuilt {
+    let mut built =
+        PassBuilt { stages: Vec::new(), diagnostics: Vec::new(), compiled: 0, reused: 0, bytes_written: 0 };
+    let key = pass_key(store, pass);
+    let index = cache.pass_index(&key);
+    let mut fronts: Vec<Front> = members
+        .par_iter()
+        .map(|job| {
+            let front = front(job, store, &index);
+            tick();
+            front
+        })
+        .collect();
+    lay_out(pass, members, &fronts, store, &mut built.diagnostics);
+    let pass = &*pass;
+    let outcomes: Vec<StageOutcome> = members
+        .par_iter()
+        .zip(fronts.par_iter_mut())
+        .map(|(job, front)| {
+            let outcome = match front {
+                Err(_) => None,
+                Ok(_) if pass.failed => None,
+                Ok((declared, module)) => {
+                    Some(stage_module(job, declared, module.take(), pass, options, store, &index))
+                }
+            };
+            tick();
+            outcome
+        })
+        .collect();
+    let compiled: Vec<&Compiled> = outcomes
+        .iter()
+        .filter_map(|o| match o {
+            Some(Ok((Built::Compiled(output), _))) => Some(output),
+            _ => None,
+        })
+        .collect();
+    let mut files = match pack_pass(cache, &compiled) {
+        Ok((files, written)) => {
+            built.bytes_written += written;
+            files.into_iter()
+        }
+        Err(error) => {
+            built.diagnostics.push(write_failure(&options.output, &error));
+            Vec::new().into_iter()
+        }
+    };
+    let mut fresh = PassIndex::default();
+    for ((outcome, front), job) in outcomes.into_iter().zip(&fronts).zip(members) {
+        if let Ok((declared, _)) = front {
+            fresh.front.insert(job.text_hash.clone(), declared.clone());
+        }
+        let stage = match outcome {
+            Some(Ok((Built::Reused(stage), key))) => {
+                built.reused += 1;
+                Some((stage, key))
+            }
+            Some(Ok((Built::Compiled(compiled), key))) => {
+                built.compiled += 1;
+                // Packing failed: the error is reported, the stage has no files.
+                let [wgsl, spirv] = files.next().unwrap_or_default();
+                Some((CachedStage { wgsl, spirv, reflection: compiled.reflection }, key))
+            }
+            Some(Err(mut error)) => {
+                error.notes.push(job.context.clone());
+                built.diagnostics.push(error);
+                None
+            }
+            None => None,
+        };
+        built.stages.push(stage.map(|(stage, key)| {
+            fresh.stage.insert(key, stage.clone());
+            stage
+        }));
+    }
+    if fresh != index {
+        // A cache that cannot be written only costs speed next time.
+        let _ = cache.put_pass_index(&key, &fresh);
+    }
+    built
 }
 
 fn stage_module(
