@@ -7,6 +7,7 @@ mod layout;
 
 use crate::reflect::Resource;
 use crate::reflect::manifest::{Manifest, PassManifest, ShaderManifest, StageManifest};
+use std::collections::{BTreeSet, HashMap};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -143,8 +144,13 @@ pub fn generate(manifest: &Manifest, output: &Path) -> String {
         let _ = writeln!(out, "const {}: &str = include_str!({file:?});", pack_name(path));
     }
     out.push('\n');
+    // Each SPIR-V pack read once; stages embed their words.
+    let spirv_paths: BTreeSet<&str> =
+        manifest.stages().filter_map(|s| s.spirv.as_ref()).map(|f| f.path.as_str()).collect();
+    let spirv: SpirvPacks =
+        spirv_paths.into_iter().filter_map(|p| Some((p, std::fs::read(output.join(p)).ok()?))).collect();
     for shader in &manifest.shaders {
-        shader_module(&mut out, shader, output);
+        shader_module(&mut out, shader, &spirv);
     }
     out
 }
@@ -166,19 +172,22 @@ pub fn module_name(shader: &str) -> String {
     }
 }
 
-fn shader_module(out: &mut String, shader: &ShaderManifest, output: &Path) {
+/// The SPIR-V packs' bytes, by path.
+type SpirvPacks<'a> = HashMap<&'a str, Vec<u8>>;
+
+fn shader_module(out: &mut String, shader: &ShaderManifest, spirv: &SpirvPacks) {
     let _ = writeln!(out, "\n/// `{}` ({})", shader.name, shader.file);
     let _ = writeln!(out, "#[allow(non_snake_case, non_camel_case_types, dead_code, clippy::all)]");
     let _ = writeln!(out, "pub mod {} {{", module_name(&shader.name));
     let _ = writeln!(out, "    pub const NAME: &str = {:?};", shader.name);
     for pass in &shader.passes {
-        pass_static(out, pass, output);
+        pass_static(out, pass, spirv);
     }
     layout::uniform_structs(out, shader);
     out.push_str("}\n");
 }
 
-fn pass_static(out: &mut String, pass: &PassManifest, output: &Path) {
+fn pass_static(out: &mut String, pass: &PassManifest, spirv: &SpirvPacks) {
     let keywords: Vec<String> = pass
         .keyword_sets
         .iter()
@@ -236,8 +245,8 @@ fn pass_static(out: &mut String, pass: &PassManifest, output: &Path) {
             variant.key,
             keywords.join(", ")
         );
-        stage(out, "vertex", variant.vertex.as_ref(), output);
-        stage(out, "fragment", variant.fragment.as_ref(), output);
+        stage(out, "vertex", variant.vertex.as_ref(), spirv);
+        stage(out, "fragment", variant.fragment.as_ref(), spirv);
         out.push_str("            },\n");
     }
     out.push_str("        ],\n    };\n");
@@ -249,7 +258,7 @@ fn pack_name(path: &str) -> String {
     format!("PACK_{}", stem.to_ascii_uppercase())
 }
 
-fn stage(out: &mut String, name: &str, stage: Option<&StageManifest>, output: &Path) {
+fn stage(out: &mut String, name: &str, stage: Option<&StageManifest>, packs: &SpirvPacks) {
     let Some(stage) = stage else {
         let _ = writeln!(out, "                {name}: None,");
         return;
@@ -259,8 +268,8 @@ fn stage(out: &mut String, name: &str, stage: Option<&StageManifest>, output: &P
     });
     let spirv = match &stage.spirv {
         // Words, not bytes: a `&[u32]` is aligned, which `include_bytes!` would not be.
-        Some(f) => match f.read(output) {
-            Ok(bytes) => {
+        Some(f) => match packs.get(f.path.as_str()).and_then(|pack| f.slice(pack)) {
+            Some(bytes) => {
                 let words: Vec<String> = bytes
                     .chunks(4)
                     .map(|w| {
@@ -271,7 +280,7 @@ fn stage(out: &mut String, name: &str, stage: Option<&StageManifest>, output: &P
                     .collect();
                 format!("&[{}]", words.join(", "))
             }
-            Err(_) => "&[]".to_string(),
+            None => "&[]".to_string(),
         },
         None => "&[]".to_string(),
     };

@@ -6,7 +6,7 @@ use crate::reflect::StageReflection;
 use crate::reflect::manifest::FileRef;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
-use std::collections::{BTreeMap, HashMap, HashSet};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::path::{Path, PathBuf};
 
 /// A content hash: BLAKE3, 128 bits in hexadecimal.
@@ -39,6 +39,13 @@ pub struct CachedStage {
     pub wgsl: Option<FileRef>,
     pub spirv: Option<FileRef>,
     pub reflection: StageReflection,
+}
+
+impl CachedStage {
+    /// Its modules, one per backend written.
+    pub fn files(&self) -> impl Iterator<Item = &FileRef> {
+        [&self.wgsl, &self.spirv].into_iter().flatten()
+    }
 }
 
 pub struct Cache {
@@ -85,35 +92,32 @@ impl Cache {
     /// point into is read once and every module's range hashed.
     pub fn pass_index(&self, pass: &str) -> PassIndex {
         let mut index: PassIndex = self.read("pass", pass).unwrap_or_default();
-        let mut packs: BTreeMap<&str, Vec<&FileRef>> = BTreeMap::new();
-        for file in index.stage.values().flat_map(|s| [&s.wgsl, &s.spirv]).flatten() {
-            packs.entry(&file.path).or_default().push(file);
-        }
-        let intact: HashSet<(String, u64)> = packs
-            .par_iter()
-            .flat_map_iter(|(path, files)| {
-                let bytes = std::fs::read(self.output.join(path)).unwrap_or_default();
-                let whole = |f: &&&FileRef| {
-                    let range = usize::try_from(f.offset).ok().zip(usize::try_from(f.end()).ok());
-                    range.and_then(|(start, end)| bytes.get(start..end)).is_some_and(|b| hash(b) == f.hash)
-                };
-                files.iter().filter(whole).map(|f| (f.path.clone(), f.offset)).collect::<Vec<_>>()
-            })
-            .collect();
-        let kept = |file: &Option<FileRef>| {
-            file.as_ref().is_none_or(|f| intact.contains(&(f.path.clone(), f.offset)))
+        let damaged: Vec<String> = {
+            let paths: BTreeSet<&str> =
+                index.stage.values().flat_map(CachedStage::files).map(|f| f.path.as_str()).collect();
+            let packs: HashMap<&str, Vec<u8>> = paths
+                .into_par_iter()
+                .filter_map(|path| Some((path, std::fs::read(self.output.join(path)).ok()?)))
+                .collect();
+            let intact = |file: &FileRef| {
+                let pack = packs.get(file.path.as_str());
+                pack.and_then(|pack| file.slice(pack)).is_some_and(|bytes| hash(bytes) == file.hash)
+            };
+            index
+                .stage
+                .par_iter()
+                .filter(|(_, stage)| !stage.files().all(intact))
+                .map(|(key, _)| key.clone())
+                .collect()
         };
-        index.stage.retain(|_, stage| kept(&stage.wgsl) && kept(&stage.spirv));
+        for key in damaged {
+            index.stage.remove(&key);
+        }
         index
     }
 
     pub fn put_pass_index(&self, pass: &str, index: &PassIndex) -> std::io::Result<()> {
         self.put("pass", pass, index)
-    }
-
-    /// Whether a module's pack is still in place and long enough to hold it.
-    fn in_place(&self, file: &FileRef) -> bool {
-        std::fs::metadata(self.output.join(&file.path)).is_ok_and(|m| m.len() >= file.end())
     }
 
     /// The previous build's manifest, when that build had exactly these inputs (`key`), ended
@@ -125,8 +129,11 @@ impl Cache {
         }
         let manifest: crate::reflect::manifest::Manifest =
             serde_json::from_slice(&std::fs::read(self.output.join("manifest.json")).ok()?).ok()?;
-        // Each file once, checked in parallel: this is the whole cost of a no-op build.
-        let present = manifest.files().par_iter().all(|f| self.in_place(f));
+        // Each pack once, checked in parallel: this is the whole cost of a no-op build.
+        let present = manifest
+            .packs()
+            .par_iter()
+            .all(|(path, end)| std::fs::metadata(self.output.join(path)).is_ok_and(|m| m.len() >= *end));
         present.then_some((manifest, recorded))
     }
 
@@ -155,7 +162,7 @@ impl Cache {
         let full = self.output.join(&path);
         let present = std::fs::metadata(&full).is_ok_and(|m| m.len() == bytes.len() as u64)
             && std::fs::read(&full).is_ok_and(|existing| existing == bytes);
-        let written = if self.write && !present && !bytes.is_empty() {
+        let written = if self.write && !present {
             write_atomically(&full, &bytes)?;
             bytes.len() as u64
         } else {

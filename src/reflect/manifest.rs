@@ -25,12 +25,22 @@ impl Manifest {
             .flatten()
     }
 
-    /// Every output file the manifest names, each once, in path order.
+    /// Every module the manifest names, each once, in path and offset order.
     pub fn files(&self) -> Vec<&FileRef> {
-        let mut files: Vec<&FileRef> = self.stages().flat_map(|s| [&s.wgsl, &s.spirv]).flatten().collect();
+        let mut files: Vec<&FileRef> = self.stages().flat_map(StageManifest::files).collect();
         files.sort_by(|a, b| (&a.path, a.offset).cmp(&(&b.path, b.offset)));
         files.dedup_by(|a, b| (&a.path, a.offset) == (&b.path, b.offset));
         files
+    }
+
+    /// Every pack the manifest points into, with the length it must have at least.
+    pub fn packs(&self) -> std::collections::BTreeMap<&str, u64> {
+        let mut packs = std::collections::BTreeMap::new();
+        for file in self.stages().flat_map(StageManifest::files) {
+            let end = packs.entry(file.path.as_str()).or_insert(0);
+            *end = file.end().max(*end);
+        }
+        packs
     }
 }
 
@@ -150,17 +160,29 @@ pub struct FileRef {
     pub hash: String,
 }
 
+impl StageManifest {
+    /// Its modules, one per backend written.
+    pub fn files(&self) -> impl Iterator<Item = &FileRef> {
+        [&self.wgsl, &self.spirv].into_iter().flatten()
+    }
+}
+
 impl FileRef {
     /// Where the module ends in its pack.
     pub fn end(&self) -> u64 {
         self.offset + self.size
     }
 
+    /// The module's bytes within its pack's bytes (`None` when the pack is too short).
+    pub fn slice<'a>(&self, pack: &'a [u8]) -> Option<&'a [u8]> {
+        let range = usize::try_from(self.offset).ok().zip(usize::try_from(self.end()).ok());
+        range.and_then(|(start, end)| pack.get(start..end))
+    }
+
     /// The module's bytes, read from its pack under `output`.
     pub fn read(&self, output: &std::path::Path) -> std::io::Result<Vec<u8>> {
         let pack = std::fs::read(output.join(&self.path))?;
-        let range = usize::try_from(self.offset).ok().zip(usize::try_from(self.end()).ok());
-        range.and_then(|(start, end)| pack.get(start..end)).map(<[u8]>::to_vec).ok_or_else(|| {
+        self.slice(&pack).map(<[u8]>::to_vec).ok_or_else(|| {
             std::io::Error::new(
                 std::io::ErrorKind::UnexpectedEof,
                 format!("`{}` is shorter than its modules", self.path),
