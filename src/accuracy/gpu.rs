@@ -5,12 +5,14 @@
 
 use super::{Case, Formulation, Row, Timing, hard_cases, reference, reference_lights, stats};
 use crate::compile::Bindings;
-use crate::preprocess::{IncludeConfig, Includes, Stage, preprocess};
+use crate::compile::target::Allowed;
+use crate::preprocess::{IncludeConfig, Includes, Stage, load_pass_text, preprocess};
 use crate::source::{SourceStore, Span};
 use wgpu::util::DeviceExt;
 
-/// The harness, a WGSL program in kiln's dialect.
+/// The harness, a WGSL program in kiln's dialect, declaring what it needs as a pass would.
 const HARNESS: &str = r#"
+#pragma require native16bit : _SPECULAR_HALF
 #if defined(_SPECULAR_HALF)
 enable f16;
 #endif
@@ -117,16 +119,12 @@ fn timing_invocations() -> u32 {
 
 /// The WGSL kiln emits for one entry point of the harness with these keywords.
 pub fn harness_wgsl(keywords: &[&str], entry: &str) -> Result<(String, Bindings), String> {
-    // What `#pragma require native16bit` gives a pass.
-    let capabilities = match keywords.contains(&"_SPECULAR_HALF") {
-        true => naga::valid::Capabilities::SHADER_FLOAT16,
-        false => naga::valid::Capabilities::empty(),
-    };
     let mut store = SourceStore::new();
     let file = store.add("accuracy-harness.wgsl", HARNESS);
     let mut includes = Includes::new(IncludeConfig::new(Vec::new()));
-    let (program, found) = includes.load_program(&mut store, &[Span::new(file, 0..HARNESS.len())]);
-    let out = preprocess(&includes, &store, &program, keywords, Stage::Fragment);
+    let (pass, found) = load_pass_text(&mut includes, &mut store, &[Span::new(file, 0..HARNESS.len())]);
+    let capabilities = Allowed::for_variant(&pass.pragmas, keywords).capabilities();
+    let out = preprocess(&includes, &store, &pass.program, keywords, Stage::Fragment);
     let problems: Vec<_> = found.into_iter().chain(out.diagnostics.iter().cloned()).collect();
     if crate::diagnostics::has_errors(&problems) {
         return Err(crate::diagnostics::render_plain(&store, &problems));

@@ -24,7 +24,16 @@ pub fn load_pass(
     blocks: &[&ProgramBlock],
 ) -> (PassProgram, Vec<Diagnostic>) {
     let spans: Vec<Span> = blocks.iter().map(|b| b.body_span).collect();
-    let (program, mut diagnostics) = includes.load_program(store, &spans);
+    load_pass_text(includes, store, &spans)
+}
+
+/// [`load_pass`] for program text that is no ShaderLab block (the accuracy harness).
+pub fn load_pass_text(
+    includes: &mut Includes,
+    store: &mut SourceStore,
+    spans: &[Span],
+) -> (PassProgram, Vec<Diagnostic>) {
+    let (program, mut diagnostics) = includes.load_program(store, spans);
     let (pragmas, errors) = collect_pragmas(pragma_sources(includes, store, &program));
     diagnostics.extend(errors);
     diagnostics.extend(analyze_keywords(includes, &program, &pragmas));
