@@ -13,17 +13,7 @@ fn rows() -> Option<&'static (Vec<Row>, bool)> {
 }
 
 fn run_harness() -> Option<(Vec<Row>, bool)> {
-    let gpu = match kiln::accuracy::gpu::device() {
-        Ok(found) => found,
-        Err(reason) => {
-            assert!(
-                std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
-                "KILN_REQUIRE_GPU=1 but {reason}"
-            );
-            println!("skipping the accuracy test: {reason}");
-            return None;
-        }
-    };
+    let gpu = crate::support::gpu("the accuracy tests")?;
     let (rows, timings, method) = kiln::accuracy::gpu::run(&gpu).expect("the harness runs");
     println!("{}", kiln::accuracy::render(&gpu.adapter, &rows, &timings, &method));
     assert!(timings.iter().all(|t| t.nanoseconds_per_evaluation > 0.0));

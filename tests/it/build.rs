@@ -2,7 +2,7 @@
 //! shared by a pass's variants, a second build compiles nothing, output is the same whatever the
 //! thread count, and every bad build input has a pinned diagnostic.
 
-use crate::support::{fixture_files, kiln, root};
+use crate::support::{fixture_files, kiln, root, verified_manifest};
 use expect_test::expect_file;
 use kiln::compile::{BuildResult, VariantSelection};
 use kiln::diagnostics::{Diagnostic, has_errors, render_plain};
@@ -46,13 +46,8 @@ fn the_example_project_builds_with_a_golden_manifest() {
     let text = std::fs::read_to_string(output.path().join("manifest.json")).expect("manifest");
     expect_file![root().join("tests/golden/build/manifest.json")].assert_eq(&text);
 
-    // Every module file named in the manifest exists with its size and hash.
-    let manifest = read_manifest(output.path());
-    for file in manifest.files() {
-        let bytes = file.read(output.path()).expect("module in its pack");
-        assert_eq!(bytes.len() as u64, file.size);
-        assert_eq!(&blake3::hash(&bytes).to_hex()[..32], file.hash);
-    }
+    // Every module named in the manifest is in its pack with its size and hash.
+    verified_manifest(output.path());
 }
 
 #[test]

@@ -9,20 +9,6 @@ use kiln::reflect::manifest::{Manifest, PassManifest, StageManifest};
 use kiln::source::SourceStore;
 use std::path::{Path, PathBuf};
 
-fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
-    match kiln::accuracy::gpu::device() {
-        Ok(gpu) => Some((gpu.device, gpu.queue, gpu.adapter)),
-        Err(reason) => {
-            assert!(
-                std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
-                "KILN_REQUIRE_GPU=1 but {reason}"
-            );
-            println!("skipping the GPU test: {reason}; install mesa-vulkan-drivers for lavapipe");
-            None
-        }
-    }
-}
-
 fn layout_entry(binding: u32, visibility: &[String], resource: &Resource) -> wgpu::BindGroupLayoutEntry {
     let mut stages = wgpu::ShaderStages::NONE;
     for stage in visibility {
@@ -165,7 +151,10 @@ fn pipelines(device: &wgpu::Device, output: &Path, pass: &PassManifest, source: 
 
 #[test]
 fn every_variant_makes_a_render_pipeline() {
-    let Some((device, _queue, adapter)) = device() else { return };
+    let Some(kiln::accuracy::gpu::Gpu { device, adapter, .. }) = crate::support::gpu("the pipeline test")
+    else {
+        return;
+    };
     let output = tempfile::tempdir().expect("temp dir");
     let mut store = SourceStore::new();
     let mode = BuildMode {

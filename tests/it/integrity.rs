@@ -2,7 +2,7 @@
 //! and the next build finishes; damaged cache entries and module files are detected by their
 //! hashes and rebuilt, never used.
 
-use crate::support::root;
+use crate::support::{root, verified_manifest};
 use kiln::compile::VariantSelection;
 use kiln::project::{BuildMode, build_project};
 use kiln::reflect::manifest::Manifest;
@@ -63,17 +63,6 @@ fn build(project: &Path, output: &Path) -> kiln::compile::BuildSummary {
 }
 
 /// The manifest in `output`, with every file it names checked against its hash.
-fn verified_manifest(output: &Path) -> Manifest {
-    let manifest: Manifest =
-        serde_json::from_slice(&std::fs::read(output.join("manifest.json")).expect("manifest"))
-            .expect("manifest parses");
-    for file in manifest.files() {
-        let bytes = file.read(output).expect("module in its pack");
-        assert_eq!(&blake3::hash(&bytes).to_hex()[..32], file.hash, "{} is intact", file.path);
-    }
-    manifest
-}
-
 #[test]
 fn a_killed_build_leaves_the_previous_outputs_and_the_next_build_finishes() {
     let dir = tempfile::tempdir().expect("temp dir");
@@ -155,12 +144,7 @@ fn a_damaged_module_in_a_pack_is_recompiled_though_its_cache_entry_is_intact() {
     // can compile to the same bytes, stored once: a stage is its entry point and keywords).
     let damaged: std::collections::BTreeSet<(&str, &[String])> = manifest
         .stages()
-        .filter(|s| {
-            [&s.wgsl, &s.spirv]
-                .into_iter()
-                .flatten()
-                .any(|f| (&f.path, f.offset) == (&victim.path, victim.offset))
-        })
+        .filter(|s| s.files().any(|f| (&f.path, f.offset) == (&victim.path, victim.offset)))
         .map(|s| (s.entry_point.as_str(), s.keywords.as_slice()))
         .collect();
     assert!(!damaged.is_empty() && damaged.len() < first.compiled);

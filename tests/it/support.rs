@@ -51,3 +51,33 @@ pub fn assert_pinned(fixture: &Path, store: &SourceStore, diagnostics: &[Diagnos
     assert!(!diagnostics.is_empty(), "{} reports nothing", fixture.display());
     expect_test::expect_file![root().join(fixture.with_extension("stderr"))].assert_eq(&rendered);
 }
+
+/// A GPU device (lavapipe in CI), or `None` with the reason printed. `KILN_REQUIRE_GPU=1` (set
+/// by CI) makes a missing adapter a failure instead.
+pub fn gpu(test: &str) -> Option<kiln::accuracy::gpu::Gpu> {
+    match kiln::accuracy::gpu::device() {
+        Ok(gpu) => Some(gpu),
+        Err(reason) => {
+            assert!(
+                std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
+                "KILN_REQUIRE_GPU=1 but {reason}"
+            );
+            println!("skipping {test}: {reason}; install mesa-vulkan-drivers for lavapipe");
+            None
+        }
+    }
+}
+
+/// The manifest in `output`, after checking that every module it names is in its pack, whole,
+/// with its hash.
+pub fn verified_manifest(output: &Path) -> kiln::reflect::manifest::Manifest {
+    let manifest: kiln::reflect::manifest::Manifest =
+        serde_json::from_slice(&std::fs::read(output.join("manifest.json")).expect("manifest"))
+            .expect("manifest parses");
+    for file in manifest.files() {
+        let bytes = file.read(output).expect("module in its pack");
+        assert_eq!(bytes.len() as u64, file.size);
+        assert_eq!(&blake3::hash(&bytes).to_hex()[..32], file.hash, "{} is intact", file.path);
+    }
+    manifest
+}
