@@ -6,7 +6,7 @@
 mod layout;
 
 use crate::reflect::Resource;
-use crate::reflect::manifest::{Manifest, PassManifest, ShaderManifest, StageManifest};
+use crate::reflect::manifest::{FileRef, Manifest, PassManifest, ShaderManifest, StageManifest};
 use std::collections::{BTreeSet, HashMap};
 use std::fmt::Write as _;
 use std::path::Path;
@@ -134,21 +134,20 @@ pub fn generate(manifest: &Manifest, output: &Path) -> String {
         manifest.kiln_version
     );
     out.push_str(PRELUDE);
+    let packs = |backend: fn(&StageManifest) -> Option<&FileRef>| -> BTreeSet<&str> {
+        manifest.stages().filter_map(backend).map(|f| f.path.as_str()).collect()
+    };
     // Each WGSL pack once; stages are slices of it.
-    let mut packs: Vec<&str> =
-        manifest.stages().filter_map(|s| s.wgsl.as_ref()).map(|f| f.path.as_str()).collect();
-    packs.sort_unstable();
-    packs.dedup();
-    for path in packs {
+    for path in packs(|s| s.wgsl.as_ref()) {
         let file = output.join(path).to_string_lossy().replace('\\', "/");
         let _ = writeln!(out, "const {}: &str = include_str!({file:?});", pack_name(path));
     }
     out.push('\n');
     // Each SPIR-V pack read once; stages embed their words.
-    let spirv_paths: BTreeSet<&str> =
-        manifest.stages().filter_map(|s| s.spirv.as_ref()).map(|f| f.path.as_str()).collect();
-    let spirv: SpirvPacks =
-        spirv_paths.into_iter().filter_map(|p| Some((p, std::fs::read(output.join(p)).ok()?))).collect();
+    let spirv: SpirvPacks = packs(|s| s.spirv.as_ref())
+        .into_iter()
+        .filter_map(|p| Some((p, std::fs::read(output.join(p)).ok()?)))
+        .collect();
     for shader in &manifest.shaders {
         shader_module(&mut out, shader, &spirv);
     }
