@@ -6,7 +6,7 @@
 //! kiln's cold build; a no-op rebuild; a rebuild after touching one include; kiln's peak memory.
 //! Results and how to read them: docs/performance.md.
 
-use kiln::catalog::{CatalogInput, catalog};
+use kiln::catalog::catalog;
 use kiln::compile::{VariantSelection, stage_texts};
 use kiln::preprocess::{Includes, Stage};
 use kiln::project::{BuildMode, build_project, load_files, open_workspace};
@@ -136,7 +136,7 @@ fn naga_alone(project: &Path) -> (usize, Duration) {
     let mut includes = Includes::new(workspace.include.clone().expect("include config"));
     let (shaders, _) = load_files(&mut store, &workspace.shaders);
     let (materials, _) = load_files(&mut store, &workspace.materials);
-    let input = CatalogInput { shaders, materials, ..CatalogInput::default() };
+    let input = workspace.catalog_input(shaders, materials);
     let (catalog, _) = catalog(&mut store, &mut includes, &input);
     let texts = stage_texts(&store, &includes, &catalog);
     let started = Instant::now();
