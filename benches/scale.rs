@@ -116,6 +116,7 @@ fn kiln_build(project: &Path, output: &Path, write: bool) -> (kiln::compile::Bui
         unused_shaders: VariantSelection::Used,
         threads: None,
         global_keywords: None,
+        pretty_manifest: false,
     };
     let (result, diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");

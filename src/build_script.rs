@@ -7,8 +7,9 @@
 use crate::compile::{BuildSummary, VariantSelection};
 use crate::diagnostics::{self, Severity, render_plain};
 use crate::project::{BuildMode, ProjectError, build_project};
-use crate::reflect::manifest::Manifest;
+use crate::reflect::manifest::{FILE_NAME, Manifest};
 use crate::source::SourceStore;
+use crate::source::relative_to;
 use std::path::PathBuf;
 
 /// A kiln build from a build script.
@@ -53,6 +54,8 @@ pub enum BuildError {
     NoOutDir,
     #[error("cannot write `{path}`: {source}")]
     Write { path: PathBuf, source: std::io::Error },
+    #[error("cannot read `{path}`: {source}")]
+    Read { path: PathBuf, source: std::io::Error },
 }
 
 impl std::fmt::Debug for BuildError {
@@ -121,6 +124,7 @@ impl Build {
             unused_shaders: VariantSelection::Used,
             threads: self.threads,
             global_keywords: self.global_keywords,
+            pretty_manifest: false,
         };
         let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
         problems.extend(result.diagnostics);
@@ -139,11 +143,19 @@ impl Build {
         if diagnostics::has_errors(&problems) {
             return Err(BuildError::Diagnostics { rendered: render_plain(&store, &problems), cargo_lines });
         }
-        let absolute = std::fs::canonicalize(&output).unwrap_or(output);
+        // A no-op build did not read its manifest; the module needs it.
+        let manifest = match result.manifest {
+            Some(manifest) => manifest,
+            None => Manifest::read(&output)
+                .map_err(|source| BuildError::Read { path: output.join(FILE_NAME), source })?,
+        };
         let module = out_dir.join("kiln_shaders.rs");
-        let text = crate::codegen::generate(&result.manifest, &absolute);
-        crate::compile::write_atomically(&module, text.as_bytes())
-            .map_err(|source| BuildError::Write { path: module.clone(), source })?;
-        Ok(BuildOutput { module, manifest: result.manifest, summary: result.summary, cargo_lines })
+        let text = crate::codegen::generate(&manifest, &relative_to(&output, &out_dir));
+        // Unchanged, it is not rewritten, so cargo has nothing to recompile.
+        if std::fs::read(&module).ok().as_deref() != Some(text.as_bytes()) {
+            crate::compile::write_atomically(&module, text.as_bytes())
+                .map_err(|source| BuildError::Write { path: module.clone(), source })?;
+        }
+        Ok(BuildOutput { module, manifest, summary: result.summary, cargo_lines })
     }
 }

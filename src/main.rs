@@ -55,6 +55,9 @@ enum Command {
         /// Write here instead of the project's `output` folder.
         #[arg(long)]
         output: Option<PathBuf>,
+        /// Write `manifest.json` indented, for reading (default: compact).
+        #[arg(long)]
+        pretty: bool,
     },
     /// Validate without writing anything: used variants, and for shaders no material uses, the
     /// default variant and each keyword on its own. Exit 1 on any error.
@@ -131,13 +134,14 @@ fn main() -> ExitCode {
             };
             preprocess(&VariantRequest { shader, pass, keywords, stage })
         }
-        Command::Build { project, threads, output } => {
+        Command::Build { project, threads, output, pretty } => {
             let mode = BuildMode {
                 write: true,
                 output,
                 unused_shaders: VariantSelection::Used,
                 threads,
                 global_keywords: None,
+                pretty_manifest: pretty,
             };
             build(project, mode, Format::Text)
         }
@@ -155,6 +159,7 @@ fn main() -> ExitCode {
                     unused_shaders,
                     threads: None,
                     global_keywords: None,
+                    pretty_manifest: false,
                 },
                 format,
             )
@@ -219,7 +224,7 @@ fn build(project: Option<PathBuf>, mode: BuildMode, format: Format) -> ExitCode 
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = indicatif::ProgressBar::new(0);
         bar.set_style(
-            indicatif::ProgressStyle::with_template("{spinner} {bar:40} {pos}/{len} stage modules")
+            indicatif::ProgressStyle::with_template("{spinner} {bar:40} {pos}/{len} variants")
                 .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
         );
         bar

@@ -9,6 +9,8 @@ use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{Variant, VariantError, select_variant};
 use crate::material::Preset;
 use crate::preprocess::{IncludeConfig, Includes, Preprocessed, Stage, preprocess};
+use crate::reflect::UniformBlock;
+use crate::reflect::manifest::StageView;
 use crate::shaderlab::ast::ProgramLanguage;
 use crate::shaderlab::parse_shader;
 use crate::source::{FileId, LoadError, SourceStore, Span, Spanned};
@@ -211,6 +213,9 @@ pub fn bundled_example() -> PathBuf {
 /// are shaders (or materials, by their `.mat` extension).
 #[derive(Debug, Default)]
 pub struct Workspace {
+    /// The project folder (the first folder given, or the folder of the first file): what the
+    /// build records about files is relative to it.
+    pub root: PathBuf,
     /// Where builds write: the first project folder's `output` (default `build/kiln` in it).
     pub output: PathBuf,
     pub backends: Vec<crate::config::Backend>,
@@ -289,9 +294,10 @@ pub fn open_workspace(
         let mut seen = std::collections::HashSet::new();
         files.retain(|f| seen.insert(std::fs::canonicalize(f).unwrap_or_else(|_| f.clone())));
     }
+    workspace.root = roots.first().cloned().unwrap_or_default();
     if workspace.output.as_os_str().is_empty() {
         let defaults = ProjectConfig::default();
-        let folder = roots.first().cloned().unwrap_or_default();
+        let folder = workspace.root.clone();
         workspace.output = crate::source::normalize_lexically(&folder.join(defaults.output));
         workspace.backends = defaults.backends;
     }
@@ -374,6 +380,8 @@ pub struct BuildMode {
     pub threads: Option<usize>,
     /// Overrides the projects' `global_keywords` (a build script that knows the scene).
     pub global_keywords: Option<Vec<String>>,
+    /// Write `manifest.json` indented rather than compact.
+    pub pretty_manifest: bool,
 }
 
 /// Builds (or checks) the projects and files at `paths`. `Err` only when a path does not exist.
@@ -397,10 +405,12 @@ pub fn build_project(
     diagnostics.extend(found);
     let options = BuildOptions {
         output: mode.output.clone().unwrap_or_else(|| workspace.output.clone()),
+        root: workspace.root.clone(),
         write: mode.write && !diagnostics::has_errors(&diagnostics),
         threads: mode.threads,
         backends: workspace.backends.clone(),
         unused_shaders: mode.unused_shaders,
+        pretty_manifest: mode.pretty_manifest,
     };
     let result = build(store, &includes, &catalog, &options, progress);
     if workspace.strict {
@@ -441,23 +451,40 @@ pub fn reflect_variant(
             program.variants = if i == index { vec![variant.clone()] } else { Vec::new() };
         }
     }
+    let folder = request.shader.parent().map(Path::to_path_buf).unwrap_or_default();
     let options = BuildOptions {
-        output: request
-            .shader
-            .parent()
-            .map(Path::to_path_buf)
-            .unwrap_or_default()
-            .join(".kiln-reflect-unused"),
+        output: folder.join(".kiln-reflect-unused"),
+        root: folder,
         write: false,
         threads: Some(1),
         backends: ProjectConfig::default().backends,
         unused_shaders: VariantSelection::Used,
+        pretty_manifest: false,
     };
     let result = build(store, &includes, &catalog, &options, &|_, _| {});
     diagnostics.extend(result.diagnostics);
-    let pass = result.manifest.shaders.first().and_then(|s| s.passes.first());
-    let json = pass
-        .filter(|_| !diagnostics::has_errors(&diagnostics))
-        .and_then(|p| Some(serde_json::json!({ "layout": p.layout, "variant": p.variants.first()? })));
+    let pass = result.manifest.as_ref().and_then(|m| m.passes().next());
+    let json = pass.filter(|_| !diagnostics::has_errors(&diagnostics)).and_then(|p| {
+        let variant = p.variants.first()?;
+        // A stage's interface, its uniform blocks named (they are printed in full beside it).
+        let stage = |stage: Option<StageView>| {
+            stage.map(|s| {
+                let mut json = serde_json::json!(s.interface);
+                let names: Vec<&str> =
+                    s.interface.uniform_blocks.iter().map(|&b| p.uniform_blocks[b].name.as_str()).collect();
+                json["uniform_blocks"] = serde_json::json!(names);
+                json
+            })
+        };
+        let [vertex, fragment] = p.variant_stages(variant);
+        let blocks: Vec<&UniformBlock> =
+            p.variant_uniform_blocks(variant).into_iter().map(|b| &p.uniform_blocks[b]).collect();
+        Some(serde_json::json!({
+            "layout": p.layout,
+            "uniform_blocks": blocks,
+            "variant": { "key": variant.key, "keywords": variant.keywords,
+                         "vertex": stage(vertex), "fragment": stage(fragment) },
+        }))
+    });
     Ok((json, diagnostics))
 }

@@ -260,6 +260,25 @@ impl<'a> codespan_reporting::files::Files<'a> for SourceStore {
     }
 }
 
+/// `path` relative to `root`, lexically, with `/` separators (`..` where it lies outside), so
+/// that what is written about a project does not depend on the folder it sits in. Both are taken
+/// as given: relative paths are relative to the same folder.
+pub fn relative_to(path: &Path, root: &Path) -> String {
+    let (path, root) = (normalize_lexically(path), normalize_lexically(root));
+    let (mut path_parts, mut root_parts) = (path.components().peekable(), root.components().peekable());
+    while let (Some(a), Some(b)) = (path_parts.peek(), root_parts.peek()) {
+        if a != b {
+            break;
+        }
+        path_parts.next();
+        root_parts.next();
+    }
+    let ups = root_parts.filter(|c| matches!(c, Component::Normal(_))).map(|_| "..".to_string());
+    let rest = path_parts.map(|c| c.as_os_str().to_string_lossy().into_owned());
+    let parts: Vec<String> = ups.chain(rest).collect();
+    if parts.is_empty() { ".".to_string() } else { parts.join("/") }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -282,5 +301,17 @@ mod tests {
         assert_eq!(store.line_col(file, x), LineCol { line: 2, column: 8 });
         let end = store.text(file).len();
         assert_eq!(store.line_col(file, end), LineCol { line: 3, column: 1 });
+    }
+
+    #[test]
+    fn relative_paths_are_lexical_and_use_slashes() {
+        use super::relative_to;
+        let rel = |p: &str, r: &str| relative_to(Path::new(p), Path::new(r));
+        assert_eq!(rel("proj/shaders/Lit.shader", "proj"), "shaders/Lit.shader");
+        assert_eq!(rel("/a/b/proj/x.wgsl", "/a/b/proj"), "x.wgsl");
+        assert_eq!(rel("/a/shared/x.wgsl", "/a/b/proj"), "../../shared/x.wgsl");
+        assert_eq!(rel("proj/./lib/../x", "proj"), "x");
+        assert_eq!(rel("out/kiln", "out"), "kiln");
+        assert_eq!(rel("proj", "proj"), ".");
     }
 }

@@ -2,24 +2,44 @@
 //! and SPIR-V, strict variant lookup, the bind group layout of each pass, and a `#[repr(C)]`
 //! bytemuck struct for every uniform block with compile-time assertions of its size and of every
 //! member's offset, all from the manifest.
+//!
+//! Its size follows passes and distinct modules, not variants times bytes: each pack is embedded
+//! once (`include_str!`, `include_bytes!`), each module is a row of numbers (its interface and
+//! its ranges of the packs), and each variant a sorted key and two module indices.
 
 mod layout;
 
 use crate::reflect::Resource;
-use crate::reflect::manifest::{FileRef, Manifest, PassManifest, ShaderManifest, StageManifest};
-use std::collections::{BTreeSet, HashMap};
+use crate::reflect::manifest::{Manifest, ModuleFile, PassManifest, ShaderManifest};
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
-use std::path::Path;
 
 /// The types every generated module shares, written once at its top.
-const PRELUDE: &str = r#"/// A module's text: its range of a pack (a pass's modules, concatenated).
-const fn module(pack: &'static str, start: usize, end: usize) -> &'static str {
-    let (_, rest) = pack.split_at(start);
-    rest.split_at(end - start).0
+const PRELUDE: &str = r#"#[cfg(target_endian = "big")]
+compile_error!("kiln embeds SPIR-V as little-endian words");
+
+/// Bytes aligned for reading as `u32` words.
+#[repr(C, align(4))]
+struct Aligned<B: ?Sized>(B);
+
+/// A module row: its interface, then (pack, start, end) of its WGSL and of its SPIR-V (`NONE`
+/// for a backend not written).
+type ModuleRow = [u32; 7];
+
+/// No module, no pack.
+const NONE: u32 = u32::MAX;
+
+/// A stage's interface: modules of a pass that differ only in their code share one.
+#[derive(Debug)]
+#[allow(dead_code)]
+struct Interface {
+    entry_point: &'static str,
+    inputs: &'static [(u32, &'static str)],
+    outputs: &'static [(u32, &'static str)],
 }
 
 /// One stage module of a variant.
-#[derive(Debug)]
+#[derive(Debug, Clone, Copy)]
 #[allow(dead_code)]
 pub struct Stage {
     pub entry_point: &'static str,
@@ -29,16 +49,39 @@ pub struct Stage {
     pub inputs: &'static [(u32, &'static str)],
     /// Fragment stage: `(location, format)` of each colour target.
     pub outputs: &'static [(u32, &'static str)],
+    /// Its index among the pass's modules: variants with the same index share the module.
+    pub module: usize,
 }
 
 /// A built variant of a pass.
-#[derive(Debug)]
+#[derive(Clone, Copy)]
 #[allow(dead_code)]
 pub struct Variant {
-    pub key: &'static str,
-    pub keywords: &'static [&'static str],
+    pub pass: &'static Pass,
+    /// Its index among the pass's variants (sorted by key).
+    pub index: usize,
     pub vertex: Option<Stage>,
     pub fragment: Option<Stage>,
+}
+
+#[allow(dead_code)]
+impl Variant {
+    /// Its keywords, in the pass's keyword order.
+    pub fn keywords(&self) -> Vec<&'static str> {
+        self.pass.keywords_of(self.index)
+    }
+}
+
+impl core::fmt::Debug for Variant {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Variant")
+            .field("shader", &self.pass.shader)
+            .field("pass", &self.pass.index)
+            .field("keywords", &self.keywords())
+            .field("vertex", &self.vertex)
+            .field("fragment", &self.fragment)
+            .finish()
+    }
 }
 
 /// What a binding holds.
@@ -64,16 +107,33 @@ pub struct BindingEntry {
     pub kind: BindingKind,
 }
 
-#[derive(Debug)]
 #[allow(dead_code)]
 pub struct Pass {
     pub shader: &'static str,
     pub index: usize,
     pub name: Option<&'static str>,
-    /// Every keyword the pass declares.
+    /// Every keyword the pass declares; bit i of a variant key stands for `keywords[i]`.
     pub keywords: &'static [&'static str],
     pub layout: &'static [BindingEntry],
-    pub variants: &'static [Variant],
+    interfaces: &'static [Interface],
+    modules: &'static [ModuleRow],
+    /// `u64` words per variant key.
+    key_words: usize,
+    /// The variants' keys, `key_words` words each, sorted.
+    keys: &'static [u64],
+    /// Each variant's vertex and fragment module.
+    variants: &'static [[u32; 2]],
+}
+
+impl core::fmt::Debug for Pass {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Pass")
+            .field("shader", &self.shader)
+            .field("index", &self.index)
+            .field("name", &self.name)
+            .field("variants", &self.variants.len())
+            .finish()
+    }
 }
 
 /// A keyword combination that was not built: no closest match is ever substituted.
@@ -85,17 +145,23 @@ pub struct MissingVariant {
     pub requested: Vec<String>,
     /// Requested keywords the pass does not declare at all.
     pub undeclared: Vec<String>,
-    pub built: Vec<&'static [&'static str]>,
+    /// The keywords of every variant that was built.
+    pub built: Vec<Vec<&'static str>>,
 }
 
 impl core::fmt::Display for MissingVariant {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        const SHOWN: usize = 8;
         write!(f, "`{}` pass {} has no variant with keywords [{}]", self.shader, self.pass, self.requested.join(" "))?;
         if !self.undeclared.is_empty() {
             write!(f, "; the pass declares no keyword {}", self.undeclared.join(", "))?;
         }
-        let built: Vec<String> = self.built.iter().map(|k| format!("[{}]", k.join(" "))).collect();
-        write!(f, "; built: {} (add a material that uses it, or the shader to `always_include`)", built.join(", "))
+        let built: Vec<String> = self.built.iter().take(SHOWN).map(|k| format!("[{}]", k.join(" "))).collect();
+        write!(f, "; built: {}", built.join(", "))?;
+        if self.built.len() > SHOWN {
+            write!(f, " and {} more", self.built.len() - SHOWN)?;
+        }
+        write!(f, " (add a material that uses it, or the shader to `always_include`)")
     }
 }
 
@@ -104,29 +170,86 @@ impl std::error::Error for MissingVariant {}
 #[allow(dead_code)]
 impl Pass {
     /// The variant with exactly these keywords (in any order), or an error naming what is missing.
-    pub fn variant(&self, keywords: &[&str]) -> Result<&'static Variant, MissingVariant> {
-        let mut wanted: Vec<&str> = keywords.to_vec();
-        wanted.sort_unstable();
-        wanted.dedup();
-        let found = self.variants.iter().find(|v| {
-            let mut have: Vec<&str> = v.keywords.to_vec();
-            have.sort_unstable();
-            have == wanted
-        });
-        found.ok_or_else(|| MissingVariant {
+    pub fn variant(&'static self, keywords: &[&str]) -> Result<Variant, MissingVariant> {
+        let mut key = vec![0u64; self.key_words];
+        let mut undeclared = Vec::new();
+        for keyword in keywords {
+            match self.keywords.iter().position(|k| k == keyword) {
+                Some(bit) => key[bit / 64] |= 1 << (bit % 64),
+                None => undeclared.push(keyword.to_string()),
+            }
+        }
+        if undeclared.is_empty() {
+            let (mut low, mut high) = (0, self.variants.len());
+            while low < high {
+                let middle = (low + high) / 2;
+                match self.key(middle).cmp(&key[..]) {
+                    core::cmp::Ordering::Less => low = middle + 1,
+                    core::cmp::Ordering::Greater => high = middle,
+                    core::cmp::Ordering::Equal => return Ok(self.variant_at(middle)),
+                }
+            }
+        }
+        let mut requested: Vec<String> = keywords.iter().map(|k| k.to_string()).collect();
+        requested.sort_unstable();
+        requested.dedup();
+        undeclared.sort_unstable();
+        undeclared.dedup();
+        Err(MissingVariant {
             shader: self.shader,
             pass: self.index,
-            requested: wanted.iter().map(|k| k.to_string()).collect(),
-            undeclared: wanted.iter().filter(|k| !self.keywords.contains(k)).map(|k| k.to_string()).collect(),
-            built: self.variants.iter().map(|v| v.keywords).collect(),
+            requested,
+            undeclared,
+            built: (0..self.variants.len()).map(|v| self.keywords_of(v)).collect(),
+        })
+    }
+
+    /// Every built variant, in key order.
+    pub fn variants(&'static self) -> impl Iterator<Item = Variant> {
+        (0..self.variants.len()).map(move |v| self.variant_at(v))
+    }
+
+    fn key(&self, variant: usize) -> &'static [u64] {
+        &self.keys[variant * self.key_words..(variant + 1) * self.key_words]
+    }
+
+    fn keywords_of(&self, variant: usize) -> Vec<&'static str> {
+        let key = self.key(variant);
+        (0..self.keywords.len()).filter(|&bit| key[bit / 64] & (1 << (bit % 64)) != 0).map(|bit| self.keywords[bit]).collect()
+    }
+
+    fn variant_at(&'static self, variant: usize) -> Variant {
+        let [vertex, fragment] = self.variants[variant].map(|m| self.stage(m));
+        Variant { pass: self, index: variant, vertex, fragment }
+    }
+
+    fn stage(&self, module: u32) -> Option<Stage> {
+        let row = self.modules.get(module as usize)?;
+        let interface = &self.interfaces[row[0] as usize];
+        let wgsl = match row[1] {
+            NONE => "",
+            pack => &WGSL_PACKS[pack as usize][row[2] as usize..row[3] as usize],
+        };
+        let spirv: &'static [u32] = match row[4] {
+            NONE => &[],
+            pack => bytemuck::cast_slice(&SPIRV_PACKS[pack as usize].0[row[5] as usize..row[6] as usize]),
+        };
+        Some(Stage {
+            entry_point: interface.entry_point,
+            wgsl,
+            spirv,
+            inputs: interface.inputs,
+            outputs: interface.outputs,
+            module: module as usize,
         })
     }
 }
 "#;
 
-/// The generated module's text. `output` is the folder the manifest's files are in (absolute, so
-/// `include_str!` finds them from anywhere).
-pub fn generate(manifest: &Manifest, output: &Path) -> String {
+/// The generated module's text. `packs_folder` is the output folder as seen from the generated
+/// file's folder (`kiln` for `OUT_DIR/kiln`), so the module embeds packs by relative paths and
+/// stays the same wherever the build happens.
+pub fn generate(manifest: &Manifest, packs_folder: &str) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
@@ -134,22 +257,36 @@ pub fn generate(manifest: &Manifest, output: &Path) -> String {
         manifest.kiln_version
     );
     out.push_str(PRELUDE);
-    let packs = |backend: fn(&StageManifest) -> Option<&FileRef>| -> BTreeSet<&str> {
-        manifest.stages().filter_map(backend).map(|f| f.path.as_str()).collect()
-    };
-    // Each WGSL pack once; stages are slices of it.
-    for path in packs(|s| s.wgsl.as_ref()) {
-        let file = output.join(path).to_string_lossy().replace('\\', "/");
-        let _ = writeln!(out, "const {}: &str = include_str!({file:?});", pack_name(path));
+    // Each pack once, numbered in path order; modules are ranges of them.
+    let mut packs: [BTreeMap<&str, u32>; 2] = Default::default();
+    for pass in manifest.passes() {
+        for module in &pass.modules {
+            for (backend, file) in [&module.wgsl, &module.spirv].into_iter().enumerate() {
+                if let Some(path) = file.as_ref().and_then(|f| pass.packs.get(f.pack)) {
+                    packs[backend].insert(path, 0);
+                }
+            }
+        }
     }
-    out.push('\n');
-    // Each SPIR-V pack read once; stages embed their words.
-    let spirv: SpirvPacks = packs(|s| s.spirv.as_ref())
-        .into_iter()
-        .filter_map(|p| Some((p, std::fs::read(output.join(p)).ok()?)))
-        .collect();
+    for numbered in &mut packs {
+        for (n, index) in numbered.values_mut().enumerate() {
+            *index = n as u32;
+        }
+    }
+    let include = |path: &str| format!("{packs_folder}/{path}");
+    let _ = writeln!(out, "\n/// Every WGSL pack: a pass's compiled modules, concatenated.");
+    let _ = writeln!(out, "static WGSL_PACKS: [&str; {}] = [", packs[0].len());
+    for path in packs[0].keys() {
+        let _ = writeln!(out, "    include_str!({:?}),", include(path));
+    }
+    let _ = writeln!(out, "];\n\n/// Every SPIR-V pack, aligned so that its modules read as words.");
+    let _ = writeln!(out, "static SPIRV_PACKS: [&Aligned<[u8]>; {}] = [", packs[1].len());
+    for path in packs[1].keys() {
+        let _ = writeln!(out, "    &Aligned(*include_bytes!({:?})),", include(path));
+    }
+    out.push_str("];\n");
     for shader in &manifest.shaders {
-        shader_module(&mut out, shader, &spirv);
+        shader_module(&mut out, shader, &packs);
     }
     out
 }
@@ -171,27 +308,23 @@ pub fn module_name(shader: &str) -> String {
     }
 }
 
-/// The SPIR-V packs' bytes, by path.
-type SpirvPacks<'a> = HashMap<&'a str, Vec<u8>>;
+/// The generated module's pack numbers, WGSL and SPIR-V, by path.
+type PackNumbers<'a> = [BTreeMap<&'a str, u32>; 2];
 
-fn shader_module(out: &mut String, shader: &ShaderManifest, spirv: &SpirvPacks) {
+fn shader_module(out: &mut String, shader: &ShaderManifest, packs: &PackNumbers) {
     let _ = writeln!(out, "\n/// `{}` ({})", shader.name, shader.file);
     let _ = writeln!(out, "#[allow(non_snake_case, non_camel_case_types, dead_code, clippy::all)]");
     let _ = writeln!(out, "pub mod {} {{", module_name(&shader.name));
     let _ = writeln!(out, "    pub const NAME: &str = {:?};", shader.name);
     for pass in &shader.passes {
-        pass_static(out, pass, spirv);
+        pass_static(out, pass, packs);
     }
     layout::uniform_structs(out, shader);
     out.push_str("}\n");
 }
 
-fn pass_static(out: &mut String, pass: &PassManifest, spirv: &SpirvPacks) {
-    let keywords: Vec<String> = pass
-        .keyword_sets
-        .iter()
-        .flat_map(|s| s.keywords.iter().filter(|k| *k != "_").map(|k| format!("{k:?}")))
-        .collect();
+fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
+    let quoted = |names: &[String]| names.iter().map(|k| format!("{k:?}")).collect::<Vec<_>>().join(", ");
     let _ = writeln!(
         out,
         "\n    /// Pass {}{}.",
@@ -204,7 +337,7 @@ fn pass_static(out: &mut String, pass: &PassManifest, spirv: &SpirvPacks) {
         "        shader: NAME,\n        index: {},\n        name: {:?},",
         pass.index, pass.name
     );
-    let _ = writeln!(out, "        keywords: &[{}],", keywords.join(", "));
+    let _ = writeln!(out, "        keywords: &[{}],", quoted(&pass.keywords));
     out.push_str("        layout: &[\n");
     for group in &pass.layout {
         for entry in &group.entries {
@@ -235,62 +368,61 @@ fn pass_static(out: &mut String, pass: &PassManifest, spirv: &SpirvPacks) {
             );
         }
     }
-    out.push_str("        ],\n        variants: &[\n");
-    for variant in &pass.variants {
-        let keywords: Vec<String> = variant.keywords.iter().map(|k| format!("{k:?}")).collect();
-        let _ = writeln!(
-            out,
-            "            super::Variant {{\n                key: {:?},\n                keywords: &[{}],",
-            variant.key,
-            keywords.join(", ")
-        );
-        stage(out, "vertex", variant.vertex.as_ref(), spirv);
-        stage(out, "fragment", variant.fragment.as_ref(), spirv);
-        out.push_str("            },\n");
-    }
-    out.push_str("        ],\n    };\n");
-}
-
-/// The constant holding a WGSL pack: named by its hash, which names its file.
-fn pack_name(path: &str) -> String {
-    let stem = path.rsplit('/').next().unwrap_or(path).split('.').next().unwrap_or_default();
-    format!("PACK_{}", stem.to_ascii_uppercase())
-}
-
-fn stage(out: &mut String, name: &str, stage: Option<&StageManifest>, packs: &SpirvPacks) {
-    let Some(stage) = stage else {
-        let _ = writeln!(out, "                {name}: None,");
-        return;
-    };
-    let wgsl = stage.wgsl.as_ref().map_or("\"\"".to_string(), |f| {
-        format!("super::module(super::{}, {}, {})", pack_name(&f.path), f.offset, f.end())
-    });
-    let spirv = match &stage.spirv {
-        // Words, not bytes: a `&[u32]` is aligned, which `include_bytes!` would not be.
-        Some(f) => match packs.get(f.path.as_str()).and_then(|pack| f.slice(pack)) {
-            Some(bytes) => {
-                let words: Vec<String> = bytes
-                    .chunks(4)
-                    .map(|w| {
-                        let mut word = [0u8; 4];
-                        word[..w.len()].copy_from_slice(w);
-                        format!("{:#010x}", u32::from_le_bytes(word))
-                    })
-                    .collect();
-                format!("&[{}]", words.join(", "))
-            }
-            None => "&[]".to_string(),
-        },
-        None => "&[]".to_string(),
-    };
+    out.push_str("        ],\n        interfaces: &[\n");
     let pairs = |attributes: &[crate::reflect::Attribute]| {
         attributes.iter().map(|a| format!("({}, {:?})", a.location, a.format)).collect::<Vec<_>>().join(", ")
     };
-    let _ = writeln!(
-        out,
-        "                {name}: Some(super::Stage {{ entry_point: {:?}, wgsl: {wgsl}, spirv: {spirv}, inputs: &[{}], outputs: &[{}] }}),",
-        stage.entry_point,
-        pairs(&stage.inputs),
-        pairs(&stage.outputs)
-    );
+    for interface in &pass.interfaces {
+        let _ = writeln!(
+            out,
+            "            super::Interface {{ entry_point: {:?}, inputs: &[{}], outputs: &[{}] }},",
+            interface.entry_point,
+            pairs(&interface.inputs),
+            pairs(&interface.outputs)
+        );
+    }
+    out.push_str("        ],\n        modules: &[\n");
+    let range = |backend: usize, file: &Option<ModuleFile>| {
+        let number = file.as_ref().and_then(|f| packs[backend].get(pass.packs.get(f.pack)?.as_str()));
+        match (file, number) {
+            (Some(f), Some(pack)) => format!("{pack}, {}, {}", f.offset, f.offset + f.size),
+            _ => "super::NONE, 0, 0".to_string(),
+        }
+    };
+    for module in &pass.modules {
+        let _ = writeln!(
+            out,
+            "            [{}, {}, {}],",
+            module.interface,
+            range(0, &module.wgsl),
+            range(1, &module.spirv)
+        );
+    }
+    // Variants sorted by key, for binary search.
+    let words = pass.keywords.len().div_ceil(64);
+    let mut rows: Vec<(Vec<u64>, [Option<usize>; 2])> = pass
+        .variants
+        .iter()
+        .map(|variant| {
+            let mut key = vec![0u64; words];
+            for keyword in &variant.keywords {
+                if let Some(bit) = pass.keywords.iter().position(|k| k == keyword) {
+                    key[bit / 64] |= 1 << (bit % 64);
+                }
+            }
+            (key, [variant.vertex, variant.fragment])
+        })
+        .collect();
+    rows.sort();
+    let _ = writeln!(out, "        ],\n        key_words: {words},\n        keys: &[");
+    for (key, _) in &rows {
+        let words: Vec<String> = key.iter().map(|w| format!("{w:#x}")).collect();
+        let _ = writeln!(out, "            {},", words.join(", "));
+    }
+    out.push_str("        ],\n        variants: &[\n");
+    let index = |m: Option<usize>| m.map_or("super::NONE".to_string(), |m| m.to_string());
+    for (_, [vertex, fragment]) in &rows {
+        let _ = writeln!(out, "            [{}, {}],", index(*vertex), index(*fragment));
+    }
+    out.push_str("        ],\n    };\n");
 }

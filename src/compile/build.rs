@@ -1,6 +1,8 @@
-//! Building a project: every used variant of every WGSL pass, preprocessed per stage, identical
-//! stage texts compiled once, unchanged ones taken from the cache, the rest compiled in parallel,
-//! and the manifest assembled in a fixed order so that output never depends on the thread count.
+//! Building a project: every used variant of every WGSL pass, a group of passes at a time. A
+//! pass's variants are preprocessed per stage, identical stage texts compiled once, unchanged ones
+//! taken from the cache, the rest compiled in parallel and packed, and the pass's part of the
+//! manifest made before the next group starts, so that memory follows the passes in flight, not
+//! the project. The manifest keeps catalogue order, so output never depends on the thread count.
 
 use super::bind::{self, Declared, PassLayout};
 use super::cache::{Cache, CachedStage, ModuleBytes, PassIndex, Recorded, hash};
@@ -10,14 +12,15 @@ use super::{Mapper, parse};
 use crate::catalog::{Catalog, CatalogPass, CatalogProgram, CatalogShader, property_references};
 use crate::config::Backend;
 use crate::diagnostics::{self, Diagnostic};
-use crate::keywords::Variant;
+use crate::keywords::{KeywordBits, Variant};
 use crate::preprocess::{Includes, SourceMap, Stage, preprocess};
 use crate::reflect::manifest::*;
-use crate::reflect::{Resource, StageReflection, UniformBlock};
+use crate::reflect::{Resource, UniformBlock};
 use crate::shaderlab::ast::{PropertyDefault, PropertyType, Shader};
 use crate::shaderlab::pragma::KeywordScope;
-use crate::source::{SourceStore, Span};
+use crate::source::{FileId, SourceStore, Span, relative_to};
 use rayon::prelude::*;
+use std::borrow::Cow;
 use std::collections::{BTreeMap, HashMap};
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -40,12 +43,17 @@ pub enum VariantSelection {
 #[derive(Debug, Clone)]
 pub struct BuildOptions {
     pub output: PathBuf,
+    /// The project folder: the manifest's shader paths and the cache's keys are relative to it,
+    /// so that a project builds the same bytes wherever it sits.
+    pub root: PathBuf,
     /// `false` for `kiln check`: nothing is written.
     pub write: bool,
     /// Worker threads (default: all cores).
     pub threads: Option<usize>,
     pub backends: Vec<Backend>,
     pub unused_shaders: VariantSelection,
+    /// Write `manifest.json` indented (default: compact).
+    pub pretty_manifest: bool,
 }
 
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -62,14 +70,15 @@ pub struct BuildSummary {
 }
 
 pub struct BuildResult {
-    pub manifest: Manifest,
+    /// `None` when nothing changed since the last clean build (the no-op path, which does not
+    /// read the manifest): it is in the output folder, as that build wrote it.
+    pub manifest: Option<Manifest>,
     pub summary: BuildSummary,
     pub diagnostics: Vec<Diagnostic>,
 }
 
 /// One distinct stage module of a pass.
 struct Job<'a> {
-    pass: usize,
     stage: Stage,
     entry: &'a str,
     entry_pragma: Span,
@@ -77,21 +86,25 @@ struct Job<'a> {
     map: SourceMap,
     text_hash: String,
     allowed: Allowed,
-    keywords: Vec<String>,
     /// Which variant asked for it first, for diagnostics.
     context: String,
+    /// How many stage requests of the pass's variants it serves (for progress).
+    requests: usize,
 }
 
-/// A pass being built.
+/// A pass to build. Its jobs are made when it is built, and dropped with it.
 struct PassWork<'a> {
     shader: &'a CatalogShader,
     pass: &'a CatalogPass,
     program: &'a CatalogProgram,
-    variants: Vec<Variant>,
-    /// For each variant, its vertex and fragment job (`None` when that stage failed or is absent).
+    variants: Cow<'a, [Variant]>,
+}
+
+/// A pass's distinct stage modules, and each variant's vertex and fragment job (`None` when that
+/// stage failed or is absent).
+struct PassJobs<'a> {
+    jobs: Vec<Job<'a>>,
     stages: Vec<[Option<usize>; 2]>,
-    layout: PassLayout,
-    failed: bool,
 }
 
 /// Outcome of a job's front end: its declared resources, and the parsed module when it had to be
@@ -109,13 +122,34 @@ enum Built {
 /// so that packing, which is serial, only concatenates.
 struct Compiled {
     modules: [Option<ModuleBytes>; 2],
-    reflection: StageReflection,
+    reflection: crate::reflect::StageReflection,
 }
 
 /// `None` when the stage's pass could not be laid out.
 type StageOutcome = Option<Result<(Built, String), Diagnostic>>;
 
-/// Builds (or, without `write`, checks) every WGSL pass of the catalogue.
+/// Progress in variants: a pass's variants are counted off as its jobs finish.
+struct Progress<'a> {
+    report: &'a (dyn Fn(usize, usize) + Sync),
+    done: AtomicUsize,
+    total: usize,
+}
+
+impl Progress<'_> {
+    /// `served` of the pass's `requests` stage requests are done: its `variants` advance in
+    /// proportion, adding up to exactly `variants` when all are.
+    fn advance(&self, variants: usize, requests: usize, before: usize, served: usize) {
+        let share = |n: usize| (n * variants).checked_div(requests).unwrap_or(variants);
+        let step = share(before + served) - share(before);
+        if step > 0 {
+            let done = self.done.fetch_add(step, Ordering::Relaxed) + step;
+            (self.report)(done, self.total);
+        }
+    }
+}
+
+/// Builds (or, without `write`, checks) every WGSL pass of the catalogue. `progress` is told
+/// (variants done, variants in all).
 pub fn build(
     store: &SourceStore,
     includes: &Includes,
@@ -145,69 +179,66 @@ fn build_in_pool(
     let cache = Cache::new(&options.output, options.write);
     let mut summary = BuildSummary::default();
 
-    // Nothing changed since a clean build: no preprocessing, no naga, nothing written.
+    // Nothing changed since a clean build: no preprocessing, no naga, nothing read or written.
     let inputs = inputs_key(store, options);
-    if let Some((manifest, counts)) = cache.unchanged(&inputs) {
+    if let Some(recorded) = cache.unchanged(&inputs) {
         let summary = BuildSummary {
-            shaders: counts.shaders,
-            passes: counts.passes,
-            variants: counts.variants,
-            modules: counts.modules,
-            reused: counts.modules,
+            shaders: recorded.shaders,
+            passes: recorded.passes,
+            variants: recorded.variants,
+            modules: recorded.modules,
+            reused: recorded.modules,
             ..BuildSummary::default()
         };
-        return BuildResult { summary, manifest, diagnostics };
+        return BuildResult { summary, manifest: None, diagnostics };
     }
 
-    // 1. Variants and their preprocessed stage texts, identical ones merged per pass.
-    let (mut work, jobs) =
-        plan(store, includes, catalog, options.unused_shaders, &mut summary, &mut diagnostics);
-    summary.modules = jobs.len();
-    let total = jobs.len() * 2;
-    let done = AtomicUsize::new(0);
-    let tick = || progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+    let work = plan(catalog, options.unused_shaders, &mut summary, &mut diagnostics);
+    let progress = Progress { report: progress, done: AtomicUsize::new(0), total: summary.variants };
 
-    // 2-4, a group of passes at a time, as many as there are threads: each pass's resources
-    // (cache or parse), one layout, then its stage modules (cache or compile) and its packs. The
-    // passes of a group run at once, so one pass's serial steps overlap another's naga work, and
-    // only a group's parsed modules are in memory. Results are merged in pass order.
-    let mut ranges = Vec::with_capacity(work.len());
-    let mut start = 0;
-    for p in 0..work.len() {
-        let end = start + jobs[start..].iter().take_while(|j| j.pass == p).count();
-        ranges.push(start..end);
-        start = end;
-    }
+    // A group of passes at a time, as many as there are threads: each pass's stage texts, their
+    // resources (cache or parse), one layout, its stage modules (cache or compile), its packs
+    // and its part of the manifest. The passes of a group run at once, so one pass's serial
+    // steps overlap another's naga work, and only a group's texts and modules are in memory.
     let group = rayon::current_num_threads().max(1);
-    let mut stages: Vec<Option<CachedStage>> = Vec::with_capacity(jobs.len());
-    for (passes, ranges) in work.chunks_mut(group).zip(ranges.chunks(group)) {
-        let built: Vec<PassBuilt> = passes
-            .par_iter_mut()
-            .zip(ranges)
-            .map(|(pass, range)| build_pass(pass, &jobs[range.clone()], store, options, &cache, &tick))
+    let mut passes: Vec<PassManifest> = Vec::with_capacity(work.len());
+    for chunk in work.chunks(group) {
+        let built: Vec<PassBuilt> = chunk
+            .par_iter()
+            .map(|pass| build_pass(pass, store, includes, catalog, options, &cache, &progress))
             .collect();
         for pass in built {
+            summary.modules += pass.modules;
             summary.compiled += pass.compiled;
             summary.reused += pass.reused;
             summary.bytes_written += pass.bytes_written;
             diagnostics.extend(pass.diagnostics);
-            stages.extend(pass.stages);
+            passes.push(pass.manifest);
         }
     }
 
-    // 5. The manifest, in catalogue order.
-    let manifest = manifest(store, catalog, &work, &jobs, &stages);
+    let manifest = manifest(store, options, &work, passes);
+    let mut packs = Vec::new();
     if options.write && !diagnostics::has_errors(&diagnostics) {
-        let mut text = serde_json::to_string_pretty(&manifest).unwrap_or_default();
-        text.push('\n');
-        let path = options.output.join("manifest.json");
-        // An unchanged manifest is not rewritten, so a no-op build touches nothing.
-        if std::fs::read(&path).ok().as_deref() != Some(text.as_bytes()) {
-            match super::write_atomically(&path, text.as_bytes()) {
+        let mut text = if options.pretty_manifest {
+            serde_json::to_vec_pretty(&manifest)
+        } else {
+            serde_json::to_vec(&manifest)
+        }
+        .unwrap_or_default();
+        text.push(b'\n');
+        let path = options.output.join(FILE_NAME);
+        // An unchanged manifest is not rewritten, so a rebuild that compiles nothing touches nothing.
+        let same = std::fs::metadata(&path).is_ok_and(|m| m.len() == text.len() as u64)
+            && std::fs::read(&path).is_ok_and(|old| old == text);
+        if !same {
+            match super::write_atomically(&path, &text) {
                 Ok(()) => summary.bytes_written += text.len() as u64,
                 Err(error) => diagnostics.push(write_failure(&options.output, &error)),
             }
         }
+        packs = manifest.packs().into_iter().map(|(path, end)| (path.to_string(), end)).collect();
+        packs.push((FILE_NAME.to_string(), text.len() as u64));
     }
     diagnostics::dedup(&mut diagnostics);
     if options.write && diagnostics.is_empty() {
@@ -218,9 +249,19 @@ fn build_in_pool(
             passes: summary.passes,
             variants: summary.variants,
             modules: summary.modules,
+            files: packs,
         });
     }
-    BuildResult { manifest, summary, diagnostics }
+    BuildResult { manifest: Some(manifest), summary, diagnostics }
+}
+
+/// A file's name as the build records it: relative to the project folder for files read from
+/// disk, so that nothing recorded depends on where the project sits.
+fn recorded_name(store: &SourceStore, file: FileId, options: &BuildOptions) -> String {
+    match store.path(file) {
+        Some(path) => relative_to(path, &options.root),
+        None => store.name(file).to_string(),
+    }
 }
 
 /// Everything a build's outcome depends on: every file's name and text (shaders, includes,
@@ -228,30 +269,32 @@ fn build_in_pool(
 fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String {
     let mut hasher = blake3::Hasher::new();
     for file in store.ids() {
-        let (name, text) = (store.name(file), store.text(file));
+        let (name, text) = (recorded_name(store, file, options), store.text(file));
         hasher.update(&(name.len() as u64).to_le_bytes());
         hasher.update(name.as_bytes());
         hasher.update(&(text.len() as u64).to_le_bytes());
         hasher.update(text.as_bytes());
     }
     let options = format!(
-        "{:?}{:?}{}{NAGA_VERSION}",
+        "{:?}{:?}{}{}{NAGA_VERSION}",
         options.backends,
         options.unused_shaders,
+        options.pretty_manifest,
         env!("CARGO_PKG_VERSION")
     );
     hasher.update(options.as_bytes());
     hasher.finalize().to_hex()[..32].to_string()
 }
 
-/// One layout for a pass from the resources of all its modules, or the reasons there is none.
+/// One layout for a pass from the resources of all its modules, or the reasons there is none
+/// (reported).
 fn lay_out(
-    pass: &mut PassWork,
     members: &[Job],
     fronts: &[Front],
     store: &SourceStore,
     diagnostics: &mut Vec<Diagnostic>,
-) {
+) -> Option<PassLayout> {
+    let mut failed = false;
     let mut declared: Vec<&[Declared]> = Vec::new();
     let mut owners = Vec::new();
     for (j, front) in fronts.iter().enumerate() {
@@ -262,7 +305,7 @@ fn lay_out(
             }
             Err(error) => {
                 diagnostics.push(error.clone());
-                pass.failed = true;
+                failed = true;
             }
         }
     }
@@ -278,22 +321,19 @@ fn lay_out(
             .diagnostic_at(diagnostic, vec![(range.0 as usize..range.1 as usize, "declared here".into())]);
         diagnostic.notes.push(job.context.clone());
         diagnostics.push(diagnostic);
-        pass.failed = true;
+        failed = true;
     }
-    pass.layout = layout;
+    (!failed).then_some(layout)
 }
 
-/// The passes to build and their distinct stage modules, preprocessed.
+/// The passes to build, with their variants.
 fn plan<'a>(
-    store: &SourceStore,
-    includes: &Includes,
     catalog: &'a Catalog,
     selection: VariantSelection,
     summary: &mut BuildSummary,
     diagnostics: &mut Vec<Diagnostic>,
-) -> (Vec<PassWork<'a>>, Vec<Job<'a>>) {
+) -> Vec<PassWork<'a>> {
     let mut work: Vec<PassWork> = Vec::new();
-    let mut jobs: Vec<Job> = Vec::new();
     for shader in &catalog.shaders {
         let mut built_any = false;
         for pass in &shader.passes {
@@ -303,24 +343,13 @@ fn plan<'a>(
                 continue;
             }
             built_any = true;
-            let index = work.len();
-            let stages =
-                add_jobs(store, includes, shader, pass, program, &variants, index, &mut jobs, diagnostics);
             summary.variants += variants.len();
             summary.passes += 1;
-            work.push(PassWork {
-                shader,
-                pass,
-                program,
-                variants,
-                stages,
-                layout: PassLayout::default(),
-                failed: false,
-            });
+            work.push(PassWork { shader, pass, program, variants });
         }
         summary.shaders += usize::from(built_any);
     }
-    (work, jobs)
+    work
 }
 
 /// The distinct preprocessed stage texts a build of the catalogue compiles, with their stage and
@@ -331,26 +360,28 @@ pub fn stage_texts(
     includes: &Includes,
     catalog: &Catalog,
 ) -> Vec<(Stage, String, String)> {
-    let (_, jobs) =
-        plan(store, includes, catalog, VariantSelection::Used, &mut BuildSummary::default(), &mut Vec::new());
-    jobs.into_iter().map(|j| (j.stage, j.entry.to_string(), j.text)).collect()
+    let work = plan(catalog, VariantSelection::Used, &mut BuildSummary::default(), &mut Vec::new());
+    work.iter()
+        .flat_map(|pass| pass_jobs(store, includes, pass, &mut Vec::new()).jobs)
+        .map(|j| (j.stage, j.entry.to_string(), j.text))
+        .collect()
 }
 
 fn write_failure(output: &std::path::Path, error: &std::io::Error) -> Diagnostic {
     Diagnostic::error("K0410", format!("cannot write to `{}`: {error}", output.display()))
 }
 
-fn select_variants(
+fn select_variants<'a>(
     shader: &CatalogShader,
     pass: &CatalogPass,
-    program: &CatalogProgram,
+    program: &'a CatalogProgram,
     selection: VariantSelection,
     diagnostics: &mut Vec<Diagnostic>,
-) -> Vec<Variant> {
+) -> Cow<'a, [Variant]> {
     if !program.variants.is_empty() {
-        return program.variants.clone();
+        return Cow::Borrowed(&program.variants);
     }
-    match selection {
+    Cow::Owned(match selection {
         VariantSelection::Used => Vec::new(),
         VariantSelection::DefaultsAndEachKeyword => program.keywords.defaults_and_each_keyword(),
         VariantSelection::All { limit } => match program.keywords.possible() {
@@ -373,7 +404,7 @@ fn select_variants(
                 Vec::new()
             }
         },
-    }
+    })
 }
 
 /// One stage of one variant, to preprocess.
@@ -386,36 +417,32 @@ struct Request<'a> {
 }
 
 /// The distinct stage texts of a pass's variants: each (stage, stage keywords, target) is
-/// preprocessed once, in parallel, and identical texts become one job. Returns each variant's
-/// vertex and fragment job.
-#[allow(clippy::too_many_arguments)]
-fn add_jobs<'a>(
+/// preprocessed once, in parallel, and identical texts become one job.
+fn pass_jobs<'a>(
     store: &SourceStore,
     includes: &Includes,
-    shader: &CatalogShader,
-    pass: &CatalogPass,
-    program: &'a CatalogProgram,
-    variants: &[Variant],
-    pass_index: usize,
-    jobs: &mut Vec<Job<'a>>,
+    work: &PassWork<'a>,
     diagnostics: &mut Vec<Diagnostic>,
-) -> Vec<[Option<usize>; 2]> {
-    let Some(wgsl) = program.wgsl.as_ref() else { return vec![[None, None]; variants.len()] };
+) -> PassJobs<'a> {
+    let (shader, pass, program) = (work.shader, work.pass, work.program);
+    let mut jobs: Vec<Job<'a>> = Vec::new();
+    let Some(wgsl) = program.wgsl.as_ref() else {
+        return PassJobs { jobs, stages: vec![[None, None]; work.variants.len()] };
+    };
     let mut requests: Vec<Request> = Vec::new();
-    let mut request_of: HashMap<(Stage, crate::keywords::KeywordBits, String), usize> = HashMap::new();
-    let mut per_variant: Vec<[Option<usize>; 2]> = Vec::with_capacity(variants.len());
-    for variant in variants {
+    let mut request_of: HashMap<(Stage, &KeywordBits, String), usize> = HashMap::new();
+    let mut per_variant: Vec<[Option<usize>; 2]> = Vec::with_capacity(work.variants.len());
+    for variant in work.variants.iter() {
         let all: Vec<&str> = program.keywords.keywords(&variant.bits).collect();
         let allowed = Allowed::for_variant(&program.pragmas, &all);
-        let shown = if all.is_empty() { "(no keywords)".to_string() } else { all.join(" ") };
         per_variant.push([Stage::Vertex, Stage::Fragment].map(|stage| {
             let entry = match stage {
                 Stage::Vertex => program.pragmas.vertex.as_ref()?,
                 Stage::Fragment => program.pragmas.fragment.as_ref()?,
             };
             let bits = program.keywords_for(variant, stage);
-            let key = (stage, bits.clone(), allowed.key());
-            Some(*request_of.entry(key).or_insert_with(|| {
+            Some(*request_of.entry((stage, bits, allowed.key())).or_insert_with(|| {
+                let shown = if all.is_empty() { "(no keywords)".to_string() } else { all.join(" ") };
                 requests.push(Request {
                     stage,
                     entry,
@@ -436,44 +463,48 @@ fn add_jobs<'a>(
         .par_iter()
         .map(|r| {
             let keywords: Vec<&str> = r.keywords.iter().map(String::as_str).collect();
-            preprocess(includes, store, wgsl, &keywords, r.stage)
+            let out = preprocess(includes, store, wgsl, &keywords, r.stage);
+            let text_hash = hash(out.text.as_bytes());
+            (out, text_hash)
         })
         .collect();
     // Different keywords can still give the same text (a keyword no `#if` of this stage tests).
     let mut job_of_text: HashMap<(Stage, String, String), usize> = HashMap::new();
     let mut job_of_request: Vec<Option<usize>> = Vec::with_capacity(requests.len());
-    for (request, out) in requests.into_iter().zip(outputs) {
+    for (request, (out, text_hash)) in requests.into_iter().zip(outputs) {
         let failed = diagnostics::has_errors(&out.diagnostics);
         diagnostics.extend(out.diagnostics.into_iter().map(|d| d.note(request.context.clone())));
         if failed {
             job_of_request.push(None);
             continue;
         }
-        let text_hash = hash(out.text.as_bytes());
         let key = (request.stage, text_hash.clone(), request.allowed.key());
         let job = *job_of_text.entry(key).or_insert_with(|| {
             jobs.push(Job {
-                pass: pass_index,
                 stage: request.stage,
                 entry: &request.entry.value,
                 entry_pragma: request.entry.span,
                 text: out.text,
                 map: out.source_map,
                 text_hash,
-                keywords: request.keywords,
                 allowed: request.allowed,
                 context: request.context,
+                requests: 0,
             });
             jobs.len() - 1
         });
+        jobs[job].requests += 1;
         job_of_request.push(Some(job));
     }
-    per_variant.into_iter().map(|stages| stages.map(|r| r.and_then(|r| job_of_request[r]))).collect()
+    let stages =
+        per_variant.into_iter().map(|stages| stages.map(|r| r.and_then(|r| job_of_request[r]))).collect();
+    PassJobs { jobs, stages }
 }
 
-/// Identifies a pass across builds: its shader file and place.
-fn pass_key(store: &SourceStore, work: &PassWork) -> String {
-    hash(format!("{}#{}.{}", store.name(work.shader.file), work.pass.subshader, work.pass.index).as_bytes())
+/// Identifies a pass across builds: its shader file (relative to the project) and place.
+fn pass_key(store: &SourceStore, options: &BuildOptions, work: &PassWork) -> String {
+    let file = recorded_name(store, work.shader.file, options);
+    hash(format!("{file}#{}.{}", work.pass.subshader, work.pass.index).as_bytes())
 }
 
 fn front(job: &Job, store: &SourceStore, index: &PassIndex) -> Front {
@@ -485,53 +516,50 @@ fn front(job: &Job, store: &SourceStore, index: &PassIndex) -> Front {
     Ok((bind::declared(&module), Some(module)))
 }
 
-/// What building one pass gives: a stage per job (`None` where it failed), its diagnostics and
-/// its share of the summary.
+/// What building one pass gives: its part of the manifest, its diagnostics and its share of the
+/// summary.
 struct PassBuilt {
-    stages: Vec<Option<CachedStage>>,
+    manifest: PassManifest,
     diagnostics: Vec<Diagnostic>,
+    modules: usize,
     compiled: usize,
     reused: usize,
     bytes_written: u64,
 }
 
-/// One pass: the resources each text declares (cache or parse), one layout, then the stage
-/// modules (cache or compile), each step in parallel over the pass's jobs; then its packs and
-/// its cache index.
+/// One pass: its stage texts, the resources each declares (cache or parse), one layout, then the
+/// stage modules (cache or compile), each step in parallel over the pass's jobs; then its packs,
+/// its cache index and its manifest. Its texts and modules are dropped when it returns.
 fn build_pass(
-    pass: &mut PassWork,
-    members: &[Job],
+    work: &PassWork,
     store: &SourceStore,
+    includes: &Includes,
+    catalog: &Catalog,
     options: &BuildOptions,
     cache: &Cache,
-    tick: &(dyn Fn() + Sync),
+    progress: &Progress,
 ) -> PassBuilt {
-    let mut built =
-        PassBuilt { stages: Vec::new(), diagnostics: Vec::new(), compiled: 0, reused: 0, bytes_written: 0 };
-    let key = pass_key(store, pass);
+    let mut diagnostics = Vec::new();
+    let PassJobs { jobs, stages } = pass_jobs(store, includes, work, &mut diagnostics);
+    let (mut compiled_count, mut reused, mut bytes_written) = (0, 0, 0);
+    let key = pass_key(store, options, work);
     let index = cache.pass_index(&key);
-    let mut fronts: Vec<Front> = members
-        .par_iter()
-        .map(|job| {
-            let front = front(job, store, &index);
-            tick();
-            front
-        })
-        .collect();
-    lay_out(pass, members, &fronts, store, &mut built.diagnostics);
-    let pass = &*pass;
-    let outcomes: Vec<StageOutcome> = members
+    let mut fronts: Vec<Front> = jobs.par_iter().map(|job| front(job, store, &index)).collect();
+    let layout = lay_out(&jobs, &fronts, store, &mut diagnostics);
+    let requests: usize = jobs.iter().map(|j| j.requests).sum();
+    let served = AtomicUsize::new(0);
+    let outcomes: Vec<StageOutcome> = jobs
         .par_iter()
         .zip(fronts.par_iter_mut())
         .map(|(job, front)| {
             let outcome = match front {
+                Ok((declared, module)) => layout
+                    .as_ref()
+                    .map(|layout| stage_module(job, declared, module.take(), layout, options, store, &index)),
                 Err(_) => None,
-                Ok(_) if pass.failed => None,
-                Ok((declared, module)) => {
-                    Some(stage_module(job, declared, module.take(), pass, options, store, &index))
-                }
             };
-            tick();
+            let before = served.fetch_add(job.requests, Ordering::Relaxed);
+            progress.advance(work.variants.len(), requests, before, job.requests);
             outcome
         })
         .collect();
@@ -544,38 +572,39 @@ fn build_pass(
         .collect();
     let mut files = match pack_pass(cache, &compiled) {
         Ok((files, written)) => {
-            built.bytes_written += written;
+            bytes_written += written;
             files.into_iter()
         }
         Err(error) => {
-            built.diagnostics.push(write_failure(&options.output, &error));
+            diagnostics.push(write_failure(&options.output, &error));
             Vec::new().into_iter()
         }
     };
     let mut fresh = PassIndex::default();
-    for ((outcome, front), job) in outcomes.into_iter().zip(&fronts).zip(members) {
+    let mut modules: Vec<Option<CachedStage>> = Vec::with_capacity(jobs.len());
+    for ((outcome, front), job) in outcomes.into_iter().zip(&fronts).zip(&jobs) {
         if let Ok((declared, _)) = front {
             fresh.front.insert(job.text_hash.clone(), declared.clone());
         }
         let stage = match outcome {
             Some(Ok((Built::Reused(stage), key))) => {
-                built.reused += 1;
+                reused += 1;
                 Some((stage, key))
             }
             Some(Ok((Built::Compiled(compiled), key))) => {
-                built.compiled += 1;
+                compiled_count += 1;
                 // Packing failed: the error is reported, the stage has no files.
                 let [wgsl, spirv] = files.next().unwrap_or_default();
                 Some((CachedStage { wgsl, spirv, reflection: compiled.reflection }, key))
             }
             Some(Err(mut error)) => {
                 error.notes.push(job.context.clone());
-                built.diagnostics.push(error);
+                diagnostics.push(error);
                 None
             }
             None => None,
         };
-        built.stages.push(stage.map(|(stage, key)| {
+        modules.push(stage.map(|(stage, key)| {
             fresh.stage.insert(key, stage.clone());
             stage
         }));
@@ -584,21 +613,28 @@ fn build_pass(
         // A cache that cannot be written only costs speed next time.
         let _ = cache.put_pass_index(&key, &fresh);
     }
-    built
+    PassBuilt {
+        manifest: pass_manifest(store, catalog, work, &jobs, &stages, &modules),
+        diagnostics,
+        modules: jobs.len(),
+        compiled: compiled_count,
+        reused,
+        bytes_written,
+    }
 }
 
 fn stage_module(
     job: &Job,
     declared: &[Declared],
     module: Option<naga::Module>,
-    pass: &PassWork,
+    layout: &PassLayout,
     options: &BuildOptions,
     store: &SourceStore,
     index: &PassIndex,
 ) -> Result<(Built, String), Diagnostic> {
     let slots: Vec<String> = declared
         .iter()
-        .filter_map(|d| pass.layout.slots.get(&d.name).map(|(g, b)| format!("{}@{g}/{b}", d.name)))
+        .filter_map(|d| layout.slots.get(&d.name).map(|(g, b)| format!("{}@{g}/{b}", d.name)))
         .collect();
     let backends: Vec<&str> =
         options.backends.iter().map(|b| if *b == Backend::Wgsl { "wgsl" } else { "spirv" }).collect();
@@ -629,7 +665,7 @@ fn stage_module(
         entry: job.entry,
         entry_pragma: job.entry_pragma,
         allowed: &job.allowed,
-        layout: &pass.layout,
+        layout,
         backends: &options.backends,
     };
     let output = stage::compile(module, &request, &mapper)?;
@@ -660,96 +696,124 @@ fn pack_pass(cache: &Cache, compiled: &[&Compiled]) -> std::io::Result<(Vec<[Opt
     Ok((files, written))
 }
 
+/// The manifest: the built passes grouped by shader, in catalogue order.
 fn manifest(
     store: &SourceStore,
-    catalog: &Catalog,
+    options: &BuildOptions,
     work: &[PassWork],
-    jobs: &[Job],
-    stages: &[Option<CachedStage>],
+    passes: Vec<PassManifest>,
 ) -> Manifest {
-    let mut shaders = Vec::new();
-    for shader in &catalog.shaders {
-        let passes: Vec<&PassWork> = work.iter().filter(|w| std::ptr::eq(w.shader, shader)).collect();
-        if passes.is_empty() {
-            continue;
+    let mut grouped: Vec<(&CatalogShader, Vec<PassManifest>)> = Vec::new();
+    for (w, pass) in work.iter().zip(passes) {
+        match grouped.last_mut() {
+            Some((shader, passes)) if std::ptr::eq(*shader, w.shader) => passes.push(pass),
+            _ => grouped.push((w.shader, vec![pass])),
         }
-        let passes: Vec<PassManifest> =
-            passes.iter().map(|w| pass_manifest(store, catalog, w, jobs, stages)).collect();
-        shaders.push(ShaderManifest {
+    }
+    let shaders = grouped
+        .into_iter()
+        .map(|(shader, passes)| ShaderManifest {
             name: shader.shader.name.value.clone(),
-            file: store.name(shader.file).to_string(),
+            file: recorded_name(store, shader.file, options),
             properties: properties(&shader.shader, &passes),
             passes,
-        });
-    }
+        })
+        .collect();
     Manifest { schema_version: SCHEMA_VERSION, kiln_version: env!("CARGO_PKG_VERSION").to_string(), shaders }
 }
 
+/// A pass's part of the manifest: each module once, each distinct interface, uniform block and
+/// pack once, and its variants as module indices.
 fn pass_manifest(
     store: &SourceStore,
     catalog: &Catalog,
     work: &PassWork,
     jobs: &[Job],
-    stages: &[Option<CachedStage>],
+    stages: &[[Option<usize>; 2]],
+    built: &[Option<CachedStage>],
 ) -> PassManifest {
     let shader = &work.shader.shader;
     let mut entries: BTreeMap<(u32, u32), LayoutEntry> = BTreeMap::new();
-    let mut variants = Vec::new();
-    // Distinct uniform block layouts of the pass; variants refer to them by index.
-    let mut layouts: Vec<UniformBlock> = Vec::new();
-    for (variant, stage_jobs) in work.variants.iter().zip(&work.stages) {
-        let [vertex, fragment] = stage_jobs.map(|j| j.and_then(|j| Some((j, stages[j].as_ref()?))));
-        let mut blocks: Vec<usize> = Vec::new();
-        let mut stage_manifest = |found: Option<(usize, &CachedStage)>, name: &str| {
-            let (j, stage) = found?;
-            let reflection: &StageReflection = &stage.reflection;
-            for b in &reflection.bindings {
-                let entry = entries.entry((b.group, b.binding)).or_insert_with(|| LayoutEntry {
-                    binding: b.binding,
-                    name: b.name.clone(),
-                    visibility: Vec::new(),
-                    resource: b.resource.clone(),
-                });
-                if !entry.visibility.iter().any(|v| v == name) {
-                    entry.visibility.push(name.to_string());
-                }
+    let mut uniform_blocks: Vec<UniformBlock> = Vec::new();
+    let mut packs: Vec<String> = Vec::new();
+    let mut pack_of: HashMap<String, usize> = HashMap::new();
+    let mut interfaces: Vec<StageInterface> = Vec::new();
+    let mut interface_of: HashMap<String, usize> = HashMap::new();
+    let mut modules: Vec<ModuleManifest> = Vec::new();
+    let mut module_of: HashMap<(usize, [Option<String>; 2]), usize> = HashMap::new();
+    // For each job, its module (`None` when it failed).
+    let mut module_of_job: Vec<Option<usize>> = Vec::with_capacity(jobs.len());
+    for (job, stage) in jobs.iter().zip(built) {
+        let Some(stage) = stage else {
+            module_of_job.push(None);
+            continue;
+        };
+        let reflection = &stage.reflection;
+        let name = job.stage.name();
+        for b in &reflection.bindings {
+            let entry = entries.entry((b.group, b.binding)).or_insert_with(|| LayoutEntry {
+                binding: b.binding,
+                name: b.name.clone(),
+                visibility: Vec::new(),
+                resource: b.resource.clone(),
+            });
+            if !entry.visibility.iter().any(|v| v == name) {
+                entry.visibility.push(name.to_string());
             }
-            for block in &reflection.uniform_blocks {
-                let index = layouts.iter().position(|b| b == block).unwrap_or_else(|| {
-                    layouts.push(block.clone());
-                    layouts.len() - 1
+        }
+        let mut blocks: Vec<usize> = reflection
+            .uniform_blocks
+            .iter()
+            .map(|block| {
+                uniform_blocks.iter().position(|b| b == block).unwrap_or_else(|| {
+                    uniform_blocks.push(block.clone());
+                    uniform_blocks.len() - 1
+                })
+            })
+            .collect();
+        blocks.sort_by(|&a, &b| uniform_blocks[a].name.cmp(&uniform_blocks[b].name));
+        let interface = StageInterface {
+            stage: name.to_string(),
+            entry_point: reflection.entry_point.clone(),
+            inputs: reflection.inputs.clone(),
+            outputs: reflection.outputs.clone(),
+            bindings: reflection.bindings.iter().map(|b| [b.group, b.binding]).collect(),
+            uniform_blocks: blocks,
+        };
+        let interface = *interface_of.entry(format!("{interface:?}")).or_insert_with(|| {
+            interfaces.push(interface);
+            interfaces.len() - 1
+        });
+        let mut file = |file: &Option<FileRef>| {
+            file.as_ref().map(|f| {
+                let pack = *pack_of.entry(f.path.clone()).or_insert_with(|| {
+                    packs.push(f.path.clone());
+                    packs.len() - 1
                 });
-                if !blocks.contains(&index) {
-                    blocks.push(index);
-                }
-            }
-            Some(StageManifest {
-                module: stage
-                    .wgsl
-                    .as_ref()
-                    .or(stage.spirv.as_ref())
-                    .map_or_else(|| format!("job{j}"), |f| f.hash.clone()),
-                entry_point: reflection.entry_point.clone(),
-                keywords: jobs[j].keywords.clone(),
-                wgsl: stage.wgsl.clone(),
-                spirv: stage.spirv.clone(),
-                inputs: reflection.inputs.clone(),
-                outputs: reflection.outputs.clone(),
-                bindings: reflection.bindings.iter().map(|b| [b.group, b.binding]).collect(),
+                ModuleFile { pack, offset: f.offset, size: f.size, hash: f.hash.clone() }
             })
         };
-        let vertex = stage_manifest(vertex, "vertex");
-        let fragment = stage_manifest(fragment, "fragment");
-        blocks.sort_by(|&a, &b| layouts[a].name.cmp(&layouts[b].name));
-        variants.push(VariantManifest {
+        // Texts that differ only where compaction removes code give the same module.
+        let hashes = [&stage.wgsl, &stage.spirv].map(|f| f.as_ref().map(|f| f.hash.clone()));
+        let module = *module_of.entry((interface, hashes)).or_insert_with(|| {
+            let (wgsl, spirv) = (file(&stage.wgsl), file(&stage.spirv));
+            modules.push(ModuleManifest { interface, wgsl, spirv });
+            modules.len() - 1
+        });
+        module_of_job.push(Some(module));
+    }
+    let variants = work
+        .variants
+        .iter()
+        .zip(stages)
+        .map(|(variant, [vertex, fragment])| VariantManifest {
             key: variant.bits.key(),
             keywords: work.program.keywords.keywords(&variant.bits).map(str::to_string).collect(),
             materials: variant.materials.iter().map(|&m| catalog.materials[m].name.clone()).collect(),
-            vertex,
-            fragment,
-            uniform_blocks: blocks,
-        });
-    }
+            vertex: vertex.and_then(|j| module_of_job[j]),
+            fragment: fragment.and_then(|j| module_of_job[j]),
+        })
+        .collect();
     let mut groups: BTreeMap<u32, Vec<LayoutEntry>> = BTreeMap::new();
     for ((group, _), mut entry) in entries {
         entry.visibility.sort();
@@ -800,8 +864,12 @@ fn pass_manifest(
                     .collect(),
             })
             .collect(),
+        keywords: work.program.keywords.names().to_vec(),
         layout: groups.into_iter().map(|(group, entries)| BindGroup { group, entries }).collect(),
-        uniform_blocks: layouts,
+        uniform_blocks,
+        packs,
+        interfaces,
+        modules,
         variants,
     }
 }

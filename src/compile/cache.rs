@@ -23,7 +23,8 @@ pub struct PassIndex {
     pub stage: BTreeMap<String, CachedStage>,
 }
 
-/// The last clean build: its inputs' hash and its counts.
+/// The last clean build: its inputs' hash, its counts, and the files it left (packs and the
+/// manifest, relative to the output folder, with the length each must have at least).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Recorded {
     pub key: String,
@@ -31,6 +32,7 @@ pub struct Recorded {
     pub passes: usize,
     pub variants: usize,
     pub modules: usize,
+    pub files: Vec<(String, u64)>,
 }
 
 /// What the cache remembers of a compiled stage module.
@@ -120,21 +122,19 @@ impl Cache {
         self.put("pass", pass, index)
     }
 
-    /// The previous build's manifest, when that build had exactly these inputs (`key`), ended
-    /// without a diagnostic, and all of its files are still in place.
-    pub fn unchanged(&self, key: &str) -> Option<(crate::reflect::manifest::Manifest, Recorded)> {
+    /// The previous build's record, when that build had exactly these inputs (`key`), ended
+    /// without a diagnostic, and all of its files are still in place. The manifest is not read:
+    /// each file's length is checked, in parallel, which is the whole cost of a no-op build.
+    pub fn unchanged(&self, key: &str) -> Option<Recorded> {
         let recorded: Recorded = self.read("build", "inputs")?;
-        if recorded.key != key {
+        if recorded.key != key || recorded.files.is_empty() {
             return None;
         }
-        let manifest: crate::reflect::manifest::Manifest =
-            serde_json::from_slice(&std::fs::read(self.output.join("manifest.json")).ok()?).ok()?;
-        // Each pack once, checked in parallel: this is the whole cost of a no-op build.
-        let present = manifest
-            .packs()
+        let present = recorded
+            .files
             .par_iter()
             .all(|(path, end)| std::fs::metadata(self.output.join(path)).is_ok_and(|m| m.len() >= *end));
-        present.then_some((manifest, recorded))
+        present.then_some(recorded)
     }
 
     /// Records that a build with these inputs finished cleanly.

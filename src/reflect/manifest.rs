@@ -1,11 +1,19 @@
 //! `manifest.json`: everything a renderer needs to use a project's compiled variants, as its own
 //! versioned serde schema (documented in docs/manifest.md), built by explicit conversion.
+//!
+//! Its size follows distinct modules, not variants: a pass lists each stage module once, each
+//! distinct stage interface (entry point, inputs, outputs, bindings) once, and its variants are
+//! keywords and module indices.
 
 use super::{Attribute, Resource, UniformBlock};
 use serde::{Deserialize, Serialize};
+use std::path::Path;
 
 /// Raised whenever a field changes meaning or is removed (adding fields keeps it).
-pub const SCHEMA_VERSION: u32 = 3;
+pub const SCHEMA_VERSION: u32 = 4;
+
+/// The manifest's file name, at the top of the output folder.
+pub const FILE_NAME: &str = "manifest.json";
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Manifest {
@@ -15,19 +23,25 @@ pub struct Manifest {
 }
 
 impl Manifest {
-    /// Every stage module of every variant (a module shared by variants comes once per variant).
-    pub fn stages(&self) -> impl Iterator<Item = &StageManifest> {
-        self.shaders
-            .iter()
-            .flat_map(|s| &s.passes)
-            .flat_map(|p| &p.variants)
-            .flat_map(|v| [&v.vertex, &v.fragment])
-            .flatten()
+    /// Reads `manifest.json` from an output folder.
+    pub fn read(output: &Path) -> std::io::Result<Manifest> {
+        let bytes = std::fs::read(output.join(FILE_NAME))?;
+        serde_json::from_slice(&bytes).map_err(std::io::Error::other)
     }
 
-    /// Every module the manifest names, each once, in path and offset order.
-    pub fn files(&self) -> Vec<&FileRef> {
-        let mut files: Vec<&FileRef> = self.stages().flat_map(StageManifest::files).collect();
+    /// Every pass of every shader.
+    pub fn passes(&self) -> impl Iterator<Item = &PassManifest> {
+        self.shaders.iter().flat_map(|s| &s.passes)
+    }
+
+    /// Every stage module, each once per pass that lists it.
+    pub fn stages(&self) -> impl Iterator<Item = StageView<'_>> {
+        self.passes().flat_map(|p| (0..p.modules.len()).map(move |m| p.stage(m)))
+    }
+
+    /// Every module file the manifest names, each once, in path and offset order.
+    pub fn files(&self) -> Vec<FileRef> {
+        let mut files: Vec<FileRef> = self.stages().flat_map(|s| s.files()).collect();
         files.sort_by(|a, b| (&a.path, a.offset).cmp(&(&b.path, b.offset)));
         files.dedup_by(|a, b| (&a.path, a.offset) == (&b.path, b.offset));
         files
@@ -36,9 +50,14 @@ impl Manifest {
     /// Every pack the manifest points into, with the length it must have at least.
     pub fn packs(&self) -> std::collections::BTreeMap<&str, u64> {
         let mut packs = std::collections::BTreeMap::new();
-        for file in self.stages().flat_map(StageManifest::files) {
-            let end = packs.entry(file.path.as_str()).or_insert(0);
-            *end = file.end().max(*end);
+        for pass in self.passes() {
+            for module in &pass.modules {
+                for file in [&module.wgsl, &module.spirv].into_iter().flatten() {
+                    let Some(path) = pass.packs.get(file.pack) else { continue };
+                    let end = packs.entry(path.as_str()).or_insert(0);
+                    *end = (file.offset + file.size).max(*end);
+                }
+            }
         }
         packs
     }
@@ -47,6 +66,7 @@ impl Manifest {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ShaderManifest {
     pub name: String,
+    /// Relative to the project folder, with `/` separators.
     pub file: String,
     pub properties: Vec<PropertyManifest>,
     pub passes: Vec<PassManifest>,
@@ -73,11 +93,58 @@ pub struct PassManifest {
     pub tags: Vec<(String, String)>,
     pub render_state: Vec<RenderState>,
     pub keyword_sets: Vec<KeywordSetManifest>,
+    /// The pass's keywords in bit order: bit i of a variant key is `keywords[i]`.
+    pub keywords: Vec<String>,
     /// One bind group layout for every variant of the pass.
     pub layout: Vec<BindGroup>,
-    /// The distinct uniform block layouts of the pass's variants, laid out by naga.
+    /// The distinct uniform block layouts of the pass's modules, laid out by naga.
     pub uniform_blocks: Vec<UniformBlock>,
+    /// The pack files the pass's modules are in, relative to the output folder.
+    pub packs: Vec<String>,
+    /// The distinct interfaces of the pass's stage modules.
+    pub interfaces: Vec<StageInterface>,
+    /// Each distinct stage module of the pass once.
+    pub modules: Vec<ModuleManifest>,
     pub variants: Vec<VariantManifest>,
+}
+
+impl PassManifest {
+    /// A module of the pass with its interface and files resolved.
+    ///
+    /// # Panics
+    /// When `module` or the indices it holds are out of range (a manifest kiln did not write).
+    pub fn stage(&self, module: usize) -> StageView<'_> {
+        let m = &self.modules[module];
+        StageView { pass: self, index: module, module: m, interface: &self.interfaces[m.interface] }
+    }
+
+    /// A variant's vertex and fragment modules.
+    pub fn variant_stages(&self, variant: &VariantManifest) -> [Option<StageView<'_>>; 2] {
+        [variant.vertex, variant.fragment].map(|m| m.map(|m| self.stage(m)))
+    }
+
+    /// The uniform blocks a variant's stages use, as indices into `uniform_blocks`, by name.
+    pub fn variant_uniform_blocks(&self, variant: &VariantManifest) -> Vec<usize> {
+        let mut blocks: Vec<usize> = self
+            .variant_stages(variant)
+            .iter()
+            .flatten()
+            .flat_map(|s| s.interface.uniform_blocks.clone())
+            .collect();
+        blocks.sort_by(|&a, &b| self.uniform_blocks[a].name.cmp(&self.uniform_blocks[b].name));
+        blocks.dedup();
+        blocks
+    }
+
+    /// The full reference of a module file.
+    pub fn file(&self, file: &ModuleFile) -> FileRef {
+        FileRef {
+            path: self.packs.get(file.pack).cloned().unwrap_or_default(),
+            offset: file.offset,
+            size: file.size,
+            hash: file.hash.clone(),
+        }
+    }
 }
 
 /// A render-state command as written, with the properties it refers to resolved.
@@ -124,27 +191,71 @@ pub struct VariantManifest {
     pub keywords: Vec<String>,
     /// The materials that need it (empty for variants built without materials).
     pub materials: Vec<String>,
-    pub vertex: Option<StageManifest>,
-    pub fragment: Option<StageManifest>,
-    /// The uniform blocks the variant's stages use: indices into the pass's `uniform_blocks`,
-    /// by block name.
-    pub uniform_blocks: Vec<usize>,
+    /// Indices into the pass's `modules`; `None` when the pass has no such entry point.
+    pub vertex: Option<usize>,
+    pub fragment: Option<usize>,
 }
 
+/// What a stage module exposes to the pipeline that uses it; modules of a pass that differ only
+/// in their code share one.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct StageManifest {
-    /// Identifies the stage module: variants with the same id share it.
-    pub module: String,
+pub struct StageInterface {
+    /// `vertex` or `fragment`.
+    pub stage: String,
     pub entry_point: String,
-    pub keywords: Vec<String>,
-    pub wgsl: Option<FileRef>,
-    pub spirv: Option<FileRef>,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub inputs: Vec<Attribute>,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub outputs: Vec<Attribute>,
     /// `[group, binding]` of each resource the module uses.
     pub bindings: Vec<[u32; 2]>,
+    /// The uniform blocks it uses: indices into the pass's `uniform_blocks`.
+    pub uniform_blocks: Vec<usize>,
+}
+
+/// One compiled stage module, identified by its bytes: variants whose stage texts differ only in
+/// code that compaction removes share it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ModuleManifest {
+    /// Index into the pass's `interfaces`.
+    pub interface: usize,
+    pub wgsl: Option<ModuleFile>,
+    pub spirv: Option<ModuleFile>,
+}
+
+/// A module's bytes: `size` bytes at `offset` of one of the pass's `packs`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ModuleFile {
+    pub pack: usize,
+    pub offset: u64,
+    pub size: u64,
+    /// BLAKE3 of the module's bytes, 128 bits in hexadecimal.
+    pub hash: String,
+}
+
+/// A stage module of a pass, with what it refers to.
+#[derive(Debug, Clone, Copy)]
+pub struct StageView<'a> {
+    pub pass: &'a PassManifest,
+    /// Its index in the pass's `modules`: variants with the same index share the module.
+    pub index: usize,
+    pub module: &'a ModuleManifest,
+    pub interface: &'a StageInterface,
+}
+
+impl<'a> StageView<'a> {
+    pub fn wgsl(&self) -> Option<FileRef> {
+        self.module.wgsl.as_ref().map(|f| self.pass.file(f))
+    }
+
+    pub fn spirv(&self) -> Option<FileRef> {
+        self.module.spirv.as_ref().map(|f| self.pass.file(f))
+    }
+
+    /// Its module files, one per backend written.
+    pub fn files(self) -> impl Iterator<Item = FileRef> + 'a {
+        [self.wgsl(), self.spirv()].into_iter().flatten()
+    }
 }
 
 /// A stage module: `size` bytes at `offset` of a pack file under the output folder. A build
@@ -160,13 +271,6 @@ pub struct FileRef {
     pub hash: String,
 }
 
-impl StageManifest {
-    /// Its modules, one per backend written.
-    pub fn files(&self) -> impl Iterator<Item = &FileRef> {
-        [&self.wgsl, &self.spirv].into_iter().flatten()
-    }
-}
-
 impl FileRef {
     /// Where the module ends in its pack.
     pub fn end(&self) -> u64 {
@@ -180,7 +284,7 @@ impl FileRef {
     }
 
     /// The module's bytes, read from its pack under `output`.
-    pub fn read(&self, output: &std::path::Path) -> std::io::Result<Vec<u8>> {
+    pub fn read(&self, output: &Path) -> std::io::Result<Vec<u8>> {
         let pack = std::fs::read(output.join(&self.path))?;
         self.slice(&pack).map(<[u8]>::to_vec).ok_or_else(|| {
             std::io::Error::new(

@@ -18,6 +18,15 @@ fn build_into(
     output: &Path,
     threads: Option<usize>,
 ) -> (BuildResult, Vec<Diagnostic>, SourceStore) {
+    build_with(project, output, threads, false)
+}
+
+fn build_with(
+    project: &str,
+    output: &Path,
+    threads: Option<usize>,
+    pretty_manifest: bool,
+) -> (BuildResult, Vec<Diagnostic>, SourceStore) {
     let mut store = SourceStore::new();
     let mode = BuildMode {
         write: true,
@@ -25,6 +34,7 @@ fn build_into(
         unused_shaders: VariantSelection::Used,
         threads,
         global_keywords: None,
+        pretty_manifest,
     };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from(project)], &mode, &|_, _| {}).expect("project exists");
@@ -39,12 +49,20 @@ fn read_manifest(output: &Path) -> Manifest {
 #[test]
 fn the_example_project_builds_with_a_golden_manifest() {
     let output = tempfile::tempdir().expect("temp dir");
-    let (result, mut diagnostics, store) = build_into("fixtures/project", output.path(), None);
+    let (result, mut diagnostics, store) = build_with("fixtures/project", output.path(), None, true);
     diagnostics.extend(result.diagnostics);
     assert!(diagnostics.is_empty(), "{}", render_plain(&store, &diagnostics));
     assert_eq!((result.summary.shaders, result.summary.passes, result.summary.variants), (3, 3, 10));
     let text = std::fs::read_to_string(output.path().join("manifest.json")).expect("manifest");
     expect_file![root().join("tests/golden/build/manifest.json")].assert_eq(&text);
+
+    // By default the same manifest is written compact, on one line.
+    let compact = tempfile::tempdir().expect("temp dir");
+    build_into("fixtures/project", compact.path(), None);
+    let compact_text = std::fs::read_to_string(compact.path().join("manifest.json")).expect("manifest");
+    assert_eq!(compact_text.lines().count(), 1);
+    assert!(compact_text.len() * 2 < text.len(), "{} bytes against {}", compact_text.len(), text.len());
+    assert_eq!(read_manifest(compact.path()), read_manifest(output.path()));
 
     // Every module named in the manifest is in its pack with its size and hash.
     verified_manifest(output.path());
@@ -57,11 +75,10 @@ fn an_f16_variant_is_written_with_its_enable_directive() {
     diagnostics.extend(result.diagnostics);
     assert!(diagnostics.is_empty(), "{}", render_plain(&store, &diagnostics));
     let manifest = read_manifest(output.path());
-    let fragment = manifest
-        .stages()
-        .find(|s| s.entry_point == "LitPassFragment" && s.keywords == ["_SPECULAR_HALF"])
-        .expect("the f16 variant's fragment stage");
-    let bytes = fragment.wgsl.as_ref().expect("WGSL written").read(output.path()).expect("WGSL");
+    let pass = manifest.passes().next().expect("a pass");
+    let variant = pass.variants.iter().find(|v| v.keywords == ["_SPECULAR_HALF"]).expect("the f16 variant");
+    let fragment = pass.variant_stages(variant)[1].expect("its fragment stage");
+    let bytes = fragment.wgsl().expect("WGSL written").read(output.path()).expect("WGSL");
     let wgsl = String::from_utf8(bytes).expect("UTF-8");
     // naga's writer leaves the directive out when f16 appears only in expressions.
     assert!(wgsl.starts_with("enable f16;\n"), "{}", &wgsl[..200.min(wgsl.len())]);
@@ -80,10 +97,10 @@ fn custom_light_has_the_seed_layout() {
     let lit = manifest.shaders.iter().find(|s| s.name == "Custom RP/Lit").expect("Lit");
     let pass = &lit.passes[0];
     for variant in &pass.variants {
-        let light = variant
-            .uniform_blocks
-            .iter()
-            .map(|&i| &pass.uniform_blocks[i])
+        let light = pass
+            .variant_uniform_blocks(variant)
+            .into_iter()
+            .map(|i| &pass.uniform_blocks[i])
             .find(|b| b.name == "_CustomLight")
             .expect("_CustomLight used");
         assert_eq!(light.size, 144);
@@ -121,8 +138,8 @@ fn a_pass_has_one_layout_and_fragment_keywords_share_the_vertex_module() {
             }
         }
         for variant in &pass.variants {
-            for stage in [&variant.vertex, &variant.fragment].into_iter().flatten() {
-                for binding in &stage.bindings {
+            for stage in pass.variant_stages(variant).into_iter().flatten() {
+                for binding in &stage.interface.bindings {
                     assert!(slots.contains_key(binding), "{binding:?} of a variant is in the pass layout");
                 }
             }
@@ -132,13 +149,12 @@ fn a_pass_has_one_layout_and_fragment_keywords_share_the_vertex_module() {
     let variants = &complex.passes[0].variants;
     let plain = variants.iter().find(|v| v.keywords.is_empty()).expect("plain");
     let emission = variants.iter().find(|v| v.keywords == ["_EMISSION_MAP"]).expect("emission");
-    let module =
-        |v: &kiln::reflect::manifest::VariantManifest| v.vertex.as_ref().expect("vertex").module.clone();
-    assert_eq!(module(plain), module(emission), "`_EMISSION_MAP` is fragment-only");
-    assert_ne!(
-        plain.fragment.as_ref().expect("fragment").module,
-        emission.fragment.as_ref().expect("fragment").module
+    assert_eq!(
+        plain.vertex.expect("vertex"),
+        emission.vertex.expect("vertex"),
+        "`_EMISSION_MAP` is fragment-only"
     );
+    assert_ne!(plain.fragment.expect("fragment"), emission.fragment.expect("fragment"));
 }
 
 #[test]
@@ -211,6 +227,7 @@ fn every_bad_build_input_has_a_pinned_diagnostic() {
             unused_shaders: VariantSelection::All { limit: 4096 },
             threads: Some(1),
             global_keywords: None,
+            pretty_manifest: false,
         };
         let (result, mut diagnostics) =
             build_project(&mut store, std::slice::from_ref(&path), &mode, &|_, _| {}).expect("exists");
@@ -232,6 +249,16 @@ fn reflect_prints_one_variant() {
     let inputs = &json["variant"]["vertex"]["inputs"];
     assert_eq!(inputs[0]["format"], "float32x3");
     assert_eq!(inputs[2]["format"], "float32x2");
+    // Its uniform blocks in full, named by its stages.
+    let light =
+        json["uniform_blocks"].as_array().expect("blocks").iter().find(|b| b["name"] == "_CustomLight");
+    assert_eq!(light.expect("_CustomLight")["size"], 144);
+    assert!(
+        json["variant"]["fragment"]["uniform_blocks"]
+            .as_array()
+            .expect("names")
+            .contains(&"_CustomLight".into())
+    );
 }
 
 #[test]
@@ -307,6 +334,7 @@ fn an_always_included_shader_with_too_many_variants_is_refused_with_the_count() 
         unused_shaders: VariantSelection::Used,
         threads: Some(1),
         global_keywords: None,
+        pretty_manifest: false,
     };
     let path = PathBuf::from("fixtures/bad/always_include");
     let (result, mut diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");

@@ -5,7 +5,7 @@
 use kiln::compile::VariantSelection;
 use kiln::project::{BuildMode, build_project};
 use kiln::reflect::Resource;
-use kiln::reflect::manifest::{Manifest, PassManifest, StageManifest};
+use kiln::reflect::manifest::{Manifest, PassManifest, StageView};
 use kiln::source::SourceStore;
 use std::path::{Path, PathBuf};
 
@@ -46,20 +46,15 @@ enum Source {
     SpirV,
 }
 
-fn module(
-    device: &wgpu::Device,
-    output: &Path,
-    stage: &StageManifest,
-    source: &Source,
-) -> wgpu::ShaderModule {
+fn module(device: &wgpu::Device, output: &Path, stage: StageView, source: &Source) -> wgpu::ShaderModule {
     let source = match source {
         Source::Wgsl => {
-            let file = stage.wgsl.as_ref().expect("WGSL emitted");
+            let file = stage.wgsl().expect("WGSL emitted");
             let text = String::from_utf8(file.read(output).expect("read")).expect("UTF-8");
             wgpu::ShaderSource::Wgsl(text.into())
         }
         Source::SpirV => {
-            let file = stage.spirv.as_ref().expect("SPIR-V emitted");
+            let file = stage.spirv().expect("SPIR-V emitted");
             let bytes = file.read(output).expect("read");
             assert_eq!(bytes.len() % 4, 0);
             let words: Vec<u32> =
@@ -67,7 +62,8 @@ fn module(
             wgpu::ShaderSource::SpirV(words.into())
         }
     };
-    device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(&stage.module), source })
+    let label = format!("module {}", stage.index);
+    device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(&label), source })
 }
 
 fn pipelines(device: &wgpu::Device, output: &Path, pass: &PassManifest, source: &Source) -> usize {
@@ -93,10 +89,11 @@ fn pipelines(device: &wgpu::Device, output: &Path, pass: &PassManifest, source: 
     });
     let mut count = 0;
     for variant in &pass.variants {
-        let vertex = variant.vertex.as_ref().expect("vertex stage");
-        let fragment = variant.fragment.as_ref().expect("fragment stage");
+        let [vertex, fragment] = pass.variant_stages(variant);
+        let (vertex, fragment) = (vertex.expect("vertex stage"), fragment.expect("fragment stage"));
         let mut offset = 0;
         let attributes: Vec<wgpu::VertexAttribute> = vertex
+            .interface
             .inputs
             .iter()
             .map(|input| {
@@ -112,7 +109,7 @@ fn pipelines(device: &wgpu::Device, output: &Path, pass: &PassManifest, source: 
             attributes: &attributes,
         })];
         let targets: Vec<Option<wgpu::ColorTargetState>> =
-            fragment.outputs.iter().map(|_| Some(wgpu::TextureFormat::Rgba8Unorm.into())).collect();
+            fragment.interface.outputs.iter().map(|_| Some(wgpu::TextureFormat::Rgba8Unorm.into())).collect();
         let (vertex_module, fragment_module) =
             (module(device, output, vertex, source), module(device, output, fragment, source));
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
@@ -121,7 +118,7 @@ fn pipelines(device: &wgpu::Device, output: &Path, pass: &PassManifest, source: 
             layout: Some(&pipeline_layout),
             vertex: wgpu::VertexState {
                 module: &vertex_module,
-                entry_point: Some(&vertex.entry_point),
+                entry_point: Some(&vertex.interface.entry_point),
                 compilation_options: Default::default(),
                 buffers: &buffers,
             },
@@ -130,7 +127,7 @@ fn pipelines(device: &wgpu::Device, output: &Path, pass: &PassManifest, source: 
             multisample: wgpu::MultisampleState::default(),
             fragment: Some(wgpu::FragmentState {
                 module: &fragment_module,
-                entry_point: Some(&fragment.entry_point),
+                entry_point: Some(&fragment.interface.entry_point),
                 compilation_options: Default::default(),
                 targets: &targets,
             }),
@@ -163,6 +160,7 @@ fn every_variant_makes_a_render_pipeline() {
         unused_shaders: VariantSelection::Used,
         threads: None,
         global_keywords: None,
+        pretty_manifest: false,
     };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from("fixtures/project")], &mode, &|_, _| {})

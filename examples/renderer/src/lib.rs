@@ -354,8 +354,9 @@ pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, scene: &Scene) -> Resu
         } else {
             None
         };
+        let label = variant.keywords().join(" ");
         let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(variant.key),
+            label: Some(&label),
             layout: Some(&pipeline_layout),
             vertex: wgpu::VertexState {
                 module: &vertex_module,
