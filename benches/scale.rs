@@ -3,7 +3,8 @@
 //! synthetic project (shaders with the Lit pass as their body, eight `shader_feature_fragment`
 //! sets and a `multi_compile_fragment` set, materials choosing distinct combinations), then
 //! measures: naga alone (parse, validate, WGSL and SPIR-V) on the very stage texts kiln compiles;
-//! kiln's cold build; a no-op rebuild; a rebuild after touching one include; kiln's peak memory.
+//! kiln's cold build; a no-op rebuild; a rebuild after touching one include; kiln's peak memory in
+//! the cold and the no-op build; the manifest's bytes per variant and the generated Rust's size.
 //! Results and how to read them: docs/performance.md.
 
 use kiln::catalog::catalog;
@@ -167,7 +168,7 @@ fn main() {
         .unwrap_or_else(|| vec![10, 100, 1000, 10000]);
     println!("{} threads", rayon::current_num_threads());
     println!(
-        "{:>8} {:>7} {:>6} {:>9} {:>10} {:>6} {:>10} {:>6} {:>9} {:>9} {:>10} {:>10}",
+        "{:>8} {:>7} {:>6} {:>9} {:>10} {:>6} {:>10} {:>6} {:>9} {:>9} {:>10} {:>10} {:>10} {:>8} {:>10}",
         "variants",
         "modules",
         "vertex",
@@ -179,7 +180,10 @@ fn main() {
         "no-op",
         "touch",
         "recompiled",
-        "peak mem"
+        "peak mem",
+        "no-op mem",
+        "manifest",
+        "Rust"
     );
     for size in sizes {
         let dir: PathBuf = tempfile::tempdir().expect("temp dir").keep();
@@ -187,7 +191,11 @@ fn main() {
         let project = dir.join("project");
         // Rounds of naga, check and a cold build, interleaved, each reported as its median: a
         // shared machine's noise moves all three alike within a round.
-        let rounds = if size >= 10_000 { 3 } else { 5 };
+        let rounds = match size {
+            0..10_000 => 5,
+            10_000..100_000 => 3,
+            _ => 1,
+        };
         let (mut naga_times, mut check_times, mut cold_times) = (Vec::new(), Vec::new(), Vec::new());
         let mut modules = 0;
         let mut cold = None;
@@ -211,8 +219,14 @@ fn main() {
         let output = dir.join(format!("out{}", rounds - 1));
         let (naga, check_time, cold_time) = (median(naga_times), median(check_times), median(cold_times));
         assert_eq!(cold.modules, modules, "kiln compiles the texts naga was given");
+        reset_peak();
         let noops: Vec<(kiln::compile::BuildSummary, Duration)> =
             (0..3).map(|_| kiln_build(&project, &output, true)).collect();
+        let noop_memory = peak_mib();
+        let manifest_bytes = std::fs::metadata(output.join("manifest.json")).expect("manifest").len();
+        let manifest = kiln::reflect::manifest::Manifest::read(&output).expect("manifest");
+        let rust_bytes = kiln::codegen::generate(&manifest, "kiln").len();
+        drop(manifest);
         assert!(noops.iter().all(|(noop, _)| noop.compiled == 0));
         let noop_time = median(noops.into_iter().map(|(_, time)| time).collect());
         // Touch one of the shared includes: only the shaders that include it recompile.
@@ -224,7 +238,7 @@ fn main() {
         let vertex_jobs = shaders; // one vertex module per shader: its keywords are fragment-only
         let ratio = |t: Duration| t.as_secs_f64() / naga.as_secs_f64();
         println!(
-            "{:>8} {:>7} {:>6} {:>9.2?} {:>10.2?} {:>5.2}x {:>10.2?} {:>5.2}x {:>9.2?} {:>9.2?} {:>10} {:>6.0} MiB",
+            "{:>8} {:>7} {:>6} {:>9.2?} {:>10.2?} {:>5.2}x {:>10.2?} {:>5.2}x {:>9.2?} {:>9.2?} {:>10} {:>6.0} MiB {:>6.0} MiB {:>6} B/v {:>7.2} MB",
             cold.variants,
             cold.modules,
             vertex_jobs,
@@ -236,7 +250,10 @@ fn main() {
             noop_time,
             touch_time,
             format!("{}/{}", touch.compiled, cold.modules),
-            memory
+            memory,
+            noop_memory,
+            manifest_bytes / cold.variants as u64,
+            rust_bytes as f64 / 1e6
         );
         assert!(
             touch.compiled <= cold.modules * including / shaders + 1,

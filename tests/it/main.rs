@@ -12,5 +12,6 @@ mod materials;
 mod parse;
 mod preprocess;
 mod robustness;
+mod scale;
 mod support;
 mod tidy;

@@ -1,6 +1,8 @@
 //! Shared helpers: paths into the repository, loading fixtures, running the `kiln` binary.
 
+use kiln::compile::VariantSelection;
 use kiln::diagnostics::Diagnostic;
+use kiln::project::{BuildMode, build_project};
 use kiln::source::{FileId, SourceStore};
 use std::path::{Path, PathBuf};
 use std::process::Output;
@@ -80,4 +82,58 @@ pub fn verified_manifest(output: &Path) -> kiln::reflect::manifest::Manifest {
         assert_eq!(&blake3::hash(&bytes).to_hex()[..32], file.hash, "{} is intact", file.path);
     }
     manifest
+}
+
+/// A project with one shader of eight fragment keyword sets and `materials` materials.
+pub fn synthetic_project(dir: &Path, materials: usize) {
+    let shaders = root().join("fixtures/project/shaders");
+    std::fs::create_dir_all(dir.join("materials")).expect("mkdir");
+    let pass = std::fs::read_to_string(shaders.join("LitPass.wgsl")).expect("LitPass");
+    let tweaks: String =
+        (0..8).map(|k| format!("#if defined(_F{k})\n    color = color * 1.0{k};\n#endif\n")).collect();
+    let pass = pass.replace(
+        "    let color = GetLighting(surface, brdf);\n",
+        &format!("    var color = GetLighting(surface, brdf) * TINT;\n{tweaks}"),
+    );
+    std::fs::write(dir.join("SynthPass.wgsl"), pass).expect("write");
+    std::fs::write(dir.join("Tint.wgsl"), "#define TINT 1.0\n").expect("write");
+    // Lit's light-count multi_compile set is built for a renderer with several lights only.
+    std::fs::write(dir.join("kiln.toml"), "global_keywords = []\n").expect("write");
+    let pragmas: String =
+        (0..8).map(|k| format!("            #pragma shader_feature_fragment _ _F{k}\n")).collect();
+    let shader = std::fs::read_to_string(shaders.join("Lit.shader"))
+        .expect("Lit")
+        .replace(
+            "#pragma shader_feature _PREMULTIPLY_ALPHA\n",
+            &format!("#pragma shader_feature _PREMULTIPLY_ALPHA\n{pragmas}"),
+        )
+        .replace(
+            "#include \"LitPass.wgsl\"",
+            "#include \"Tint.wgsl\"\n            #include \"SynthPass.wgsl\"",
+        );
+    std::fs::write(dir.join("Synth.shader"), shader).expect("write");
+    for m in 0..materials {
+        let keywords: Vec<String> =
+            (0..8).filter(|b| m & (1 << b) != 0).map(|b| format!("\"_F{b}\"")).collect();
+        let text = format!("shader = \"Custom RP/Lit\"\nkeywords = [{}]\n", keywords.join(", "));
+        std::fs::write(dir.join(format!("materials/M{m:03}.mat")), text).expect("write");
+    }
+}
+
+/// Builds a project that must build without a diagnostic, into `output` or its own output folder.
+pub fn build_clean(project: &Path, output: Option<&Path>) -> kiln::compile::BuildSummary {
+    let mut store = SourceStore::new();
+    let mode = BuildMode {
+        write: true,
+        output: output.map(Path::to_path_buf),
+        unused_shaders: VariantSelection::Used,
+        threads: None,
+        global_keywords: None,
+        pretty_manifest: false,
+    };
+    let (result, mut diagnostics) =
+        build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
+    diagnostics.extend(result.diagnostics);
+    assert!(diagnostics.is_empty(), "{}", kiln::diagnostics::render_plain(&store, &diagnostics));
+    result.summary
 }

@@ -5,7 +5,8 @@
 
 pub mod scene;
 
-mod shaders {
+/// What kiln generated in `build.rs` for the scene's variants.
+pub mod shaders {
     include!(concat!(env!("OUT_DIR"), "/kiln_shaders.rs"));
 }
 
