@@ -1,5 +1,5 @@
 //! Embeds the bundled WGSL shader library (`shaderlib/*.wgsl`) into the crate, so kiln finds its
-//! library from any working directory.
+//! library from any working directory, and records the optimisation level kiln is built with.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -23,4 +23,6 @@ fn main() {
     module.push_str("];\n");
     let out = Path::new(&std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("shaderlib.rs");
     std::fs::write(out, module).expect("OUT_DIR is writable");
+    // `kiln::Build` warns when it compiles many modules unoptimised (a plain build-dependency).
+    println!("cargo:rustc-env=KILN_OPT_LEVEL={}", std::env::var("OPT_LEVEL").unwrap_or_default());
 }

@@ -5,7 +5,8 @@
 //! measures: naga alone (parse, validate, WGSL and SPIR-V) on the very stage texts kiln compiles;
 //! kiln's cold build; a no-op rebuild; a rebuild after touching one include; kiln's peak memory in
 //! the cold and the no-op build; the manifest's bytes per variant and the generated Rust's size.
-//! Results and how to read them: docs/performance.md.
+//! `-- generate N DIR` only writes the project of N variants. Results and how to read them:
+//! docs/performance.md.
 
 use kiln::catalog::catalog;
 use kiln::compile::{VariantSelection, stage_texts};
@@ -161,6 +162,15 @@ fn naga_alone(project: &Path) -> (usize, Duration) {
 }
 
 fn main() {
+    // `-- generate N DIR` only writes the project, for one-off runs of the CLI on it.
+    let args: Vec<String> = std::env::args().collect();
+    if let Some(at) = args.iter().position(|a| a == "generate") {
+        let size = args.get(at + 1).and_then(|n| n.parse().ok()).expect("generate N DIR");
+        let dir = PathBuf::from(args.get(at + 2).expect("generate N DIR"));
+        let shaders = generate(&dir, size);
+        println!("wrote {shaders} shaders for {size} variants to {}", dir.display());
+        return;
+    }
     let sizes: Vec<usize> = std::env::args()
         .skip(1)
         .find(|a| a.chars().next().is_some_and(|c| c.is_ascii_digit()))

@@ -401,17 +401,25 @@ pub fn build_project(
     if let Some(global) = &mode.global_keywords {
         input.global_keywords = Some(given_global_keywords(store, global));
     }
-    let (catalog, found) = catalog(store, &mut includes, &input);
-    diagnostics.extend(found);
-    let options = BuildOptions {
+    let mut options = BuildOptions {
         output: mode.output.clone().unwrap_or_else(|| workspace.output.clone()),
         root: workspace.root.clone(),
-        write: mode.write && !diagnostics::has_errors(&diagnostics),
+        write: mode.write,
         threads: mode.threads,
         backends: workspace.backends.clone(),
         unused_shaders: mode.unused_shaders,
         pretty_manifest: mode.pretty_manifest,
+        record: false,
     };
+    if diagnostics.is_empty()
+        && let Some(result) = crate::compile::unchanged(store, &options)
+    {
+        return Ok((result, diagnostics));
+    }
+    let (catalog, found) = catalog(store, &mut includes, &input);
+    diagnostics.extend(found);
+    options.write = mode.write && !diagnostics::has_errors(&diagnostics);
+    options.record = diagnostics.is_empty();
     let result = build(store, &includes, &catalog, &options, progress);
     if workspace.strict {
         diagnostics::promote_warnings(&mut diagnostics);
@@ -460,6 +468,7 @@ pub fn reflect_variant(
         backends: ProjectConfig::default().backends,
         unused_shaders: VariantSelection::Used,
         pretty_manifest: false,
+        record: false,
     };
     let result = build(store, &includes, &catalog, &options, &|_, _| {});
     diagnostics.extend(result.diagnostics);

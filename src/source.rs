@@ -125,6 +125,8 @@ pub struct SourceStore {
     files: Vec<SourceFile>,
     /// Files loaded through [`SourceStore::load_once`], by canonical path.
     by_canonical_path: HashMap<PathBuf, FileId>,
+    /// Paths looked for and not found: a file appearing there could change what is read.
+    absent: Vec<PathBuf>,
 }
 
 impl SourceStore {
@@ -152,10 +154,19 @@ impl SourceStore {
     }
 
     /// The canonical path of an existing regular file (symlinks resolved), or `None` when there is
-    /// no such file. Include resolution asks this before deciding where a name points.
-    pub fn canonical_file(&self, path: &Path) -> Option<PathBuf> {
-        let canonical = std::fs::canonicalize(path).ok()?;
-        canonical.is_file().then_some(canonical)
+    /// no such file (recorded: see [`SourceStore::absent`]). Include resolution asks this before
+    /// deciding where a name points.
+    pub fn canonical_file(&mut self, path: &Path) -> Option<PathBuf> {
+        let found = std::fs::canonicalize(path).ok().filter(|canonical| canonical.is_file());
+        if found.is_none() {
+            self.absent.push(path.to_path_buf());
+        }
+        found
+    }
+
+    /// Every path [`SourceStore::canonical_file`] found no file at, in the order asked.
+    pub fn absent(&self) -> &[PathBuf] {
+        &self.absent
     }
 
     /// Loads a file once: a second call with the same canonical path returns the first id.

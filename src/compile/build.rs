@@ -13,7 +13,7 @@ use crate::catalog::{Catalog, CatalogPass, CatalogProgram, CatalogShader, proper
 use crate::config::Backend;
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{KeywordBits, Variant};
-use crate::preprocess::{Includes, SourceMap, Stage, preprocess};
+use crate::preprocess::{Includes, LIBRARY_PREFIX, SourceMap, Stage, preprocess};
 use crate::reflect::manifest::*;
 use crate::reflect::{Resource, UniformBlock};
 use crate::shaderlab::ast::{PropertyDefault, PropertyType, Shader};
@@ -54,6 +54,9 @@ pub struct BuildOptions {
     pub unused_shaders: VariantSelection,
     /// Write `manifest.json` indented (default: compact).
     pub pretty_manifest: bool,
+    /// Record the inputs for the next build's no-op check ([`unchanged`]). Only when the
+    /// catalogue reported nothing: a no-op build reports nothing either.
+    pub record: bool,
 }
 
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -70,7 +73,7 @@ pub struct BuildSummary {
 }
 
 pub struct BuildResult {
-    /// `None` when nothing changed since the last clean build (the no-op path, which does not
+    /// `None` when nothing changed since the last clean build ([`unchanged`], which does not
     /// read the manifest): it is in the output folder, as that build wrote it.
     pub manifest: Option<Manifest>,
     pub summary: BuildSummary,
@@ -179,20 +182,6 @@ fn build_in_pool(
     let cache = Cache::new(&options.output, options.write);
     let mut summary = BuildSummary::default();
 
-    // Nothing changed since a clean build: no preprocessing, no naga, nothing read or written.
-    let inputs = inputs_key(store, options);
-    if let Some(recorded) = cache.unchanged(&inputs) {
-        let summary = BuildSummary {
-            shaders: recorded.shaders,
-            passes: recorded.passes,
-            variants: recorded.variants,
-            modules: recorded.modules,
-            reused: recorded.modules,
-            ..BuildSummary::default()
-        };
-        return BuildResult { summary, manifest: None, diagnostics };
-    }
-
     let work = plan(catalog, options.unused_shaders, &mut summary, &mut diagnostics);
     let progress = Progress { report: progress, done: AtomicUsize::new(0), total: summary.variants };
 
@@ -241,15 +230,19 @@ fn build_in_pool(
         packs.push((FILE_NAME.to_string(), text.len() as u64));
     }
     diagnostics::dedup(&mut diagnostics);
-    if options.write && diagnostics.is_empty() {
-        // Only costs a full pass next time if it cannot be written.
+    if options.write && options.record && diagnostics.is_empty() {
+        let read = disk_files(store).map(|f| recorded_name(store, f, options)).collect();
+        let absent = store.absent().iter().map(|p| relative_to(p, &options.root)).collect();
+        // Only costs a full build next time if it cannot be written.
         let _ = cache.record_inputs(&Recorded {
-            key: inputs,
+            key: inputs_key(store, options, &[]),
             shaders: summary.shaders,
             passes: summary.passes,
             variants: summary.variants,
             modules: summary.modules,
             files: packs,
+            read,
+            absent,
         });
     }
     BuildResult { manifest: Some(manifest), summary, diagnostics }
@@ -264,16 +257,32 @@ fn recorded_name(store: &SourceStore, file: FileId, options: &BuildOptions) -> S
     }
 }
 
-/// Everything a build's outcome depends on: every file's name and text (shaders, includes,
-/// materials, the project file, the bundled library) and the options.
-fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String {
+/// The files of the store read from disk, in the order read.
+fn disk_files(store: &SourceStore) -> impl Iterator<Item = FileId> + '_ {
+    store.ids().filter(|&f| store.path(f).is_some())
+}
+
+/// Everything a build's outcome depends on: the options, the texts given in memory (global
+/// keywords from a build script; the bundled library is part of kiln's version), and every file
+/// read from disk (shaders, includes, materials, the project file) by its name relative to the
+/// project, in the order read, followed by `more` files read since (name, bytes).
+fn inputs_key(store: &SourceStore, options: &BuildOptions, more: &[(String, Vec<u8>)]) -> String {
     let mut hasher = blake3::Hasher::new();
-    for file in store.ids() {
-        let (name, text) = (recorded_name(store, file, options), store.text(file));
+    let mut file = |name: &str, bytes: &[u8]| {
         hasher.update(&(name.len() as u64).to_le_bytes());
         hasher.update(name.as_bytes());
-        hasher.update(&(text.len() as u64).to_le_bytes());
-        hasher.update(text.as_bytes());
+        hasher.update(&(bytes.len() as u64).to_le_bytes());
+        hasher.update(bytes);
+    };
+    for f in store.ids().filter(|&f| store.path(f).is_none() && !store.name(f).starts_with(LIBRARY_PREFIX)) {
+        file(store.name(f), store.text(f).as_bytes());
+    }
+    file("<read from disk>", &[]);
+    for f in disk_files(store) {
+        file(&recorded_name(store, f, options), store.text(f).as_bytes());
+    }
+    for (name, bytes) in more {
+        file(name, bytes);
     }
     let options = format!(
         "{:?}{:?}{}{}{NAGA_VERSION}",
@@ -284,6 +293,41 @@ fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String {
     );
     hasher.update(options.as_bytes());
     hasher.finalize().to_hex()[..32].to_string()
+}
+
+/// The no-op check, made before the catalogue is built: `store` holds the files found so far
+/// (the project file, shaders, materials). When they are the first files the last clean build
+/// read, the rest it read (includes) are unchanged, nothing appeared where it looked in vain,
+/// and every file it wrote is in place, nothing needs doing: no parsing, no preprocessing, no
+/// naga, and the manifest is not read.
+pub fn unchanged(store: &SourceStore, options: &BuildOptions) -> Option<BuildResult> {
+    let started = Instant::now();
+    let cache = Cache::new(&options.output, false);
+    let recorded = cache.recorded()?;
+    let found: Vec<String> = disk_files(store).map(|f| recorded_name(store, f, options)).collect();
+    if found.len() > recorded.read.len() || recorded.read[..found.len()] != found[..] {
+        return None;
+    }
+    if recorded.absent.par_iter().any(|path| std::fs::symlink_metadata(options.root.join(path)).is_ok()) {
+        return None;
+    }
+    let more: Vec<(String, Vec<u8>)> = recorded.read[found.len()..]
+        .par_iter()
+        .map(|name| Some((name.clone(), std::fs::read(options.root.join(name)).ok()?)))
+        .collect::<Option<_>>()?;
+    if !cache.unchanged(&recorded, &inputs_key(store, options, &more)) {
+        return None;
+    }
+    let summary = BuildSummary {
+        shaders: recorded.shaders,
+        passes: recorded.passes,
+        variants: recorded.variants,
+        modules: recorded.modules,
+        reused: recorded.modules,
+        elapsed: started.elapsed(),
+        ..BuildSummary::default()
+    };
+    Some(BuildResult { summary, manifest: None, diagnostics: Vec::new() })
 }
 
 /// One layout for a pass from the resources of all its modules, or the reasons there is none

@@ -23,8 +23,10 @@ pub struct PassIndex {
     pub stage: BTreeMap<String, CachedStage>,
 }
 
-/// The last clean build: its inputs' hash, its counts, and the files it left (packs and the
-/// manifest, relative to the output folder, with the length each must have at least).
+/// The last clean build: its inputs' hash, its counts, the files it left (packs and the
+/// manifest, relative to the output folder, with the length each must have at least), and what
+/// it read (files, relative to the project, in the order read) and looked for in vain, so that
+/// the next build can tell that nothing changed before parsing anything.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Recorded {
     pub key: String,
@@ -33,6 +35,8 @@ pub struct Recorded {
     pub variants: usize,
     pub modules: usize,
     pub files: Vec<(String, u64)>,
+    pub read: Vec<String>,
+    pub absent: Vec<String>,
 }
 
 /// What the cache remembers of a compiled stage module.
@@ -122,19 +126,20 @@ impl Cache {
         self.put("pass", pass, index)
     }
 
-    /// The previous build's record, when that build had exactly these inputs (`key`), ended
-    /// without a diagnostic, and all of its files are still in place. The manifest is not read:
-    /// each file's length is checked, in parallel, which is the whole cost of a no-op build.
-    pub fn unchanged(&self, key: &str) -> Option<Recorded> {
-        let recorded: Recorded = self.read("build", "inputs")?;
-        if recorded.key != key || recorded.files.is_empty() {
-            return None;
-        }
-        let present = recorded
-            .files
-            .par_iter()
-            .all(|(path, end)| std::fs::metadata(self.output.join(path)).is_ok_and(|m| m.len() >= *end));
-        present.then_some(recorded)
+    /// Whether the recorded build had exactly these inputs (`key`) and all of its files are still
+    /// in place. The manifest is not read: each file's length is checked, in parallel.
+    pub fn unchanged(&self, recorded: &Recorded, key: &str) -> bool {
+        recorded.key == key
+            && !recorded.files.is_empty()
+            && recorded
+                .files
+                .par_iter()
+                .all(|(path, end)| std::fs::metadata(self.output.join(path)).is_ok_and(|m| m.len() >= *end))
+    }
+
+    /// What the last clean build recorded.
+    pub fn recorded(&self) -> Option<Recorded> {
+        self.read("build", "inputs")
     }
 
     /// Records that a build with these inputs finished cleanly.

@@ -13,7 +13,7 @@ mod cache;
 mod stage;
 pub mod target;
 
-pub use build::{BuildOptions, BuildResult, BuildSummary, VariantSelection, build, stage_texts};
+pub use build::{BuildOptions, BuildResult, BuildSummary, VariantSelection, build, stage_texts, unchanged};
 pub use cache::write_atomically;
 
 use crate::diagnostics::Diagnostic;

@@ -76,3 +76,26 @@ fn the_generated_module_grows_with_modules_not_variants_times_bytes() {
         assert_eq!(rust.matches(&format!("\"kiln/{path}\"")).count(), 1, "{path} is embedded once");
     }
 }
+
+#[test]
+fn the_no_op_check_sees_an_edited_include_and_a_file_that_would_shadow_one() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    synthetic_project(&project, 4);
+    let first = build_clean(&project, None);
+    assert!(first.compiled > 0);
+    assert_eq!(build_clean(&project, None).compiled, 0, "nothing changed");
+
+    // An include every stage text reads: everything is compiled again.
+    std::fs::write(project.join("Tint.wgsl"), "#define TINT 0.5\n").expect("write");
+    let edited = build_clean(&project, None);
+    assert_eq!(edited.compiled, first.compiled);
+
+    // `Common.wgsl` came from the bundled library after kiln looked beside the pass file: a file
+    // there now comes first, so the build is no longer a no-op.
+    let library = kiln::shaderlib::FILES.iter().find(|(name, _)| *name == "Common.wgsl").expect("Common");
+    std::fs::write(project.join("Common.wgsl"), format!("{}\nconst SHADOWED: f32 = 1.0;\n", library.1))
+        .expect("write");
+    let shadowed = build_clean(&project, None);
+    assert_eq!(shadowed.compiled, first.compiled, "every module includes Common.wgsl");
+}
