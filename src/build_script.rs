@@ -143,6 +143,7 @@ impl Build {
         if diagnostics::has_errors(&problems) {
             return Err(BuildError::Diagnostics { rendered: render_plain(&store, &problems), cargo_lines });
         }
+        cargo_lines.extend(unoptimised_warning(result.summary.compiled, env!("KILN_OPT_LEVEL")));
         // A no-op build did not read its manifest; the module needs it.
         let manifest = match result.manifest {
             Some(manifest) => manifest,
@@ -157,5 +158,43 @@ impl Build {
                 .map_err(|source| BuildError::Write { path: module.clone(), source })?;
         }
         Ok(BuildOutput { module, manifest, summary: result.summary, cargo_lines })
+    }
+}
+
+/// Above this many modules compiled, an unoptimised kiln costs a renderer's build noticeably.
+const UNOPTIMISED_WARNING_MODULES: usize = 300;
+
+/// The `cargo:warning` lines for a build that compiled `compiled` modules with kiln built at
+/// `opt_level` (cargo's `OPT_LEVEL`): as a plain build-dependency in a debug profile, kiln and naga
+/// run unoptimised, several times slower (docs/performance.md).
+fn unoptimised_warning(compiled: usize, opt_level: &str) -> Vec<String> {
+    if opt_level != "0" || compiled <= UNOPTIMISED_WARNING_MODULES {
+        return Vec::new();
+    }
+    [
+        format!(
+            "kiln compiled {compiled} shader modules unoptimised (a build-dependency in a debug profile)."
+        ),
+        "To build shaders several times faster, add to the workspace's Cargo.toml:".to_string(),
+        "[profile.dev.build-override]".to_string(),
+        "opt-level = 3".to_string(),
+    ]
+    .map(|line| format!("cargo:warning={line}"))
+    .into()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::unoptimised_warning;
+
+    #[test]
+    fn only_many_modules_compiled_unoptimised_are_worth_a_warning() {
+        assert!(unoptimised_warning(300, "0").is_empty());
+        assert!(unoptimised_warning(5000, "3").is_empty());
+        assert!(unoptimised_warning(5000, "1").is_empty());
+        let lines = unoptimised_warning(301, "0");
+        assert!(lines.iter().all(|l| l.starts_with("cargo:warning=")));
+        assert!(lines[0].contains("301 shader modules unoptimised"), "{lines:?}");
+        assert_eq!(lines[2..], ["cargo:warning=[profile.dev.build-override]", "cargo:warning=opt-level = 3"]);
     }
 }
