@@ -251,6 +251,8 @@ pub fn open_workspace(
     let mut diagnostics = Vec::new();
     let mut roots = Vec::new();
     let mut include_paths = Vec::new();
+    // How many files and folders the shaders and the materials were gathered from.
+    let (mut shader_sources, mut material_sources) = (0, 0);
     for path in paths {
         if !path.exists() {
             return Err(ProjectError::NotFound(path.clone()));
@@ -258,6 +260,7 @@ pub fn open_workspace(
         if path.is_file() {
             let is_material = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("mat"));
             if is_material { &mut workspace.materials } else { &mut workspace.shaders }.push(path.clone());
+            *if is_material { &mut material_sources } else { &mut shader_sources } += 1;
             roots.push(path.parent().map(Path::to_path_buf).unwrap_or_default());
             continue;
         }
@@ -280,6 +283,8 @@ pub fn open_workspace(
         };
         workspace.shaders.extend(find_files(&under(&config.shaders), "shader")?);
         workspace.materials.extend(find_files(&under(&config.materials), "mat")?);
+        shader_sources += config.shaders.len();
+        material_sources += config.materials.len();
         include_paths.extend(under(&config.include_paths));
         if workspace.output.as_os_str().is_empty() {
             workspace.output = crate::source::normalize_lexically(&path.join(&config.output));
@@ -289,10 +294,19 @@ pub fn open_workspace(
         workspace.strict |= config.strict;
         roots.push(path.clone());
     }
-    // A shader under two roots (`.` and `shaders`) is still one shader.
-    for files in [&mut workspace.shaders, &mut workspace.materials] {
-        let mut seen = std::collections::HashSet::new();
-        files.retain(|f| seen.insert(std::fs::canonicalize(f).unwrap_or_else(|_| f.clone())));
+    // A shader under two roots (`.` and `shaders`) is still one shader. One root cannot list a
+    // file twice (links are not followed), which spares a large project a canonical path per file.
+    for (files, sources) in
+        [(&mut workspace.shaders, shader_sources), (&mut workspace.materials, material_sources)]
+    {
+        if sources > 1 {
+            use rayon::prelude::*;
+            let canonical: Vec<PathBuf> =
+                files.par_iter().map(|f| std::fs::canonicalize(f).unwrap_or_else(|_| f.clone())).collect();
+            let mut seen = std::collections::HashSet::new();
+            let mut keep = canonical.into_iter().map(|c| seen.insert(c));
+            files.retain(|_| keep.next().unwrap_or(true));
+        }
     }
     workspace.root = roots.first().cloned().unwrap_or_default();
     if workspace.output.as_os_str().is_empty() {

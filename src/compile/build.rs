@@ -5,7 +5,7 @@
 //! the project. The manifest keeps catalogue order, so output never depends on the thread count.
 
 use super::bind::{self, Declared, PassLayout};
-use super::cache::{Cache, CachedStage, ModuleBytes, PassIndex, Recorded, hash};
+use super::cache::{Cache, CachedStage, Digest, ModuleBytes, PassIndex, Recorded, hash};
 use super::stage::{self, StageRequest};
 use super::target::Allowed;
 use super::{Mapper, parse};
@@ -185,49 +185,37 @@ fn build_in_pool(
     let work = plan(catalog, options.unused_shaders, &mut summary, &mut diagnostics);
     let progress = Progress { report: progress, done: AtomicUsize::new(0), total: summary.variants };
 
-    // A group of passes at a time, as many as there are threads: each pass's stage texts, their
-    // resources (cache or parse), one layout, its stage modules (cache or compile), its packs
-    // and its part of the manifest. The passes of a group run at once, so one pass's serial
-    // steps overlap another's naga work, and only a group's texts and modules are in memory.
-    let group = rayon::current_num_threads().max(1);
+    // Every pass is a task: its stage texts, their resources (cache or parse), one layout, its
+    // stage modules (cache or compile), its packs and its part of the manifest. Threads take
+    // passes as they free up (no barrier between passes), so one pass's serial steps overlap
+    // other passes' naga work, and only the passes in flight hold texts and modules.
+    let built: Vec<PassBuilt> = work
+        .par_iter()
+        .with_max_len(1)
+        .map(|pass| build_pass(pass, store, includes, catalog, options, &cache, &progress))
+        .collect();
     let mut passes: Vec<PassManifest> = Vec::with_capacity(work.len());
-    for chunk in work.chunks(group) {
-        let built: Vec<PassBuilt> = chunk
-            .par_iter()
-            .map(|pass| build_pass(pass, store, includes, catalog, options, &cache, &progress))
-            .collect();
-        for pass in built {
-            summary.modules += pass.modules;
-            summary.compiled += pass.compiled;
-            summary.reused += pass.reused;
-            summary.bytes_written += pass.bytes_written;
-            diagnostics.extend(pass.diagnostics);
-            passes.push(pass.manifest);
-        }
+    for pass in built {
+        summary.modules += pass.modules;
+        summary.compiled += pass.compiled;
+        summary.reused += pass.reused;
+        summary.bytes_written += pass.bytes_written;
+        diagnostics.extend(pass.diagnostics);
+        passes.push(pass.manifest);
     }
 
     let manifest = manifest(store, options, &work, passes);
     let mut packs = Vec::new();
     if options.write && !diagnostics::has_errors(&diagnostics) {
-        let mut text = if options.pretty_manifest {
-            serde_json::to_vec_pretty(&manifest)
-        } else {
-            serde_json::to_vec(&manifest)
-        }
-        .unwrap_or_default();
-        text.push(b'\n');
         let path = options.output.join(FILE_NAME);
-        // An unchanged manifest is not rewritten, so a rebuild that compiles nothing touches nothing.
-        let same = std::fs::metadata(&path).is_ok_and(|m| m.len() == text.len() as u64)
-            && std::fs::read(&path).is_ok_and(|old| old == text);
-        if !same {
-            match super::write_atomically(&path, &text) {
-                Ok(()) => summary.bytes_written += text.len() as u64,
-                Err(error) => diagnostics.push(write_failure(&options.output, &error)),
+        match write_manifest(&path, &manifest, options.pretty_manifest) {
+            Ok((len, written)) => {
+                summary.bytes_written += if written { len } else { 0 };
+                packs = manifest.packs().into_iter().map(|(path, end)| (path.to_string(), end)).collect();
+                packs.push((FILE_NAME.to_string(), len));
             }
+            Err(error) => diagnostics.push(write_failure(&options.output, &error)),
         }
-        packs = manifest.packs().into_iter().map(|(path, end)| (path.to_string(), end)).collect();
-        packs.push((FILE_NAME.to_string(), text.len() as u64));
     }
     diagnostics::dedup(&mut diagnostics);
     if options.write && options.record && diagnostics.is_empty() {
@@ -255,6 +243,29 @@ fn recorded_name(store: &SourceStore, file: FileId, options: &BuildOptions) -> S
         Some(path) => relative_to(path, &options.root),
         None => store.name(file).to_string(),
     }
+}
+
+/// Writes the manifest streamed (a million variants' manifest is never a string in memory),
+/// unless the file already holds exactly these bytes, so that a rebuild that compiles nothing
+/// touches nothing. Returns its length and whether it was written.
+fn write_manifest(path: &std::path::Path, manifest: &Manifest, pretty: bool) -> std::io::Result<(u64, bool)> {
+    let serialize = |out: &mut dyn std::io::Write| {
+        if pretty {
+            serde_json::to_writer_pretty(&mut *out, manifest)
+        } else {
+            serde_json::to_writer(&mut *out, manifest)
+        }
+        .map_err(std::io::Error::other)?;
+        out.write_all(b"\n")
+    };
+    let mut digest = Digest::default();
+    serialize(&mut digest)?;
+    let same = std::fs::metadata(path).is_ok_and(|m| m.len() == digest.len)
+        && Digest::of_file(path).is_ok_and(|old| old.finish() == digest.finish());
+    if !same {
+        super::cache::write_atomically_with(path, serialize)?;
+    }
+    Ok((digest.len, !same))
 }
 
 /// The files of the store read from disk, in the order read.

@@ -7,6 +7,7 @@ use crate::reflect::manifest::FileRef;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// A content hash: BLAKE3, 128 bits in hexadecimal.
@@ -192,6 +193,15 @@ pub struct ModuleBytes {
 /// Writes through a temporary file in the same folder and a rename, so a reader never sees half a
 /// file and a failed or interrupted write leaves the old one.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    write_atomically_with(path, |file| file.write_all(bytes))
+}
+
+/// [`write_atomically`], with the bytes streamed by `write` (buffered), so that a large file is
+/// never whole in memory.
+pub fn write_atomically_with(
+    path: &Path,
+    write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+) -> std::io::Result<()> {
     let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     std::fs::create_dir_all(folder)?;
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
@@ -199,8 +209,44 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     static WRITES: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let unique = WRITES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let temporary = folder.join(format!(".{name}.{}.{unique}.tmp", std::process::id()));
-    std::fs::write(&temporary, bytes)?;
-    std::fs::rename(&temporary, path).inspect_err(|_| {
+    let written = std::fs::File::create(&temporary).and_then(|file| {
+        let mut buffered = std::io::BufWriter::new(file);
+        write(&mut buffered)?;
+        buffered.into_inner().map(drop).map_err(std::io::IntoInnerError::into_error)
+    });
+    written.and_then(|()| std::fs::rename(&temporary, path)).inspect_err(|_| {
         let _ = std::fs::remove_file(&temporary);
     })
+}
+
+/// A writer that only hashes and counts what it is given.
+#[derive(Default)]
+pub struct Digest {
+    hasher: blake3::Hasher,
+    pub len: u64,
+}
+
+impl Digest {
+    pub fn finish(&self) -> blake3::Hash {
+        self.hasher.finalize()
+    }
+
+    /// The digest of a file's bytes, read in chunks.
+    pub fn of_file(path: &Path) -> std::io::Result<Digest> {
+        let mut digest = Digest::default();
+        std::io::copy(&mut std::fs::File::open(path)?, &mut digest)?;
+        Ok(digest)
+    }
+}
+
+impl Write for Digest {
+    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
+        self.hasher.update(bytes);
+        self.len += bytes.len() as u64;
+        Ok(bytes.len())
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
 }
