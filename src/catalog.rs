@@ -109,8 +109,11 @@ pub fn catalog(
 ) -> (Catalog, Vec<Diagnostic>) {
     let mut diagnostics = Vec::new();
     let mut shaders = Vec::new();
-    for &file in &input.shaders {
-        let parsed = parse_shader(store, file);
+    // Parsing reads only its own file: in parallel. Programs load includes into the store: serial.
+    let store_view: &SourceStore = store;
+    let parsed: Vec<_> =
+        input.shaders.par_iter().map(|&file| (file, parse_shader(store_view, file))).collect();
+    for (file, parsed) in parsed {
         diagnostics.extend(parsed.diagnostics);
         if let Some(shader) = parsed.shader {
             let passes = passes(store, includes, &shader, &mut diagnostics);
@@ -147,44 +150,62 @@ pub fn catalog(
     if let Some(global) = &input.global_keywords {
         diagnostics.extend(unknown_global_keywords(&shaders, global));
     }
-    for (index, shader) in shaders.iter_mut().enumerate() {
-        let everything = input.always_include.contains(&shader.shader.name.value);
-        let keywords: Vec<Vec<&str>> = materials
-            .iter()
-            .filter(|m| m.shader == index)
-            .map(|m| m.keywords.iter().map(|(k, _)| k.as_str()).collect())
-            .collect();
-        let users: Vec<usize> = (0..materials.len()).filter(|&m| materials[m].shader == index).collect();
-        for program in shader.passes.iter_mut().filter_map(|p| p.program.as_mut()) {
-            match program.keywords.enumerate(&keywords, everything, global.as_deref()) {
-                Ok(variants) => program.variants = variants,
-                Err(count) => {
-                    let span =
-                        program.pragmas.keyword_sets.first().map_or(shader.shader.name.span, |s| s.span);
-                    let why = if everything {
-                        "it is always included"
-                    } else {
-                        "its materials and multi_compile sets"
-                    };
-                    diagnostics.push(
-                        Diagnostic::error(
-                            "K0411",
-                            format!("`{}` would build {count} variants of one pass", shader.shader.name.value),
-                        )
-                        .at(span, format!("{why} multiply to that many"))
-                        .note(format!("a pass may have at most {MAX_VARIANTS_PER_PASS} variants built"))
-                        .help("make run-time choices `dynamic_branch` keywords, or use fewer multi_compile sets"),
-                    );
-                }
-            }
-            // Point at materials of the catalog, not of this shader's list.
-            for variant in &mut program.variants {
-                for m in &mut variant.materials {
-                    *m = users[*m];
-                }
-            }
+    // Each shader's materials, found in one pass over them (not one per shader).
+    let mut users: Vec<Vec<usize>> = vec![Vec::new(); shaders.len()];
+    for (m, material) in materials.iter().enumerate() {
+        if let Some(list) = users.get_mut(material.shader) {
+            list.push(m);
         }
     }
+    // Shaders enumerate independently: in parallel, diagnostics kept in shader order.
+    let enumerated: Vec<Vec<Diagnostic>> = shaders
+        .par_iter_mut()
+        .zip(&users)
+        .map(|(shader, users)| {
+            let mut diagnostics = Vec::new();
+            let everything = input.always_include.contains(&shader.shader.name.value);
+            let keywords: Vec<Vec<&str>> = users
+                .iter()
+                .map(|&m| materials[m].keywords.iter().map(|(k, _)| k.as_str()).collect())
+                .collect();
+            for program in shader.passes.iter_mut().filter_map(|p| p.program.as_mut()) {
+                match program.keywords.enumerate(&keywords, everything, global.as_deref()) {
+                    Ok(variants) => program.variants = variants,
+                    Err(count) => {
+                        let span =
+                            program.pragmas.keyword_sets.first().map_or(shader.shader.name.span, |s| s.span);
+                        let why = if everything {
+                            "it is always included"
+                        } else {
+                            "its materials and multi_compile sets"
+                        };
+                        diagnostics.push(
+                            Diagnostic::error(
+                                "K0411",
+                                format!(
+                                    "`{}` would build {count} variants of one pass",
+                                    shader.shader.name.value
+                                ),
+                            )
+                            .at(span, format!("{why} multiply to that many"))
+                            .note(format!("a pass may have at most {MAX_VARIANTS_PER_PASS} variants built"))
+                            .help(
+                                "make run-time choices `dynamic_branch` keywords, or use fewer multi_compile sets",
+                            ),
+                        );
+                    }
+                }
+                // Point at materials of the catalog, not of this shader's list.
+                for variant in &mut program.variants {
+                    for m in &mut variant.materials {
+                        *m = users[*m];
+                    }
+                }
+            }
+            diagnostics
+        })
+        .collect();
+    diagnostics.extend(enumerated.into_iter().flatten());
     // Include blocks and files are shared by passes: report each of their problems once.
     diagnostics::dedup(&mut diagnostics);
     (Catalog { shaders, materials }, diagnostics)
