@@ -4,7 +4,7 @@
 
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{MAX_VARIANTS_PER_PASS, PassKeywords, Variant};
-use crate::material::{Material, ShaderEntry, load_material};
+use crate::material::{Material, ShaderEntries, ShaderEntry, load_material};
 use crate::preprocess::{Includes, Program, load_pass};
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
 use crate::shaderlab::parse_shader;
@@ -123,18 +123,20 @@ pub fn catalog(
 
     diagnostics.extend(too_many_global_keywords(&shaders));
 
-    let entries: Vec<ShaderEntry> = shaders
-        .iter()
-        .map(|s| ShaderEntry {
-            shader: &s.shader,
-            keyword_sets: s
-                .passes
-                .iter()
-                .filter_map(|p| p.program.as_ref())
-                .flat_map(|p| p.keywords.sets().to_vec())
-                .collect(),
-        })
-        .collect();
+    let entries = ShaderEntries::new(
+        shaders
+            .iter()
+            .map(|s| ShaderEntry {
+                shader: &s.shader,
+                keyword_sets: s
+                    .passes
+                    .iter()
+                    .filter_map(|p| p.program.as_ref())
+                    .flat_map(|p| p.keywords.sets().to_vec())
+                    .collect(),
+            })
+            .collect(),
+    );
     // Materials are many and independent: resolved in parallel, kept in their order.
     let store_view: &SourceStore = store;
     let resolved: Vec<(Option<Material>, Vec<Diagnostic>)> =

@@ -45,6 +45,23 @@ pub struct ShaderEntry<'a> {
     pub keyword_sets: Vec<KeywordSet>,
 }
 
+/// The shaders materials may name, found by name (a project has thousands of shaders and
+/// hundreds of thousands of materials; the first of two shaders with one name wins).
+pub struct ShaderEntries<'a> {
+    entries: Vec<ShaderEntry<'a>>,
+    by_name: std::collections::HashMap<&'a str, usize>,
+}
+
+impl<'a> ShaderEntries<'a> {
+    pub fn new(entries: Vec<ShaderEntry<'a>>) -> ShaderEntries<'a> {
+        let mut by_name = std::collections::HashMap::with_capacity(entries.len());
+        for (index, entry) in entries.iter().enumerate() {
+            by_name.entry(entry.shader.name.value.as_str()).or_insert(index);
+        }
+        ShaderEntries { entries, by_name }
+    }
+}
+
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawMaterial {
@@ -61,7 +78,7 @@ struct RawMaterial {
 pub fn load_material(
     store: &SourceStore,
     file: FileId,
-    shaders: &[ShaderEntry],
+    shaders: &ShaderEntries,
 ) -> (Option<Material>, Vec<Diagnostic>) {
     let mut errors = Vec::new();
     let material = resolve(store, file, shaders, &mut errors);
@@ -71,7 +88,7 @@ pub fn load_material(
 fn resolve(
     store: &SourceStore,
     file: FileId,
-    shaders: &[ShaderEntry],
+    shaders: &ShaderEntries,
     errors: &mut Vec<MaterialError>,
 ) -> Option<Material> {
     let text = store.text(file);
@@ -85,8 +102,8 @@ fn resolve(
         }
     };
     let shader_name = raw.shader.get_ref();
-    let Some(index) = shaders.iter().position(|s| s.shader.name.value == *shader_name) else {
-        let suggestion = closest(shader_name, shaders.iter().map(|s| s.shader.name.value.as_str()));
+    let Some(&index) = shaders.by_name.get(shader_name.as_str()) else {
+        let suggestion = closest(shader_name, shaders.entries.iter().map(|s| s.shader.name.value.as_str()));
         errors.push(MaterialError::UnknownShader {
             span: span(raw.shader.span()),
             name: shader_name.clone(),
@@ -94,7 +111,7 @@ fn resolve(
         });
         return None;
     };
-    let entry = &shaders[index];
+    let entry = &shaders.entries[index];
     let shader = entry.shader;
 
     let preset = raw.preset.as_ref().and_then(|p| match Preset::parse(p.get_ref()) {
