@@ -59,11 +59,13 @@ pub struct Cache {
     output: PathBuf,
     /// `kiln check` reads the cache but writes nothing.
     write: bool,
+    /// Packs this build has stored: passes of identical code make the same pack, written once.
+    stored: std::sync::Mutex<BTreeSet<String>>,
 }
 
 impl Cache {
     pub fn new(output: &Path, write: bool) -> Cache {
-        Cache { output: output.to_path_buf(), write }
+        Cache { output: output.to_path_buf(), write, stored: Default::default() }
     }
 
     fn entry(&self, kind: &str, key: &str) -> PathBuf {
@@ -166,8 +168,10 @@ impl Cache {
         }
         let path = format!("modules/{}.{extension}", hash(names.as_bytes()));
         let full = self.output.join(&path);
-        let present = std::fs::metadata(&full).is_ok_and(|m| m.len() == bytes.len() as u64)
-            && std::fs::read(&full).is_ok_and(|existing| existing == bytes);
+        let first = self.stored.lock().map_or(true, |mut stored| stored.insert(path.clone()));
+        let present = !first
+            || std::fs::metadata(&full).is_ok_and(|m| m.len() == bytes.len() as u64)
+                && std::fs::read(&full).is_ok_and(|existing| existing == bytes);
         let written = if self.write && !present {
             write_atomically(&full, &bytes)?;
             bytes.len() as u64
