@@ -1,8 +1,9 @@
-//! Building a project: every used variant of every WGSL pass, a group of passes at a time. A
-//! pass's variants are preprocessed per stage, identical stage texts compiled once, unchanged ones
-//! taken from the cache, the rest compiled in parallel and packed, and the pass's part of the
-//! manifest made before the next group starts, so that memory follows the passes in flight, not
-//! the project. The manifest keeps catalogue order, so output never depends on the thread count.
+//! Building a project: every used variant of every WGSL pass, each pass a parallel task. A pass's
+//! variants are preprocessed per stage, identical stage texts compiled once, unchanged ones taken
+//! from the cache, the rest compiled in parallel and packed, and the pass's part of the manifest
+//! made there, so that memory follows the passes in flight, not the project. The manifest keeps
+//! catalogue order, so output never depends on the thread count. Before any of it, [`unchanged`]
+//! tells from the last clean build's record that nothing needs doing.
 
 use super::bind::{self, Declared, PassLayout};
 use super::cache::{Cache, CachedStage, Digest, ModuleBytes, PassIndex, Recorded, hash};
@@ -15,7 +16,7 @@ use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{KeywordBits, Variant};
 use crate::preprocess::{Includes, LIBRARY_PREFIX, SourceMap, Stage, preprocess};
 use crate::reflect::manifest::*;
-use crate::reflect::{Resource, UniformBlock};
+use crate::reflect::{Resource, StageReflection, UniformBlock};
 use crate::shaderlab::ast::{PropertyDefault, PropertyType, Shader};
 use crate::shaderlab::pragma::KeywordScope;
 use crate::source::{FileId, SourceStore, Span, relative_to};
@@ -125,7 +126,7 @@ enum Built {
 /// so that packing, which is serial, only concatenates.
 struct Compiled {
     modules: [Option<ModuleBytes>; 2],
-    reflection: crate::reflect::StageReflection,
+    reflection: StageReflection,
 }
 
 /// `None` when the stage's pass could not be laid out.
