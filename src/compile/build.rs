@@ -6,7 +6,7 @@
 //! tells from the last clean build's record that nothing needs doing.
 
 use super::bind::{self, Declared, PassLayout};
-use super::cache::{Cache, CachedStage, Digest, ModuleBytes, PassIndex, Recorded, hash};
+use super::cache::{Cache, CachedStage, Digest, Hashed, ModuleBytes, PassIndex, Recorded, hash};
 use super::stage::{self, StageRequest};
 use super::target::Allowed;
 use super::{Mapper, parse};
@@ -246,27 +246,34 @@ fn recorded_name(store: &SourceStore, file: FileId, options: &BuildOptions) -> S
     }
 }
 
-/// Writes the manifest streamed (a million variants' manifest is never a string in memory),
-/// unless the file already holds exactly these bytes, so that a rebuild that compiles nothing
-/// touches nothing. Returns its length and whether it was written.
+/// Writes the manifest streamed (a million variants' manifest is never a string in memory) and
+/// hashed as it goes; a file that already holds exactly these bytes is left as it is, so that a
+/// rebuild that compiles nothing touches nothing. Returns its length and whether it was written.
 fn write_manifest(path: &std::path::Path, manifest: &Manifest, pretty: bool) -> std::io::Result<(u64, bool)> {
+    use std::io::Write as _;
+    // What was written, for the comparison with the old file once it is all written.
+    let digest = std::cell::RefCell::new(Digest::default());
     let serialize = |out: &mut dyn std::io::Write| {
+        let mut out = Hashed { out, digest: Digest::default() };
         if pretty {
-            serde_json::to_writer_pretty(&mut *out, manifest)
+            serde_json::to_writer_pretty(&mut out, manifest)
         } else {
-            serde_json::to_writer(&mut *out, manifest)
+            serde_json::to_writer(&mut out, manifest)
         }
         .map_err(std::io::Error::other)?;
-        out.write_all(b"\n")
+        out.write_all(b"\n")?;
+        digest.replace(out.digest);
+        Ok(())
     };
-    let mut digest = Digest::default();
-    serialize(&mut digest)?;
-    let same = std::fs::metadata(path).is_ok_and(|m| m.len() == digest.len)
-        && Digest::of_file(path).is_ok_and(|old| old.finish() == digest.finish());
-    if !same {
-        super::cache::write_atomically_with(path, serialize)?;
-    }
-    Ok((digest.len, !same))
+    let changed = |old: &std::path::Path| {
+        let new = digest.borrow();
+        let same = std::fs::metadata(old).is_ok_and(|m| m.len() == new.len)
+            && Digest::of_file(old).is_ok_and(|old| old.finish() == new.finish());
+        !same
+    };
+    let written = super::cache::write_atomically_with(path, serialize, changed)?;
+    let len = digest.borrow().len;
+    Ok((len, written))
 }
 
 /// The files of the store read from disk, in the order read.

@@ -197,15 +197,17 @@ pub struct ModuleBytes {
 /// Writes through a temporary file in the same folder and a rename, so a reader never sees half a
 /// file and a failed or interrupted write leaves the old one.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    write_atomically_with(path, |file| file.write_all(bytes))
+    write_atomically_with(path, |file| file.write_all(bytes), |_| true).map(drop)
 }
 
 /// [`write_atomically`], with the bytes streamed by `write` (buffered), so that a large file is
-/// never whole in memory.
+/// never whole in memory. `keep` sees the old file, if any, once the new bytes are all written:
+/// when it says no, the old file stays and the new bytes are dropped.
 pub fn write_atomically_with(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
-) -> std::io::Result<()> {
+    keep: impl FnOnce(&Path) -> bool,
+) -> std::io::Result<bool> {
     let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     std::fs::create_dir_all(folder)?;
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
@@ -218,9 +220,14 @@ pub fn write_atomically_with(
         write(&mut buffered)?;
         buffered.into_inner().map(drop).map_err(std::io::IntoInnerError::into_error)
     });
-    written.and_then(|()| std::fs::rename(&temporary, path)).inspect_err(|_| {
+    let kept = written.and_then(|()| {
+        let kept = keep(path);
+        if kept { std::fs::rename(&temporary, path).map(|()| true) } else { Ok(false) }
+    });
+    if !matches!(kept, Ok(true)) {
         let _ = std::fs::remove_file(&temporary);
-    })
+    }
+    kept
 }
 
 /// A writer that only hashes and counts what it is given.
@@ -240,6 +247,24 @@ impl Digest {
         let mut digest = Digest::default();
         std::io::copy(&mut std::fs::File::open(path)?, &mut digest)?;
         Ok(digest)
+    }
+}
+
+/// Writes to `out` and hashes what it writes.
+pub struct Hashed<'a> {
+    pub out: &'a mut dyn Write,
+    pub digest: Digest,
+}
+
+impl Write for Hashed<'_> {
+    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
+        let written = self.out.write(bytes)?;
+        self.digest.write_all(&bytes[..written])?;
+        Ok(written)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.out.flush()
     }
 }
 
