@@ -212,7 +212,7 @@ fn build_in_pool(
         match write_manifest(&path, &manifest, options.pretty_manifest) {
             Ok((len, written)) => {
                 summary.bytes_written += if written { len } else { 0 };
-                packs = manifest.packs().into_iter().map(|(path, end)| (path.to_string(), end)).collect();
+                packs = manifest.packs().into_iter().collect();
                 packs.push((FILE_NAME.to_string(), len));
             }
             Err(error) => diagnostics.push(write_failure(&options.output, &error)),
@@ -801,7 +801,7 @@ fn pass_manifest(
     let mut packs: Vec<String> = Vec::new();
     let mut pack_of: HashMap<String, usize> = HashMap::new();
     let mut interfaces: Vec<StageInterface> = Vec::new();
-    let mut interface_of: HashMap<String, usize> = HashMap::new();
+    let mut interface_of: HashMap<StageInterface, usize> = HashMap::new();
     let mut modules: Vec<ModuleManifest> = Vec::new();
     let mut module_of: HashMap<(usize, [Option<String>; 2]), usize> = HashMap::new();
     // For each job, its module (`None` when it failed).
@@ -843,8 +843,8 @@ fn pass_manifest(
             bindings: reflection.bindings.iter().map(|b| [b.group, b.binding]).collect(),
             uniform_blocks: blocks,
         };
-        let interface = *interface_of.entry(format!("{interface:?}")).or_insert_with(|| {
-            interfaces.push(interface);
+        let interface = *interface_of.entry(interface).or_insert_with_key(|interface| {
+            interfaces.push(interface.clone());
             interfaces.len() - 1
         });
         let mut file = |file: &Option<FileRef>| {

@@ -48,16 +48,12 @@ impl Manifest {
     }
 
     /// Every pack the manifest points into, with the length it must have at least.
-    pub fn packs(&self) -> std::collections::BTreeMap<&str, u64> {
+    pub fn packs(&self) -> std::collections::BTreeMap<String, u64> {
         let mut packs = std::collections::BTreeMap::new();
-        for pass in self.passes() {
-            for module in &pass.modules {
-                for file in [&module.wgsl, &module.spirv].into_iter().flatten() {
-                    let Some(path) = pass.packs.get(file.pack) else { continue };
-                    let end = packs.entry(path.as_str()).or_insert(0);
-                    *end = (file.offset + file.size).max(*end);
-                }
-            }
+        for file in self.stages().flat_map(StageView::files) {
+            let end = file.end();
+            let longest = packs.entry(file.path).or_insert(0);
+            *longest = end.max(*longest);
         }
         packs
     }
@@ -198,7 +194,7 @@ pub struct VariantManifest {
 
 /// What a stage module exposes to the pipeline that uses it; modules of a pass that differ only
 /// in their code share one.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct StageInterface {
     /// `vertex` or `fragment`.
     pub stage: String,

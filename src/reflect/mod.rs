@@ -23,7 +23,7 @@ pub struct StageReflection {
     pub uniform_blocks: Vec<UniformBlock>,
 }
 
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct Attribute {
     pub location: u32,
     pub name: String,
