@@ -22,7 +22,7 @@ use crate::shaderlab::pragma::KeywordScope;
 use crate::source::{FileId, SourceStore, Span, relative_to};
 use rayon::prelude::*;
 use std::borrow::Cow;
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
@@ -221,7 +221,8 @@ fn build_in_pool(
     diagnostics::dedup(&mut diagnostics);
     if options.write && options.record && diagnostics.is_empty() {
         let read = disk_files(store).map(|f| recorded_name(store, f, options)).collect();
-        let absent = store.absent().iter().map(|p| relative_to(p, &options.root)).collect();
+        // Each path once, however many includes looked there.
+        let absent: BTreeSet<String> = store.absent().iter().map(|p| relative_to(p, &options.root)).collect();
         // Only costs a full build next time if it cannot be written.
         let _ = cache.record_inputs(&Recorded {
             key: inputs_key(store, options, &[]),
@@ -231,7 +232,7 @@ fn build_in_pool(
             modules: summary.modules,
             files: packs,
             read,
-            absent,
+            absent: absent.into_iter().collect(),
         });
     }
     BuildResult { manifest: Some(manifest), summary, diagnostics }

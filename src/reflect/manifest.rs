@@ -127,7 +127,8 @@ impl PassManifest {
             .flatten()
             .flat_map(|s| s.interface.uniform_blocks.clone())
             .collect();
-        blocks.sort_by(|&a, &b| self.uniform_blocks[a].name.cmp(&self.uniform_blocks[b].name));
+        // By name, then index, so that a block both stages use is adjacent to itself.
+        blocks.sort_by(|&a, &b| (&self.uniform_blocks[a].name, a).cmp(&(&self.uniform_blocks[b].name, b)));
         blocks.dedup();
         blocks
     }
