@@ -99,3 +99,28 @@ fn the_no_op_check_sees_an_edited_include_and_a_file_that_would_shadow_one() {
     let shadowed = build_clean(&project, None);
     assert_eq!(shadowed.compiled, first.compiled, "every module includes Common.wgsl");
 }
+
+#[test]
+fn a_deleted_include_is_reported_not_skipped_by_the_no_op_check() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    synthetic_project(&project, 2);
+    build_clean(&project, None);
+    std::fs::remove_file(project.join("Tint.wgsl")).expect("delete an include");
+    let mut store = kiln::source::SourceStore::new();
+    let mode = kiln::project::BuildMode {
+        write: true,
+        output: None,
+        unused_shaders: kiln::compile::VariantSelection::Used,
+        threads: None,
+        global_keywords: None,
+        pretty_manifest: false,
+    };
+    let (result, mut diagnostics) =
+        kiln::project::build_project(&mut store, &[project.clone()], &mode, &|_, _| {}).expect("project");
+    diagnostics.extend(result.diagnostics);
+    assert!(result.manifest.is_some(), "the build ran: it was not taken for a no-op");
+    let shown = kiln::diagnostics::render_plain(&store, &diagnostics);
+    assert!(shown.contains("Tint.wgsl"), "{shown}");
+    assert!(kiln::diagnostics::has_errors(&diagnostics));
+}
