@@ -117,7 +117,8 @@ fn a_deleted_include_is_reported_not_skipped_by_the_no_op_check() {
         pretty_manifest: false,
     };
     let (result, mut diagnostics) =
-        kiln::project::build_project(&mut store, &[project.clone()], &mode, &|_, _| {}).expect("project");
+        kiln::project::build_project(&mut store, std::slice::from_ref(&project), &mode, &|_, _| {})
+            .expect("project");
     diagnostics.extend(result.diagnostics);
     assert!(result.manifest.is_some(), "the build ran: it was not taken for a no-op");
     let shown = kiln::diagnostics::render_plain(&store, &diagnostics);
