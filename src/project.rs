@@ -157,7 +157,9 @@ fn requested_variant(
     let file = store.load(&request.shader)?;
     let mut includes = Includes::new(include_config(std::slice::from_ref(&request.shader)));
     let input = CatalogInput { shaders: vec![file], ..CatalogInput::default() };
-    let (catalog, diagnostics) = catalog(store, &mut includes, &input);
+    let mut diagnostics = store.text_warnings(file);
+    let (catalog, found) = catalog(store, &mut includes, &input);
+    diagnostics.extend(found);
     let Some(shader) = catalog.shaders.first() else { return Ok((None, diagnostics)) };
     let not_found = || ProjectError::PassNotFound {
         shader: shader.shader.name.value.clone(),
@@ -267,6 +269,7 @@ pub fn open_workspace(
         let config_path = path.join(crate::config::FILE_NAME);
         let config = if config_path.is_file() {
             let file = store.load(&config_path)?;
+            diagnostics.extend(store.text_warnings(file));
             let (config, problems) = crate::config::parse_config(store, file);
             diagnostics.extend(problems);
             if let Some(global) = &config.global_keywords {
@@ -362,26 +365,38 @@ pub fn find_files(paths: &[PathBuf], extension: &str) -> Result<Vec<PathBuf>, Pr
     Ok(files)
 }
 
-/// Loads files into the store. Unreadable or non-UTF-8 files become diagnostics, not failures,
-/// so the rest of the project is still checked.
+/// Loads files into the store. Unreadable files and files that are not text become diagnostics,
+/// not failures, so the rest of the project is still checked; a file read with problems (bytes
+/// that are not UTF-8, NULs) comes with its warnings.
 pub fn load_files(store: &mut SourceStore, paths: &[PathBuf]) -> (Vec<FileId>, Vec<Diagnostic>) {
     let mut ids = Vec::new();
     let mut diagnostics = Vec::new();
     for loaded in store.load_all(paths) {
         match loaded {
-            Ok(id) => ids.push(id),
-            Err(error @ LoadError::NotUtf8 { .. }) => {
-                diagnostics.push(Diagnostic::error("K0001", error.to_string()).help("save the file as UTF-8"))
+            Ok(id) => {
+                diagnostics.extend(store.text_warnings(id));
+                ids.push(id);
             }
-            Err(error @ LoadError::Io { .. }) => {
-                diagnostics.push(Diagnostic::error("K0002", error.to_string()))
-            }
-            Err(error @ LoadError::TooLarge { .. }) => {
-                diagnostics.push(Diagnostic::error("K0004", error.to_string()))
-            }
+            Err(error) => diagnostics.push(load_error(&error)),
         }
     }
     (ids, diagnostics)
+}
+
+/// The diagnostic for a file that could not be loaded.
+pub fn load_error(error: &LoadError) -> Diagnostic {
+    let code = match error {
+        LoadError::NotText { .. } => "K0005",
+        LoadError::Io { .. } => "K0002",
+        LoadError::TooLarge { .. } => "K0004",
+    };
+    let diagnostic = Diagnostic::error(code, error.to_string());
+    match error {
+        LoadError::NotText { .. } => diagnostic
+            .note("it is not UTF-8 and has NUL bytes near its start, as binary data does")
+            .help("only text files belong where kiln looks for shaders and materials"),
+        _ => diagnostic,
+    }
 }
 
 /// How `kiln build` and `kiln check` run.

@@ -4,6 +4,7 @@
 //! it read (so a build script can print `rerun-if-changed` for exactly those), and diagnostics find
 //! line and column through it.
 
+use crate::diagnostics::Diagnostic;
 use std::collections::HashMap;
 use std::ops::Range;
 use std::path::{Component, Path, PathBuf};
@@ -82,8 +83,8 @@ pub struct LineCol {
 pub enum LoadError {
     #[error("cannot read `{path}`: {source}")]
     Io { path: PathBuf, source: std::io::Error },
-    #[error("`{path}` is not valid UTF-8 (first bad byte at offset {offset})")]
-    NotUtf8 { path: PathBuf, offset: usize },
+    #[error("`{path}` is not a text file (NUL byte at line {line}, column {column})")]
+    NotText { path: PathBuf, line: usize, column: usize },
     #[error("`{path}` is {size} bytes, more than the {MAX_FILE_SIZE} bytes kiln reads")]
     TooLarge { path: PathBuf, size: u64 },
 }
@@ -92,31 +93,114 @@ pub enum LoadError {
 /// spans are 32-bit.
 pub const MAX_FILE_SIZE: u64 = 16 * 1024 * 1024;
 
+/// Something about a file's bytes that its reader should hear about, though the file was read.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TextProblem {
+    /// Byte sequences that are not UTF-8 (`count` of them), each read as U+FFFD; `at` is the
+    /// first, as an offset into the decoded text.
+    NotUtf8 { at: usize, count: usize },
+    /// A NUL byte: the file may be binary.
+    Nul { at: usize },
+}
+
+impl TextProblem {
+    /// The warning for this problem in `file`.
+    pub fn diagnostic(self, file: FileId) -> Diagnostic {
+        match self {
+            TextProblem::NotUtf8 { at, count } => {
+                let places = if count == 1 { "1 place".to_string() } else { format!("{count} places") };
+                Diagnostic::warning("K0001", "file is not valid UTF-8")
+                    .at(Span::new(file, at..at + REPLACEMENT_LEN), "first byte that is not UTF-8")
+                    .note(format!(
+                        "bytes that are not UTF-8 ({places}) are read as U+FFFD; they are harmless in \
+                         comments, and an error anywhere kiln uses them"
+                    ))
+                    .help("this looks like a legacy code page (GBK, Shift-JIS, Windows-1252): save the file as UTF-8")
+            }
+            TextProblem::Nul { at } => Diagnostic::warning("K0006", "NUL byte in a text file")
+                .at(Span::new(file, at..at + 1), "NUL byte")
+                .note("a NUL byte is never part of shader text; the file may be binary or damaged"),
+        }
+    }
+}
+
+const REPLACEMENT_LEN: usize = char::REPLACEMENT_CHARACTER.len_utf8();
+
+/// How far into a file kiln looks to tell text from binary data (as git does).
+const BINARY_SNIFF_LEN: usize = 8000;
+
+/// Decodes a file's bytes. UTF-8 is read as is (a byte order mark is kept: the scanners skip it);
+/// UTF-16 with a byte order mark is decoded; any other bytes are read as UTF-8 with what cannot be
+/// decoded replaced, so that a file with comments in a legacy code page still builds. Bytes that
+/// are neither UTF-8 nor free of NULs near the start are binary data, not text.
+fn decode(path: &Path, bytes: Vec<u8>) -> Result<(String, Vec<TextProblem>), LoadError> {
+    let utf16 = match bytes.get(..2) {
+        Some([0xFF, 0xFE]) => Some(u16::from_le_bytes as fn([u8; 2]) -> u16),
+        Some([0xFE, 0xFF]) => Some(u16::from_be_bytes as fn([u8; 2]) -> u16),
+        _ => None,
+    };
+    let (text, mut problems) = match (utf16, String::from_utf8(bytes)) {
+        (None, Ok(text)) => (text, Vec::new()),
+        (Some(unit), text) => {
+            let bytes = text.map_or_else(|e| e.into_bytes(), String::into_bytes);
+            let units: Vec<u16> = bytes[2..].chunks_exact(2).map(|c| unit([c[0], c[1]])).collect();
+            (String::from_utf16_lossy(&units), Vec::new())
+        }
+        (None, Err(error)) => {
+            let bytes = error.into_bytes();
+            let sniffed = &bytes[..bytes.len().min(BINARY_SNIFF_LEN)];
+            if let Some(nul) = sniffed.iter().position(|&b| b == 0) {
+                let before = String::from_utf8_lossy(&bytes[..nul]);
+                let line = before.matches('\n').count() + 1;
+                let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+                return Err(LoadError::NotText { path: path.to_path_buf(), line, column });
+            }
+            let count = bytes.utf8_chunks().filter(|chunk| !chunk.invalid().is_empty()).count();
+            let at = bytes.utf8_chunks().next().map_or(0, |chunk| chunk.valid().len());
+            (String::from_utf8_lossy(&bytes).into_owned(), vec![TextProblem::NotUtf8 { at, count }])
+        }
+    };
+    if let Some(at) = text.find('\0') {
+        problems.push(TextProblem::Nul { at });
+    }
+    Ok((text, problems))
+}
+
 struct SourceFile {
     name: String,
     path: Option<PathBuf>,
     text: String,
     line_starts: Vec<usize>,
+    problems: Vec<TextProblem>,
+    /// The text as diagnostics show it, when it holds control characters: each replaced by
+    /// spaces of the same byte length, so that snippets never send a terminal a control code and
+    /// every offset still points at the same place.
+    display: Option<String>,
 }
 
 impl SourceFile {
     fn new(name: String, path: Option<PathBuf>, text: String) -> SourceFile {
         let line_starts = codespan_reporting::files::line_starts(&text).collect();
-        SourceFile { name, path, text, line_starts }
+        let shown_raw = |c: char| !c.is_control() || matches!(c, '\t' | '\n' | '\r');
+        let display = (!text.chars().all(shown_raw)).then(|| {
+            text.chars()
+                .map(|c| if shown_raw(c) { c.to_string() } else { " ".repeat(c.len_utf8()) })
+                .collect()
+        });
+        SourceFile { name, path, text, line_starts, problems: Vec::new(), display }
     }
 }
 
-/// Reads a UTF-8 file of at most [`MAX_FILE_SIZE`] bytes.
+/// Reads a text file of at most [`MAX_FILE_SIZE`] bytes (see [`decode`]).
 fn read_file(path: &Path) -> Result<SourceFile, LoadError> {
     let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
     if size > MAX_FILE_SIZE {
         return Err(LoadError::TooLarge { path: path.to_path_buf(), size });
     }
     let bytes = std::fs::read(path).map_err(|source| LoadError::Io { path: path.to_path_buf(), source })?;
-    let text = String::from_utf8(bytes)
-        .map_err(|e| LoadError::NotUtf8 { path: path.to_path_buf(), offset: e.utf8_error().valid_up_to() })?;
+    let (text, problems) = decode(path, bytes)?;
     let name = path.to_string_lossy().replace('\\', "/");
-    Ok(SourceFile::new(name, Some(path.to_path_buf()), text))
+    Ok(SourceFile { problems, ..SourceFile::new(name, Some(path.to_path_buf()), text) })
 }
 
 /// Every file a run has seen, with its text and line index.
@@ -189,6 +273,11 @@ impl SourceStore {
         id
     }
 
+    /// The warnings reading `file` gave: bytes that are not UTF-8, NUL bytes.
+    pub fn text_warnings(&self, file: FileId) -> Vec<Diagnostic> {
+        self.files[file.0 as usize].problems.iter().map(|p| p.diagnostic(file)).collect()
+    }
+
     pub fn text(&self, file: FileId) -> &str {
         &self.files[file.0 as usize].text
     }
@@ -243,7 +332,7 @@ impl<'a> codespan_reporting::files::Files<'a> for SourceStore {
     fn source(&'a self, id: FileId) -> Result<&'a str, codespan_reporting::files::Error> {
         self.files
             .get(id.0 as usize)
-            .map(|f| f.text.as_str())
+            .map(|f| f.display.as_deref().unwrap_or(&f.text))
             .ok_or(codespan_reporting::files::Error::FileMissing)
     }
 

@@ -804,7 +804,9 @@ fn pass_manifest(
     let mut interfaces: Vec<StageInterface> = Vec::new();
     let mut interface_of: HashMap<StageInterface, usize> = HashMap::new();
     let mut modules: Vec<ModuleManifest> = Vec::new();
-    let mut module_of: HashMap<(usize, [Option<String>; 2]), usize> = HashMap::new();
+    // A module is its interface, its files' hashes and the features it was validated with.
+    type ModuleIdentity = (usize, [Option<String>; 2], Vec<String>);
+    let mut module_of: HashMap<ModuleIdentity, usize> = HashMap::new();
     // For each job, its module (`None` when it failed).
     let mut module_of_job: Vec<Option<usize>> = Vec::with_capacity(jobs.len());
     for (job, stage) in jobs.iter().zip(built) {
@@ -859,11 +861,12 @@ fn pass_manifest(
         };
         // Texts that differ only where compaction removes code give the same module.
         let hashes = [&stage.wgsl, &stage.spirv].map(|f| f.as_ref().map(|f| f.hash.clone()));
-        let module = *module_of.entry((interface, hashes)).or_insert_with(|| {
-            let (wgsl, spirv) = (file(&stage.wgsl), file(&stage.spirv));
-            modules.push(ModuleManifest { interface, wgsl, spirv });
-            modules.len() - 1
-        });
+        let module =
+            *module_of.entry((interface, hashes, job.allowed.features())).or_insert_with_key(|key| {
+                let (wgsl, spirv) = (file(&stage.wgsl), file(&stage.spirv));
+                modules.push(ModuleManifest { interface, features: key.2.clone(), wgsl, spirv });
+                modules.len() - 1
+            });
         module_of_job.push(Some(module));
     }
     let variants = work

@@ -75,6 +75,7 @@ pub fn compile(
     };
     let spirv = if request.backends.contains(&Backend::Spirv) {
         let options = naga::back::spv::Options {
+            lang_version: spirv_version(request.allowed.capabilities()),
             flags: naga::back::spv::WriterFlags::empty(),
             ..naga::back::spv::Options::default()
         };
@@ -87,6 +88,13 @@ pub fn compile(
         None
     };
     Ok(StageOutput { wgsl, spirv, reflection: reflect_stage(&module, request.entry) })
+}
+
+/// The SPIR-V version a module is written in: 1.0 (every Vulkan device) unless it may use 16-bit
+/// floats, whose storage-buffer and interface access needs `SPV_KHR_16bit_storage`, core from 1.3
+/// (Vulkan 1.1, which every device with `shader-f16` has). naga declares no extensions itself.
+pub(super) fn spirv_version(capabilities: naga::valid::Capabilities) -> (u8, u8) {
+    if capabilities.contains(naga::valid::Capabilities::SHADER_FLOAT16) { (1, 3) } else { (1, 0) }
 }
 
 /// Cuts a bound module down to one entry point and what it uses, then validates it.

@@ -57,6 +57,16 @@ impl Allowed {
         capabilities
     }
 
+    /// The optional GPU features of [`Allowed::capabilities`], by wgpu's names.
+    pub fn features(&self) -> Vec<String> {
+        let capabilities = self.capabilities();
+        [(Capabilities::SHADER_FLOAT16, "shader-f16"), (Capabilities::SHADER_INT64, "shader-int64")]
+            .into_iter()
+            .filter(|(c, _)| capabilities.contains(*c))
+            .map(|(_, name)| name.to_string())
+            .collect()
+    }
+
     /// User interpolators the vertex stage may pass to the fragment stage (WebGPU allows 16).
     pub fn max_interpolators(&self) -> u32 {
         if self.has("interpolators32") {

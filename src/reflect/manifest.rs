@@ -216,6 +216,11 @@ pub struct StageInterface {
 pub struct ModuleManifest {
     /// Index into the pass's `interfaces`.
     pub interface: usize,
+    /// The optional GPU features the module was validated with (wgpu's names: `shader-f16`,
+    /// `shader-int64`), from its variant's `#pragma target` and `#pragma require`; a device
+    /// must have them to load it.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub features: Vec<String>,
     pub wgsl: Option<ModuleFile>,
     pub spirv: Option<ModuleFile>,
 }

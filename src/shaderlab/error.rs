@@ -26,6 +26,7 @@ pub enum ShaderLabError {
     UnknownStencilCommand { span: Span, found: String },
     AttributeArguments { span: Span, attribute: String, expected: &'static str },
     ProgramOutsideSubShader { span: Span, keyword: &'static str },
+    ForbiddenCharacter { span: Span, found: char },
 }
 
 /// Comma-separated list of backticked names, ending in "or": "`A`, `B` or `C`".
@@ -86,6 +87,9 @@ impl From<ShaderLabError> for Diagnostic {
                 if expected.iter().any(|e| e == "`}`") && word.starts_with(|c: char| c.is_ascii_alphabetic())
                 {
                     d = d.help(format!("`{word}` is not a command ShaderLab accepts here"));
+                }
+                if found.contains(char::REPLACEMENT_CHARACTER) {
+                    d = d.help("the file has bytes here that are not UTF-8: save it as UTF-8");
                 }
                 d
             }
@@ -161,6 +165,18 @@ impl From<ShaderLabError> for Diagnostic {
                 Diagnostic::error("K0131", format!("`{keyword}` block outside a SubShader"))
                     .at(span, "programs belong in a `Pass` or `SubShader`")
                     .help("only `*INCLUDE` blocks may sit directly in a `Shader`")
+            }
+            ForbiddenCharacter { span, found } if found == char::REPLACEMENT_CHARACTER => {
+                Diagnostic::error("K0132", "string holds bytes that are not UTF-8")
+                    .at(span, "not UTF-8 here")
+                    .note("names, tags and display names reach the manifest and generated code")
+                    .help("save the file as UTF-8")
+            }
+            ForbiddenCharacter { span, found } => {
+                Diagnostic::error("K0132", format!("control character U+{:04X} in a string", found as u32))
+                    .at(span, "control character")
+                    .note("names, tags and display names reach the manifest and generated code")
+                    .help("remove it; only tab is allowed inside a ShaderLab string")
             }
         }
     }

@@ -196,10 +196,18 @@ impl Builder {
         Span::new(self.file, s.start()..s.end())
     }
 
-    fn string(&self, pair: P) -> Spanned<String> {
+    /// A quoted string's text. Names, tags and display names end up in the manifest and in
+    /// generated code, so control characters (bar tab) and bytes that were not UTF-8 are refused.
+    fn string(&mut self, pair: P) -> Spanned<String> {
         let span = self.span(&pair);
-        let text = pair.into_inner().next().map(|t| unescape(t.as_str())).unwrap_or_default();
-        Spanned::new(text, span)
+        let Some(inner) = pair.into_inner().next() else { return Spanned::new(String::new(), span) };
+        let forbidden = |c: char| (c.is_control() && c != '\t') || c == char::REPLACEMENT_CHARACTER;
+        if let Some((at, found)) = inner.as_str().char_indices().find(|&(_, c)| forbidden(c)) {
+            let start = inner.as_span().start() + at;
+            let span = Span::new(self.file, start..start + found.len_utf8());
+            self.errors.push(ShaderLabError::ForbiddenCharacter { span, found });
+        }
+        Spanned::new(unescape(inner.as_str()), span)
     }
 
     fn number(&mut self, pair: &P) -> f64 {

@@ -15,3 +15,4 @@ mod robustness;
 mod scale;
 mod support;
 mod tidy;
+mod validators;

@@ -16,6 +16,27 @@ fn list_text(text: &str) {
     let _ = kiln::diagnostics::to_json(&store, &diagnostics);
 }
 
+/// Lists a file holding these bytes, read as kiln reads files: no panic, and every diagnostic
+/// says where (a span, or a line and column in its message when the file was refused unread).
+fn list_bytes(bytes: &[u8]) {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("fuzz.shader");
+    std::fs::write(&path, bytes).expect("write");
+    let mut store = SourceStore::new();
+    let (shaders, mut diagnostics) = kiln::project::load_files(&mut store, &[path]);
+    let (_, found) = kiln::listing::list_shaders(
+        &mut store,
+        &mut kiln::preprocess::Includes::new(kiln::preprocess::IncludeConfig::new(Vec::new())),
+        &kiln::catalog::CatalogInput { shaders, ..Default::default() },
+    );
+    diagnostics.extend(found);
+    let _ = kiln::diagnostics::render_plain(&store, &diagnostics);
+    for d in kiln::diagnostics::to_json(&store, &diagnostics) {
+        let placed = d.location.is_some() || (d.message.contains(" line ") && d.message.contains(" column "));
+        assert!(placed, "a diagnostic without a place: {}", d.message);
+    }
+}
+
 fn fixtures() -> Vec<String> {
     let mut texts = Vec::new();
     for folder in ["fixtures/project/shaders", "fixtures/unity", "fixtures/bad"] {
@@ -38,7 +59,20 @@ proptest! {
 
     #[test]
     fn arbitrary_bytes_never_panic(bytes in proptest::collection::vec(any::<u8>(), 0..400)) {
-        list_text(&String::from_utf8_lossy(&bytes));
+        list_bytes(&bytes);
+    }
+
+    #[test]
+    fn fixtures_with_stray_bytes_never_panic(
+        pick in any::<prop::sample::Index>(),
+        strays in proptest::collection::vec((any::<prop::sample::Index>(), any::<u8>()), 1..8),
+    ) {
+        let fixtures = fixtures();
+        let mut bytes = fixtures[pick.index(fixtures.len())].clone().into_bytes();
+        for (at, byte) in strays {
+            bytes.insert(at.index(bytes.len() + 1), byte);
+        }
+        list_bytes(&bytes);
     }
 
     #[test]

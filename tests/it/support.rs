@@ -122,11 +122,22 @@ pub fn synthetic_project(dir: &Path, materials: usize) {
 
 /// Builds a project that must build without a diagnostic, into `output` or its own output folder.
 pub fn build_clean(project: &Path, output: Option<&Path>) -> kiln::compile::BuildSummary {
+    let (summary, diagnostics) = build_without_errors(project, output, VariantSelection::Used);
+    assert!(diagnostics.is_empty(), "{diagnostics}");
+    summary
+}
+
+/// Builds a project that must build without an error; returns the warnings, rendered.
+pub fn build_without_errors(
+    project: &Path,
+    output: Option<&Path>,
+    unused_shaders: VariantSelection,
+) -> (kiln::compile::BuildSummary, String) {
     let mut store = SourceStore::new();
     let mode = BuildMode {
         write: true,
         output: output.map(Path::to_path_buf),
-        unused_shaders: VariantSelection::Used,
+        unused_shaders,
         threads: None,
         global_keywords: None,
         pretty_manifest: false,
@@ -134,6 +145,7 @@ pub fn build_clean(project: &Path, output: Option<&Path>) -> kiln::compile::Buil
     let (result, mut diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
     diagnostics.extend(result.diagnostics);
-    assert!(diagnostics.is_empty(), "{}", kiln::diagnostics::render_plain(&store, &diagnostics));
-    result.summary
+    let rendered = kiln::diagnostics::render_plain(&store, &diagnostics);
+    assert!(!kiln::diagnostics::has_errors(&diagnostics), "{}:\n{rendered}", project.display());
+    (result.summary, rendered)
 }
