@@ -264,7 +264,27 @@ fn build(project: Option<PathBuf>, mode: BuildMode, format: Format) -> ExitCode 
         line.push_str(", with errors");
     }
     eprintln!("{line}");
+    if !s.unused.is_empty() {
+        eprintln!("{}", unused_hint(&s.unused, verb));
+    }
     exit_code(&problems)
+}
+
+/// The note after a build that skipped shaders because no material uses them.
+fn unused_hint(unused: &[String], verb: &str) -> String {
+    const SHOWN: usize = 5;
+    let mut names: Vec<String> = unused.iter().take(SHOWN).map(|n| format!("`{n}`")).collect();
+    if unused.len() > SHOWN {
+        names.push(format!("and {} more", unused.len() - SHOWN));
+    }
+    let what = match unused {
+        [one] => format!("`{one}`, so it was not {verb}"),
+        _ => format!("{} shaders, so they were not {verb}: {}", unused.len(), names.join(", ")),
+    };
+    format!(
+        "note: no material uses {what}\n  = help: add a `.mat` that names it, list it in `always_include` in \
+         kiln.toml, or check every variant with `kiln check --all-variants`"
+    )
 }
 
 fn preprocess(request: &VariantRequest) -> ExitCode {

@@ -31,8 +31,8 @@ pub enum ProjectError {
     NotWgsl { language: &'static str },
     #[error(transparent)]
     Variant(#[from] VariantError),
-    #[error("no shader named `{name}` in the project{}", suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default())]
-    ShaderNotFound { name: String, suggestion: Option<String> },
+    #[error("no shader named `{name}` in the project at `{}`{}", project.display(), suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_else(|| " (pass `--project` to look elsewhere)".into()))]
+    ShaderNotFound { name: String, suggestion: Option<String>, project: PathBuf },
     #[error("unknown preset `{0}`: presets are Opaque, Clip, Fade and Transparent")]
     UnknownPreset(String),
     #[error("preset `{preset}` is not offered for `{shader}`: it has no `_PremulAlpha` property")]
@@ -45,13 +45,16 @@ pub enum ProjectError {
     Write { path: PathBuf, source: std::io::Error },
 }
 
-/// The project a material file belongs to: the nearest folder above it with a `kiln.toml`, else
-/// its own folder.
+/// The project a material file belongs to: the nearest folder above it with a `kiln.toml`; without
+/// one (the file is optional), the current folder when the material lies under it, as for `kiln
+/// build` run there, else the material's own folder.
 pub fn project_of(material: &Path) -> PathBuf {
     let folder = material.parent().map(Path::to_path_buf).unwrap_or_default();
+    let absolute = std::path::absolute(&folder).unwrap_or_else(|_| folder.clone());
     let found =
-        folder.ancestors().find(|a| a.join(crate::config::FILE_NAME).is_file()).map(Path::to_path_buf);
-    found.unwrap_or(folder)
+        absolute.ancestors().find(|a| a.join(crate::config::FILE_NAME).is_file()).map(Path::to_path_buf);
+    let current = std::env::current_dir().ok().filter(|cwd| absolute.starts_with(cwd));
+    found.or(current).unwrap_or(folder)
 }
 
 /// Parses the project's shaders and returns the one named `name`.
@@ -65,10 +68,11 @@ fn find_shader(
     let shaders: Vec<_> = files.into_iter().filter_map(|f| parse_shader(store, f).shader).collect();
     let names = shaders.iter().map(|s| s.name.value.as_str());
     let suggestion = crate::material::closest(name, names);
-    shaders
-        .into_iter()
-        .find(|s| s.name.value == name)
-        .ok_or(ProjectError::ShaderNotFound { name: name.to_string(), suggestion })
+    shaders.into_iter().find(|s| s.name.value == name).ok_or_else(|| ProjectError::ShaderNotFound {
+        name: name.to_string(),
+        suggestion,
+        project: project.to_path_buf(),
+    })
 }
 
 fn parse_preset(name: &str, shader: &crate::shaderlab::ast::Shader) -> Result<Preset, ProjectError> {

@@ -25,5 +25,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .materials(materials)
         .global_keywords(scene.global_keywords())
         .run()?;
+    // Uniform and storage blocks of every shape, for the GPU round trip of generated structs
+    // (tests/uniform_blocks.rs), in a folder of their own.
+    let out_dir = PathBuf::from(std::env::var("OUT_DIR")?);
+    kiln::Build::new(manifest_dir.join("../../fixtures/blocks")).out_dir(out_dir.join("blocks")).run()?;
     Ok(())
 }

@@ -2,7 +2,7 @@
 //! them, and `const` assertions that their size and every member offset match naga's layout: if
 //! they ever disagree, the renderer does not compile.
 
-use crate::reflect::UniformBlock;
+use crate::reflect::Member;
 use crate::reflect::manifest::ShaderManifest;
 use std::fmt::Write as _;
 
@@ -13,6 +13,8 @@ fn rust_type(wgsl: &str) -> Option<(String, u32)> {
         "i32" => Some(("i32", 4)),
         "u32" => Some(("u32", 4)),
         "f16" => Some(("u16", 2)),
+        "atomic<u32>" => Some(("u32", 4)),
+        "atomic<i32>" => Some(("i32", 4)),
         _ => None,
     };
     if let Some((name, size)) = scalar(wgsl) {
@@ -46,80 +48,161 @@ fn field_name(name: &str) -> String {
     if KEYWORDS.contains(&name) { format!("r#{name}") } else { name.to_string() }
 }
 
-/// Emits one struct per distinct uniform block type of the shader.
+/// A WGSL struct type as laid out in one place: what makes two generated Rust structs one.
+#[derive(Clone, PartialEq)]
+struct StructLayout<'a> {
+    type_name: &'a str,
+    size: u32,
+    members: &'a [Member],
+}
+
+/// The Rust structs of one shader module: one per distinct WGSL struct layout, by name.
+#[derive(Default)]
+struct Structs<'a> {
+    emitted: Vec<(String, StructLayout<'a>)>,
+}
+
+/// Emits one `#[repr(C)]` struct per distinct WGSL struct type the shader's uniform and storage
+/// blocks use (nested structs and array elements first), deduplicated by name and layout.
 pub fn uniform_structs(out: &mut String, shader: &ShaderManifest) {
-    let mut emitted: Vec<(String, UniformBlock)> = Vec::new();
-    let blocks = shader.passes.iter().flat_map(|p| &p.uniform_blocks);
-    for block in blocks {
-        if emitted.iter().any(|(_, b)| b.type_name == block.type_name && b.members == block.members) {
+    let mut structs = Structs::default();
+    for block in shader.passes.iter().flat_map(|p| &p.uniform_blocks) {
+        if let ([only], 0) = (block.members.as_slice(), block.size) {
+            // A storage buffer that is one runtime-sized array: only its element needs a type.
+            structs.element_type(out, &block.name, only);
             continue;
         }
-        // A type laid out differently in another variant gets its own name.
-        let clashes = emitted.iter().filter(|(_, b)| b.type_name == block.type_name).count();
-        let name =
-            if clashes == 0 { block.type_name.clone() } else { format!("{}_{clashes}", block.type_name) };
-        uniform_struct(out, &name, block);
-        emitted.push((name, block.clone()));
+        let layout = StructLayout { type_name: &block.type_name, size: block.size, members: &block.members };
+        let doc = format!(
+            "The {} block `{}` ({} bytes, aligned to {}).",
+            if block.storage { "storage" } else { "uniform" },
+            block.name,
+            block.size,
+            block.alignment
+        );
+        structs.emit(out, layout, &doc);
     }
 }
 
-fn uniform_struct(out: &mut String, name: &str, block: &UniformBlock) {
-    let mut fields = String::new();
-    let mut helpers = String::new();
-    let mut cursor = 0;
-    let mut pads = 0;
-    let mut pad = |fields: &mut String, bytes: u32| {
-        let _ = writeln!(fields, "        pub _pad{pads}: [u8; {bytes}],");
-        pads += 1;
-    };
-    for member in &block.members {
-        if member.offset > cursor {
-            pad(&mut fields, member.offset - cursor);
+impl<'a> Structs<'a> {
+    /// The Rust name of a struct layout, emitting it (and what it uses) the first time.
+    fn emit(&mut self, out: &mut String, layout: StructLayout<'a>, doc: &str) -> String {
+        if let Some((name, _)) = self.emitted.iter().find(|(_, l)| *l == layout) {
+            return name.clone();
         }
-        let ty = match (member.array_stride, member.array_length, array_element(&member.ty)) {
-            (Some(stride), Some(length), Some(element)) => match rust_type(element) {
-                Some((rust, size)) if size == stride => Some(format!("[{rust}; {length}]")),
-                Some((rust, size)) if size < stride => {
-                    // An element shorter than its stride: wrap it with its padding.
-                    let wrapper = format!("{name}_{}_Element", member.name);
-                    let _ = writeln!(
-                        helpers,
-                        "    #[repr(C)]\n    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]\n    pub struct {wrapper} {{\n        pub value: {rust},\n        pub _pad: [u8; {}],\n    }}\n",
-                        stride - size
-                    );
-                    Some(format!("[{wrapper}; {length}]"))
-                }
-                _ => None,
-            },
-            _ => rust_type(&member.ty).filter(|(_, size)| *size == member.size).map(|(rust, _)| rust),
+        // A type laid out differently elsewhere (another variant's `#if`) gets its own name.
+        let clashes = self.emitted.iter().filter(|(_, l)| l.type_name == layout.type_name).count();
+        let base = rust_identifier(layout.type_name);
+        let name = if clashes == 0 { base } else { format!("{base}_{clashes}") };
+        self.emitted.push((name.clone(), layout.clone()));
+
+        let mut fields = String::new();
+        let mut helpers = String::new();
+        let mut asserts = Vec::new();
+        let mut cursor = 0;
+        let mut pads = 0;
+        for member in layout.members {
+            let field = field_name(&member.name);
+            if member.array_stride.is_some() && member.array_length.is_none() {
+                // A runtime-sized array has no Rust field: the buffer continues past the struct.
+                let element = self.element_type(out, &name, member).map(|(rust, _)| rust);
+                let _ = writeln!(
+                    fields,
+                    "        // `{}`: {} from offset {}, stride {}{}: not a field (its length is the buffer's).",
+                    member.name,
+                    member.ty,
+                    member.offset,
+                    member.array_stride.unwrap_or_default(),
+                    element.map(|e| format!(", elements `{e}`")).unwrap_or_default()
+                );
+                continue;
+            }
+            if member.offset > cursor {
+                let _ = writeln!(fields, "        pub _pad{pads}: [u8; {}],", member.offset - cursor);
+                pads += 1;
+            }
+            let (ty, why_opaque) = match self.member_type(out, &name, member, &mut helpers) {
+                Some(ty) => (ty, None),
+                None => (format!("[u8; {}]", member.size), Some("no Rust type has this layout exactly")),
+            };
+            let _ =
+                writeln!(fields, "        /// `{}`: {} at offset {}.", member.name, member.ty, member.offset);
+            if let Some(why) = why_opaque {
+                let _ = writeln!(fields, "        /// Raw bytes: {why}.");
+            }
+            let _ = writeln!(fields, "        pub {field}: {ty},");
+            asserts.push((field, member.offset));
+            cursor = member.offset + member.size;
+        }
+        if layout.size > cursor {
+            let _ = writeln!(fields, "        pub _pad{pads}: [u8; {}],", layout.size - cursor);
+        }
+        out.push_str(&helpers);
+        let _ = writeln!(out, "    /// {doc}");
+        out.push_str(DERIVES);
+        let _ = writeln!(out, "    pub struct {name} {{\n{fields}    }}");
+        let _ =
+            writeln!(out, "    const _: () = assert!(core::mem::size_of::<{name}>() == {});", layout.size);
+        for (field, offset) in asserts {
+            let _ = writeln!(
+                out,
+                "    const _: () = assert!(core::mem::offset_of!({name}, {field}) == {offset});"
+            );
+        }
+        name
+    }
+
+    /// The Rust type of a member with a fixed size, or `None` when none has its exact layout.
+    fn member_type(
+        &mut self,
+        out: &mut String,
+        owner: &str,
+        member: &'a Member,
+        helpers: &mut String,
+    ) -> Option<String> {
+        let (Some(stride), Some(length)) = (member.array_stride, member.array_length) else {
+            if !member.members.is_empty() {
+                let layout =
+                    StructLayout { type_name: &member.ty, size: member.size, members: &member.members };
+                let doc = format!("The struct `{}` ({} bytes).", member.ty, member.size);
+                return Some(self.emit(out, layout, &doc));
+            }
+            return rust_type(&member.ty).filter(|(_, size)| *size == member.size).map(|(rust, _)| rust);
         };
-        // Anything without a faithful Rust type (nested structs) stays raw bytes of the right size.
-        let ty = ty.unwrap_or_else(|| format!("[u8; {}]", member.size));
-        let _ = writeln!(fields, "        /// `{}`: {} at offset {}.", member.name, member.ty, member.offset);
-        let _ = writeln!(fields, "        pub {}: {ty},", field_name(&member.name));
-        cursor = member.offset + member.size;
-    }
-    if block.size > cursor {
-        pad(&mut fields, block.size - cursor);
-    }
-    out.push_str(&helpers);
-    let _ = writeln!(
-        out,
-        "    /// The uniform block `{}` ({} bytes, aligned to {}).",
-        block.name, block.size, block.alignment
-    );
-    let _ = writeln!(
-        out,
-        "    #[repr(C)]\n    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]"
-    );
-    let _ = writeln!(out, "    pub struct {name} {{\n{fields}    }}");
-    let _ = writeln!(out, "    const _: () = assert!(core::mem::size_of::<{name}>() == {});", block.size);
-    for member in &block.members {
+        let (rust, size) = self.element_type(out, owner, member)?;
+        if size == stride {
+            return Some(format!("[{rust}; {length}]"));
+        }
+        // An element shorter than its stride (`vec3` in an array): wrap it with its padding.
+        let wrapper = format!("{owner}_{}_Element", member.name);
+        let _ = writeln!(helpers, "    /// An element of `{owner}::{}`, padded to its stride.", member.name);
+        helpers.push_str(DERIVES);
         let _ = writeln!(
-            out,
-            "    const _: () = assert!(core::mem::offset_of!({name}, {}) == {});",
-            field_name(&member.name),
-            member.offset
+            helpers,
+            "    pub struct {wrapper} {{\n        pub value: {rust},\n        pub _pad: [u8; {}],\n    }}",
+            stride - size
         );
+        Some(format!("[{wrapper}; {length}]"))
     }
+
+    /// An array member's element type in Rust, with its size.
+    fn element_type(&mut self, out: &mut String, owner: &str, member: &'a Member) -> Option<(String, u32)> {
+        let element = array_element(&member.ty)?;
+        if member.members.is_empty() {
+            return rust_type(element);
+        }
+        // A struct's size is a multiple of its alignment, so an array of structs has no gaps.
+        let size = member.array_stride?;
+        let layout = StructLayout { type_name: element, size, members: &member.members };
+        let doc = format!("The struct `{element}` ({size} bytes), an element of `{owner}::{}`.", member.name);
+        Some((self.emit(out, layout, &doc), size))
+    }
+}
+
+const DERIVES: &str =
+    "    #[repr(C)]\n    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]\n";
+
+/// A WGSL type name as a Rust type name (WGSL allows what Rust does, bar a leading `__`).
+fn rust_identifier(name: &str) -> String {
+    name.chars().map(|c| if c.is_alphanumeric() || c == '_' { c } else { '_' }).collect()
 }

@@ -415,7 +415,8 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
         .collect();
     rows.sort();
     let _ = writeln!(out, "        ],\n        key_words: {words},\n        keys: &[");
-    for (key, _) in &rows {
+    // A pass without keywords has keys of no words: its one variant is found by an empty key.
+    for (key, _) in rows.iter().filter(|(key, _)| !key.is_empty()) {
         let words: Vec<String> = key.iter().map(|w| format!("{w:#x}")).collect();
         let _ = writeln!(out, "            {},", words.join(", "));
     }

@@ -71,6 +71,8 @@ pub struct BuildSummary {
     pub reused: usize,
     pub bytes_written: u64,
     pub elapsed: Duration,
+    /// Shaders with WGSL programs that no material uses, so nothing of them was built.
+    pub unused: Vec<String>,
 }
 
 pub struct BuildResult {
@@ -399,9 +401,10 @@ fn plan<'a>(
 ) -> Vec<PassWork<'a>> {
     let mut work: Vec<PassWork> = Vec::new();
     for shader in &catalog.shaders {
-        let mut built_any = false;
+        let (mut built_any, mut has_wgsl) = (false, false);
         for pass in &shader.passes {
             let Some(program) = pass.program.as_ref().filter(|p| p.wgsl.is_some()) else { continue };
+            has_wgsl = true;
             let variants = select_variants(shader, pass, program, selection, diagnostics);
             if variants.is_empty() {
                 continue;
@@ -412,6 +415,9 @@ fn plan<'a>(
             work.push(PassWork { shader, pass, program, variants });
         }
         summary.shaders += usize::from(built_any);
+        if has_wgsl && !built_any && selection == VariantSelection::Used {
+            summary.unused.push(shader.shader.name.value.clone());
+        }
     }
     work
 }

@@ -50,17 +50,23 @@ pub enum Resource {
     Other { description: String },
 }
 
-/// A uniform buffer's struct, laid out by naga.
+/// A uniform or storage buffer's contents, laid out by naga: a struct, or (for a storage buffer
+/// holding a bare array) one member named after the buffer.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct UniformBlock {
     /// The global variable's name (`_CustomLight`).
     pub name: String,
     pub type_name: String,
+    /// For a storage buffer ending in a runtime-sized array: the size without that array.
     pub size: u32,
     pub alignment: u32,
+    /// A storage buffer (`var<storage>`) rather than a uniform one.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub storage: bool,
     pub members: Vec<Member>,
 }
 
+/// A struct member, with its offset in the struct that holds it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Member {
     pub name: String,
@@ -74,6 +80,77 @@ pub struct Member {
     pub array_stride: Option<u32>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub array_length: Option<u32>,
+    /// When the member is a struct, or an array of structs: that struct's members, with offsets
+    /// relative to the struct (to an array element for arrays).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub members: Vec<Member>,
+}
+
+/// The block a uniform or storage buffer binding holds.
+fn block(module: &Module, layouter: &Layouter, global: &naga::GlobalVariable) -> Option<UniformBlock> {
+    let storage = match global.space {
+        AddressSpace::Uniform => false,
+        AddressSpace::Storage { .. } => true,
+        _ => return None,
+    };
+    let name = global.name.clone().unwrap_or_default();
+    let layout = &layouter[global.ty];
+    let (size, members) = match &module.types[global.ty].inner {
+        TypeInner::Struct { members, span } => {
+            let members = struct_members(module, layouter, members);
+            // A runtime-sized array has no size of its own: the block's size is where it starts.
+            let size = match members.last() {
+                Some(last) if last.array_stride.is_some() && last.array_length.is_none() => last.offset,
+                _ => *span,
+            };
+            (size, members)
+        }
+        TypeInner::Array { .. } => (0, vec![member(module, layouter, &name, global.ty, 0)]),
+        _ => return None,
+    };
+    Some(UniformBlock {
+        name,
+        type_name: type_name(module, global.ty),
+        size,
+        alignment: layout.alignment.round_up(1),
+        storage,
+        members,
+    })
+}
+
+fn struct_members(module: &Module, layouter: &Layouter, members: &[naga::StructMember]) -> Vec<Member> {
+    members
+        .iter()
+        .map(|m| member(module, layouter, m.name.as_deref().unwrap_or_default(), m.ty, m.offset))
+        .collect()
+}
+
+fn member(module: &Module, layouter: &Layouter, name: &str, ty: Handle<Type>, offset: u32) -> Member {
+    let (array_stride, array_length, element) = match &module.types[ty].inner {
+        TypeInner::Array { base, size, stride } => {
+            let length = match size {
+                ArraySize::Constant(n) => Some(n.get()),
+                _ => None,
+            };
+            (Some(*stride), length, *base)
+        }
+        _ => (None, None, ty),
+    };
+    let members = match &module.types[element].inner {
+        TypeInner::Struct { members, .. } => struct_members(module, layouter, members),
+        _ => Vec::new(),
+    };
+    Member {
+        name: name.to_string(),
+        ty: type_name(module, ty),
+        offset,
+        // naga's layouter gives a runtime-sized array the size of one element.
+        size: if array_stride.is_some() && array_length.is_none() { 0 } else { layouter[ty].size },
+        alignment: layouter[ty].alignment.round_up(1),
+        array_stride,
+        array_length,
+        members,
+    }
 }
 
 /// Reflects a module compacted to one entry point.
@@ -105,39 +182,8 @@ pub fn reflect_stage(module: &Module, entry_point: &str) -> StageReflection {
         let Some(binding) = &global.binding else { continue };
         let name = global.name.clone().unwrap_or_default();
         let resource = resource(module, &layouter, global.space, global.ty);
-        if global.space == AddressSpace::Uniform
-            && let TypeInner::Struct { members, span } = &module.types[global.ty].inner
-        {
-            reflection.uniform_blocks.push(UniformBlock {
-                name: name.clone(),
-                type_name: type_name(module, global.ty),
-                size: *span,
-                alignment: layouter[global.ty].alignment.round_up(1),
-                members: members
-                    .iter()
-                    .map(|m| {
-                        let (array_stride, array_length) = match &module.types[m.ty].inner {
-                            TypeInner::Array { size, stride, .. } => (
-                                Some(*stride),
-                                match size {
-                                    ArraySize::Constant(n) => Some(n.get()),
-                                    _ => None,
-                                },
-                            ),
-                            _ => (None, None),
-                        };
-                        Member {
-                            name: m.name.clone().unwrap_or_default(),
-                            ty: type_name(module, m.ty),
-                            offset: m.offset,
-                            size: layouter[m.ty].size,
-                            alignment: layouter[m.ty].alignment.round_up(1),
-                            array_stride,
-                            array_length,
-                        }
-                    })
-                    .collect(),
-            });
+        if let Some(block) = block(module, &layouter, global) {
+            reflection.uniform_blocks.push(block);
         }
         reflection.bindings.push(BindingInfo {
             group: binding.group,

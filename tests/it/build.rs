@@ -344,3 +344,86 @@ fn an_always_included_shader_with_too_many_variants_is_refused_with_the_count() 
     expect_file![root().join("fixtures/bad/always_include/kiln.stderr")]
         .assert_eq(&render_plain(&store, &diagnostics));
 }
+
+#[test]
+fn nested_uniform_and_storage_blocks_are_reflected_and_generated_in_full() {
+    let output = tempfile::tempdir().expect("temp dir");
+    let (result, mut diagnostics, store) = build_with("fixtures/blocks", output.path(), None, true);
+    diagnostics.extend(result.diagnostics);
+    assert!(diagnostics.is_empty(), "{}", render_plain(&store, &diagnostics));
+    let manifest = verified_manifest(output.path());
+    let pass =
+        manifest.passes().find(|p| p.uniform_blocks.iter().any(|b| b.name == "blk")).expect("the pass");
+    let blocks = serde_json::to_string_pretty(&pass.uniform_blocks).expect("json") + "\n";
+    expect_file![root().join("tests/golden/build/blocks.json")].assert_eq(&blocks);
+    // The offsets WGSL gives the example block, member by member.
+    let block = pass.uniform_blocks.iter().find(|b| b.name == "blk").expect("blk");
+    let offsets: Vec<u32> = block.members.iter().map(|m| m.offset).collect();
+    assert_eq!((offsets, block.size), (vec![0, 12, 16, 64, 112, 128, 160, 176, 304], 336));
+    let light = &block.members[7].members;
+    assert_eq!(
+        light.iter().map(|m| (m.name.as_str(), m.offset)).collect::<Vec<_>>(),
+        [("color", 0), ("intensity", 12), ("dir", 16)]
+    );
+    let generated = kiln::codegen::generate(&manifest, "kiln");
+    let structs = &generated[generated.find("    /// The struct").expect("structs")..];
+    expect_file![root().join("tests/golden/build/blocks.rs")].assert_eq(structs);
+
+    // `kiln reflect` prints the variant's blocks as the manifest has them, nested members too.
+    let output = kiln(&["reflect", "fixtures/blocks/Blocks.shader"]);
+    assert_eq!(output.status.code(), Some(0), "{}", String::from_utf8_lossy(&output.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+    let mut printed: Vec<kiln::reflect::UniformBlock> =
+        serde_json::from_value(json["uniform_blocks"].clone()).expect("blocks");
+    let mut built = pass.uniform_blocks.clone();
+    printed.sort_by(|a, b| a.name.cmp(&b.name));
+    built.sort_by(|a, b| a.name.cmp(&b.name));
+    assert_eq!(printed, built);
+}
+
+#[test]
+fn progress_counts_what_the_closing_line_counts() {
+    let output = tempfile::tempdir().expect("temp dir");
+    let seen = std::sync::Mutex::new((0, 0));
+    let progress = |done: usize, total: usize| {
+        let mut seen = seen.lock().expect("lock");
+        *seen = (seen.0.max(done), seen.1.max(total));
+    };
+    let mode = BuildMode {
+        write: true,
+        output: Some(output.path().to_path_buf()),
+        unused_shaders: VariantSelection::Used,
+        threads: Some(2),
+        global_keywords: None,
+        pretty_manifest: false,
+    };
+    let mut store = SourceStore::new();
+    let (result, _) =
+        build_project(&mut store, &[PathBuf::from("fixtures/project")], &mode, &progress).expect("project");
+    let (done, total) = *seen.lock().expect("lock");
+    assert_eq!((done, total), (result.summary.variants, result.summary.variants));
+}
+
+#[test]
+fn a_build_that_skips_every_shader_says_which_and_how_to_build_them() {
+    let project = tempfile::tempdir().expect("temp dir");
+    for name in ["Unlit.shader", "UnlitPass.wgsl"] {
+        std::fs::copy(root().join("fixtures/project/shaders").join(name), project.path().join(name))
+            .expect("copy");
+    }
+    let output = project.path().join("out");
+    let build = || {
+        let folder = project.path().to_str().expect("utf-8");
+        let run = kiln(&["build", folder, "--output", output.to_str().expect("utf-8")]);
+        assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+        String::from_utf8_lossy(&run.stderr).into_owned()
+    };
+    let stderr = build();
+    assert!(stderr.contains("built 0 shaders"), "{stderr}");
+    assert!(stderr.contains("note: no material uses `Custom RP/Unlit`, so it was not built"), "{stderr}");
+    assert!(stderr.contains("always_include") && stderr.contains("kiln check --all-variants"), "{stderr}");
+    // With a material, nothing is skipped and nothing is said about it.
+    std::fs::write(project.path().join("U.mat"), "shader = \"Custom RP/Unlit\"\n").expect("write");
+    let stderr = build();
+    assert!(stderr.contains("built 1 shaders") && !stderr.contains("no material uses"), "{stderr}");
+}

@@ -290,3 +290,33 @@ fn a_huge_multi_compile_product_is_never_materialised() {
     assert_eq!(pass.enumerate(&[vec![]], false, None).map(|v| v.len()), Err(1 << 30));
     assert_eq!(pass.enumerate(&[], true, None).map(|v| v.len()), Err(1 << 30));
 }
+
+#[test]
+fn material_new_without_kiln_toml_finds_shaders_from_the_current_folder() {
+    let project = tempfile::tempdir().expect("temp dir");
+    std::fs::create_dir_all(project.path().join("shaders")).expect("mkdir");
+    std::fs::copy(
+        root().join("fixtures/project/shaders/Unlit.shader"),
+        project.path().join("shaders/Unlit.shader"),
+    )
+    .expect("copy");
+    let run = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_kiln"))
+            .args(args)
+            .current_dir(project.path())
+            .output()
+            .expect("kiln runs")
+    };
+    let made = run(&["material", "new", "materials/New.mat", "--shader", "Custom RP/Unlit"]);
+    assert_eq!(made.status.code(), Some(0), "{}", String::from_utf8_lossy(&made.stderr));
+    let text = std::fs::read_to_string(project.path().join("materials/New.mat")).expect("written");
+    assert!(text.contains("shader = \"Custom RP/Unlit\""), "{text}");
+
+    // A name that is nowhere says where kiln looked.
+    let missing = run(&["material", "new", "materials/Other.mat", "--shader", "T/Layout"]);
+    assert_eq!(missing.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&missing.stderr);
+    let folder = std::fs::canonicalize(project.path()).expect("canonical");
+    assert!(stderr.contains("no shader named `T/Layout` in the project at"), "{stderr}");
+    assert!(stderr.contains(folder.file_name().and_then(|n| n.to_str()).expect("name")), "{stderr}");
+}

@@ -10,6 +10,12 @@ pub mod shaders {
     include!(concat!(env!("OUT_DIR"), "/kiln_shaders.rs"));
 }
 
+/// What kiln generated for `fixtures/blocks` (uniform and storage blocks of every shape), which
+/// the GPU round-trip test of generated structs fills.
+pub mod blocks {
+    include!(concat!(env!("OUT_DIR"), "/blocks/kiln_shaders.rs"));
+}
+
 use kiln::reference as r;
 pub use scene::Scene;
 use shaders::custom_rp_lit as lit;
@@ -161,14 +167,18 @@ fn sphere_mesh(rings: u32, segments: u32) -> (Vec<f32>, Vec<u32>) {
     (vertices, indices)
 }
 
-/// A device, or why there is none.
+/// A device (with `shader-f16` where the adapter has it), or why there is none.
 pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle());
     let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
         .map_err(|e| format!("no GPU adapter ({e}); install mesa-vulkan-drivers for lavapipe"))?;
     let name = adapter.get_info().name;
-    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default()))
-        .map_err(|e| format!("no device: {e}"))?;
+    let descriptor = wgpu::DeviceDescriptor {
+        required_features: adapter.features() & wgpu::Features::SHADER_F16,
+        ..wgpu::DeviceDescriptor::default()
+    };
+    let (device, queue) =
+        pollster::block_on(adapter.request_device(&descriptor)).map_err(|e| format!("no device: {e}"))?;
     Ok((device, queue, name))
 }
 
