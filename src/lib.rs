@@ -31,6 +31,8 @@ pub mod preprocess;
 pub mod project;
 pub mod reference;
 pub mod reflect;
+#[cfg(feature = "wgpu")]
+pub mod runtime;
 pub mod shaderlab;
 pub mod shaderlib;
 pub mod source;

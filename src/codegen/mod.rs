@@ -285,6 +285,22 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> String {
         let _ = writeln!(out, "    &Aligned(*include_bytes!({:?})),", include(path));
     }
     out.push_str("];\n");
+    let _ = writeln!(
+        out,
+        "\n/// The build's manifest and materials, for `kiln::runtime::Library::embedded`.\n\
+         pub static MANIFEST_JSON: &str = include_str!({:?});\npub static MATERIALS_JSON: &str = include_str!({:?});",
+        include(crate::reflect::manifest::FILE_NAME),
+        include(crate::reflect::manifest::MATERIALS_FILE)
+    );
+    let _ = writeln!(out, "\n/// Every pack by its path in the manifest.");
+    let _ = writeln!(out, "pub static PACKS: [(&str, &[u8]); {}] = [", packs[0].len() + packs[1].len());
+    for (n, path) in packs[0].keys().enumerate() {
+        let _ = writeln!(out, "    ({path:?}, WGSL_PACKS[{n}].as_bytes()),");
+    }
+    for (n, path) in packs[1].keys().enumerate() {
+        let _ = writeln!(out, "    ({path:?}, &SPIRV_PACKS[{n}].0),");
+    }
+    out.push_str("];\n");
     for shader in &manifest.shaders {
         shader_module(&mut out, shader, &packs);
     }

@@ -210,14 +210,26 @@ fn build_in_pool(
     let manifest = manifest(store, options, &work, passes);
     let mut packs = Vec::new();
     if options.write && !diagnostics::has_errors(&diagnostics) {
-        let path = options.output.join(FILE_NAME);
-        match write_manifest(&path, &manifest, options.pretty_manifest) {
-            Ok((len, written)) => {
-                summary.bytes_written += if written { len } else { 0 };
-                packs = manifest.packs().into_iter().collect();
-                packs.push((FILE_NAME.to_string(), len));
+        packs = manifest.packs().into_iter().collect();
+        let written = [
+            (
+                MATERIALS_FILE,
+                write_json(
+                    &options.output.join(MATERIALS_FILE),
+                    &materials(catalog),
+                    options.pretty_manifest,
+                ),
+            ),
+            (FILE_NAME, write_json(&options.output.join(FILE_NAME), &manifest, options.pretty_manifest)),
+        ];
+        for (name, result) in written {
+            match result {
+                Ok((len, written)) => {
+                    summary.bytes_written += if written { len } else { 0 };
+                    packs.push((name.to_string(), len));
+                }
+                Err(error) => diagnostics.push(write_failure(&options.output, &error)),
             }
-            Err(error) => diagnostics.push(write_failure(&options.output, &error)),
         }
     }
     diagnostics::dedup(&mut diagnostics);
@@ -252,16 +264,22 @@ fn recorded_name(store: &SourceStore, file: FileId, options: &BuildOptions) -> S
 /// Writes the manifest streamed (a million variants' manifest is never a string in memory) and
 /// hashed as it goes; a file that already holds exactly these bytes is left as it is, so that a
 /// rebuild that compiles nothing touches nothing. Returns its length and whether it was written.
-fn write_manifest(path: &std::path::Path, manifest: &Manifest, pretty: bool) -> std::io::Result<(u64, bool)> {
+/// Writes JSON (the manifest, the materials) streamed and hashed as it goes; an unchanged file is
+/// kept as it is. Returns its length and whether it was written.
+fn write_json(
+    path: &std::path::Path,
+    value: &impl serde::Serialize,
+    pretty: bool,
+) -> std::io::Result<(u64, bool)> {
     use std::io::Write as _;
     // What was written, for the comparison with the old file once it is all written.
     let digest = std::cell::RefCell::new(Digest::default());
     let serialize = |out: &mut dyn std::io::Write| {
         let mut out = Hashed { out, digest: Digest::default() };
         if pretty {
-            serde_json::to_writer_pretty(&mut out, manifest)
+            serde_json::to_writer_pretty(&mut out, value)
         } else {
-            serde_json::to_writer(&mut out, manifest)
+            serde_json::to_writer(&mut out, value)
         }
         .map_err(std::io::Error::other)?;
         out.write_all(b"\n")?;
@@ -288,6 +306,10 @@ fn disk_files(store: &SourceStore) -> impl Iterator<Item = FileId> + '_ {
 /// keywords from a build script; the bundled library is part of kiln's version), and every file
 /// read from disk (shaders, includes, materials, the project file) by its name relative to the
 /// project, in the order read, followed by `more` files read since (name, bytes).
+/// Raised when what a build writes changes shape (files added), so that an earlier build's
+/// record no longer passes for a no-op.
+const OUTPUT_FORMAT: u32 = 2;
+
 fn inputs_key(store: &SourceStore, options: &BuildOptions, more: &[(String, Vec<u8>)]) -> String {
     let mut hasher = blake3::Hasher::new();
     let mut file = |name: &str, bytes: &[u8]| {
@@ -307,7 +329,7 @@ fn inputs_key(store: &SourceStore, options: &BuildOptions, more: &[(String, Vec<
         file(name, bytes);
     }
     let options = format!(
-        "{:?}{:?}{}{}{NAGA_VERSION}",
+        "{:?}{:?}{}{}{NAGA_VERSION} output {OUTPUT_FORMAT}",
         options.backends,
         options.unused_shaders,
         options.pretty_manifest,
@@ -955,6 +977,38 @@ fn default_json(default: &PropertyDefault) -> serde_json::Value {
     }
 }
 
+/// Every resolved material, for the run time (`materials.json`).
+fn materials(catalog: &Catalog) -> Vec<MaterialManifest> {
+    use crate::material::MaterialValue;
+    let shader_name =
+        |m: &crate::material::Material| catalog.shaders.get(m.shader).map(|s| s.shader.name.value.clone());
+    catalog
+        .materials
+        .iter()
+        .filter_map(|m| {
+            Some(MaterialManifest {
+                name: m.name.clone(),
+                shader: shader_name(m)?,
+                preset: m.preset.map(|p| p.name().to_string()),
+                render_queue: m.render_queue,
+                keywords: m.keywords.iter().map(|(k, _)| k.clone()).collect(),
+                values: m
+                    .values
+                    .iter()
+                    .map(|(name, value)| {
+                        let json = match value {
+                            MaterialValue::Number(n) => serde_json::json!(n),
+                            MaterialValue::Vector(v) => serde_json::json!(v),
+                            MaterialValue::Texture(t) => serde_json::json!(t),
+                        };
+                        (name.clone(), json)
+                    })
+                    .collect(),
+            })
+        })
+        .collect()
+}
+
 /// The shader's properties, with their place in the material block (from the first variant that
 /// has one) and their texture bindings.
 fn properties(shader: &Shader, passes: &[PassManifest]) -> Vec<PropertyManifest> {
@@ -984,6 +1038,7 @@ fn properties(shader: &Shader, passes: &[PassManifest]) -> Vec<PropertyManifest>
                 .and_then(|b| b.members.iter().find(|m| m.name == p.name.value))
                 .map(|m| m.offset),
             binding: bindings.get(p.name.value.as_str()).copied(),
+            drawer: crate::material::KeywordDrawer::of(p),
         })
         .collect()
 }

@@ -7,7 +7,8 @@ use crate::shaderlab::ast::{AttributeKind, Property};
 pub const TOGGLE_EPSILON: f64 = 0.001;
 
 /// The keywords a drawer can enable, with which value enables each.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum KeywordDrawer {
     /// `[Toggle(KW)]` (or `UPPER(prop)_ON`): on when |value| > 0.001.
     Toggle(String),
@@ -57,8 +58,9 @@ impl KeywordDrawer {
     }
 }
 
-/// Names Unity's `[Enum(Type)]` drawers know, with their values.
-const UNITY_ENUMS: &[(&str, &[(&str, f64)])] = &[
+/// Names Unity's `[Enum(Type)]` drawers know, with their values: what a `[_Property]` in render
+/// state holds.
+pub const UNITY_ENUMS: &[(&str, &[(&str, f64)])] = &[
     (
         "UnityEngine.Rendering.BlendMode",
         &[
@@ -90,7 +92,30 @@ const UNITY_ENUMS: &[(&str, &[(&str, f64)])] = &[
             ("Always", 8.0),
         ],
     ),
+    (
+        "UnityEngine.Rendering.BlendOp",
+        &[("Add", 0.0), ("Subtract", 1.0), ("ReverseSubtract", 2.0), ("Min", 3.0), ("Max", 4.0)],
+    ),
+    (
+        "UnityEngine.Rendering.StencilOp",
+        &[
+            ("Keep", 0.0),
+            ("Zero", 1.0),
+            ("Replace", 2.0),
+            ("IncrementSaturate", 3.0),
+            ("DecrementSaturate", 4.0),
+            ("Invert", 5.0),
+            ("IncrementWrap", 6.0),
+            ("DecrementWrap", 7.0),
+        ],
+    ),
 ];
+
+/// The name `value` has in one of [`UNITY_ENUMS`] (`"UnityEngine.Rendering.BlendMode"`).
+pub fn unity_enum_name(ty: &str, value: f64) -> Option<&'static str> {
+    let (_, pairs) = UNITY_ENUMS.iter().find(|(t, _)| *t == ty)?;
+    pairs.iter().find(|(_, v)| *v == value.round()).map(|(name, _)| *name)
+}
 
 /// The name a property's `[Enum]` or `[KeywordEnum]` drawer gives `value`, if any.
 pub fn enum_name(shader: &crate::shaderlab::ast::Shader, property: &str, value: f64) -> Option<String> {

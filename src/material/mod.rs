@@ -5,7 +5,7 @@ mod drawer;
 mod error;
 pub mod preset;
 
-pub use drawer::{KeywordDrawer, enum_name, enum_names};
+pub use drawer::{KeywordDrawer, enum_name, enum_names, unity_enum_name};
 pub use error::MaterialError;
 pub use preset::Preset;
 

@@ -15,6 +15,11 @@ pub const SCHEMA_VERSION: u32 = 4;
 /// The manifest's file name, at the top of the output folder.
 pub const FILE_NAME: &str = "manifest.json";
 
+/// Left in the output folder by `kiln watch` while the project's last build failed (the
+/// rendered diagnostics), and removed by the next good build: the runtime keeps its pipelines
+/// and reports them.
+pub const ERRORS_FILE: &str = "errors.txt";
+
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Manifest {
     pub schema_version: u32,
@@ -79,6 +84,36 @@ pub struct PropertyManifest {
     pub offset: Option<u32>,
     /// `[group, binding]` of a texture property's texture.
     pub binding: Option<[u32; 2]>,
+    /// The keywords its drawer enables (`[Toggle(_CLIPPING)]` is `{"toggle": "_CLIPPING"}`), so
+    /// that a material read at run time gets the same keywords the build gave it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub drawer: Option<crate::material::KeywordDrawer>,
+}
+
+/// `materials.json`, beside the manifest: every material the build resolved, as the build
+/// resolved it (defaults, then preset, then the file's values; keywords from drawers and the
+/// `keywords` list), for the run time to draw with.
+pub const MATERIALS_FILE: &str = "materials.json";
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct MaterialManifest {
+    /// The file name without extension.
+    pub name: String,
+    pub shader: String,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub preset: Option<String>,
+    pub render_queue: i64,
+    /// Enabled keywords, sorted.
+    pub keywords: Vec<String>,
+    /// Every property of the shader: a number, a vector, or a texture name.
+    pub values: std::collections::BTreeMap<String, serde_json::Value>,
+}
+
+impl MaterialManifest {
+    /// A number property's value (`None` for other kinds and unknown names).
+    pub fn number(&self, property: &str) -> Option<f64> {
+        self.values.get(property).and_then(serde_json::Value::as_f64)
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

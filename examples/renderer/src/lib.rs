@@ -17,6 +17,8 @@ pub mod blocks {
 }
 
 use kiln::reference as r;
+use kiln::reflect::Resource;
+use kiln::runtime::{Library, PipelineRequest, Runtime, Targets};
 pub use scene::Scene;
 use shaders::custom_rp_lit as lit;
 
@@ -182,43 +184,38 @@ pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
     Ok((device, queue, name))
 }
 
-fn layout_entries(pass: &shaders::Pass, group: u32) -> Vec<wgpu::BindGroupLayoutEntry> {
-    pass.layout
-        .iter()
-        .filter(|e| e.group == group)
-        .map(|e| {
-            let mut visibility = wgpu::ShaderStages::NONE;
-            if e.vertex {
-                visibility |= wgpu::ShaderStages::VERTEX;
-            }
-            if e.fragment {
-                visibility |= wgpu::ShaderStages::FRAGMENT;
-            }
-            let ty = match e.kind {
-                shaders::BindingKind::Uniform { size } => wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Uniform,
-                    has_dynamic_offset: false,
-                    min_binding_size: wgpu::BufferSize::new(size),
-                },
-                shaders::BindingKind::Texture { .. } => wgpu::BindingType::Texture {
-                    sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                    view_dimension: wgpu::TextureViewDimension::D2,
-                    multisampled: false,
-                },
-                shaders::BindingKind::Sampler { .. } => {
-                    wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering)
-                }
-                other => panic!("the Lit pass binds no {other:?}"),
-            };
-            wgpu::BindGroupLayoutEntry { binding: e.binding, visibility, ty, count: None }
-        })
-        .collect()
+/// The build the program embeds, as `kiln::runtime` reads it.
+pub fn library() -> Result<Library, String> {
+    Library::embedded(shaders::MANIFEST_JSON, shaders::MATERIALS_JSON, &shaders::PACKS)
+        .map_err(|e| e.to_string())
 }
 
-/// Renders the scene with the compiled Lit variants.
+/// The attachments the scene renders to.
+pub fn targets() -> Targets {
+    Targets {
+        colors: vec![wgpu::TextureFormat::Rgba8Unorm],
+        depth: Some(wgpu::TextureFormat::Depth32Float),
+        samples: 1,
+    }
+}
+
+/// Renders the scene with the compiled Lit variants and the embedded build's runtime.
 pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, scene: &Scene) -> Result<Image, String> {
+    let mut runtime = Runtime::new(device, library()?);
+    render_with(&mut runtime, device, queue, scene)
+}
+
+/// Renders the scene through a runtime: every layout, vertex buffer layout, render state and
+/// pipeline comes from it; the materials are the build's (`objectNN`, from `scene.toml`).
+pub fn render_with(
+    runtime: &mut Runtime,
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    scene: &Scene,
+) -> Result<Image, String> {
     use wgpu::util::DeviceExt;
-    let pass = &lit::PASS_0;
+    let layout = runtime.pass_layout(scene::SHADER, 0).map_err(|e| e.to_string())?;
+    let pass = runtime.library().pass(scene::SHADER, 0).map_err(|e| e.to_string())?.clone();
     let view = View::new(scene);
     let uniform = |contents: &[u8]| {
         device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -227,14 +224,6 @@ pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, scene: &Scene) -> Resu
             usage: wgpu::BufferUsages::UNIFORM,
         })
     };
-    let layouts: Vec<wgpu::BindGroupLayout> = (0..3)
-        .map(|g| {
-            device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-                label: None,
-                entries: &layout_entries(pass, g),
-            })
-        })
-        .collect();
     let white = device.create_texture_with_data(
         queue,
         &wgpu::TextureDescriptor {
@@ -273,11 +262,12 @@ pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, scene: &Scene) -> Resu
         let entries: Vec<wgpu::BindGroupEntry> = pass
             .layout
             .iter()
-            .filter(|e| e.group == group)
+            .filter(|g| g.group == group)
+            .flat_map(|g| &g.entries)
             .map(|e| {
-                let resource = match e.kind {
-                    shaders::BindingKind::Texture { .. } => wgpu::BindingResource::TextureView(&white_view),
-                    shaders::BindingKind::Sampler { .. } => wgpu::BindingResource::Sampler(&sampler),
+                let resource = match e.resource {
+                    Resource::Texture { .. } => wgpu::BindingResource::TextureView(&white_view),
+                    Resource::Sampler { .. } => wgpu::BindingResource::Sampler(&sampler),
                     _ => buffers
                         .iter()
                         .find(|(n, _)| *n == e.name)
@@ -289,18 +279,14 @@ pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, scene: &Scene) -> Resu
             .collect();
         device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: None,
-            layout: &layouts[group as usize],
+            layout: &layout.groups[group as usize],
             entries: &entries,
         })
     };
     let frame_group = bind(0, &[("UnityPerFrame", &frame_buffers[0]), ("_CustomLight", &frame_buffers[1])]);
 
-    let layout_refs: Vec<Option<&wgpu::BindGroupLayout>> = layouts.iter().map(Some).collect();
-    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-        label: None,
-        bind_group_layouts: &layout_refs,
-        immediate_size: 0,
-    });
+    // The runtime's default vertex packing of the pass's inputs (position, normal, uv) is the
+    // mesh's interleaving.
     let (vertices, indices) = sphere_mesh(96, 192);
     let vertex_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: None,
@@ -314,13 +300,14 @@ pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, scene: &Scene) -> Resu
     });
 
     let size = wgpu::Extent3d { width: scene.width, height: scene.height, depth_or_array_layers: 1 };
+    let targets = targets();
     let target = device.create_texture(&wgpu::TextureDescriptor {
         label: Some("colour"),
         size,
         mip_level_count: 1,
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba8Unorm,
+        format: targets.colors[0],
         usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
         view_formats: &[],
     });
@@ -337,76 +324,34 @@ pub fn render(device: &wgpu::Device, queue: &wgpu::Queue, scene: &Scene) -> Resu
     let (target_view, depth_view) =
         (target.create_view(&Default::default()), depth.create_view(&Default::default()));
 
-    // Per object: its pipeline (variant + render state) and bind groups.
+    // Per object: its pipeline (variant + the material's render state) and bind groups.
     let mut draws = Vec::new();
     for index in draw_order(scene) {
         let object = &scene.objects[index];
-        let m = &object.material;
-        let keywords = [m.keywords(), scene.global_keywords()].concat();
-        let variant = pass.variant(&keywords).map_err(|e| e.to_string())?;
-        let (vertex, fragment) =
-            (variant.vertex.as_ref().expect("vertex"), variant.fragment.as_ref().expect("fragment"));
-        let module = |wgsl: &str| {
-            device.create_shader_module(wgpu::ShaderModuleDescriptor {
-                label: None,
-                source: wgpu::ShaderSource::Wgsl(wgsl.into()),
-            })
+        let material =
+            runtime.library().material(&format!("object{index:02}")).map_err(|e| e.to_string())?.clone();
+        let keywords: Vec<&str> =
+            material.keywords.iter().map(String::as_str).chain(scene.global_keywords()).collect();
+        let request = PipelineRequest {
+            shader: scene::SHADER,
+            pass: 0,
+            keywords: &keywords,
+            material: &material,
+            targets: &targets,
+            vertex_layout: None,
         };
-        let (vertex_module, fragment_module) = (module(vertex.wgsl), module(fragment.wgsl));
-        let attributes = [
-            wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 0, shader_location: 0 },
-            wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x3, offset: 12, shader_location: 1 },
-            wgpu::VertexAttribute { format: wgpu::VertexFormat::Float32x2, offset: 24, shader_location: 2 },
-        ];
-        let blend = if m.premultiplies() {
-            Some(wgpu::BlendState::PREMULTIPLIED_ALPHA_BLENDING)
-        } else if m.blends() {
-            Some(wgpu::BlendState::ALPHA_BLENDING)
-        } else {
-            None
-        };
-        let label = variant.keywords().join(" ");
-        let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(&label),
-            layout: Some(&pipeline_layout),
-            vertex: wgpu::VertexState {
-                module: &vertex_module,
-                entry_point: Some(vertex.entry_point),
-                compilation_options: Default::default(),
-                buffers: &[Some(wgpu::VertexBufferLayout {
-                    array_stride: 32,
-                    step_mode: wgpu::VertexStepMode::Vertex,
-                    attributes: &attributes,
-                })],
-            },
-            primitive: wgpu::PrimitiveState { cull_mode: Some(wgpu::Face::Back), ..Default::default() },
-            depth_stencil: Some(wgpu::DepthStencilState {
-                format: wgpu::TextureFormat::Depth32Float,
-                depth_write_enabled: Some(!m.blends()),
-                depth_compare: Some(wgpu::CompareFunction::LessEqual),
-                stencil: Default::default(),
-                bias: Default::default(),
-            }),
-            multisample: Default::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: &fragment_module,
-                entry_point: Some(fragment.entry_point),
-                compilation_options: Default::default(),
-                targets: &[Some(wgpu::ColorTargetState {
-                    format: wgpu::TextureFormat::Rgba8Unorm,
-                    blend,
-                    write_mask: wgpu::ColorWrites::ALL,
-                })],
-            }),
-            multiview_mask: None,
-            cache: None,
-        });
+        let pipeline = runtime.pipeline(&request).map_err(|e| e.to_string())?;
+        let number = |name: &str| material.number(name).unwrap_or_default() as f32;
+        let color = material
+            .values
+            .get("_BaseColor")
+            .and_then(|v| serde_json::from_value::<[f32; 4]>(v.clone()).ok());
         let material = lit::LitMaterial {
             _BaseMap_ST: [1.0, 1.0, 0.0, 0.0],
-            _BaseColor: to_f32(m.color),
-            _Cutoff: m.cutoff as f32,
-            _Metallic: m.metallic as f32,
-            _Smoothness: m.smoothness as f32,
+            _BaseColor: color.ok_or("the material has no `_BaseColor`")?,
+            _Cutoff: number("_Cutoff"),
+            _Metallic: number("_Metallic"),
+            _Smoothness: number("_Smoothness"),
             ..bytemuck::Zeroable::zeroed()
         };
         let (p, s) = (object.position, object.radius);

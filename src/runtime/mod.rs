@@ -1,0 +1,259 @@
+//! From a built variant to a frame: the layer over the manifest and the generated module that
+//! gives a wgpu renderer its bind group and pipeline layouts, vertex buffer layouts, each
+//! material's render state and its pipelines (each created once), loads a build from an output
+//! folder and swaps in a newer one, and records which variants a scene asked for.
+//!
+//! Behind the `wgpu` feature; the compiler stages never import it.
+
+mod layout;
+mod pipelines;
+mod state;
+
+pub use layout::{PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
+pub use pipelines::{PipelineRequest, Reload, Runtime, Targets, UsageLog};
+pub use state::{MAX_TARGETS, RenderState, StateError, TargetState, resolve as resolve_render_state};
+
+use crate::reflect::manifest::{
+    FILE_NAME, MATERIALS_FILE, Manifest, MaterialManifest, ModuleFile, PassManifest, ShaderManifest,
+    VariantManifest,
+};
+use std::borrow::Cow;
+use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::path::{Path, PathBuf};
+
+/// Why the runtime could not do what was asked.
+#[derive(Debug, thiserror::Error)]
+pub enum RuntimeError {
+    #[error("cannot read the build at `{path}`: {message}")]
+    Read { path: PathBuf, message: String },
+    #[error("no shader `{0}` in the build")]
+    NoShader(String),
+    #[error("`{shader}` has no pass {pass} in the build")]
+    NoPass { shader: String, pass: usize },
+    #[error(
+        "`{shader}` pass {pass} has no variant with keywords [{}] in the build (add a material that uses it, or log usage and build with `--variants-from`)",
+        keywords.join(", ")
+    )]
+    MissingVariant { shader: String, pass: usize, keywords: Vec<String> },
+    #[error("no material `{0}` in the build")]
+    NoMaterial(String),
+    #[error("material: {0}")]
+    Material(String),
+    #[error("render state of `{shader}` pass {pass}: {error}")]
+    State { shader: String, pass: usize, error: StateError },
+    #[error("`{shader}` pass {pass}: {message}")]
+    Layout { shader: String, pass: usize, message: String },
+    #[error("the build failed; the last good pipelines stay in use:\n{0}")]
+    BuildFailed(String),
+}
+
+/// A build as the runtime reads it: the manifest, the packs its modules are in, and the resolved
+/// materials; from an output folder or from the generated module.
+#[derive(Debug)]
+pub struct Library {
+    manifest: Manifest,
+    packs: HashMap<String, Cow<'static, [u8]>>,
+    materials: Vec<MaterialManifest>,
+    /// Per pass (shader index, pass position): its variants by keyword set.
+    variants: HashMap<(usize, usize), HashMap<BTreeSet<String>, usize>>,
+}
+
+impl Library {
+    /// The build in an output folder (`kiln build`'s, or `kiln watch`'s).
+    pub fn open(output: &Path) -> Result<Library, RuntimeError> {
+        let read = |name: &str| {
+            let path = output.join(name);
+            std::fs::read(&path).map_err(|e| RuntimeError::Read { path, message: e.to_string() })
+        };
+        let manifest: Manifest = serde_json::from_slice(&read(FILE_NAME)?)
+            .map_err(|e| RuntimeError::Read { path: output.join(FILE_NAME), message: e.to_string() })?;
+        let materials = serde_json::from_slice(&read(MATERIALS_FILE)?)
+            .map_err(|e| RuntimeError::Read { path: output.join(MATERIALS_FILE), message: e.to_string() })?;
+        let mut packs = HashMap::new();
+        for path in manifest.packs().into_keys() {
+            let bytes = read(&path)?;
+            packs.insert(path, Cow::Owned(bytes));
+        }
+        Ok(Library::new(manifest, materials, packs))
+    }
+
+    /// The build a generated module embeds: `Library::embedded(shaders::MANIFEST_JSON,
+    /// shaders::MATERIALS_JSON, &shaders::PACKS)`.
+    pub fn embedded(
+        manifest: &str,
+        materials: &str,
+        packs: &[(&str, &'static [u8])],
+    ) -> Result<Library, RuntimeError> {
+        let embedded = |what: &str, e: serde_json::Error| RuntimeError::Read {
+            path: PathBuf::from(format!("<embedded {what}>")),
+            message: e.to_string(),
+        };
+        let manifest = serde_json::from_str(manifest).map_err(|e| embedded(FILE_NAME, e))?;
+        let materials = serde_json::from_str(materials).map_err(|e| embedded(MATERIALS_FILE, e))?;
+        let packs = packs.iter().map(|(path, bytes)| (path.to_string(), Cow::Borrowed(*bytes))).collect();
+        Ok(Library::new(manifest, materials, packs))
+    }
+
+    fn new(
+        manifest: Manifest,
+        materials: Vec<MaterialManifest>,
+        packs: HashMap<String, Cow<'static, [u8]>>,
+    ) -> Library {
+        let mut variants = HashMap::new();
+        for (s, shader) in manifest.shaders.iter().enumerate() {
+            for (p, pass) in shader.passes.iter().enumerate() {
+                let by_keywords = pass
+                    .variants
+                    .iter()
+                    .enumerate()
+                    .map(|(v, variant)| (variant.keywords.iter().cloned().collect(), v));
+                variants.insert((s, p), by_keywords.collect());
+            }
+        }
+        Library { manifest, packs, materials, variants }
+    }
+
+    pub fn manifest(&self) -> &Manifest {
+        &self.manifest
+    }
+
+    /// Every resolved material of the build, in the build's order.
+    pub fn materials(&self) -> &[MaterialManifest] {
+        &self.materials
+    }
+
+    pub fn material(&self, name: &str) -> Result<&MaterialManifest, RuntimeError> {
+        self.materials
+            .iter()
+            .find(|m| m.name == name)
+            .ok_or_else(|| RuntimeError::NoMaterial(name.to_string()))
+    }
+
+    fn shader_index(&self, name: &str) -> Result<usize, RuntimeError> {
+        self.manifest
+            .shaders
+            .iter()
+            .position(|s| s.name == name)
+            .ok_or_else(|| RuntimeError::NoShader(name.to_string()))
+    }
+
+    pub fn shader(&self, name: &str) -> Result<&ShaderManifest, RuntimeError> {
+        Ok(&self.manifest.shaders[self.shader_index(name)?])
+    }
+
+    /// A shader's pass by its index (`PassManifest::index`, as `PASS_0` of the generated module).
+    pub fn pass(&self, shader: &str, pass: usize) -> Result<&PassManifest, RuntimeError> {
+        let (s, p) = self.pass_position(shader, pass)?;
+        Ok(&self.manifest.shaders[s].passes[p])
+    }
+
+    fn pass_position(&self, shader: &str, pass: usize) -> Result<(usize, usize), RuntimeError> {
+        let s = self.shader_index(shader)?;
+        let p = self.manifest.shaders[s].passes.iter().position(|p| p.index == pass);
+        Ok((s, p.ok_or_else(|| RuntimeError::NoPass { shader: shader.to_string(), pass })?))
+    }
+
+    /// The variant built with exactly these keywords (any order): strict, never a near match.
+    pub fn variant(
+        &self,
+        shader: &str,
+        pass: usize,
+        keywords: &[&str],
+    ) -> Result<&VariantManifest, RuntimeError> {
+        let (s, p) = self.pass_position(shader, pass)?;
+        let wanted: BTreeSet<String> = keywords.iter().map(|k| k.to_string()).collect();
+        let found = self.variants[&(s, p)].get(&wanted);
+        let missing = || RuntimeError::MissingVariant {
+            shader: shader.to_string(),
+            pass,
+            keywords: wanted.iter().cloned().collect(),
+        };
+        found.map(|&v| &self.manifest.shaders[s].passes[p].variants[v]).ok_or_else(missing)
+    }
+
+    /// A module's bytes, from its pack.
+    pub fn bytes(&self, pass: &PassManifest, file: &ModuleFile) -> Option<&[u8]> {
+        let pack = self.packs.get(pass.packs.get(file.pack)?)?;
+        pack.get(file.offset as usize..(file.offset + file.size) as usize)
+    }
+
+    /// A material from a `.mat` file's text, resolved against this build's shader the way the
+    /// build resolves materials: defaults, then the preset, then the file's values; keywords from
+    /// the property drawers and the `keywords` list. Names and types are checked; keywords the
+    /// shader does not declare are refused.
+    pub fn load_material(&self, name: &str, text: &str) -> Result<MaterialManifest, RuntimeError> {
+        let error = |message: String| RuntimeError::Material(format!("{name}: {message}"));
+        let document: toml::Table = text.parse().map_err(|e: toml::de::Error| error(e.to_string()))?;
+        let shader_name = document
+            .get("shader")
+            .and_then(toml::Value::as_str)
+            .ok_or_else(|| error("it names no `shader`".into()))?;
+        let shader = self.shader(shader_name)?;
+        let mut values: BTreeMap<String, serde_json::Value> =
+            shader.properties.iter().map(|p| (p.name.clone(), p.default.clone())).collect();
+        let preset = match document.get("preset").and_then(toml::Value::as_str) {
+            Some(p) => Some(
+                crate::material::Preset::parse(p).ok_or_else(|| error(format!("unknown preset `{p}`")))?,
+            ),
+            None => None,
+        };
+        if let Some(preset) = preset {
+            for (property, value) in preset.values() {
+                if let Some(slot) = values.get_mut(property) {
+                    *slot = serde_json::json!(value);
+                }
+            }
+        }
+        if let Some(properties) = document.get("properties").and_then(toml::Value::as_table) {
+            for (property, value) in properties {
+                let slot = values
+                    .get_mut(property)
+                    .ok_or_else(|| error(format!("`{shader_name}` has no property `{property}`")))?;
+                let json = serde_json::to_value(value).map_err(|e| error(e.to_string()))?;
+                let same_kind = (slot.is_number() && json.is_number())
+                    || (slot.is_array() && json.is_array())
+                    || (slot.is_string() && json.is_string());
+                if !same_kind {
+                    return Err(error(format!("`{property}` takes a value like {slot}, not {json}")));
+                }
+                *slot = json;
+            }
+        }
+        let mut keywords: BTreeSet<String> = BTreeSet::new();
+        for property in &shader.properties {
+            let value = values.get(&property.name).and_then(serde_json::Value::as_f64);
+            if let (Some(drawer), Some(value)) = (&property.drawer, value)
+                && let Some(keyword) = drawer.keyword_for(value)
+            {
+                keywords.insert(keyword.to_string());
+            }
+        }
+        let listed = document.get("keywords").and_then(toml::Value::as_array).into_iter().flatten();
+        let declared: BTreeSet<&str> = shader
+            .passes
+            .iter()
+            .flat_map(|p| &p.keyword_sets)
+            .flat_map(|s| &s.keywords)
+            .map(String::as_str)
+            .collect();
+        for keyword in listed {
+            let keyword = keyword.as_str().ok_or_else(|| error("`keywords` holds strings".into()))?;
+            if !declared.contains(keyword) {
+                return Err(error(format!("`{shader_name}` declares no keyword `{keyword}`")));
+            }
+            keywords.insert(keyword.to_string());
+        }
+        let render_queue = match document.get("render_queue") {
+            Some(queue) => queue.as_integer().ok_or_else(|| error("`render_queue` is a number".into()))?,
+            None => preset.map_or(2000, |p| p.render_queue()),
+        };
+        Ok(MaterialManifest {
+            name: name.to_string(),
+            shader: shader_name.to_string(),
+            preset: preset.map(|p| p.name().to_string()),
+            render_queue,
+            keywords: keywords.into_iter().collect(),
+            values,
+        })
+    }
+}

@@ -1,0 +1,374 @@
+//! The pipeline cache: each pipeline created once, keyed by what makes it (its modules' bytes,
+//! the pass layout, the resolved render state, the targets, the vertex layout); reloading a
+//! build from its output folder; usage capture.
+
+use super::layout::{PassLayout, VertexLayout};
+use super::{Library, RuntimeError};
+use crate::reflect::manifest::{ERRORS_FILE, FILE_NAME, MaterialManifest};
+use std::collections::{HashMap, HashSet};
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// The attachments a pipeline renders to.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Targets {
+    pub colors: Vec<wgpu::TextureFormat>,
+    pub depth: Option<wgpu::TextureFormat>,
+    pub samples: u32,
+}
+
+/// What a draw needs a pipeline for.
+pub struct PipelineRequest<'a> {
+    pub shader: &'a str,
+    /// The pass's index (`PASS_0` in the generated module is 0).
+    pub pass: usize,
+    /// The variant: the material's keywords and the renderer's global ones.
+    pub keywords: &'a [&'a str],
+    /// Whose property values decide the render state (`Blend [_SrcBlend] [_DstBlend]`).
+    pub material: &'a MaterialManifest,
+    pub targets: &'a Targets,
+    /// `None`: [`VertexLayout::packed`] from the vertex stage's inputs.
+    pub vertex_layout: Option<&'a VertexLayout>,
+}
+
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+struct PipelineKey {
+    /// BLAKE3 of the vertex and fragment modules' WGSL.
+    modules: [Option<String>; 2],
+    layout: String,
+    state: super::RenderState,
+    targets: Targets,
+    vertex_layout: VertexLayout,
+}
+
+/// What [`Runtime::reload`] found.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Reload {
+    /// The folder holds the build in use.
+    Unchanged,
+    /// A new build is in use; this many cached pipelines used modules it no longer has (they are
+    /// created again, from the new modules, when next asked for).
+    Swapped { dropped_pipelines: usize },
+}
+
+/// Every (shader, pass, keywords) asked for, and separately those the build did not have, as JSON
+/// Lines (`{"shader": "Custom RP/Lit", "pass": 0, "keywords": ["_CLIPPING"]}`), each once, each
+/// written and flushed at once. `kiln build --variants-from FILE` builds exactly these.
+#[derive(Debug)]
+pub struct UsageLog {
+    requested: Option<std::fs::File>,
+    missing: Option<std::fs::File>,
+    seen: HashSet<(String, usize, Vec<String>, bool)>,
+}
+
+impl UsageLog {
+    /// Appends to these files (created when absent); either may be left out.
+    pub fn new(requested: Option<&Path>, missing: Option<&Path>) -> std::io::Result<UsageLog> {
+        let open = |path: &Path| std::fs::OpenOptions::new().create(true).append(true).open(path);
+        Ok(UsageLog {
+            requested: requested.map(open).transpose()?,
+            missing: missing.map(open).transpose()?,
+            seen: HashSet::new(),
+        })
+    }
+
+    fn record(&mut self, shader: &str, pass: usize, keywords: &[&str], missing: bool) {
+        let mut keywords: Vec<String> = keywords.iter().map(|k| k.to_string()).collect();
+        keywords.sort();
+        keywords.dedup();
+        let line = serde_json::json!({ "shader": shader, "pass": pass, "keywords": keywords }).to_string();
+        for (file, is_missing_log) in [(&mut self.requested, false), (&mut self.missing, true)] {
+            if is_missing_log && !missing {
+                continue;
+            }
+            let first = self.seen.insert((shader.to_string(), pass, keywords.clone(), is_missing_log));
+            if let (true, Some(file)) = (first, file.as_mut()) {
+                // A log that cannot be written must not stop a frame.
+                let _ = writeln!(file, "{line}").and_then(|()| file.flush());
+            }
+        }
+    }
+}
+
+/// A device's pipelines for one build, created once each and kept across reloads of unchanged
+/// modules.
+pub struct Runtime {
+    device: wgpu::Device,
+    library: Library,
+    /// The output folder the build came from, and its manifest's hash (for [`Runtime::reload`]).
+    source: Option<(PathBuf, blake3::Hash)>,
+    layouts: HashMap<String, Arc<PassLayout>>,
+    modules: HashMap<String, wgpu::ShaderModule>,
+    pipelines: HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>,
+    created: usize,
+    usage: Option<UsageLog>,
+    wgpu_cache: Option<wgpu::PipelineCache>,
+}
+
+impl Runtime {
+    /// A runtime over a build the program embeds (or any [`Library`]).
+    pub fn new(device: &wgpu::Device, library: Library) -> Runtime {
+        Runtime {
+            device: device.clone(),
+            library,
+            source: None,
+            layouts: HashMap::new(),
+            modules: HashMap::new(),
+            pipelines: HashMap::new(),
+            created: 0,
+            usage: None,
+            wgpu_cache: None,
+        }
+    }
+
+    /// A runtime over the build in an output folder, which [`Runtime::reload`] watches.
+    pub fn open(device: &wgpu::Device, output: &Path) -> Result<Runtime, RuntimeError> {
+        let hash = manifest_hash(output)?;
+        let mut runtime = Runtime::new(device, Library::open(output)?);
+        runtime.source = Some((output.to_path_buf(), hash));
+        Ok(runtime)
+    }
+
+    pub fn library(&self) -> &Library {
+        &self.library
+    }
+
+    /// Records every variant asked for (and those missing) from now on.
+    pub fn log_usage(&mut self, log: UsageLog) {
+        self.usage = Some(log);
+    }
+
+    /// Uses wgpu's pipeline cache, from `data` saved by [`Runtime::pipeline_cache_data`] on an
+    /// earlier run (`None` the first time). Returns false where the device lacks
+    /// `Features::PIPELINE_CACHE` (only Vulkan has it): pipelines are then created without one.
+    pub fn use_pipeline_cache(&mut self, data: Option<&[u8]>) -> bool {
+        if !self.device.features().contains(wgpu::Features::PIPELINE_CACHE) {
+            return false;
+        }
+        // SAFETY: `data` comes from `PipelineCache::get_data` of an earlier run (documented on this
+        // method), and `fallback` makes a driver that rejects it start empty instead.
+        let cache = unsafe {
+            self.device.create_pipeline_cache(&wgpu::PipelineCacheDescriptor {
+                label: Some("kiln"),
+                data,
+                fallback: true,
+            })
+        };
+        self.wgpu_cache = Some(cache);
+        true
+    }
+
+    /// The pipeline cache's data, to save (with `wgpu::util::pipeline_cache_key` naming the file)
+    /// and pass to [`Runtime::use_pipeline_cache`] next run.
+    pub fn pipeline_cache_data(&self) -> Option<Vec<u8>> {
+        self.wgpu_cache.as_ref().and_then(wgpu::PipelineCache::get_data)
+    }
+
+    /// How many pipelines this runtime has created.
+    pub fn pipelines_created(&self) -> usize {
+        self.created
+    }
+
+    /// The variant with exactly these keywords, recorded in the usage log.
+    pub fn variant(
+        &mut self,
+        shader: &str,
+        pass: usize,
+        keywords: &[&str],
+    ) -> Result<&crate::reflect::manifest::VariantManifest, RuntimeError> {
+        let found = self.library.variant(shader, pass, keywords);
+        if let Some(log) = &mut self.usage {
+            log.record(shader, pass, keywords, found.is_err());
+        }
+        found
+    }
+
+    /// The bind group and pipeline layouts of a pass.
+    pub fn pass_layout(&mut self, shader: &str, pass: usize) -> Result<Arc<PassLayout>, RuntimeError> {
+        let manifest = self.library.pass(shader, pass)?;
+        let key = serde_json::to_string(&manifest.layout).unwrap_or_default();
+        if let Some(layout) = self.layouts.get(&key) {
+            return Ok(layout.clone());
+        }
+        let layout = PassLayout::new(&self.device, &manifest.layout)
+            .map_err(|message| RuntimeError::Layout { shader: shader.to_string(), pass, message })?;
+        let layout = Arc::new(layout);
+        self.layouts.insert(key, layout.clone());
+        Ok(layout)
+    }
+
+    /// The pipeline for a draw, created the first time it is asked for.
+    pub fn pipeline(&mut self, request: &PipelineRequest) -> Result<Arc<wgpu::RenderPipeline>, RuntimeError> {
+        let (shader, pass_index) = (request.shader, request.pass);
+        let layout = self.pass_layout(shader, pass_index)?;
+        let variant = self.variant(shader, pass_index, request.keywords)?.clone();
+        let library = &self.library;
+        let pass = library.pass(shader, pass_index)?;
+        let layout_error =
+            |message: String| RuntimeError::Layout { shader: shader.to_string(), pass: pass_index, message };
+        let state = super::state::resolve(pass, &|property| request.material.number(property))
+            .map_err(|error| RuntimeError::State { shader: shader.to_string(), pass: pass_index, error })?;
+        let stages = pass.variant_stages(&variant);
+        let [Some(vertex), fragment] = stages else {
+            return Err(layout_error("the variant has no vertex stage".into()));
+        };
+        let vertex_layout = match request.vertex_layout {
+            Some(layout) => layout.clone(),
+            None => {
+                let inputs: Vec<(u32, String)> =
+                    vertex.interface.inputs.iter().map(|a| (a.location, a.format.clone())).collect();
+                VertexLayout::packed(&inputs).map_err(layout_error)?
+            }
+        };
+        let key = PipelineKey {
+            modules: [Some(&vertex), fragment.as_ref()]
+                .map(|s| s.and_then(|s| s.module.wgsl.as_ref()).map(|f| f.hash.clone())),
+            layout: serde_json::to_string(&pass.layout).unwrap_or_default(),
+            state,
+            targets: request.targets.clone(),
+            vertex_layout,
+        };
+        if let Some(pipeline) = self.pipelines.get(&key) {
+            return Ok(pipeline.clone());
+        }
+        let missing_feature =
+            vertex.module.features.iter().chain(fragment.iter().flat_map(|f| &f.module.features)).find(|f| {
+                f.as_str() == "shader-f16" && !self.device.features().contains(wgpu::Features::SHADER_F16)
+            });
+        if let Some(feature) = missing_feature {
+            return Err(layout_error(format!(
+                "the variant needs `{feature}`, which the device was not created with"
+            )));
+        }
+        let mut module = |stage: &crate::reflect::manifest::StageView| -> Result<(wgpu::ShaderModule, String), RuntimeError> {
+            let file = stage.module.wgsl.as_ref().ok_or_else(|| layout_error("the build has no WGSL for it".into()))?;
+            if let Some(module) = self.modules.get(&file.hash) {
+                return Ok((module.clone(), stage.interface.entry_point.clone()));
+            }
+            let bytes = library.bytes(pass, file).ok_or_else(|| layout_error("its module is missing from its pack".into()))?;
+            let text = std::str::from_utf8(bytes).map_err(|e| layout_error(e.to_string()))?;
+            let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some(&format!("{shader} {}", stage.interface.entry_point)),
+                source: wgpu::ShaderSource::Wgsl(text.into()),
+            });
+            self.modules.insert(file.hash.clone(), module.clone());
+            Ok((module, stage.interface.entry_point.clone()))
+        };
+        let (vertex_module, vertex_entry) = module(&vertex)?;
+        let fragment_module = fragment.as_ref().map(&mut module).transpose()?;
+        let targets: Vec<Option<wgpu::ColorTargetState>> = key
+            .targets
+            .colors
+            .iter()
+            .zip(&key.state.targets)
+            .map(|(&format, target)| {
+                Some(wgpu::ColorTargetState { format, blend: target.blend, write_mask: target.write_mask })
+            })
+            .collect();
+        let buffers = key.vertex_layout.wgpu();
+        let label = format!("{shader} pass {pass_index} [{}]", variant.keywords.join(" "));
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let pipeline = self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(&label),
+            layout: Some(&layout.pipeline),
+            vertex: wgpu::VertexState {
+                module: &vertex_module,
+                entry_point: Some(&vertex_entry),
+                compilation_options: Default::default(),
+                buffers: &buffers,
+            },
+            primitive: key.state.primitive(),
+            depth_stencil: key.targets.depth.map(|format| key.state.depth_stencil(format)),
+            multisample: wgpu::MultisampleState {
+                count: key.targets.samples,
+                mask: !0,
+                alpha_to_coverage_enabled: key.state.alpha_to_coverage,
+            },
+            fragment: fragment_module.as_ref().map(|(module, entry)| wgpu::FragmentState {
+                module,
+                entry_point: Some(entry),
+                compilation_options: Default::default(),
+                targets: &targets,
+            }),
+            multiview_mask: None,
+            cache: self.wgpu_cache.as_ref(),
+        });
+        if let Some(error) = pollster::block_on(scope.pop()) {
+            return Err(layout_error(format!("wgpu refused the pipeline: {error}")));
+        }
+        let pipeline = Arc::new(pipeline);
+        self.created += 1;
+        self.pipelines.insert(key, pipeline.clone());
+        Ok(pipeline)
+    }
+
+    /// Creates, ahead of the first frame, the pipeline of every pass each material's variant has
+    /// (with `global_keywords` added to its keywords). Returns how many exist afterwards, or every
+    /// request that failed.
+    pub fn warm_up(
+        &mut self,
+        materials: &[&MaterialManifest],
+        global_keywords: &[&str],
+        targets: &Targets,
+    ) -> Result<usize, Vec<RuntimeError>> {
+        let mut errors = Vec::new();
+        for material in materials {
+            let mut keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
+            let passes: Vec<usize> = match self.library.shader(&material.shader) {
+                Ok(shader) => shader.passes.iter().map(|p| p.index).collect(),
+                Err(error) => {
+                    errors.push(error);
+                    continue;
+                }
+            };
+            for pass in passes {
+                let declared: Vec<String> =
+                    self.library.pass(&material.shader, pass).map(|p| p.keywords.clone()).unwrap_or_default();
+                let globals = global_keywords.iter().filter(|k| declared.iter().any(|d| d == *k));
+                keywords.extend(globals);
+                let request = PipelineRequest {
+                    shader: &material.shader,
+                    pass,
+                    keywords: &keywords,
+                    material,
+                    targets,
+                    vertex_layout: None,
+                };
+                if let Err(error) = self.pipeline(&request) {
+                    errors.push(error);
+                }
+            }
+        }
+        if errors.is_empty() { Ok(self.pipelines.len()) } else { Err(errors) }
+    }
+
+    /// Loads the output folder's build if it changed since the one in use. A build that failed
+    /// (`kiln watch` leaves its diagnostics in the folder) is an error with those diagnostics,
+    /// and the build in use stays, with its pipelines.
+    pub fn reload(&mut self) -> Result<Reload, RuntimeError> {
+        let Some((output, current)) = self.source.clone() else { return Ok(Reload::Unchanged) };
+        if let Ok(errors) = std::fs::read_to_string(output.join(ERRORS_FILE)) {
+            return Err(RuntimeError::BuildFailed(errors));
+        }
+        let hash = manifest_hash(&output)?;
+        if hash == current {
+            return Ok(Reload::Unchanged);
+        }
+        let library = Library::open(&output)?;
+        let hashes: HashSet<String> = library.manifest().files().into_iter().map(|f| f.hash).collect();
+        let before = self.pipelines.len();
+        self.pipelines.retain(|key, _| key.modules.iter().flatten().all(|h| hashes.contains(h)));
+        self.modules.retain(|hash, _| hashes.contains(hash));
+        let dropped_pipelines = before - self.pipelines.len();
+        self.library = library;
+        self.source = Some((output, hash));
+        Ok(Reload::Swapped { dropped_pipelines })
+    }
+}
+
+fn manifest_hash(output: &Path) -> Result<blake3::Hash, RuntimeError> {
+    let path = output.join(FILE_NAME);
+    let bytes = std::fs::read(&path).map_err(|e| RuntimeError::Read { path, message: e.to_string() })?;
+    Ok(blake3::hash(&bytes))
+}
