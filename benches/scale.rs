@@ -119,6 +119,7 @@ fn kiln_build(project: &Path, output: &Path, write: bool) -> (kiln::compile::Bui
         threads: None,
         global_keywords: None,
         pretty_manifest: false,
+        variant_logs: Vec::new(),
     };
     let (result, diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");

@@ -125,6 +125,7 @@ impl Build {
             threads: self.threads,
             global_keywords: self.global_keywords,
             pretty_manifest: false,
+            variant_logs: Vec::new(),
         };
         let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
         problems.extend(result.diagnostics);

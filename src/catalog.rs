@@ -34,6 +34,8 @@ pub struct CatalogInput {
     /// The renderer's global keyword state, where the project knows it (`kiln.toml`'s
     /// `global_keywords`): multi_compile sets are built only with the option it chooses.
     pub global_keywords: Option<Vec<Spanned<String>>>,
+    /// Variant usage logs (JSON Lines): each variant they name is built too.
+    pub variant_logs: Vec<FileId>,
 }
 
 pub struct Catalog {
@@ -98,6 +100,70 @@ impl CatalogShader {
             _ => None,
         }
     }
+}
+
+/// Adds the variants a usage log names (one JSON object a line: `{"shader": "Custom RP/Lit",
+/// "pass": 0, "keywords": ["_CLIPPING"]}`) to the passes' variants, each exactly as logged; a
+/// line naming a shader, pass or keyword that does not exist is an error at that line.
+fn add_logged_variants(store: &SourceStore, log: FileId, shaders: &mut [CatalogShader]) -> Vec<Diagnostic> {
+    #[derive(serde::Deserialize)]
+    struct Logged {
+        shader: String,
+        pass: usize,
+        keywords: Vec<String>,
+    }
+    let mut diagnostics = Vec::new();
+    let text = store.text(log);
+    let mut start = 0;
+    for line in text.split_inclusive('\n') {
+        let span = Span::new(log, start..start + line.trim_end().len());
+        start += line.len();
+        if line.trim().is_empty() {
+            continue;
+        }
+        let error =
+            |code, message: String, label: &str| Diagnostic::error(code, message).at(span, label.to_string());
+        let logged: Logged = match serde_json::from_str(line) {
+            Ok(logged) => logged,
+            Err(e) => {
+                diagnostics.push(
+                    error("K0530", format!("malformed variant log line: {e}"), "not a variant")
+                        .help(r#"each line is {"shader": NAME, "pass": INDEX, "keywords": [...]}"#),
+                );
+                continue;
+            }
+        };
+        let Some(shader) = shaders.iter_mut().find(|s| s.shader.name.value == logged.shader) else {
+            diagnostics.push(error(
+                "K0531",
+                format!("no shader named `{}` in the project", logged.shader),
+                "logged here",
+            ));
+            continue;
+        };
+        let program = shader
+            .passes
+            .iter_mut()
+            .filter(|p| p.index == logged.pass)
+            .find_map(|p| p.program.as_mut().filter(|program| program.wgsl.is_some()));
+        let Some(program) = program else {
+            let message = format!("`{}` has no WGSL pass {}", logged.shader, logged.pass);
+            diagnostics.push(error("K0532", message, "logged here"));
+            continue;
+        };
+        match crate::keywords::select_variant(program.keywords.sets(), &logged.keywords) {
+            Ok(keywords) => {
+                let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
+                let variant = program.keywords.variant_of(&keywords);
+                if !program.variants.iter().any(|v| v.bits == variant.bits) {
+                    program.variants.push(variant);
+                    program.variants.sort_by(|a, b| a.choices.cmp(&b.choices));
+                }
+            }
+            Err(e) => diagnostics.push(error("K0533", e.to_string(), "logged here")),
+        }
+    }
+    diagnostics
 }
 
 /// Parses the shaders, loads their programs, resolves the materials and enumerates each pass's
@@ -208,6 +274,9 @@ pub fn catalog(
         })
         .collect();
     diagnostics.extend(enumerated.into_iter().flatten());
+    for &log in &input.variant_logs {
+        diagnostics.extend(add_logged_variants(store, log, &mut shaders));
+    }
     // Include blocks and files are shared by passes: report each of their problems once.
     diagnostics::dedup(&mut diagnostics);
     (Catalog { shaders, materials }, diagnostics)

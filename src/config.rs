@@ -29,6 +29,9 @@ pub struct ProjectConfig {
     pub global_keywords: Option<Vec<toml::Spanned<String>>>,
     /// Warnings count as errors.
     pub strict: bool,
+    /// Variant usage logs (JSON Lines, as `kiln::runtime::UsageLog` writes them): the variants
+    /// they name are built besides those the materials use.
+    pub variant_logs: Vec<PathBuf>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -49,6 +52,7 @@ impl Default for ProjectConfig {
             always_include: Vec::new(),
             global_keywords: None,
             strict: false,
+            variant_logs: Vec::new(),
         }
     }
 }
@@ -62,7 +66,7 @@ pub fn parse_config(store: &SourceStore, file: FileId) -> (ProjectConfig, Vec<Di
             let message = error.message().trim().trim_end_matches('.').to_string();
             let diagnostic = Diagnostic::error("K0003", "invalid `kiln.toml`")
                 .at(span, message)
-                .help("fields are shaders, materials, include_paths, output, backends, always_include, global_keywords and strict (docs/project.md)");
+                .help("fields are shaders, materials, include_paths, output, backends, always_include, global_keywords, strict and variant_logs (docs/project.md)");
             (ProjectConfig::default(), vec![diagnostic])
         }
     }

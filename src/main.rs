@@ -58,6 +58,21 @@ enum Command {
         /// Write `manifest.json` indented, for reading (default: compact).
         #[arg(long)]
         pretty: bool,
+        /// Also build the variants a usage log names (JSON Lines, as `kiln::runtime::UsageLog`
+        /// writes them). Repeatable.
+        #[arg(long = "variants-from", value_name = "FILE")]
+        variants_from: Vec<PathBuf>,
+    },
+    /// Build, then rebuild on every change to a file the build read (or a new file where it
+    /// looks), printing diagnostics and a summary line per build. A failed build leaves its
+    /// diagnostics in the output folder for a running program (`kiln::runtime`) to report.
+    Watch {
+        /// The project folder (default: the bundled example project).
+        project: Option<PathBuf>,
+        #[arg(long)]
+        output: Option<PathBuf>,
+        #[arg(long = "variants-from", value_name = "FILE")]
+        variants_from: Vec<PathBuf>,
     },
     /// Validate without writing anything: used variants, and for shaders no material uses, the
     /// default variant and each keyword on its own. Exit 1 on any error.
@@ -134,7 +149,7 @@ fn main() -> ExitCode {
             };
             preprocess(&VariantRequest { shader, pass, keywords, stage })
         }
-        Command::Build { project, threads, output, pretty } => {
+        Command::Build { project, threads, output, pretty, variants_from } => {
             let mode = BuildMode {
                 write: true,
                 output,
@@ -142,8 +157,21 @@ fn main() -> ExitCode {
                 threads,
                 global_keywords: None,
                 pretty_manifest: pretty,
+                variant_logs: variants_from,
             };
             build(project, mode, Format::Text)
+        }
+        Command::Watch { project, output, variants_from } => {
+            let mode = BuildMode {
+                write: true,
+                output,
+                unused_shaders: VariantSelection::Used,
+                threads: None,
+                global_keywords: None,
+                pretty_manifest: false,
+                variant_logs: variants_from,
+            };
+            watch(project.unwrap_or_else(kiln::project::bundled_example), &mode)
         }
         Command::Check { project, format, all_variants } => {
             let unused_shaders = if all_variants {
@@ -160,6 +188,7 @@ fn main() -> ExitCode {
                     threads: None,
                     global_keywords: None,
                     pretty_manifest: false,
+                    variant_logs: Vec::new(),
                 },
                 format,
             )
@@ -250,24 +279,88 @@ fn build(project: Option<PathBuf>, mode: BuildMode, format: Format) -> ExitCode 
         return exit_code(&problems);
     }
     report(&store, &problems);
-    let s = &result.summary;
-    let verb = if mode.write { "built" } else { "checked" };
+    print_summary(&result.summary, mode.write, diagnostics::has_errors(&problems));
+    exit_code(&problems)
+}
+
+/// The closing line of a build (and the note about skipped shaders).
+fn print_summary(s: &kiln::compile::BuildSummary, write: bool, errors: bool) {
+    let verb = if write { "built" } else { "checked" };
     let mut line = format!(
         "{verb} {} shaders, {} passes, {} variants: {} stage modules ({} compiled, {} reused from cache)",
         s.shaders, s.passes, s.variants, s.modules, s.compiled, s.reused
     );
-    if mode.write {
+    if write {
         line.push_str(&format!(", {} bytes written", s.bytes_written));
     }
     line.push_str(&format!(" in {:.2} s", s.elapsed.as_secs_f64()));
-    if diagnostics::has_errors(&problems) {
+    if errors {
         line.push_str(", with errors");
     }
     eprintln!("{line}");
     if !s.unused.is_empty() {
         eprintln!("{}", unused_hint(&s.unused, verb));
     }
-    exit_code(&problems)
+}
+
+/// `kiln watch`: builds, then rebuilds whenever a file changes in the project folder or in a
+/// folder the build read from (include paths, shared libraries), except the output folder.
+fn watch(project: PathBuf, mode: &BuildMode) -> ExitCode {
+    use notify::Watcher as _;
+    let (sender, events) = std::sync::mpsc::channel();
+    let mut watcher = match notify::recommended_watcher(sender) {
+        Ok(watcher) => watcher,
+        Err(error) => return usage_failure(&format!("cannot watch files: {error}")),
+    };
+    let mut watched = std::collections::HashSet::new();
+    loop {
+        let mut store = SourceStore::new();
+        let output = match kiln::project::watch_build(&mut store, std::slice::from_ref(&project), mode) {
+            Ok((result, mut problems)) => {
+                problems.extend(result.diagnostics);
+                report(&store, &problems);
+                print_summary(&result.summary, true, diagnostics::has_errors(&problems));
+                result.output
+            }
+            Err(error) => {
+                eprintln!("error: {error}");
+                PathBuf::new()
+            }
+        };
+        let canonical = |path: PathBuf| std::fs::canonicalize(&path).unwrap_or(path);
+        let (output, root) = (canonical(output), canonical(project.clone()));
+        // The project folder whole (a new shader or material anywhere in it counts), and the
+        // folders of every file read outside it.
+        let folders = store.files_read().filter_map(|f| f.parent().map(PathBuf::from)).map(canonical);
+        for folder in [root.clone()].into_iter().chain(folders.filter(|f| !f.starts_with(&root))) {
+            if watched.insert(folder.clone()) {
+                let mode = if folder == root {
+                    notify::RecursiveMode::Recursive
+                } else {
+                    notify::RecursiveMode::NonRecursive
+                };
+                if let Err(error) = watcher.watch(&folder, mode) {
+                    eprintln!("warning: cannot watch `{}`: {error}", folder.display());
+                }
+            }
+        }
+        eprintln!("watching for changes (ctrl-c to stop)");
+        // The build's own writes into the output folder are not changes to the project.
+        let relevant = |event: &notify::Event| {
+            let changes = event.kind.is_modify() || event.kind.is_create() || event.kind.is_remove();
+            changes && event.paths.iter().any(|p| !p.starts_with(&output))
+        };
+        loop {
+            match events.recv() {
+                Ok(Ok(event)) if relevant(&event) => break,
+                Ok(_) => continue,
+                Err(_) => return ExitCode::from(2),
+            }
+        }
+        // Editors write in several steps: wait for the burst to end.
+        std::thread::sleep(std::time::Duration::from_millis(150));
+        while events.try_recv().is_ok() {}
+    }
 }
 
 /// The note after a build that skipped shaders because no material uses them.

@@ -232,6 +232,8 @@ pub struct Workspace {
     /// `kiln.toml`'s `global_keywords`, gathered from every project folder that sets it.
     pub global_keywords: Option<Vec<Spanned<String>>>,
     pub strict: bool,
+    /// `kiln.toml`'s `variant_logs`, relative to the working folder.
+    pub variant_logs: Vec<PathBuf>,
 }
 
 impl Workspace {
@@ -243,6 +245,7 @@ impl Workspace {
             materials,
             always_include: self.always_include.clone(),
             global_keywords: self.global_keywords.clone(),
+            variant_logs: Vec::new(),
         }
     }
 }
@@ -298,6 +301,7 @@ pub fn open_workspace(
             workspace.backends = config.backends.clone();
         }
         workspace.always_include.extend(config.always_include);
+        workspace.variant_logs.extend(under(&config.variant_logs));
         workspace.strict |= config.strict;
         roots.push(path.clone());
     }
@@ -415,6 +419,9 @@ pub struct BuildMode {
     pub global_keywords: Option<Vec<String>>,
     /// Write `manifest.json` indented rather than compact.
     pub pretty_manifest: bool,
+    /// Variant usage logs whose variants are built too (`--variants-from`), besides the
+    /// project's `variant_logs`.
+    pub variant_logs: Vec<PathBuf>,
 }
 
 /// Builds (or checks) the projects and files at `paths`. `Err` only when a path does not exist.
@@ -431,6 +438,12 @@ pub fn build_project(
     let (materials, found) = load_files(store, &workspace.materials);
     diagnostics.extend(found);
     let mut input = workspace.catalog_input(shaders, materials);
+    for path in workspace.variant_logs.iter().chain(&mode.variant_logs) {
+        match store.load(path) {
+            Ok(file) => input.variant_logs.push(file),
+            Err(error) => diagnostics.push(load_error(&error)),
+        }
+    }
     if let Some(global) = &mode.global_keywords {
         input.global_keywords = Some(given_global_keywords(store, global));
     }
@@ -457,6 +470,32 @@ pub fn build_project(
     if workspace.strict {
         diagnostics::promote_warnings(&mut diagnostics);
     }
+    Ok((result, diagnostics))
+}
+
+/// One build of `kiln watch`: [`build_project`], and then, in the output folder, the rendered
+/// diagnostics of a build with errors ([`ERRORS_FILE`](crate::reflect::manifest::ERRORS_FILE)),
+/// removed again by a build without. A failed build writes nothing else, so a program running
+/// on the folder keeps the last good build and can say why the new one is not there.
+pub fn watch_build(
+    store: &mut SourceStore,
+    paths: &[PathBuf],
+    mode: &BuildMode,
+) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
+    let (result, diagnostics) = build_project(store, paths, mode, &|_, _| {})?;
+    let errors_file = result.output.join(crate::reflect::manifest::ERRORS_FILE);
+    let all: Vec<Diagnostic> = diagnostics.iter().chain(&result.diagnostics).cloned().collect();
+    let written = if diagnostics::has_errors(&all) {
+        std::fs::create_dir_all(&result.output).and_then(|()| {
+            crate::compile::write_atomically(&errors_file, diagnostics::render_plain(store, &all).as_bytes())
+        })
+    } else {
+        match std::fs::remove_file(&errors_file) {
+            Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(e),
+            _ => Ok(()),
+        }
+    };
+    written.map_err(|source| ProjectError::Write { path: errors_file, source })?;
     Ok((result, diagnostics))
 }
 

@@ -355,8 +355,8 @@ pub fn device() -> Result<Gpu, String> {
     }))
     .map_err(|e| format!("no GPU adapter ({e})"))?;
     let info = adapter.get_info();
-    let required_features =
-        adapter.features() & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::SHADER_F16);
+    let required_features = adapter.features()
+        & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::SHADER_F16 | wgpu::Features::PIPELINE_CACHE);
     let (device, queue) = pollster::block_on(
         adapter.request_device(&wgpu::DeviceDescriptor { required_features, ..Default::default() }),
     )

@@ -81,6 +81,8 @@ pub struct BuildResult {
     pub manifest: Option<Manifest>,
     pub summary: BuildSummary,
     pub diagnostics: Vec<Diagnostic>,
+    /// The output folder (written or not).
+    pub output: std::path::PathBuf,
 }
 
 /// One distinct stage module of a pass.
@@ -249,7 +251,7 @@ fn build_in_pool(
             absent: absent.into_iter().collect(),
         });
     }
-    BuildResult { manifest: Some(manifest), summary, diagnostics }
+    BuildResult { manifest: Some(manifest), summary, diagnostics, output: options.output.clone() }
 }
 
 /// A file's name as the build records it: relative to the project folder for files read from
@@ -371,7 +373,7 @@ pub fn unchanged(store: &SourceStore, options: &BuildOptions) -> Option<BuildRes
         elapsed: started.elapsed(),
         ..BuildSummary::default()
     };
-    Some(BuildResult { summary, manifest: None, diagnostics: Vec::new() })
+    Some(BuildResult { summary, manifest: None, diagnostics: Vec::new(), output: options.output.clone() })
 }
 
 /// One layout for a pass from the resources of all its modules, or the reasons there is none

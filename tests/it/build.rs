@@ -35,6 +35,7 @@ fn build_with(
         threads,
         global_keywords: None,
         pretty_manifest,
+        variant_logs: Vec::new(),
     };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from(project)], &mode, &|_, _| {}).expect("project exists");
@@ -228,6 +229,7 @@ fn every_bad_build_input_has_a_pinned_diagnostic() {
             threads: Some(1),
             global_keywords: None,
             pretty_manifest: false,
+            variant_logs: Vec::new(),
         };
         let (result, mut diagnostics) =
             build_project(&mut store, std::slice::from_ref(&path), &mode, &|_, _| {}).expect("exists");
@@ -335,6 +337,7 @@ fn an_always_included_shader_with_too_many_variants_is_refused_with_the_count() 
         threads: Some(1),
         global_keywords: None,
         pretty_manifest: false,
+        variant_logs: Vec::new(),
     };
     let path = PathBuf::from("fixtures/bad/always_include");
     let (result, mut diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
@@ -396,6 +399,7 @@ fn progress_counts_what_the_closing_line_counts() {
         threads: Some(2),
         global_keywords: None,
         pretty_manifest: false,
+        variant_logs: Vec::new(),
     };
     let mut store = SourceStore::new();
     let (result, _) =

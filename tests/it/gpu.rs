@@ -161,6 +161,7 @@ fn every_variant_makes_a_render_pipeline() {
         threads: None,
         global_keywords: None,
         pretty_manifest: false,
+        variant_logs: Vec::new(),
     };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from("fixtures/project")], &mode, &|_, _| {})

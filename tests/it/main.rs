@@ -12,6 +12,7 @@ mod materials;
 mod parse;
 mod preprocess;
 mod robustness;
+mod runtime;
 mod scale;
 mod support;
 mod tidy;

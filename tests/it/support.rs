@@ -141,6 +141,7 @@ pub fn build_without_errors(
         threads: None,
         global_keywords: None,
         pretty_manifest: false,
+        variant_logs: Vec::new(),
     };
     let (result, mut diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");

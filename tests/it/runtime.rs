@@ -1,0 +1,376 @@
+//! `kiln::runtime` on a real device (lavapipe in CI): pipelines for every variant and preset,
+//! render state from material properties checked in pixels and depth, hot reload of an output
+//! folder, and usage capture feeding `kiln build --variants-from`.
+
+use crate::support::{build_without_errors, gpu, kiln, root};
+use kiln::accuracy::gpu::Gpu;
+use kiln::compile::VariantSelection;
+use kiln::reflect::manifest::MaterialManifest;
+use kiln::runtime::{Library, PipelineRequest, Reload, Runtime, RuntimeError, Targets, UsageLog};
+use kiln::source::SourceStore;
+use std::path::Path;
+use wgpu::util::DeviceExt;
+
+const BACKGROUND: [f64; 4] = [0.0, 0.0, 1.0, 1.0];
+
+fn targets() -> Targets {
+    Targets {
+        colors: vec![wgpu::TextureFormat::Rgba8Unorm],
+        depth: Some(wgpu::TextureFormat::Depth32Float),
+        samples: 1,
+    }
+}
+
+/// Draws `Test/Blend` with a material over the background into a 4 x 4 target cleared to depth
+/// 1; returns the centre pixel and its depth.
+fn draw(
+    runtime: &mut Runtime,
+    gpu: &Gpu,
+    material: &MaterialManifest,
+    keywords: &[&str],
+) -> Result<([u8; 4], f32), RuntimeError> {
+    let targets = targets();
+    let request = PipelineRequest {
+        shader: "Test/Blend",
+        pass: 0,
+        keywords,
+        material,
+        targets: &targets,
+        vertex_layout: None,
+    };
+    let pipeline = runtime.pipeline(&request)?;
+    let device = &gpu.device;
+    let size = wgpu::Extent3d { width: 4, height: 4, depth_or_array_layers: 1 };
+    let texture = |format, usage| {
+        device.create_texture(&wgpu::TextureDescriptor {
+            label: None,
+            size,
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format,
+            usage: usage | wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        })
+    };
+    let color = texture(targets.colors[0], wgpu::TextureUsages::empty());
+    let depth = texture(wgpu::TextureFormat::Depth32Float, wgpu::TextureUsages::empty());
+    // One triangle over the whole target.
+    let vertices: [f32; 6] = [-1.0, -1.0, 3.0, -1.0, -1.0, 3.0];
+    let vertex_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: None,
+        contents: &vertices.iter().flat_map(|v| v.to_le_bytes()).collect::<Vec<u8>>(),
+        usage: wgpu::BufferUsages::VERTEX,
+    });
+    // Four rows of 256 bytes (the copy alignment); both formats have 4 bytes a pixel.
+    let readback = || {
+        device.create_buffer(&wgpu::BufferDescriptor {
+            label: None,
+            size: 256 * 4,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        })
+    };
+    let (color_out, depth_out) = (readback(), readback());
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let (color_view, depth_view) =
+            (color.create_view(&Default::default()), depth.create_view(&Default::default()));
+        let [r, g, b, a] = BACKGROUND;
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: None,
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &color_view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color { r, g, b, a }),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &depth_view,
+                depth_ops: Some(wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(1.0),
+                    store: wgpu::StoreOp::Store,
+                }),
+                stencil_ops: None,
+            }),
+            ..Default::default()
+        });
+        pass.set_pipeline(&pipeline);
+        pass.set_vertex_buffer(0, vertex_buffer.slice(..));
+        pass.draw(0..3, 0..1);
+    }
+    for (texture, buffer, aspect) in
+        [(&color, &color_out, wgpu::TextureAspect::All), (&depth, &depth_out, wgpu::TextureAspect::DepthOnly)]
+    {
+        encoder.copy_texture_to_buffer(
+            wgpu::TexelCopyTextureInfo { texture, mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect },
+            wgpu::TexelCopyBufferInfo {
+                buffer,
+                layout: wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(256),
+                    rows_per_image: None,
+                },
+            },
+            size,
+        );
+    }
+    gpu.queue.submit([encoder.finish()]);
+    for buffer in [&color_out, &depth_out] {
+        buffer.map_async(wgpu::MapMode::Read, .., |result| result.expect("maps"));
+    }
+    device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
+    // Pixel (2, 2): row 2 starts at 512.
+    let centre = 2 * 256 + 2 * 4;
+    let color_bytes = color_out.get_mapped_range(..).expect("mapped");
+    let depth_bytes = depth_out.get_mapped_range(..).expect("mapped");
+    let pixel = color_bytes[centre..centre + 4].try_into().expect("4 bytes");
+    let depth = f32::from_le_bytes(depth_bytes[centre..centre + 4].try_into().expect("4 bytes"));
+    Ok((pixel, depth))
+}
+
+fn built(project: &Path, output: &Path) {
+    build_without_errors(project, Some(output), VariantSelection::Used);
+}
+
+#[test]
+fn presets_blend_and_write_depth_as_their_properties_say() {
+    let Some(gpu) = gpu("the render state test") else { return };
+    let output = tempfile::tempdir().expect("temp dir");
+    built(&root().join("fixtures/runtime"), output.path());
+    let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
+    // The fragment is (1, 0.5, 0) with alpha 0.5 (premultiplied to (0.5, 0.25, 0) with
+    // _PREMULTIPLY_ALPHA), over blue (0, 0, 1), depth 0.5 against a cleared 1.
+    let cases = [
+        // Opaque: One Zero, ZWrite On.
+        ("Opaque", [1.0, 0.5, 0.0], 0.5),
+        // Fade: SrcAlpha OneMinusSrcAlpha, ZWrite Off.
+        ("Fade", [0.5, 0.25, 0.5], 1.0),
+        // Transparent: One OneMinusSrcAlpha over premultiplied colour, ZWrite Off.
+        ("Transparent", [0.5, 0.25, 0.5], 1.0),
+    ];
+    for (name, expected, expected_depth) in cases {
+        let material = runtime.library().material(name).expect("built material").clone();
+        let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
+        let (pixel, depth) = draw(&mut runtime, &gpu, &material, &keywords).expect("draws");
+        for (channel, want) in pixel.iter().zip(expected) {
+            assert!(
+                (f64::from(*channel) / 255.0 - want).abs() <= 1.5 / 255.0,
+                "{name}: {pixel:?}, expected {expected:?}"
+            );
+        }
+        assert_eq!(depth, expected_depth, "{name}: depth");
+    }
+    // A pipeline is created once per distinct (variant, state, targets): asking again reuses it.
+    let created = runtime.pipelines_created();
+    let opaque = runtime.library().material("Opaque").expect("material").clone();
+    draw(&mut runtime, &gpu, &opaque, &[]).expect("draws");
+    assert_eq!(runtime.pipelines_created(), created);
+}
+
+#[test]
+fn every_variant_and_preset_of_the_bundled_project_gets_a_pipeline() {
+    let Some(gpu) = gpu("the bundled project's pipelines") else { return };
+    let output = tempfile::tempdir().expect("temp dir");
+    build_without_errors(
+        &root().join("fixtures/project"),
+        Some(output.path()),
+        VariantSelection::All { limit: 4096 },
+    );
+    let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
+    // Saved wgpu pipeline cache data is reused where the backend has one (Vulkan).
+    let cached = runtime.use_pipeline_cache(None);
+    let library = runtime.library();
+    let mut requests = Vec::new();
+    // Variants whose modules are the same bytes share a pipeline (for one render state).
+    let mut module_pairs = std::collections::HashSet::new();
+    for shader in &library.manifest().shaders {
+        let presets: Vec<MaterialManifest> = ["Opaque", "Clip", "Fade", "Transparent"]
+            .iter()
+            .filter_map(|p| {
+                library.load_material(p, &format!("shader = {:?}\npreset = {p:?}\n", shader.name)).ok()
+            })
+            .chain(library.load_material("default", &format!("shader = {:?}\n", shader.name)).ok())
+            .collect();
+        assert!(!presets.is_empty(), "{}", shader.name);
+        for pass in &shader.passes {
+            for variant in &pass.variants {
+                module_pairs.insert((shader.name.clone(), pass.index, variant.vertex, variant.fragment));
+                for material in &presets {
+                    requests.push((
+                        shader.name.clone(),
+                        pass.index,
+                        variant.keywords.clone(),
+                        material.clone(),
+                    ));
+                }
+            }
+        }
+    }
+    let targets = targets();
+    for (shader, pass, keywords, material) in &requests {
+        let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
+        let request = PipelineRequest {
+            shader,
+            pass: *pass,
+            keywords: &keywords,
+            material,
+            targets: &targets,
+            vertex_layout: None,
+        };
+        runtime.pipeline(&request).unwrap_or_else(|e| panic!("{shader} {keywords:?} {}: {e}", material.name));
+    }
+    println!(
+        "{} requests, {} pipelines created on {} (wgpu pipeline cache: {cached})",
+        requests.len(),
+        runtime.pipelines_created(),
+        gpu.adapter
+    );
+    assert!(module_pairs.len() >= 10, "{module_pairs:?}");
+    assert!(runtime.pipelines_created() >= module_pairs.len(), "every distinct variant at least once");
+    if cached {
+        let data = runtime.pipeline_cache_data().expect("cache data");
+        let mut again = Runtime::open(&gpu.device, output.path()).expect("opens");
+        assert!(again.use_pipeline_cache(Some(&data)));
+    }
+}
+
+#[test]
+fn a_material_file_read_at_run_time_resolves_as_the_build_resolved_it() {
+    let output = tempfile::tempdir().expect("temp dir");
+    built(&root().join("fixtures/runtime"), output.path());
+    let library = Library::open(output.path()).expect("opens");
+    for name in ["Opaque", "Fade", "Transparent"] {
+        let text = std::fs::read_to_string(root().join(format!("fixtures/runtime/materials/{name}.mat")))
+            .expect("mat");
+        assert_eq!(
+            &library.load_material(name, &text).expect("resolves"),
+            library.material(name).expect("built")
+        );
+    }
+    let tinted =
+        library.load_material("t", "shader = \"Test/Blend\"\n[properties]\n_Tint = 1\n").expect("resolves");
+    assert_eq!(tinted.keywords, ["_TINT"]);
+    let wrong = library.load_material("w", "shader = \"Test/Blend\"\nkeywords = [\"_NOPE\"]\n");
+    assert!(wrong.expect_err("refused").to_string().contains("declares no keyword `_NOPE`"));
+    // The generated module embeds the same build.
+    let embedded = Library::embedded(
+        &std::fs::read_to_string(output.path().join("manifest.json")).expect("manifest"),
+        &std::fs::read_to_string(output.path().join("materials.json")).expect("materials"),
+        &[],
+    )
+    .expect("parses");
+    assert_eq!(embedded.materials(), library.materials());
+}
+
+#[test]
+fn a_running_program_swaps_in_a_rebuilt_shader_and_keeps_the_last_good_one_on_errors() {
+    let Some(gpu) = gpu("the hot reload test") else { return };
+    let project = tempfile::tempdir().expect("temp dir");
+    for name in ["kiln.toml", "Blend.shader", "materials/Opaque.mat"] {
+        let to = project.path().join(name);
+        std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
+        std::fs::copy(root().join("fixtures/runtime").join(name), to).expect("copy");
+    }
+    let output = project.path().join("out");
+    let mode = kiln::project::BuildMode {
+        write: true,
+        output: Some(output.clone()),
+        unused_shaders: VariantSelection::Used,
+        threads: None,
+        global_keywords: None,
+        pretty_manifest: false,
+        variant_logs: Vec::new(),
+    };
+    let rebuild = || {
+        let mut store = SourceStore::new();
+        kiln::project::watch_build(&mut store, &[project.path().to_path_buf()], &mode).expect("builds");
+    };
+    rebuild();
+    let mut runtime = Runtime::open(&gpu.device, &output).expect("opens");
+    let material = runtime.library().material("Opaque").expect("material").clone();
+    let (before, _) = draw(&mut runtime, &gpu, &material, &[]).expect("draws");
+    assert_eq!(before[0], 255);
+    assert_eq!(runtime.reload().expect("reloads"), Reload::Unchanged);
+
+    // An edit: the colour's red half as strong.
+    let shader = project.path().join("Blend.shader");
+    let text = std::fs::read_to_string(&shader).expect("shader");
+    std::fs::write(&shader, text.replace("vec4<f32>(1.0, 0.5, 0.0, 0.5)", "vec4<f32>(0.5, 0.5, 0.0, 0.5)"))
+        .expect("edit");
+    rebuild();
+    assert!(matches!(runtime.reload().expect("reloads"), Reload::Swapped { dropped_pipelines: 1 }));
+    let created = runtime.pipelines_created();
+    let (after, _) = draw(&mut runtime, &gpu, &material, &[]).expect("draws");
+    assert_eq!(runtime.pipelines_created(), created + 1, "a new pipeline for the new module");
+    assert!((i32::from(after[0]) - 128).abs() <= 1, "{after:?}");
+
+    // A broken edit: the error comes back with its place, and the last good pipeline stays.
+    std::fs::write(&shader, text.replace("return color;", "return colour;")).expect("edit");
+    rebuild();
+    let error = runtime.reload().expect_err("the build failed").to_string();
+    assert!(error.contains("Blend.shader:40:"), "{error}");
+    let (kept, _) = draw(&mut runtime, &gpu, &material, &[]).expect("draws");
+    assert_eq!(kept, after);
+    // Fixed again: the errors are gone and the fix is in.
+    std::fs::write(&shader, &text).expect("edit");
+    rebuild();
+    assert!(matches!(runtime.reload(), Ok(Reload::Swapped { .. })));
+    assert_eq!(draw(&mut runtime, &gpu, &material, &[]).expect("draws").0, before);
+}
+
+#[test]
+fn a_logged_missing_variant_is_built_by_variants_from() {
+    let Some(gpu) = gpu("the usage capture round trip") else { return };
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = dir.path().join("out");
+    built(&root().join("fixtures/runtime"), &output);
+    let (requested, missing) = (dir.path().join("requested.jsonl"), dir.path().join("missing.jsonl"));
+    let mut runtime = Runtime::open(&gpu.device, &output).expect("opens");
+    runtime.log_usage(UsageLog::new(Some(&requested), Some(&missing)).expect("log"));
+    let material = runtime.library().material("Opaque").expect("material").clone();
+    draw(&mut runtime, &gpu, &material, &[]).expect("draws");
+    let error = draw(&mut runtime, &gpu, &material, &["_TINT"]).expect_err("not built");
+    assert!(matches!(error, RuntimeError::MissingVariant { .. }), "{error}");
+    let missing_text = std::fs::read_to_string(&missing).expect("missing log");
+    assert_eq!(missing_text, "{\"keywords\":[\"_TINT\"],\"pass\":0,\"shader\":\"Test/Blend\"}\n");
+    assert_eq!(std::fs::read_to_string(&requested).expect("requested log").lines().count(), 2);
+
+    let project = root().join("fixtures/runtime");
+    let args = [
+        "build",
+        project.to_str().expect("utf-8"),
+        "--output",
+        output.to_str().expect("utf-8"),
+        "--variants-from",
+        missing.to_str().expect("utf-8"),
+    ];
+    let run = kiln(&args);
+    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+    assert!(matches!(runtime.reload(), Ok(Reload::Swapped { .. })));
+    let (pixel, _) = draw(&mut runtime, &gpu, &material, &["_TINT"]).expect("built now");
+    assert_eq!(pixel, [0, 255, 0, 128], "the _TINT variant's green, alpha written as is");
+
+    // A line naming what does not exist is an error at that line.
+    let bad = dir.path().join("bad.jsonl");
+    std::fs::write(&bad, "{\"shader\": \"Test/Blend\", \"pass\": 0, \"keywords\": []}\n{\"shader\": \"Test/Blend\", \"pass\": 0, \"keywords\": [\"_TINTED\"]}\n").expect("write");
+    let run = kiln(&[
+        "build",
+        project.to_str().expect("utf-8"),
+        "--output",
+        output.to_str().expect("utf-8"),
+        "--variants-from",
+        bad.to_str().expect("utf-8"),
+    ]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("error[K0533]")
+            && stderr.contains("bad.jsonl:2:1")
+            && stderr.contains("did you mean `_TINT`"),
+        "{stderr}"
+    );
+}
