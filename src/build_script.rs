@@ -29,6 +29,7 @@ pub struct Build {
     out_dir: Option<PathBuf>,
     threads: Option<usize>,
     global_keywords: Option<Vec<String>>,
+    variant_logs: Vec<PathBuf>,
 }
 
 /// What a build script gets back.
@@ -67,7 +68,13 @@ impl std::fmt::Debug for BuildError {
 impl Build {
     /// A build of the project folder (its `kiln.toml`, or the defaults).
     pub fn new(project: impl Into<PathBuf>) -> Build {
-        Build { paths: vec![project.into()], out_dir: None, threads: None, global_keywords: None }
+        Build {
+            paths: vec![project.into()],
+            out_dir: None,
+            threads: None,
+            global_keywords: None,
+            variant_logs: Vec::new(),
+        }
     }
 
     /// Also use the `.mat` files under this folder (a scene's materials, say).
@@ -93,6 +100,13 @@ impl Build {
     /// `["_SINGLE_DIRECTIONAL_LIGHT"]` and gets no variant with the general light loop.
     pub fn global_keywords<S: Into<String>>(mut self, keywords: impl IntoIterator<Item = S>) -> Build {
         self.global_keywords = Some(keywords.into_iter().map(Into::into).collect());
+        self
+    }
+
+    /// Also build the variants a usage log names (as `kiln::runtime::UsageLog` writes them, one
+    /// JSON object a line): what a scene asked for at run time that no material uses.
+    pub fn variant_log(mut self, file: impl Into<PathBuf>) -> Build {
+        self.variant_logs.push(file.into());
         self
     }
 
@@ -125,7 +139,7 @@ impl Build {
             threads: self.threads,
             global_keywords: self.global_keywords,
             pretty_manifest: false,
-            variant_logs: Vec::new(),
+            variant_logs: self.variant_logs,
         };
         let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
         problems.extend(result.diagnostics);

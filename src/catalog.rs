@@ -126,8 +126,11 @@ fn add_logged_variants(store: &SourceStore, log: FileId, shaders: &mut [CatalogS
         let logged: Logged = match serde_json::from_str(line) {
             Ok(logged) => logged,
             Err(e) => {
+                // serde counts lines and columns within the line; the label has the real place.
+                let message = e.to_string();
+                let message = message.split(" at line ").next().unwrap_or_default();
                 diagnostics.push(
-                    error("K0530", format!("malformed variant log line: {e}"), "not a variant")
+                    error("K0530", format!("malformed variant log line: {message}"), "not a variant")
                         .help(r#"each line is {"shader": NAME, "pass": INDEX, "keywords": [...]}"#),
                 );
                 continue;

@@ -349,6 +349,28 @@ fn an_always_included_shader_with_too_many_variants_is_refused_with_the_count() 
 }
 
 #[test]
+fn a_variant_log_line_that_names_nothing_is_an_error_at_its_line() {
+    let mut store = SourceStore::new();
+    let output = tempfile::tempdir().expect("temp dir");
+    let mode = BuildMode {
+        write: true,
+        output: Some(output.path().to_path_buf()),
+        unused_shaders: VariantSelection::Used,
+        threads: Some(1),
+        global_keywords: None,
+        pretty_manifest: false,
+        variant_logs: Vec::new(),
+    };
+    let path = PathBuf::from("fixtures/bad/variant_log");
+    let (result, diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
+    expect_file![root().join("fixtures/bad/variant_log/kiln.stderr")]
+        .assert_eq(&render_plain(&store, &diagnostics));
+    // The good lines still count: the logged variants are in the catalogue, nothing is written.
+    assert_eq!(result.summary.variants, 2);
+    assert!(!output.path().join("manifest.json").exists());
+}
+
+#[test]
 fn nested_uniform_and_storage_blocks_are_reflected_and_generated_in_full() {
     let output = tempfile::tempdir().expect("temp dir");
     let (result, mut diagnostics, store) = build_with("fixtures/blocks", output.path(), None, true);
@@ -430,4 +452,28 @@ fn a_build_that_skips_every_shader_says_which_and_how_to_build_them() {
     std::fs::write(project.path().join("U.mat"), "shader = \"Custom RP/Unlit\"\n").expect("write");
     let stderr = build();
     assert!(stderr.contains("built 1 shaders") && !stderr.contains("no material uses"), "{stderr}");
+}
+
+#[test]
+fn a_build_script_builds_the_variants_a_usage_log_names() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let log = dir.path().join("usage.jsonl");
+    std::fs::write(&log, "{\"shader\": \"Test/Blend\", \"pass\": 0, \"keywords\": [\"_TINT\"]}\n")
+        .expect("write");
+    let build = |with_log: bool| {
+        let mut build = kiln::Build::new(root().join("fixtures/runtime")).out_dir(dir.path().join("out"));
+        if with_log {
+            build = build.variant_log(&log);
+        }
+        build.execute().expect("builds")
+    };
+    let tinted = |output: &kiln::BuildOutput| {
+        output.manifest.passes().flat_map(|p| &p.variants).any(|v| v.keywords == ["_TINT"])
+    };
+    assert!(!tinted(&build(false)));
+    let output = build(true);
+    assert!(tinted(&output));
+    // The log is an input: a change to it reruns the build script.
+    let rerun = format!("cargo:rerun-if-changed={}", log.display());
+    assert!(output.cargo_lines.contains(&rerun), "{:?}", output.cargo_lines);
 }

@@ -1,13 +1,22 @@
 //! Renders the scene to `renderer.png` (and the CPU reference to `reference.png`) and prints how
 //! far apart they are. `cargo run --release -p kiln-renderer [-- OUTPUT.png]`.
+//!
+//! `-- --watch` is the hot-reload loop: it writes the scene's materials into a kiln project
+//! (`target/kiln-watch`, shaders from `fixtures/project/shaders`), waits for `kiln watch` to build
+//! it, and draws `renderer.png` again from the new build whenever a shader edit rebuilds it; a
+//! broken edit prints its diagnostics and the last good pipelines stay.
 
-use kiln_renderer::{Scene, compare, device, reference, reference_image, render};
-use std::path::PathBuf;
+use kiln::runtime::{Reload, Runtime};
+use kiln_renderer::{Scene, compare, device, reference, reference_image, render, render_with};
+use std::path::{Path, PathBuf};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let output = std::env::args().nth(1).map_or_else(|| PathBuf::from("renderer.png"), PathBuf::from);
     let scene = Scene::parse(include_str!("../scene.toml"))?;
     let (device, queue, adapter) = device()?;
+    if std::env::args().nth(1).as_deref() == Some("--watch") {
+        return watch(&scene, &device, &queue);
+    }
+    let output = std::env::args().nth(1).map_or_else(|| PathBuf::from("renderer.png"), PathBuf::from);
     let image = render(&device, &queue, &scene)?;
     image.write_png(&output)?;
     let (colors, edge) = reference(&scene);
@@ -16,4 +25,63 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     println!("rendered {} on {adapter}", output.display());
     println!("against the f64 reference over {pixels} interior pixels: max error {max:.4}, mean {mean:.5}");
     Ok(())
+}
+
+fn watch(
+    scene: &Scene,
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let project = PathBuf::from("target/kiln-watch");
+    let shaders =
+        std::fs::canonicalize(Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/project/shaders"))?;
+    std::fs::create_dir_all(project.join("materials"))?;
+    for (name, text) in scene.material_files() {
+        std::fs::write(project.join("materials").join(name), text)?;
+    }
+    let globals: Vec<String> = scene.global_keywords().iter().map(|k| format!("{k:?}")).collect();
+    std::fs::write(
+        project.join("kiln.toml"),
+        format!(
+            "shaders = [{shaders:?}]\ninclude_paths = [{shaders:?}]\nmaterials = [\"materials\"]\noutput = \"build\"\n\
+             global_keywords = [{}]\n",
+            globals.join(", "),
+            shaders = shaders.display().to_string()
+        ),
+    )?;
+    let output = project.join("build");
+    println!("in another terminal:  kiln watch {}", project.display());
+    while !output.join(kiln::reflect::manifest::FILE_NAME).exists() {
+        std::thread::sleep(std::time::Duration::from_millis(200));
+    }
+    let mut runtime = Runtime::open(device, &output)?;
+    let draw = |runtime: &mut Runtime| match render_with(runtime, device, queue, scene) {
+        Ok(image) => match image.write_png(Path::new("renderer.png")) {
+            Ok(()) => {
+                println!("rendered renderer.png ({} pipelines created so far)", runtime.pipelines_created())
+            }
+            Err(e) => eprintln!("{e}"),
+        },
+        Err(e) => eprintln!("{e}"),
+    };
+    draw(&mut runtime);
+    let mut last_error = String::new();
+    loop {
+        match runtime.reload() {
+            Ok(Reload::Swapped { dropped_pipelines }) => {
+                println!("new build: {dropped_pipelines} pipelines replaced");
+                last_error.clear();
+                draw(&mut runtime);
+            }
+            Ok(Reload::Unchanged) => {}
+            Err(error) => {
+                let error = error.to_string();
+                if error != last_error {
+                    eprintln!("{error}");
+                    last_error = error;
+                }
+            }
+        }
+        std::thread::sleep(std::time::Duration::from_millis(200));
+    }
 }
