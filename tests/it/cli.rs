@@ -48,3 +48,51 @@ fn no_colour_when_not_a_terminal() {
     let output = kiln(&["list", "fixtures/bad/unclosed_brace.shader"]);
     assert!(!output.stderr.contains(&0x1b), "escape codes in piped output");
 }
+
+#[test]
+fn watch_rebuilds_on_an_edit_and_reports_a_broken_one() {
+    use std::io::BufRead as _;
+    let project = tempfile::tempdir().expect("temp dir");
+    for name in ["kiln.toml", "Blend.shader", "materials/Opaque.mat"] {
+        let to = project.path().join(name);
+        std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
+        std::fs::copy(crate::support::root().join("fixtures/runtime").join(name), to).expect("copy");
+    }
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kiln"))
+        .args(["watch", project.path().to_str().expect("utf-8")])
+        .env("NO_COLOR", "1")
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("kiln watch runs");
+    let (sender, lines) = std::sync::mpsc::channel();
+    let stderr = child.stderr.take().expect("stderr");
+    std::thread::spawn(move || {
+        for line in std::io::BufReader::new(stderr).lines().map_while(Result::ok) {
+            let _ = sender.send(line);
+        }
+    });
+    // Lines up to the next "watching" line, or what came before a timeout.
+    let next_build = || {
+        let mut seen = Vec::new();
+        while let Ok(line) = lines.recv_timeout(std::time::Duration::from_secs(60)) {
+            if line.starts_with("watching for changes") {
+                break;
+            }
+            seen.push(line);
+        }
+        seen.join("\n")
+    };
+    let first = next_build();
+    assert!(first.contains("built 1 shaders, 1 passes, 1 variants"), "{first}");
+    let shader = project.path().join("Blend.shader");
+    let text = std::fs::read_to_string(&shader).expect("shader");
+    std::fs::write(&shader, text.replace("return color;", "return colour;")).expect("edit");
+    let broken = next_build();
+    let output = project.path().join("build/kiln");
+    let _ = child.kill();
+    assert!(broken.contains("error[K0401]") && broken.contains("Blend.shader:40:"), "{broken}");
+    assert!(broken.contains(", with errors"), "{broken}");
+    let errors = std::fs::read_to_string(output.join("errors.txt")).expect("errors.txt left for the runtime");
+    assert!(errors.contains("Blend.shader:40:"), "{errors}");
+    assert!(output.join("manifest.json").exists(), "the last good build stays");
+}
