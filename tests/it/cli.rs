@@ -90,6 +90,7 @@ fn watch_rebuilds_on_an_edit_and_reports_a_broken_one() {
     let broken = next_build();
     let output = project.path().join("build/kiln");
     let _ = child.kill();
+    let _ = child.wait();
     assert!(broken.contains("error[K0401]") && broken.contains("Blend.shader:40:"), "{broken}");
     assert!(broken.contains(", with errors"), "{broken}");
     let errors = std::fs::read_to_string(output.join("errors.txt")).expect("errors.txt left for the runtime");
