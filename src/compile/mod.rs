@@ -98,6 +98,12 @@ impl Mapper<'_> {
             if primary_inclusion.is_none() {
                 primary_inclusion = Some(origin.inclusion);
                 diagnostic = diagnostic.at(origin.span, text);
+                // As rustc does: the invocation is the place, the definition says why.
+                if let Some(definition) = origin.definition {
+                    let name = self.store.slice(definition).to_string();
+                    diagnostic =
+                        diagnostic.label(definition, format!("in expansion of macro `{name}` defined here"));
+                }
             } else {
                 diagnostic = diagnostic.label(origin.span, text);
             }

@@ -76,9 +76,38 @@ pub enum PreprocessError {
         directive: String,
         expected: &'static str,
     },
-    FunctionLikeMacro {
+    /// `#x` in a function-like macro's body: C's stringification, which WGSL has no use for.
+    Stringification {
         span: Span,
         name: String,
+    },
+    /// `##` first or last in a macro's body.
+    PasteAtEdge {
+        span: Span,
+    },
+    ArgumentCount {
+        span: Span,
+        name: String,
+        expected: usize,
+        variadic: bool,
+        found: usize,
+        definition: Option<Span>,
+    },
+    UnterminatedArguments {
+        span: Span,
+        name: String,
+    },
+    InvalidPaste {
+        span: Span,
+        name: String,
+        left: String,
+        right: String,
+        definition: Option<Span>,
+    },
+    /// A shift by a negative count or by 64 or more: undefined in C.
+    InvalidShift {
+        span: Span,
+        count: String,
     },
     MacroRedefined {
         span: Span,
@@ -193,11 +222,44 @@ impl From<PreprocessError> for Diagnostic {
             MalformedDirective { span, directive, expected } => {
                 Diagnostic::error("K0312", format!("malformed `#{directive}`")).at(span, format!("expected {expected}"))
             }
-            FunctionLikeMacro { span, name } => {
-                Diagnostic::error("K0317", format!("function-like macro `{name}` is not supported"))
-                    .at(span, "macro parameters begin here")
-                    .help("WGSL has functions: write `fn` instead, or put a space before `(` to define an object-like macro")
+            Stringification { span, name } => {
+                Diagnostic::error("K0317", format!("`#{name}` (stringification) is not supported"))
+                    .at(span, "this would make a string literal")
+                    .note("WGSL has no string literals, so a stringified argument could only be a compile error")
+                    .help("use the parameter without `#`, or `##` to paste it into a name")
             }
+            PasteAtEdge { span } => Diagnostic::error("K0323", "`##` at the edge of a macro body")
+                .at(span, "nothing to paste on this side")
+                .help("`##` joins the tokens on either side of it"),
+            ArgumentCount { span, name, expected, variadic, found, definition } => {
+                let takes = match (expected, variadic) {
+                    (n, true) => format!("at least {n} argument{}", if n == 1 { "" } else { "s" }),
+                    (1, false) => "1 argument".to_string(),
+                    (n, false) => format!("{n} arguments"),
+                };
+                let d = Diagnostic::error("K0324", format!("macro `{name}` takes {takes}, but {found} were given"))
+                    .at(span, format!("{found} argument{}", if found == 1 { "" } else { "s" }));
+                match definition {
+                    Some(at) => d.label(at, "defined here"),
+                    None => d,
+                }
+            }
+            UnterminatedArguments { span, name } => {
+                Diagnostic::error("K0325", format!("unterminated argument list of macro `{name}`"))
+                    .at(span, "no `)` closes this call")
+                    .note("a call's arguments end before the next preprocessor directive")
+            }
+            InvalidPaste { span, name, left, right, definition } => {
+                let d = Diagnostic::error("K0326", format!("pasting `{left}` and `{right}` does not give a token"))
+                    .at(span, format!("in expansion of macro `{name}`"));
+                match definition {
+                    Some(at) => d.label(at, "defined here"),
+                    None => d,
+                }
+            }
+            InvalidShift { span, count } => Diagnostic::error("K0327", format!("shift by {count} in `#if` expression"))
+                .at(span, "this shift is undefined in C")
+                .help("shift by 0 to 63"),
             MacroRedefined { span, name, previous } => {
                 Diagnostic::warning("K0316", format!("macro `{name}` redefined with a different value"))
                     .at(span, "redefined here")

@@ -8,8 +8,9 @@
 
 mod analysis;
 mod error;
-pub mod expr;
+mod expr;
 mod include;
+mod macros;
 mod pass;
 mod run;
 mod scan;

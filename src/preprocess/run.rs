@@ -2,9 +2,10 @@
 //! active text (substituting macros) and records the source map.
 
 use super::error::PreprocessError;
-use super::expr::{self, ExprError, MAX_EXPANSION_DEPTH};
+use super::expr::{self, ExprError};
 use super::include::{Includes, Program};
-use super::scan::{BranchKind, Condition, Item, Target, identifiers};
+use super::macros::{ExpandError, Expander, Lexer, MAX_EXPANSION_DEPTH, MacroDef, glues};
+use super::scan::{BranchKind, Condition, Item, Target};
 use super::source_map::{ROOT, SourceMap};
 use super::{Preprocessed, Stage};
 use crate::diagnostics::Diagnostic;
@@ -13,13 +14,6 @@ use std::collections::{HashMap, HashSet};
 
 /// Includes nested deeper than this are refused.
 pub const MAX_INCLUDE_DEPTH: usize = 64;
-
-#[derive(Clone, Copy)]
-struct Macro<'a> {
-    value: &'a str,
-    /// Where a `#define` defined it; `None` for keywords and built-in macros.
-    defined_at: Option<Span>,
-}
 
 pub(super) fn run<'a>(
     includes: &'a Includes,
@@ -38,9 +32,9 @@ pub(super) fn run<'a>(
         once: HashSet::new(),
         diagnostics: Vec::new(),
     };
-    runner.macros.insert(stage.macro_name(), Macro { value: "1", defined_at: None });
+    runner.macros.insert(stage.macro_name(), MacroDef::new(None, false, "1", None));
     for keyword in keywords {
-        runner.macros.insert(keyword, Macro { value: "1", defined_at: None });
+        runner.macros.insert(keyword, MacroDef::new(None, false, "1", None));
     }
     for &block in &program.blocks {
         runner.stack.push(block);
@@ -54,7 +48,7 @@ pub(super) fn run<'a>(
 struct Runner<'a> {
     includes: &'a Includes,
     store: &'a SourceStore,
-    macros: HashMap<&'a str, Macro<'a>>,
+    macros: HashMap<&'a str, MacroDef<'a>>,
     out: String,
     map: SourceMap,
     /// Units being included, outermost first (for cycles and the depth limit).
@@ -85,7 +79,10 @@ impl<'a> Runner<'a> {
                     self.text(text, file, *start as usize, *end as usize, idents, inclusion)
                 }
                 Item::Include { target, span, .. } => self.include(target, *span, inclusion),
-                Item::Define { name, span, value } => self.define(name, *span, value, inclusion),
+                Item::Define { name, span, params, variadic, value } => {
+                    let params = params.as_ref().map(|p| p.iter().map(String::as_str).collect());
+                    self.define(name, *span, MacroDef::new(params, *variadic, value, Some(*span)), inclusion)
+                }
                 Item::Undef { name } => {
                     self.macros.remove(name.as_str());
                 }
@@ -135,7 +132,12 @@ impl<'a> Runner<'a> {
             let last = text[unit.range.clone()].char_indices().next_back();
             if let Some((at, c)) = last {
                 let start = unit.range.start + at;
-                self.map.expanded(self.out.len(), Span::new(file, start..start + c.len_utf8()), inclusion);
+                self.map.expanded(
+                    self.out.len(),
+                    Span::new(file, start..start + c.len_utf8()),
+                    None,
+                    inclusion,
+                );
             }
             self.out.push('\n');
         }
@@ -161,94 +163,139 @@ impl<'a> Runner<'a> {
         let mut copied = start;
         if !self.macros.is_empty() {
             for &(s, e) in idents {
-                let (s, e) = (s as usize, e as usize);
-                let name = &text[s..e];
-                let Some(&value) = self.macros.get(name) else { continue };
-                self.copy(text, file, copied..s, inclusion);
-                let before = self.out.len();
-                let mut active = vec![name];
-                self.expand(value.value, &mut active, Span::new(file, s..e), inclusion);
-                if self.out.len() > before {
-                    self.map.expanded(before, Span::new(file, s..e), inclusion);
+                let s = s as usize;
+                // Names an earlier expansion consumed (as arguments) are gone.
+                if s < copied || !self.macros.contains_key(&text[s..e as usize]) {
+                    continue;
                 }
-                copied = e;
+                self.copy(text, file, copied..s, inclusion);
+                copied = self.expand(text, file, s..end, inclusion);
             }
         }
         self.copy(text, file, copied..end, inclusion);
     }
 
-    /// Writes a macro's value, expanding the macros it names (but not those being expanded, as
-    /// in C, so `#define X X` stops).
-    fn expand(&mut self, value: &'a str, active: &mut Vec<&'a str>, at: Span, inclusion: u32) {
-        if active.len() > MAX_EXPANSION_DEPTH {
-            let name = active.first().copied().unwrap_or_default().to_string();
-            self.report(
-                PreprocessError::ExpansionTooDeep { span: at, name, limit: MAX_EXPANSION_DEPTH },
-                inclusion,
-            );
-            return;
-        }
-        let mut copied = 0;
-        for (offset, name) in identifiers(value) {
-            if active.contains(&name) {
-                continue;
+    /// Expands the invocation at the start of `range` (a macro name, and its arguments for a
+    /// function-like macro) into the output; returns where the text after it starts.
+    fn expand(
+        &mut self,
+        text: &'a str,
+        file: FileId,
+        range: std::ops::Range<usize>,
+        inclusion: u32,
+    ) -> usize {
+        let (start, end) = (range.start, range.end);
+        let mut lexer = Lexer::new(text, range);
+        let mut expander = Expander::new(&self.macros);
+        let tokens = expander.invocation(&mut lexer);
+        let errors = std::mem::take(&mut expander.errors);
+        let consumed = lexer.position();
+        let name_end =
+            text[start..].bytes().position(|b| !super::macros::is_ident_char(b)).map_or(end, |n| start + n);
+        let definition = self.macros.get(&text[start..name_end]).and_then(|m| m.defined_at);
+        let before = self.out.len();
+        for (i, token) in tokens.iter().enumerate() {
+            if (i > 0 && token.space) || glues(&self.out, &token.text) {
+                self.out.push(' ');
             }
-            let Some(&inner) = self.macros.get(name) else { continue };
-            self.out.push_str(&value[copied..offset]);
-            active.push(name);
-            self.expand(inner.value, active, at, inclusion);
-            active.pop();
-            copied = offset + name.len();
+            self.out.push_str(&token.text);
         }
-        self.out.push_str(&value[copied..]);
+        // Nor may the expansion run into the text that follows it.
+        if self.out.len() > before && glues(&self.out, &text[consumed..end]) {
+            self.out.push(' ');
+        }
+        if self.out.len() > before {
+            self.map.expanded(before, Span::new(file, start..consumed), definition, inclusion);
+        }
+        for error in errors {
+            let error = self.expand_error(error, file, 0, definition);
+            self.report(error, inclusion);
+        }
+        consumed
     }
 
-    fn define(&mut self, name: &'a str, span: Span, value: &'a str, inclusion: u32) {
-        let new = Macro { value, defined_at: Some(span) };
-        if let Some(old) = self.macros.insert(name, new)
+    /// An expansion error at its place; `base` turns the expander's offsets into file offsets.
+    fn expand_error(
+        &self,
+        error: ExpandError,
+        file: FileId,
+        base: usize,
+        definition: Option<Span>,
+    ) -> PreprocessError {
+        let span = |at: std::ops::Range<usize>| Span::new(file, base + at.start..base + at.end);
+        let defined = |name: &str| self.macros.get(name).and_then(|m| m.defined_at).or(definition);
+        match error {
+            ExpandError::ArgumentCount { at, name, expected, variadic, found } => {
+                PreprocessError::ArgumentCount {
+                    span: span(at),
+                    definition: defined(&name),
+                    name,
+                    expected,
+                    variadic,
+                    found,
+                }
+            }
+            ExpandError::Unterminated { at, name } => {
+                PreprocessError::UnterminatedArguments { span: span(at), name }
+            }
+            ExpandError::Paste { at, name, left, right } => PreprocessError::InvalidPaste {
+                span: span(at),
+                definition: defined(&name),
+                name,
+                left,
+                right,
+            },
+            ExpandError::TooDeep { at, name } => {
+                PreprocessError::ExpansionTooDeep { span: span(at), name, limit: MAX_EXPANSION_DEPTH }
+            }
+        }
+    }
+
+    fn define(&mut self, name: &'a str, span: Span, definition: MacroDef<'a>, inclusion: u32) {
+        if let Some(old) = self.macros.get(name)
             && let Some(previous) = old.defined_at
-            && old.value.split_whitespace().ne(value.split_whitespace())
+            && !old.same_as(&definition)
         {
             self.report(
                 PreprocessError::MacroRedefined { span, name: name.to_string(), previous },
                 inclusion,
             );
         }
+        self.macros.insert(name, definition);
     }
 
-    fn condition(&mut self, condition: &Condition, file: FileId, inclusion: u32) -> bool {
+    fn condition(&mut self, condition: &'a Condition, file: FileId, inclusion: u32) -> bool {
         match condition {
             Condition::Defined { name, .. } => self.macros.contains_key(name.as_str()),
             Condition::NotDefined { name, .. } => !self.macros.contains_key(name.as_str()),
             Condition::Expr { text, start } => {
-                let macros = &self.macros;
-                let result = expr::evaluate(text, &|name| macros.get(name).map(|m| m.value.to_string()));
+                let mut expander = Expander::new(&self.macros);
+                let result = expr::evaluate(text, &mut expander);
+                let errors = std::mem::take(&mut expander.errors);
+                let at = |offset: usize, len: usize| {
+                    let s = *start as usize + offset;
+                    Span::new(file, s..s + len)
+                };
+                for error in errors {
+                    let error = self.expand_error(error, file, *start as usize, None);
+                    self.report(error, inclusion);
+                }
                 match result {
-                    Ok(value) => value != 0,
+                    Ok(value) => value,
                     Err(error) => {
-                        let at = |offset: usize, len: usize| {
-                            let s = *start as usize + offset;
-                            Span::new(file, s..s + len)
-                        };
                         let error = match error {
                             ExprError::Malformed { offset, expected } => {
                                 PreprocessError::MalformedExpression { span: at(offset, 1), expected }
                             }
                             ExprError::NestedTooDeep { offset } => PreprocessError::MalformedExpression {
                                 span: at(offset, 1),
-                                expected: "fewer than 64 nested parentheses or unary operators",
+                                expected: "fewer nested parentheses or unary operators",
                             },
                             ExprError::DivisionByZero { offset } => {
                                 PreprocessError::DivisionByZero { span: at(offset, 1) }
                             }
-                            // The evaluator names the innermost macro; the user wrote the outermost.
-                            ExprError::ExpansionTooDeep { offset, .. } => {
-                                let name = identifiers(&text[offset..]).next().map_or("", |(_, n)| n);
-                                PreprocessError::ExpansionTooDeep {
-                                    span: at(offset, name.len()),
-                                    name: name.to_string(),
-                                    limit: MAX_EXPANSION_DEPTH,
-                                }
+                            ExprError::InvalidShift { offset, count } => {
+                                PreprocessError::InvalidShift { span: at(offset, 2), count }
                             }
                         };
                         self.report(error, inclusion);

@@ -45,6 +45,10 @@ pub(crate) enum Item {
     Define {
         name: String,
         span: Span,
+        /// A function-like macro's parameters (`None`: object-like).
+        params: Option<Vec<String>>,
+        /// The last parameter is `...` (`__VA_ARGS__`).
+        variadic: bool,
         value: String,
     },
     Undef {
@@ -460,13 +464,90 @@ impl Scanner<'_> {
 
     fn define(&mut self, cursor: &mut Cursor, whole: Span) {
         let Some((name, span)) = self.macro_name(cursor, "define", whole) else { return };
-        if cursor.rest().starts_with('(') {
-            let at = cursor.base + cursor.at;
-            self.errors.push(PreprocessError::FunctionLikeMacro { span: self.span(at..at + 1), name });
+        // `(` right after the name makes a function-like macro; after a space, it is the value.
+        let (params, variadic) = if cursor.rest().starts_with('(') {
+            match self.parameters(cursor, whole) {
+                Some((params, variadic)) => (Some(params), variadic),
+                None => return,
+            }
+        } else {
+            (None, false)
+        };
+        let value_start = cursor.base + cursor.at + (cursor.rest().len() - cursor.rest().trim_start().len());
+        let value = cursor.rest().trim().to_string();
+        if !self.check_body(&value, value_start, params.as_deref(), variadic) {
             return;
         }
-        let value = cursor.rest().trim().to_string();
-        self.unit.items.push(Item::Define { name, span, value });
+        self.unit.items.push(Item::Define { name, span, params, variadic, value });
+    }
+
+    /// `(a, b)`, `(a, ...)`, `(...)` or `()`, with the cursor on `(`; the names and whether the
+    /// macro is variadic.
+    fn parameters(&mut self, cursor: &mut Cursor, whole: Span) -> Option<(Vec<String>, bool)> {
+        let malformed = PreprocessError::MalformedDirective {
+            span: whole,
+            directive: "define".into(),
+            expected: "parameter names in parentheses, like `#define F(a, b) ...` (or `...` last)",
+        };
+        cursor.at += 1;
+        let mut params: Vec<String> = Vec::new();
+        let mut variadic = false;
+        cursor.skip_space();
+        if cursor.rest().starts_with(')') {
+            cursor.at += 1;
+            return Some((params, false));
+        }
+        loop {
+            cursor.skip_space();
+            if cursor.rest().starts_with("...") {
+                cursor.at += 3;
+                variadic = true;
+            } else {
+                let (_, param) = cursor.ident();
+                if param.is_empty() || param == "__VA_ARGS__" || params.iter().any(|p| p == param) {
+                    self.errors.push(malformed);
+                    return None;
+                }
+                params.push(param.to_string());
+            }
+            cursor.skip_space();
+            if cursor.rest().starts_with(')') {
+                cursor.at += 1;
+                return Some((params, variadic));
+            }
+            if variadic || !cursor.rest().starts_with(',') {
+                self.errors.push(malformed);
+                return None;
+            }
+            cursor.at += 1;
+        }
+    }
+
+    /// A macro body's operators: `#` stringification is refused (WGSL has no strings), and `##`
+    /// needs a token on each side. `start` is the file offset of `value`.
+    fn check_body(&mut self, value: &str, start: usize, params: Option<&[String]>, variadic: bool) -> bool {
+        let tokens = super::macros::lex(value);
+        let span = |t: &super::macros::Token| {
+            let at = start + t.at;
+            Span::new(self.file, at..at + t.text.len())
+        };
+        let is_param = |name: &str| {
+            params.is_some_and(|p| p.iter().any(|q| q == name) || (variadic && name == "__VA_ARGS__"))
+        };
+        for (i, token) in tokens.iter().enumerate() {
+            if token.text == "##" && (i == 0 || i + 1 == tokens.len()) {
+                self.errors.push(PreprocessError::PasteAtEdge { span: span(token) });
+                return false;
+            }
+            if token.text == "#" && params.is_some() {
+                let next = tokens.get(i + 1).filter(|t| is_param(&t.text));
+                let name = next.map_or(String::new(), |t| t.text.to_string());
+                let whole = next.map_or(span(token), |n| span(token).to(span(n)));
+                self.errors.push(PreprocessError::Stringification { span: whole, name });
+                return false;
+            }
+        }
+        true
     }
 
     fn macro_name(&mut self, cursor: &mut Cursor, directive: &str, whole: Span) -> Option<(String, Span)> {

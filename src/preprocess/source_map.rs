@@ -19,6 +19,8 @@ struct Segment {
     /// expansion maps to that whole name. Zero for copied text.
     expansion: u32,
     inclusion: u32,
+    /// For a macro expansion, 1 + the index of the macro's definition in `definitions` (0: none).
+    definition: u32,
 }
 
 #[derive(Debug, Clone, Copy)]
@@ -33,6 +35,8 @@ struct Inclusion {
 pub struct SourceMap {
     segments: Vec<Segment>,
     inclusions: Vec<Inclusion>,
+    /// The `#define`s of expanded macros, once each.
+    definitions: Vec<Span>,
     len: u32,
 }
 
@@ -42,6 +46,8 @@ pub struct Origin {
     pub span: Span,
     /// Identifies the include chain that brought the text; see [`SourceMap::include_chain`].
     pub inclusion: u32,
+    /// For text a macro expansion wrote, the name in the macro's `#define`.
+    pub definition: Option<Span>,
 }
 
 impl Default for SourceMap {
@@ -49,6 +55,7 @@ impl Default for SourceMap {
         SourceMap {
             segments: Vec::new(),
             inclusions: vec![Inclusion { directive: None, parent: ROOT }],
+            definitions: Vec::new(),
             len: 0,
         }
     }
@@ -64,12 +71,26 @@ impl SourceMap {
         {
             return;
         }
-        self.push(Segment { out: out as u32, file, src: src as u32, expansion: 0, inclusion });
+        self.push(Segment { out: out as u32, file, src: src as u32, expansion: 0, inclusion, definition: 0 });
     }
 
-    pub(crate) fn expanded(&mut self, out: usize, name: Span, inclusion: u32) {
+    /// Output from `out` on is a macro expansion written for the invocation at `name` (the name,
+    /// and a function-like macro's arguments), of the macro defined at `definition`.
+    pub(crate) fn expanded(&mut self, out: usize, name: Span, definition: Option<Span>, inclusion: u32) {
         let expansion = (name.end - name.start).max(1);
-        self.push(Segment { out: out as u32, file: name.file, src: name.start, expansion, inclusion });
+        let definition = match definition {
+            None => 0,
+            Some(span) => match self.definitions.iter().rposition(|d| *d == span) {
+                Some(i) => i as u32 + 1,
+                None => {
+                    self.definitions.push(span);
+                    self.definitions.len() as u32
+                }
+            },
+        };
+        let segment =
+            Segment { out: out as u32, file: name.file, src: name.start, expansion, inclusion, definition };
+        self.push(segment);
     }
 
     fn push(&mut self, segment: Segment) {
@@ -101,7 +122,8 @@ impl SourceMap {
             let at = s.src + (offset - s.out);
             (at, at + u32::from(offset < self.len))
         };
-        Some(Origin { span: Span { file: s.file, start, end }, inclusion: s.inclusion })
+        let definition = s.definition.checked_sub(1).and_then(|i| self.definitions.get(i as usize)).copied();
+        Some(Origin { span: Span { file: s.file, start, end }, inclusion: s.inclusion, definition })
     }
 
     /// The origin of an output range: the original span from its first to its last byte when both
@@ -116,7 +138,7 @@ impl SourceMap {
             && last.inclusion == start.inclusion
             && last.span.end >= start.span.start
         {
-            return Some(Origin { span: start.span.to(last.span), inclusion: start.inclusion });
+            return Some(Origin { span: start.span.to(last.span), ..start });
         }
         Some(start)
     }

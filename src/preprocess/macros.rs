@@ -1,0 +1,586 @@
+//! Macro expansion as the C preprocessor does it: object-like and function-like macros,
+//! arguments macro-expanded before substitution (unless next to `##`), `##` pasting, `__VA_ARGS__`
+//! and `__VA_OPT__`, rescanning with the text that follows, and hide sets (Prosser's algorithm) so
+//! that a macro never expands inside its own expansion ("painted blue").
+//!
+//! Expansion works on C preprocessing tokens lexed from the text only where a macro name
+//! occurs; the rest of the text is copied as it is by the caller.
+
+use std::borrow::Cow;
+use std::collections::{HashMap, VecDeque};
+use std::ops::Range;
+
+/// A macro nested in its own expansion chain deeper than this is a runaway: an error.
+pub const MAX_EXPANSION_DEPTH: usize = 64;
+
+/// More tokens than this from one invocation is a runaway (exponential growth): an error.
+const MAX_EXPANSION_TOKENS: usize = 1 << 20;
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Kind {
+    Ident,
+    Number,
+    /// A string or character literal: never looked into.
+    Literal,
+    Punct,
+    Other,
+}
+
+#[derive(Debug, Clone)]
+pub(crate) struct Token<'a> {
+    pub kind: Kind,
+    pub text: Cow<'a, str>,
+    /// Whitespace, a comment or a line break came before it.
+    pub space: bool,
+    /// Macros this token may no longer expand (its hide set).
+    pub hide: Vec<&'a str>,
+    /// Offset, in the lexed text, of where it came from: for expanded tokens, the invocation.
+    pub at: usize,
+    /// A `##` of a macro body (an argument's `##` does not paste).
+    paste: bool,
+}
+
+impl Token<'_> {
+    fn is(&self, punct: &str) -> bool {
+        self.kind == Kind::Punct && self.text == punct
+    }
+}
+
+/// C's punctuators (and WGSL's `@`), longest first.
+const PUNCTUATORS: [&str; 48] = [
+    "...", "<<=", ">>=", "->", "++", "--", "<<", ">>", "<=", ">=", "==", "!=", "&&", "||", "*=", "/=", "%=",
+    "+=", "-=", "&=", "^=", "|=", "##", "::", "[", "]", "(", ")", "{", "}", ".", "&", "*", "+", "-", "~",
+    "!", "/", "%", "<", ">", "^", "|", "?", ":", ";", "=", ",",
+];
+
+pub(crate) fn is_ident_start(b: u8) -> bool {
+    b.is_ascii_alphabetic() || b == b'_' || b >= 0x80
+}
+
+pub(crate) fn is_ident_char(b: u8) -> bool {
+    b.is_ascii_alphanumeric() || b == b'_' || b >= 0x80
+}
+
+/// Preprocessing tokens of `text[range]`, on demand; comments (nested, as in WGSL) and line
+/// breaks are whitespace.
+#[derive(Clone)]
+pub(crate) struct Lexer<'a> {
+    text: &'a str,
+    pos: usize,
+    end: usize,
+}
+
+impl<'a> Lexer<'a> {
+    pub fn new(text: &'a str, range: Range<usize>) -> Lexer<'a> {
+        Lexer { text, pos: range.start, end: range.end }
+    }
+
+    pub fn position(&self) -> usize {
+        self.pos
+    }
+
+    /// Skips whitespace and comments; whether there were any.
+    fn skip_space(&mut self) -> bool {
+        let bytes = self.text.as_bytes();
+        let start = self.pos;
+        while self.pos < self.end {
+            let rest = &bytes[self.pos..self.end];
+            if rest[0].is_ascii_whitespace() {
+                self.pos += 1;
+            } else if rest.starts_with(b"//") {
+                self.pos += rest.iter().position(|&b| b == b'\n').unwrap_or(rest.len());
+            } else if rest.starts_with(b"/*") {
+                let mut depth = 0;
+                let mut i = 0;
+                while i < rest.len() {
+                    if rest[i..].starts_with(b"/*") {
+                        depth += 1;
+                        i += 2;
+                    } else if rest[i..].starts_with(b"*/") {
+                        depth -= 1;
+                        i += 2;
+                        if depth == 0 {
+                            break;
+                        }
+                    } else {
+                        i += 1;
+                    }
+                }
+                self.pos += i;
+            } else {
+                break;
+            }
+        }
+        self.pos > start
+    }
+
+    pub fn next_token(&mut self) -> Option<Token<'a>> {
+        let space = self.skip_space();
+        if self.pos >= self.end {
+            return None;
+        }
+        let bytes = &self.text.as_bytes()[..self.end];
+        let start = self.pos;
+        let b = bytes[start];
+        let mut i = start + 1;
+        let kind = if is_ident_start(b) {
+            while i < bytes.len() && is_ident_char(bytes[i]) {
+                i += 1;
+            }
+            Kind::Ident
+        } else if b.is_ascii_digit() || (b == b'.' && bytes.get(i).is_some_and(u8::is_ascii_digit)) {
+            // A pp-number: digits, letters, `_`, `.`, and a sign after an exponent letter.
+            while i < bytes.len() {
+                let c = bytes[i];
+                let signed_exponent =
+                    matches!(c, b'+' | b'-') && matches!(bytes[i - 1], b'e' | b'E' | b'p' | b'P');
+                if !(signed_exponent || is_ident_char(c) || c == b'.') {
+                    break;
+                }
+                i += 1;
+            }
+            Kind::Number
+        } else if b == b'"' || b == b'\'' {
+            while i < bytes.len() && bytes[i] != b && bytes[i] != b'\n' {
+                i += if bytes[i] == b'\\' { 2 } else { 1 };
+            }
+            i = (i + 1).min(bytes.len());
+            Kind::Literal
+        } else if let Some(p) = PUNCTUATORS.iter().find(|p| self.text[start..self.end].starts_with(**p)) {
+            i = start + p.len();
+            Kind::Punct
+        } else {
+            // One character, whole.
+            i = start + self.text[start..].chars().next().map_or(1, char::len_utf8);
+            Kind::Other
+        };
+        self.pos = i;
+        Some(Token {
+            kind,
+            text: Cow::Borrowed(&self.text[start..i]),
+            space,
+            hide: Vec::new(),
+            at: start,
+            paste: false,
+        })
+    }
+}
+
+/// Every token of a text.
+pub(crate) fn lex(text: &str) -> Vec<Token<'_>> {
+    let mut lexer = Lexer::new(text, 0..text.len());
+    std::iter::from_fn(|| lexer.next_token()).collect()
+}
+
+/// A `#define`, ready to expand.
+#[derive(Debug, Clone)]
+pub(crate) struct MacroDef<'a> {
+    /// `None` for an object-like macro.
+    pub params: Option<Vec<&'a str>>,
+    pub variadic: bool,
+    pub body: Vec<Token<'a>>,
+    /// The name in the `#define` (`None` for keywords and built-in macros).
+    pub defined_at: Option<crate::source::Span>,
+}
+
+impl<'a> MacroDef<'a> {
+    pub fn new(
+        params: Option<Vec<&'a str>>,
+        variadic: bool,
+        value: &'a str,
+        defined_at: Option<crate::source::Span>,
+    ) -> MacroDef<'a> {
+        MacroDef { params, variadic, body: mark_pastes(lex(value)), defined_at }
+    }
+
+    /// The same definition, as C compares them: parameters and tokens (spacing aside).
+    pub fn same_as(&self, other: &MacroDef<'_>) -> bool {
+        self.params == other.params
+            && self.variadic == other.variadic
+            && self.body.len() == other.body.len()
+            && self.body.iter().zip(&other.body).all(|(a, b)| a.text == b.text)
+    }
+
+    fn param(&self, name: &str) -> Option<usize> {
+        let params = self.params.as_ref()?;
+        if let Some(i) = params.iter().position(|p| *p == name) {
+            return Some(i);
+        }
+        (self.variadic && name == "__VA_ARGS__").then_some(params.len())
+    }
+}
+
+fn mark_pastes(mut body: Vec<Token<'_>>) -> Vec<Token<'_>> {
+    for token in &mut body {
+        token.paste = token.is("##");
+    }
+    body
+}
+
+/// What went wrong in an expansion; `at` is an offset in the lexed text.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) enum ExpandError {
+    ArgumentCount { at: Range<usize>, name: String, expected: usize, variadic: bool, found: usize },
+    Unterminated { at: Range<usize>, name: String },
+    Paste { at: Range<usize>, name: String, left: String, right: String },
+    TooDeep { at: Range<usize>, name: String },
+}
+
+/// Where macro tokens come from during one expansion: tokens to rescan first, then the text.
+struct Input<'l, 'a> {
+    pending: VecDeque<Token<'a>>,
+    source: Option<&'l mut Lexer<'a>>,
+}
+
+impl<'a> Input<'_, 'a> {
+    fn next(&mut self) -> Option<Token<'a>> {
+        self.pending.pop_front().or_else(|| self.source.as_mut()?.next_token())
+    }
+
+    /// Takes the next token if it is `(`.
+    fn open_paren(&mut self) -> Option<Token<'a>> {
+        if let Some(front) = self.pending.front() {
+            return if front.is("(") { self.pending.pop_front() } else { None };
+        }
+        let source = self.source.as_mut()?;
+        let saved = source.pos;
+        match source.next_token() {
+            Some(t) if t.is("(") => Some(t),
+            _ => {
+                source.pos = saved;
+                None
+            }
+        }
+    }
+}
+
+/// Expands macros from a table of definitions.
+pub(crate) struct Expander<'m, 'a> {
+    pub macros: &'m HashMap<&'a str, MacroDef<'a>>,
+    pub errors: Vec<ExpandError>,
+    produced: usize,
+    /// The invocation the user wrote that the current expansion came from (name's place, name).
+    outer: (Range<usize>, String),
+}
+
+impl<'m, 'a> Expander<'m, 'a> {
+    pub fn new(macros: &'m HashMap<&'a str, MacroDef<'a>>) -> Expander<'m, 'a> {
+        Expander { macros, errors: Vec::new(), produced: 0, outer: (0..0, String::new()) }
+    }
+
+    /// Expands the invocation that starts at the lexer's position (a macro name), reading as
+    /// much of the text after it as the expansion needs (arguments, and the arguments of a
+    /// function-like macro its expansion ends with). The lexer is left after what was used.
+    pub fn invocation(&mut self, lexer: &mut Lexer<'a>) -> Vec<Token<'a>> {
+        self.produced = 0;
+        let Some(first) = lexer.next_token() else { return Vec::new() };
+        let mut input = Input { pending: VecDeque::from([first]), source: Some(lexer) };
+        let mut out = Vec::new();
+        self.run(&mut input, &mut out, true);
+        out
+    }
+
+    /// Expands every macro of a token list (an argument, an `#if` expression).
+    pub fn all(&mut self, tokens: Vec<Token<'a>>) -> Vec<Token<'a>> {
+        let mut input = Input { pending: tokens.into(), source: None };
+        let mut out = Vec::new();
+        self.run(&mut input, &mut out, false);
+        out
+    }
+
+    /// Rescans `input`; with `stop_when_pending_empty`, ends once everything that came from the
+    /// invocation is out, rather than reading the whole source.
+    fn run(&mut self, input: &mut Input<'_, 'a>, out: &mut Vec<Token<'a>>, stop_when_pending_empty: bool) {
+        loop {
+            let token = if stop_when_pending_empty {
+                match input.pending.pop_front() {
+                    Some(t) => t,
+                    None => return,
+                }
+            } else {
+                match input.next() {
+                    Some(t) => t,
+                    None => return,
+                }
+            };
+            if token.kind != Kind::Ident || token.hide.contains(&&*token.text) {
+                out.push(token);
+                continue;
+            }
+            let Some(def) = self.macros.get(&*token.text) else {
+                out.push(token);
+                continue;
+            };
+            let name: &'a str = self.macros.get_key_value(&*token.text).map_or("", |(k, _)| *k);
+            if token.hide.is_empty() {
+                self.outer = (token.at..token.at + token.text.len(), name.to_string());
+            }
+            if token.hide.len() >= MAX_EXPANSION_DEPTH {
+                let (at, name) = self.outer.clone();
+                self.errors.push(ExpandError::TooDeep { at, name });
+                out.push(token);
+                continue;
+            }
+            let expansion = match &def.params {
+                None => {
+                    let mut hide = token.hide.clone();
+                    hide.push(name);
+                    self.substitute(def, name, &[], hide, &token)
+                }
+                Some(params) => {
+                    let Some(_) = input.open_paren() else {
+                        // A function-like macro's name without `(` is just a name.
+                        out.push(token);
+                        continue;
+                    };
+                    let Some((args, close)) = self.arguments(input, &token, name) else { return };
+                    let (expected, found) = (params.len(), args.len());
+                    // `F()` gives one empty argument, which is none for a macro without parameters.
+                    let args =
+                        if expected == 0 && found == 1 && args[0].is_empty() { Vec::new() } else { args };
+                    let found = if expected == 0 { args.len() } else { found };
+                    let count_ok = if def.variadic { found >= expected } else { found == expected };
+                    if !count_ok {
+                        self.errors.push(ExpandError::ArgumentCount {
+                            at: token.at..close.at + 1,
+                            name: name.to_string(),
+                            expected,
+                            variadic: def.variadic,
+                            found,
+                        });
+                        continue;
+                    }
+                    let mut hide: Vec<&'a str> =
+                        token.hide.iter().copied().filter(|h| close.hide.contains(h)).collect();
+                    hide.push(name);
+                    self.substitute(def, name, &args, hide, &token)
+                }
+            };
+            self.produced += expansion.len();
+            if self.produced > MAX_EXPANSION_TOKENS {
+                let (at, name) = self.outer.clone();
+                self.errors.push(ExpandError::TooDeep { at, name });
+                return;
+            }
+            for t in expansion.into_iter().rev() {
+                input.pending.push_front(t);
+            }
+        }
+    }
+
+    /// The arguments after a macro's `(`, split at top-level commas, and the closing `)`.
+    fn arguments(
+        &mut self,
+        input: &mut Input<'_, 'a>,
+        name_token: &Token<'a>,
+        name: &str,
+    ) -> Option<(Vec<Vec<Token<'a>>>, Token<'a>)> {
+        let mut args = vec![Vec::new()];
+        let mut depth = 0;
+        loop {
+            let Some(token) = input.next() else {
+                let end = name_token.at + name_token.text.len();
+                self.errors
+                    .push(ExpandError::Unterminated { at: name_token.at..end, name: name.to_string() });
+                return None;
+            };
+            if token.is("(") {
+                depth += 1;
+            } else if token.is(")") {
+                if depth == 0 {
+                    return Some((args, token));
+                }
+                depth -= 1;
+            } else if token.is(",") && depth == 0 {
+                args.push(Vec::new());
+                continue;
+            }
+            if let Some(last) = args.last_mut() {
+                last.push(token);
+            }
+        }
+    }
+
+    /// A macro's body with its parameters replaced and `##` applied, every token hidden from the
+    /// macros in `hide` and placed at the invocation.
+    fn substitute(
+        &mut self,
+        def: &MacroDef<'a>,
+        name: &'a str,
+        args: &[Vec<Token<'a>>],
+        hide: Vec<&'a str>,
+        invocation: &Token<'a>,
+    ) -> Vec<Token<'a>> {
+        let named = def.params.as_ref().map_or(0, Vec::len);
+        // `__VA_ARGS__`: the arguments after the named ones, with their commas.
+        let variadic: Vec<Token<'a>> = if def.variadic {
+            let mut joined = Vec::new();
+            for (i, arg) in args.iter().enumerate().skip(named) {
+                if i > named {
+                    joined.push(comma(invocation.at));
+                }
+                joined.extend(arg.iter().cloned());
+            }
+            joined
+        } else {
+            Vec::new()
+        };
+        let arg = |index: usize| if index == named { &variadic } else { &args[index] };
+        let body = &def.body;
+        let mut out: Vec<Option<Token<'a>>> = Vec::with_capacity(body.len());
+        let mut i = 0;
+        while i < body.len() {
+            let token = &body[i];
+            if def.variadic && token.kind == Kind::Ident && token.text == "__VA_OPT__" {
+                // `__VA_OPT__(x)`: x when there are variadic arguments, nothing otherwise.
+                let (group, after) = parenthesised(body, i + 1);
+                if !variadic.is_empty() {
+                    let inner = MacroDef {
+                        params: def.params.clone(),
+                        variadic: true,
+                        body: group,
+                        defined_at: None,
+                    };
+                    out.extend(
+                        self.substitute(&inner, name, args, Vec::new(), invocation).into_iter().map(Some),
+                    );
+                }
+                i = after;
+                continue;
+            }
+            match (token.kind, def.param(&token.text)) {
+                (Kind::Ident, Some(index)) => {
+                    let beside_paste =
+                        body.get(i + 1).is_some_and(|t| t.paste) || (i > 0 && body[i - 1].paste);
+                    let tokens = if beside_paste { arg(index).clone() } else { self.all(arg(index).clone()) };
+                    if tokens.is_empty() {
+                        // A placemarker: `##` next to an empty argument pastes nothing.
+                        out.push(None);
+                    }
+                    for (k, mut t) in tokens.into_iter().enumerate() {
+                        if k == 0 {
+                            t.space = token.space;
+                        }
+                        out.push(Some(t));
+                    }
+                }
+                _ => out.push(Some(token.clone())),
+            }
+            i += 1;
+        }
+        let pasted = self.paste(out, name, invocation);
+        pasted
+            .into_iter()
+            .enumerate()
+            .map(|(k, mut t)| {
+                for h in &hide {
+                    if !t.hide.contains(h) {
+                        t.hide.push(h);
+                    }
+                }
+                t.at = invocation.at;
+                if k == 0 {
+                    t.space = invocation.space;
+                }
+                t
+            })
+            .collect()
+    }
+
+    /// Applies the body's `##` operators (placemarkers are `None`).
+    fn paste(
+        &mut self,
+        tokens: Vec<Option<Token<'a>>>,
+        name: &str,
+        invocation: &Token<'a>,
+    ) -> Vec<Token<'a>> {
+        let mut out: Vec<Option<Token<'a>>> = Vec::with_capacity(tokens.len());
+        let mut iter = tokens.into_iter().peekable();
+        while let Some(token) = iter.next() {
+            if !token.as_ref().is_some_and(|t| t.paste) {
+                out.push(token);
+                continue;
+            }
+            let left = out.pop().flatten();
+            let right = iter.next().flatten();
+            let joined = match (left, right) {
+                (None, None) => None,
+                (Some(t), None) | (None, Some(t)) => Some(t),
+                (Some(l), Some(r)) => {
+                    let text = format!("{}{}", l.text, r.text);
+                    let tokens = lex(&text);
+                    if tokens.len() != 1 || tokens[0].text.len() != text.len() {
+                        self.errors.push(ExpandError::Paste {
+                            at: invocation.at..invocation.at + invocation.text.len(),
+                            name: name.to_string(),
+                            left: l.text.to_string(),
+                            right: r.text.to_string(),
+                        });
+                        Some(l)
+                    } else {
+                        let kind = tokens[0].kind;
+                        let hide = l.hide.iter().copied().filter(|h| r.hide.contains(h)).collect();
+                        Some(Token {
+                            kind,
+                            text: Cow::Owned(text),
+                            space: l.space,
+                            hide,
+                            at: l.at,
+                            paste: false,
+                        })
+                    }
+                }
+            };
+            out.push(joined);
+        }
+        out.into_iter().flatten().collect()
+    }
+}
+
+fn comma<'a>(at: usize) -> Token<'a> {
+    Token { kind: Kind::Punct, text: Cow::Borrowed(","), space: false, hide: Vec::new(), at, paste: false }
+}
+
+/// The tokens inside the parentheses that start at `open`, and the index after the `)`.
+fn parenthesised<'a>(body: &[Token<'a>], open: usize) -> (Vec<Token<'a>>, usize) {
+    if !body.get(open).is_some_and(|t| t.is("(")) {
+        return (Vec::new(), open);
+    }
+    let mut depth = 0;
+    for (i, t) in body.iter().enumerate().skip(open) {
+        if t.is("(") {
+            depth += 1;
+        } else if t.is(")") {
+            depth -= 1;
+            if depth == 0 {
+                return (body[open + 1..i].to_vec(), i + 1);
+            }
+        }
+    }
+    (body[open + 1..].to_vec(), body.len())
+}
+
+/// Whether writing `right` straight after `left` would lex differently (`-` `-` is `--`, `1`
+/// `.5` is `1.5`, `>` `=` is `>=`): then a space goes between them, as cpp does.
+pub(crate) fn glues(left: &str, right: &str) -> bool {
+    let (Some(a), Some(b)) = (left.as_bytes().last().copied(), right.as_bytes().first().copied()) else {
+        return false;
+    };
+    if is_ident_char(a) && (is_ident_char(b) || b == b'.') {
+        return true;
+    }
+    if a == b'.' && (b.is_ascii_digit() || b == b'.') {
+        return true;
+    }
+    // The word `left` ends with: a pp-number if it starts with a digit or `.`.
+    let word_start = left.bytes().rposition(|c| !(is_ident_char(c) || c == b'.')).map_or(0, |p| p + 1);
+    let number = left.as_bytes().get(word_start).is_some_and(|c| c.is_ascii_digit() || *c == b'.');
+    if number && matches!(a, b'e' | b'E' | b'p' | b'P') && matches!(b, b'+' | b'-') {
+        return true;
+    }
+    const PAIRS: [&[u8; 2]; 24] = [
+        b"++", b"--", b"->", b"<<", b">>", b"<=", b">=", b"==", b"!=", b"&&", b"||", b"+=", b"-=", b"*=",
+        b"/=", b"%=", b"&=", b"|=", b"^=", b"##", b"//", b"/*", b"::", b"*/",
+    ];
+    PAIRS.contains(&&[a, b])
+}
