@@ -67,7 +67,7 @@ pub fn evaluate<'a>(text: &'a str, expander: &mut Expander<'_, 'a>) -> Result<bo
         .map(|t| Ok((operand(&t)?, t.at)))
         .collect::<Result<Vec<(Tok, usize)>, ExprError>>()?;
     let mut parser = Parser { tokens, at: 0, end: text.len(), depth: 0, dead: 0 };
-    let value = parser.conditional()?;
+    let value = parser.comma()?;
     match parser.tokens.get(parser.at) {
         None => Ok(value.is_true()),
         Some(&(_, offset)) => {
@@ -198,12 +198,21 @@ impl Parser {
         value
     }
 
+    /// `a, b` is `b` (gcc accepts the comma operator in `#if`; C89 leaves it out).
+    fn comma(&mut self) -> Result<Value, ExprError> {
+        let mut value = self.conditional()?;
+        while self.eat(",") {
+            value = self.conditional()?;
+        }
+        Ok(value)
+    }
+
     fn conditional(&mut self) -> Result<Value, ExprError> {
         let condition = self.logical_or()?;
         if !self.eat("?") {
             return Ok(condition);
         }
-        let then = self.operand_of(condition.is_true(), Parser::conditional)?;
+        let then = self.operand_of(condition.is_true(), Parser::comma)?;
         if !self.eat(":") {
             return Err(ExprError::Malformed { offset: self.offset(), expected: "`:`" });
         }
@@ -331,7 +340,7 @@ impl Parser {
             return Ok(Value { bits: !v.bits, ..v });
         }
         if self.eat("(") {
-            let value = self.conditional()?;
+            let value = self.comma()?;
             if !self.eat(")") {
                 return Err(ExprError::Malformed { offset: self.offset(), expected: "`)`" });
             }
@@ -351,11 +360,12 @@ impl Parser {
 mod tests {
     use super::*;
     use crate::preprocess::macros::MacroDef;
-    use std::collections::HashMap;
 
     fn eval(text: &str) -> Result<bool, ExprError> {
-        let object = |value| MacroDef::new(None, false, value, None);
-        let macros: HashMap<&str, MacroDef> = [
+        let object = MacroDef::object;
+        let (params, body) =
+            (vec!["a".to_string(), "b".to_string()], crate::preprocess::macros::lex_body("((a) + (b))"));
+        let macros: crate::preprocess::macros::Macros = [
             ("ONE", object("1")),
             ("EMPTY", object("")),
             ("MAX_DIRECTIONAL_LIGHT_COUNT", object("4")),
@@ -364,11 +374,12 @@ mod tests {
             ("PING", object("PONG")),
             ("PONG", object("PING")),
             ("CAFÉ", object("2")),
-            ("ADD", MacroDef::new(Some(vec!["a", "b"]), false, "((a) + (b))", None)),
+            ("ADD", MacroDef::new(Some(&params), false, "((a) + (b))", &body, None)),
         ]
         .into_iter()
         .collect();
-        let mut expander = Expander::new(&macros);
+        let mut hides = crate::preprocess::macros::HideSets::new();
+        let mut expander = Expander::new(&macros, &mut hides);
         evaluate(text, &mut expander)
     }
 
@@ -451,6 +462,12 @@ mod tests {
         assert!(matches!(eval("defined"), Err(ExprError::Malformed { offset: 0, .. })));
         assert!(matches!(eval("defined(ONE"), Err(ExprError::Malformed { .. })));
         assert!(matches!(eval("EMPTY"), Err(ExprError::Malformed { .. })), "an empty macro leaves nothing");
+    }
+
+    #[test]
+    fn the_comma_operator_gives_its_right_operand() {
+        assert_eq!(eval("(0, 1)"), Ok(true));
+        assert_eq!(eval("1 ? 0, 0 : 1"), Ok(false));
     }
 
     #[test]

@@ -32,8 +32,8 @@ pub(crate) struct Token<'a> {
     pub text: Cow<'a, str>,
     /// Whitespace, a comment or a line break came before it.
     pub space: bool,
-    /// Macros this token may no longer expand (its hide set).
-    pub hide: Vec<&'a str>,
+    /// Macros this token may no longer expand: its hide set, interned in the [`Expander`].
+    hide: u32,
     /// Offset, in the lexed text, of where it came from: for expanded tokens, the invocation.
     pub at: usize,
     /// A `##` of a macro body (an argument's `##` does not paste).
@@ -46,12 +46,23 @@ impl Token<'_> {
     }
 }
 
-/// C's punctuators (and WGSL's `@`), longest first.
-const PUNCTUATORS: [&str; 48] = [
-    "...", "<<=", ">>=", "->", "++", "--", "<<", ">>", "<=", ">=", "==", "!=", "&&", "||", "*=", "/=", "%=",
-    "+=", "-=", "&=", "^=", "|=", "##", "::", "[", "]", "(", ")", "{", "}", ".", "&", "*", "+", "-", "~",
-    "!", "/", "%", "<", ">", "^", "|", "?", ":", ";", "=", ",",
+/// C's two-character punctuators (the three-character ones are `...`, `<<=` and `>>=`); any other
+/// ASCII punctuation character is a punctuator of its own.
+const PUNCTUATOR_PAIRS: [&[u8; 2]; 21] = [
+    b"->", b"++", b"--", b"<<", b">>", b"<=", b">=", b"==", b"!=", b"&&", b"||", b"*=", b"/=", b"%=", b"+=",
+    b"-=", b"&=", b"^=", b"|=", b"##", b"::",
 ];
+
+/// The length of the punctuator at the start of `rest` (whose first byte is ASCII punctuation).
+fn punctuator_len(rest: &[u8]) -> usize {
+    if rest.starts_with(b"...") || rest.starts_with(b"<<=") || rest.starts_with(b">>=") {
+        3
+    } else if rest.len() >= 2 && PUNCTUATOR_PAIRS.contains(&&[rest[0], rest[1]]) {
+        2
+    } else {
+        1
+    }
+}
 
 pub(crate) fn is_ident_start(b: u8) -> bool {
     b.is_ascii_alphabetic() || b == b'_' || b >= 0x80
@@ -146,8 +157,8 @@ impl<'a> Lexer<'a> {
             }
             i = (i + 1).min(bytes.len());
             Kind::Literal
-        } else if let Some(p) = PUNCTUATORS.iter().find(|p| self.text[start..self.end].starts_with(**p)) {
-            i = start + p.len();
+        } else if b.is_ascii_punctuation() {
+            i = start + punctuator_len(&bytes[start..]);
             Kind::Punct
         } else {
             // One character, whole.
@@ -159,7 +170,7 @@ impl<'a> Lexer<'a> {
             kind,
             text: Cow::Borrowed(&self.text[start..i]),
             space,
-            hide: Vec::new(),
+            hide: 0,
             at: start,
             paste: false,
         })
@@ -172,25 +183,70 @@ pub(crate) fn lex(text: &str) -> Vec<Token<'_>> {
     std::iter::from_fn(|| lexer.next_token()).collect()
 }
 
-/// A `#define`, ready to expand.
+/// A token of a macro body, lexed once when its file is scanned: a range of the body's text.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct BodyToken {
+    kind: Kind,
+    range: Range<u32>,
+    space: bool,
+    /// A `##` operator.
+    paste: bool,
+}
+
+/// The tokens of a macro's body.
+pub(crate) fn lex_body(value: &str) -> Vec<BodyToken> {
+    lex(value)
+        .into_iter()
+        .map(|t| BodyToken {
+            kind: t.kind,
+            range: t.at as u32..(t.at + t.text.len()) as u32,
+            space: t.space,
+            paste: t.is("##"),
+        })
+        .collect()
+}
+
+/// A `#define`, ready to expand: it borrows what the scan made of the directive.
 #[derive(Debug, Clone)]
 pub(crate) struct MacroDef<'a> {
     /// `None` for an object-like macro.
-    pub params: Option<Vec<&'a str>>,
+    pub params: Option<&'a [String]>,
     pub variadic: bool,
-    pub body: Vec<Token<'a>>,
+    value: &'a str,
+    body: Cow<'a, [BodyToken]>,
     /// The name in the `#define` (`None` for keywords and built-in macros).
     pub defined_at: Option<crate::source::Span>,
 }
 
 impl<'a> MacroDef<'a> {
     pub fn new(
-        params: Option<Vec<&'a str>>,
+        params: Option<&'a [String]>,
         variadic: bool,
         value: &'a str,
+        body: &'a [BodyToken],
         defined_at: Option<crate::source::Span>,
     ) -> MacroDef<'a> {
-        MacroDef { params, variadic, body: mark_pastes(lex(value)), defined_at }
+        MacroDef { params, variadic, value, body: Cow::Borrowed(body), defined_at }
+    }
+
+    /// An object-like macro not from a `#define` (a keyword: `1`).
+    pub fn object(value: &'a str) -> MacroDef<'a> {
+        MacroDef { params: None, variadic: false, value, body: Cow::Owned(lex_body(value)), defined_at: None }
+    }
+
+    fn text(&self, token: &BodyToken) -> &'a str {
+        &self.value[token.range.start as usize..token.range.end as usize]
+    }
+
+    fn token(&self, token: &BodyToken) -> Token<'a> {
+        Token {
+            kind: token.kind,
+            text: Cow::Borrowed(self.text(token)),
+            space: token.space,
+            hide: 0,
+            at: 0,
+            paste: token.paste,
+        }
     }
 
     /// The same definition, as C compares them: parameters and tokens (spacing aside).
@@ -198,23 +254,16 @@ impl<'a> MacroDef<'a> {
         self.params == other.params
             && self.variadic == other.variadic
             && self.body.len() == other.body.len()
-            && self.body.iter().zip(&other.body).all(|(a, b)| a.text == b.text)
+            && self.body.iter().zip(other.body.iter()).all(|(a, b)| self.text(a) == other.text(b))
     }
 
     fn param(&self, name: &str) -> Option<usize> {
-        let params = self.params.as_ref()?;
-        if let Some(i) = params.iter().position(|p| *p == name) {
+        let params = self.params?;
+        if let Some(i) = params.iter().position(|p| p == name) {
             return Some(i);
         }
         (self.variadic && name == "__VA_ARGS__").then_some(params.len())
     }
-}
-
-fn mark_pastes(mut body: Vec<Token<'_>>) -> Vec<Token<'_>> {
-    for token in &mut body {
-        token.paste = token.is("##");
-    }
-    body
 }
 
 /// What went wrong in an expansion; `at` is an offset in the lexed text.
@@ -254,18 +303,98 @@ impl<'a> Input<'_, 'a> {
     }
 }
 
+/// The macros of one variant by name. Every identifier of the text is looked up in it, so it
+/// uses a fast, non-cryptographic hash (macro names are not chosen by an adversary).
+pub(crate) type Macros<'a> = HashMap<&'a str, MacroDef<'a>, foldhash::fast::FixedState>;
+
+/// Hide sets, interned so that a token carries a number (set 0 is empty): expansion makes a set
+/// for every token it writes, from a handful of distinct ones.
+#[derive(Debug)]
+pub(crate) struct HideSets<'a> {
+    /// Each set's names, sorted.
+    sets: Vec<Vec<&'a str>>,
+    ids: HashMap<Vec<&'a str>, u32, foldhash::fast::FixedState>,
+    added: HashMap<(u32, &'a str), u32, foldhash::fast::FixedState>,
+}
+
+impl Default for HideSets<'_> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl<'a> HideSets<'a> {
+    pub fn new() -> HideSets<'a> {
+        let mut ids = HashMap::default();
+        ids.insert(Vec::new(), 0);
+        HideSets { sets: vec![Vec::new()], ids, added: HashMap::default() }
+    }
+
+    fn contains(&self, set: u32, name: &str) -> bool {
+        self.sets[set as usize].binary_search(&name).is_ok()
+    }
+
+    fn len(&self, set: u32) -> usize {
+        self.sets[set as usize].len()
+    }
+
+    fn intern(&mut self, names: Vec<&'a str>) -> u32 {
+        if let Some(&id) = self.ids.get(&names) {
+            return id;
+        }
+        let id = self.sets.len() as u32;
+        self.sets.push(names.clone());
+        self.ids.insert(names, id);
+        id
+    }
+
+    fn add(&mut self, set: u32, name: &'a str) -> u32 {
+        if let Some(&id) = self.added.get(&(set, name)) {
+            return id;
+        }
+        let mut names = self.sets[set as usize].clone();
+        if let Err(at) = names.binary_search(&name) {
+            names.insert(at, name);
+        }
+        let id = self.intern(names);
+        self.added.insert((set, name), id);
+        id
+    }
+
+    fn union(&mut self, a: u32, b: u32) -> u32 {
+        if a == b || b == 0 {
+            return a;
+        }
+        if a == 0 {
+            return b;
+        }
+        let names = self.sets[b as usize].clone();
+        names.into_iter().fold(a, |set, name| self.add(set, name))
+    }
+
+    fn intersection(&mut self, a: u32, b: u32) -> u32 {
+        if a == b {
+            return a;
+        }
+        let names = self.sets[a as usize].iter().copied().filter(|n| self.contains(b, n)).collect();
+        self.intern(names)
+    }
+}
+
 /// Expands macros from a table of definitions.
 pub(crate) struct Expander<'m, 'a> {
-    pub macros: &'m HashMap<&'a str, MacroDef<'a>>,
+    pub macros: &'m Macros<'a>,
     pub errors: Vec<ExpandError>,
+    /// Kept by the caller across expansions, so sets are made once per variant.
+    hides: &'m mut HideSets<'a>,
     produced: usize,
     /// The invocation the user wrote that the current expansion came from (name's place, name).
     outer: (Range<usize>, String),
 }
 
 impl<'m, 'a> Expander<'m, 'a> {
-    pub fn new(macros: &'m HashMap<&'a str, MacroDef<'a>>) -> Expander<'m, 'a> {
-        Expander { macros, errors: Vec::new(), produced: 0, outer: (0..0, String::new()) }
+    pub fn new(macros: &'m Macros<'a>, hides: &'m mut HideSets<'a>) -> Expander<'m, 'a> {
+        Expander { macros, errors: Vec::new(), hides, produced: 0, outer: (0..0, String::new()) }
     }
 
     /// Expands the invocation that starts at the lexer's position (a macro name), reading as
@@ -282,6 +411,10 @@ impl<'m, 'a> Expander<'m, 'a> {
 
     /// Expands every macro of a token list (an argument, an `#if` expression).
     pub fn all(&mut self, tokens: Vec<Token<'a>>) -> Vec<Token<'a>> {
+        // Most arguments name no macro at all.
+        if !tokens.iter().any(|t| t.kind == Kind::Ident && self.macros.contains_key(&*t.text)) {
+            return tokens;
+        }
         let mut input = Input { pending: tokens.into(), source: None };
         let mut out = Vec::new();
         self.run(&mut input, &mut out, false);
@@ -303,7 +436,7 @@ impl<'m, 'a> Expander<'m, 'a> {
                     None => return,
                 }
             };
-            if token.kind != Kind::Ident || token.hide.contains(&&*token.text) {
+            if token.kind != Kind::Ident || self.hides.contains(token.hide, &token.text) {
                 out.push(token);
                 continue;
             }
@@ -312,10 +445,10 @@ impl<'m, 'a> Expander<'m, 'a> {
                 continue;
             };
             let name: &'a str = self.macros.get_key_value(&*token.text).map_or("", |(k, _)| *k);
-            if token.hide.is_empty() {
+            if token.hide == 0 {
                 self.outer = (token.at..token.at + token.text.len(), name.to_string());
             }
-            if token.hide.len() >= MAX_EXPANSION_DEPTH {
+            if self.hides.len(token.hide) >= MAX_EXPANSION_DEPTH {
                 let (at, name) = self.outer.clone();
                 self.errors.push(ExpandError::TooDeep { at, name });
                 out.push(token);
@@ -323,8 +456,7 @@ impl<'m, 'a> Expander<'m, 'a> {
             }
             let expansion = match &def.params {
                 None => {
-                    let mut hide = token.hide.clone();
-                    hide.push(name);
+                    let hide = self.hides.add(token.hide, name);
                     self.substitute(def, name, &[], hide, &token)
                 }
                 Some(params) => {
@@ -350,9 +482,8 @@ impl<'m, 'a> Expander<'m, 'a> {
                         });
                         continue;
                     }
-                    let mut hide: Vec<&'a str> =
-                        token.hide.iter().copied().filter(|h| close.hide.contains(h)).collect();
-                    hide.push(name);
+                    let common = self.hides.intersection(token.hide, close.hide);
+                    let hide = self.hides.add(common, name);
                     self.substitute(def, name, &args, hide, &token)
                 }
             };
@@ -408,10 +539,10 @@ impl<'m, 'a> Expander<'m, 'a> {
         def: &MacroDef<'a>,
         name: &'a str,
         args: &[Vec<Token<'a>>],
-        hide: Vec<&'a str>,
+        hide: u32,
         invocation: &Token<'a>,
     ) -> Vec<Token<'a>> {
-        let named = def.params.as_ref().map_or(0, Vec::len);
+        let named = def.params.map_or(0, <[String]>::len);
         // `__VA_ARGS__`: the arguments after the named ones, with their commas.
         let variadic: Vec<Token<'a>> = if def.variadic {
             let mut joined = Vec::new();
@@ -426,24 +557,19 @@ impl<'m, 'a> Expander<'m, 'a> {
             Vec::new()
         };
         let arg = |index: usize| if index == named { &variadic } else { &args[index] };
+        // Each argument is macro-expanded once, however often its parameter appears.
+        let mut expanded: Vec<Option<Vec<Token<'a>>>> = vec![None; named + 1];
         let body = &def.body;
         let mut out: Vec<Option<Token<'a>>> = Vec::with_capacity(body.len());
         let mut i = 0;
         while i < body.len() {
-            let token = &body[i];
+            let token = def.token(&body[i]);
             if def.variadic && token.kind == Kind::Ident && token.text == "__VA_OPT__" {
                 // `__VA_OPT__(x)`: x when there are variadic arguments, nothing otherwise.
-                let (group, after) = parenthesised(body, i + 1);
+                let (group, after) = parenthesised(def, i + 1);
                 if !variadic.is_empty() {
-                    let inner = MacroDef {
-                        params: def.params.clone(),
-                        variadic: true,
-                        body: group,
-                        defined_at: None,
-                    };
-                    out.extend(
-                        self.substitute(&inner, name, args, Vec::new(), invocation).into_iter().map(Some),
-                    );
+                    let inner = MacroDef { body: Cow::Owned(group), defined_at: None, ..def.clone() };
+                    out.extend(self.substitute(&inner, name, args, 0, invocation).into_iter().map(Some));
                 }
                 i = after;
                 continue;
@@ -452,7 +578,18 @@ impl<'m, 'a> Expander<'m, 'a> {
                 (Kind::Ident, Some(index)) => {
                     let beside_paste =
                         body.get(i + 1).is_some_and(|t| t.paste) || (i > 0 && body[i - 1].paste);
-                    let tokens = if beside_paste { arg(index).clone() } else { self.all(arg(index).clone()) };
+                    let tokens = if beside_paste {
+                        arg(index).clone()
+                    } else {
+                        match &expanded[index] {
+                            Some(tokens) => tokens.clone(),
+                            None => {
+                                let tokens = self.all(arg(index).clone());
+                                expanded[index] = Some(tokens.clone());
+                                tokens
+                            }
+                        }
+                    };
                     if tokens.is_empty() {
                         // A placemarker: `##` next to an empty argument pastes nothing.
                         out.push(None);
@@ -464,27 +601,19 @@ impl<'m, 'a> Expander<'m, 'a> {
                         out.push(Some(t));
                     }
                 }
-                _ => out.push(Some(token.clone())),
+                _ => out.push(Some(token)),
             }
             i += 1;
         }
-        let pasted = self.paste(out, name, invocation);
+        let mut pasted = self.paste(out, name, invocation);
+        for (k, t) in pasted.iter_mut().enumerate() {
+            t.hide = self.hides.union(t.hide, hide);
+            t.at = invocation.at;
+            if k == 0 {
+                t.space = invocation.space;
+            }
+        }
         pasted
-            .into_iter()
-            .enumerate()
-            .map(|(k, mut t)| {
-                for h in &hide {
-                    if !t.hide.contains(h) {
-                        t.hide.push(h);
-                    }
-                }
-                t.at = invocation.at;
-                if k == 0 {
-                    t.space = invocation.space;
-                }
-                t
-            })
-            .collect()
     }
 
     /// Applies the body's `##` operators (placemarkers are `None`).
@@ -519,7 +648,7 @@ impl<'m, 'a> Expander<'m, 'a> {
                         Some(l)
                     } else {
                         let kind = tokens[0].kind;
-                        let hide = l.hide.iter().copied().filter(|h| r.hide.contains(h)).collect();
+                        let hide = self.hides.intersection(l.hide, r.hide);
                         Some(Token {
                             kind,
                             text: Cow::Owned(text),
@@ -538,19 +667,21 @@ impl<'m, 'a> Expander<'m, 'a> {
 }
 
 fn comma<'a>(at: usize) -> Token<'a> {
-    Token { kind: Kind::Punct, text: Cow::Borrowed(","), space: false, hide: Vec::new(), at, paste: false }
+    Token { kind: Kind::Punct, text: Cow::Borrowed(","), space: false, hide: 0, at, paste: false }
 }
 
-/// The tokens inside the parentheses that start at `open`, and the index after the `)`.
-fn parenthesised<'a>(body: &[Token<'a>], open: usize) -> (Vec<Token<'a>>, usize) {
-    if !body.get(open).is_some_and(|t| t.is("(")) {
+/// The body tokens inside the parentheses that start at `open`, and the index after the `)`.
+fn parenthesised(def: &MacroDef<'_>, open: usize) -> (Vec<BodyToken>, usize) {
+    let body = &def.body;
+    let is = |i: usize, p: &str| body.get(i).is_some_and(|t| t.kind == Kind::Punct && def.text(t) == p);
+    if !is(open, "(") {
         return (Vec::new(), open);
     }
     let mut depth = 0;
-    for (i, t) in body.iter().enumerate().skip(open) {
-        if t.is("(") {
+    for i in open..body.len() {
+        if is(i, "(") {
             depth += 1;
-        } else if t.is(")") {
+        } else if is(i, ")") {
             depth -= 1;
             if depth == 0 {
                 return (body[open + 1..i].to_vec(), i + 1);
@@ -566,15 +697,16 @@ pub(crate) fn glues(left: &str, right: &str) -> bool {
     let (Some(a), Some(b)) = (left.as_bytes().last().copied(), right.as_bytes().first().copied()) else {
         return false;
     };
-    if is_ident_char(a) && (is_ident_char(b) || b == b'.') {
-        return true;
-    }
-    if a == b'.' && (b.is_ascii_digit() || b == b'.') {
-        return true;
-    }
     // The word `left` ends with: a pp-number if it starts with a digit or `.`.
     let word_start = left.bytes().rposition(|c| !(is_ident_char(c) || c == b'.')).map_or(0, |p| p + 1);
     let number = left.as_bytes().get(word_start).is_some_and(|c| c.is_ascii_digit() || *c == b'.');
+    if is_ident_char(a) && is_ident_char(b) {
+        return true;
+    }
+    // `1` `.5` is `1.5`, but `uv` `.x` is still `uv.x`.
+    if (number && b == b'.') || (a == b'.' && (b.is_ascii_digit() || b == b'.')) {
+        return true;
+    }
     if number && matches!(a, b'e' | b'E' | b'p' | b'P') && matches!(b, b'+' | b'-') {
         return true;
     }

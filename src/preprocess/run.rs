@@ -4,13 +4,13 @@
 use super::error::PreprocessError;
 use super::expr::{self, ExprError};
 use super::include::{Includes, Program};
-use super::macros::{ExpandError, Expander, Lexer, MAX_EXPANSION_DEPTH, MacroDef, glues};
+use super::macros::{ExpandError, Expander, HideSets, Lexer, MAX_EXPANSION_DEPTH, MacroDef, Macros, glues};
 use super::scan::{BranchKind, Condition, Item, Target};
 use super::source_map::{ROOT, SourceMap};
 use super::{Preprocessed, Stage};
 use crate::diagnostics::Diagnostic;
 use crate::source::{FileId, SourceStore, Span};
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 
 /// Includes nested deeper than this are refused.
 pub const MAX_INCLUDE_DEPTH: usize = 64;
@@ -25,16 +25,17 @@ pub(super) fn run<'a>(
     let mut runner = Runner {
         includes,
         store,
-        macros: HashMap::new(),
+        macros: Macros::default(),
+        hides: HideSets::new(),
         out: String::new(),
         map: SourceMap::default(),
         stack: Vec::new(),
         once: HashSet::new(),
         diagnostics: Vec::new(),
     };
-    runner.macros.insert(stage.macro_name(), MacroDef::new(None, false, "1", None));
+    runner.macros.insert(stage.macro_name(), MacroDef::object("1"));
     for keyword in keywords {
-        runner.macros.insert(keyword, MacroDef::new(None, false, "1", None));
+        runner.macros.insert(keyword, MacroDef::object("1"));
     }
     for &block in &program.blocks {
         runner.stack.push(block);
@@ -48,7 +49,8 @@ pub(super) fn run<'a>(
 struct Runner<'a> {
     includes: &'a Includes,
     store: &'a SourceStore,
-    macros: HashMap<&'a str, MacroDef<'a>>,
+    macros: Macros<'a>,
+    hides: HideSets<'a>,
     out: String,
     map: SourceMap,
     /// Units being included, outermost first (for cycles and the depth limit).
@@ -79,9 +81,9 @@ impl<'a> Runner<'a> {
                     self.text(text, file, *start as usize, *end as usize, idents, inclusion)
                 }
                 Item::Include { target, span, .. } => self.include(target, *span, inclusion),
-                Item::Define { name, span, params, variadic, value } => {
-                    let params = params.as_ref().map(|p| p.iter().map(String::as_str).collect());
-                    self.define(name, *span, MacroDef::new(params, *variadic, value, Some(*span)), inclusion)
+                Item::Define { name, span, params, variadic, value, body } => {
+                    let definition = MacroDef::new(params.as_deref(), *variadic, value, body, Some(*span));
+                    self.define(name, *span, definition, inclusion)
                 }
                 Item::Undef { name } => {
                     self.macros.remove(name.as_str());
@@ -186,7 +188,7 @@ impl<'a> Runner<'a> {
     ) -> usize {
         let (start, end) = (range.start, range.end);
         let mut lexer = Lexer::new(text, range);
-        let mut expander = Expander::new(&self.macros);
+        let mut expander = Expander::new(&self.macros, &mut self.hides);
         let tokens = expander.invocation(&mut lexer);
         let errors = std::mem::take(&mut expander.errors);
         let consumed = lexer.position();
@@ -269,7 +271,7 @@ impl<'a> Runner<'a> {
             Condition::Defined { name, .. } => self.macros.contains_key(name.as_str()),
             Condition::NotDefined { name, .. } => !self.macros.contains_key(name.as_str()),
             Condition::Expr { text, start } => {
-                let mut expander = Expander::new(&self.macros);
+                let mut expander = Expander::new(&self.macros, &mut self.hides);
                 let result = expr::evaluate(text, &mut expander);
                 let errors = std::mem::take(&mut expander.errors);
                 let at = |offset: usize, len: usize| {

@@ -50,6 +50,8 @@ pub(crate) enum Item {
         /// The last parameter is `...` (`__VA_ARGS__`).
         variadic: bool,
         value: String,
+        /// `value`'s tokens, lexed once here rather than by every variant.
+        body: Vec<super::macros::BodyToken>,
     },
     Undef {
         name: String,
@@ -478,7 +480,8 @@ impl Scanner<'_> {
         if !self.check_body(&value, value_start, params.as_deref(), variadic) {
             return;
         }
-        self.unit.items.push(Item::Define { name, span, params, variadic, value });
+        let body = super::macros::lex_body(&value);
+        self.unit.items.push(Item::Define { name, span, params, variadic, value, body });
     }
 
     /// `(a, b)`, `(a, ...)`, `(...)` or `()`, with the cursor on `(`; the names and whether the

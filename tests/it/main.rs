@@ -5,6 +5,7 @@ mod accuracy;
 mod bad;
 mod build;
 mod cli;
+mod cpp;
 mod gpu;
 mod integrity;
 mod list;

@@ -523,3 +523,24 @@ fn include_with_pragmas_declares_keywords_for_the_pass() {
     assert!(sets.contains(&vec!["_".to_string(), "_DETAIL".to_string()]), "{sets:?}");
     assert!(!sets.iter().flatten().any(|k| k == "_PLAIN"), "{sets:?}");
 }
+
+#[test]
+fn shaders_written_with_unity_style_macros_compile() {
+    let output = tempfile::tempdir().expect("temp dir");
+    let summary =
+        crate::support::build_clean(&crate::support::root().join("fixtures/macros"), Some(output.path()));
+    // Macro Unlit with and without _BLUR; Macro Lit's clipping and premultiplying combinations.
+    assert_eq!((summary.shaders, summary.variants), (2, 6));
+    let manifest = crate::support::verified_manifest(output.path());
+    let unlit = manifest.shaders.iter().find(|s| s.name == "Custom RP/Macro Unlit").expect("unlit");
+    let pass = &unlit.passes[0];
+    // CBUFFER_START/CBUFFER_END made the material block, TEXTURE2D and SAMPLER its bindings.
+    let names: Vec<&str> = pass.layout.iter().flat_map(|g| &g.entries).map(|e| e.name.as_str()).collect();
+    for name in ["UnityPerMaterial", "_BaseMap", "sampler_BaseMap"] {
+        assert!(names.contains(&name), "{names:?}");
+    }
+    assert_eq!(
+        pass.uniform_blocks.iter().find(|b| b.name == "UnityPerMaterial").map(|b| b.type_name.as_str()),
+        Some("UnityPerMaterial_Layout")
+    );
+}

@@ -31,6 +31,7 @@ fn outputs() -> Outputs {
         root().join("fixtures/half"),
         root().join("fixtures/warn/global_keywords"),
         root().join("fixtures/warn/gbk_comments.shader"),
+        root().join("fixtures/macros"),
         generated,
     ];
     let folders = projects

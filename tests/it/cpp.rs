@@ -1,0 +1,261 @@
+//! kiln's preprocessor against gcc's: generated programs (thousands of random `#if`
+//! expressions, hundreds of lines of nested function-like macro calls with `##` and variadic
+//! macros) preprocessed by both, compared token by token. Required in CI (`KILN_REQUIRE_TOOLS`),
+//! skipped with a printed reason where `cpp` is missing.
+
+use kiln::preprocess::{IncludeConfig, Includes, Stage};
+use kiln::source::{SourceStore, Span};
+use std::fmt::Write as _;
+use std::process::Command;
+
+/// A small deterministic generator (xorshift64*), so a failure reproduces.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+
+    fn pick<'a>(&mut self, items: &[&'a str]) -> &'a str {
+        items[self.below(items.len())]
+    }
+}
+
+/// Macros both preprocessors see before each generated program (the variant's keyword `K1` too).
+const PRELUDE: &str = "\
+#define A 3
+#define B -2
+#define U 5u
+#define BIG 0xFFFFFFFFFFFFFFFF
+#define Z0 0
+#define F(x, y) ((x) * (y))
+#define G(x) (x + 1)
+#define H(x, ...) (x - (__VA_ARGS__))
+#define CAT(a, b) a ## b
+#define XCAT(a, b) CAT(a, b)
+#define ID(x) x
+#define PAIR(a, b) a, b
+#define FIRST(a, ...) a
+#define REST(a, ...) __VA_ARGS__
+#define APPLY(f, x) f(x)
+#define TWICE(x) x x
+#define N -1
+#define ONE 1
+#define EMPTY
+#define OBJ_CAT foo ## bar
+#define SELF SELF + 1
+#define REC(x) REC(x) + x
+#define SAMPLE SAMPLE_TEXTURE2D
+#define SAMPLE_TEXTURE2D(t, s, uv) textureSample(t, s, uv)
+#define TEXTURE2D(name) var name: texture_2d<f32>
+#define T vec3<f32>
+#define CALL(m, ...) m(__VA_ARGS__)
+";
+
+fn literal(rng: &mut Rng) -> String {
+    let value = rng.below(40);
+    let suffix = rng.pick(&["", "", "", "u", "U", "l", "L", "ul", "LL", "ull", "LLu"]);
+    match rng.below(4) {
+        0 => format!("0x{value:X}{suffix}"),
+        1 if value > 0 => format!("0{value:o}{suffix}"),
+        _ => format!("{value}{suffix}"),
+    }
+}
+
+/// A random `#if` expression with no operation C leaves undefined (no division by a zero that is
+/// evaluated, no shift out of range, no `defined` inside a macro's arguments, which gcc expands
+/// first).
+fn expression(rng: &mut Rng, depth: usize, in_macro: bool) -> String {
+    if depth == 0 || rng.below(4) == 0 {
+        return match rng.below(if in_macro { 4 } else { 9 }) {
+            0..=2 => literal(rng),
+            3 => rng.pick(&["A", "B", "U", "Z0", "ONE", "MISSING", "K1", "K2"]).to_string(),
+            4 => format!("defined({})", rng.pick(&["A", "K1", "K2", "F", "MISSING"])),
+            5 => format!("defined {}", rng.pick(&["U", "K1", "K2", "EMPTY"])),
+            6 => format!("F({}, {})", expression(rng, 0, true), expression(rng, 0, true)),
+            7 => format!("G({})", expression(rng, 0, true)),
+            _ => format!(
+                "H({}, {}, {})",
+                expression(rng, 0, true),
+                expression(rng, 0, true),
+                expression(rng, 0, true)
+            ),
+        };
+    }
+    let e = |rng: &mut Rng| expression(rng, depth - 1, in_macro);
+    match rng.below(11) {
+        0 => format!("{} ({})", rng.pick(&["-", "+", "~", "!"]), e(rng)),
+        1 => format!("({}) ? ({}) : ({})", e(rng), e(rng), e(rng)),
+        // A divisor that is never 0 when evaluated: 1 + (x & 7).
+        2 => format!("({}) {} (1 + (({}) & 7))", e(rng), rng.pick(&["/", "%"]), e(rng)),
+        // Short circuits around operations that would fail if evaluated.
+        3 => format!("(0 && (1 / 0)) || ({})", e(rng)),
+        4 => format!("({}) {} {}", e(rng), rng.pick(&["<<", ">>"]), rng.below(63)),
+        5 => format!("F({}, G({}))", expression(rng, depth - 1, true), expression(rng, depth - 1, true)),
+        _ => {
+            let op = rng.pick(&["+", "-", "*", "<", ">", "<=", ">=", "==", "!=", "&", "^", "|", "&&", "||"]);
+            format!("({}) {op} ({})", e(rng), e(rng))
+        }
+    }
+}
+
+/// A random line of macro calls. With `comma_free`, nothing that expands to a top-level comma:
+/// such a call passed on to another function-like macro would give it extra arguments, an error
+/// in C too.
+fn call(rng: &mut Rng, depth: usize, comma_free: bool) -> String {
+    if depth == 0 || rng.below(3) == 0 {
+        let leaves = ["x", "y1", "2", "0.5", "N", "ONE", "EMPTY", "OBJ_CAT", "SELF", "T", "a.b", "1.0f"];
+        return rng.pick(&leaves).to_string();
+    }
+    let c = |rng: &mut Rng| call(rng, depth - 1, comma_free);
+    let free = |rng: &mut Rng| call(rng, depth - 1, true);
+    match rng.below(if comma_free { 12 } else { 14 }) {
+        0 => format!("CAT({}, {})", rng.pick(&["x", "foo", "_", "v"]), rng.pick(&["1", "bar", "y", ""])),
+        1 => format!("XCAT({}, {})", rng.pick(&["ON", "x"]), rng.pick(&["E", "1"])),
+        2 => format!("ID({})", c(rng)),
+        3 => format!("FIRST({}, {})", c(rng), c(rng)),
+        4 => format!("APPLY(ID, {})", free(rng)),
+        5 => format!("TWICE({})", c(rng)),
+        6 => format!("F({}, {})", c(rng), c(rng)),
+        7 => format!("1-N+{}", c(rng)),
+        8 => format!("SAMPLE(tex, samp, {})", free(rng)),
+        9 => format!("REC({})", c(rng)),
+        10 => format!("CALL(F, {}, {})", free(rng), free(rng)),
+        11 => format!("T=={}", c(rng)),
+        12 => format!("REST({}, {}, {})", c(rng), c(rng), c(rng)),
+        _ => format!("ID(PAIR({}, (({}, {}))))", c(rng), c(rng), c(rng)),
+    }
+}
+
+/// kiln's output for `text` with keyword `K1` on.
+fn kiln_output(text: &str) -> String {
+    let mut store = SourceStore::new();
+    let file = store.add("generated.wgsl", text);
+    let mut includes = Includes::new(IncludeConfig::new(Vec::new()));
+    let (program, mut diagnostics) = includes.load_program(&mut store, &[Span::new(file, 0..text.len())]);
+    let out = kiln::preprocess::preprocess(&includes, &store, &program, &["K1"], Stage::Vertex);
+    diagnostics.extend(out.diagnostics);
+    let errors: Vec<_> = diagnostics.iter().filter(|d| d.is_error()).cloned().collect();
+    assert!(errors.is_empty(), "{}", kiln::diagnostics::render_plain(&store, &errors));
+    out.text
+}
+
+/// gcc's output for `text` with `K1` defined as 1.
+fn cpp_output(text: &str) -> String {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let input = dir.path().join("generated.c");
+    std::fs::write(&input, format!("#define K1 1\n{text}")).expect("write");
+    let out = Command::new("cpp")
+        .args(["-P", "-undef", "-nostdinc", "-x", "c"])
+        .arg(&input)
+        .output()
+        .expect("cpp runs");
+    assert!(out.status.success(), "cpp failed: {}", String::from_utf8_lossy(&out.stderr));
+    String::from_utf8(out.stdout).expect("utf-8")
+}
+
+/// C's preprocessing tokens of a text (spacing is not compared).
+fn tokens(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let bytes = text.as_bytes();
+    let mut i = 0;
+    const PUNCTS: [&str; 24] = [
+        "...", "<<=", ">>=", "->", "++", "--", "<<", ">>", "<=", ">=", "==", "!=", "&&", "||", "*=", "/=",
+        "%=", "+=", "-=", "&=", "^=", "|=", "##", "::",
+    ];
+    while i < bytes.len() {
+        let b = bytes[i];
+        let start = i;
+        if b.is_ascii_whitespace() {
+            i += 1;
+            continue;
+        } else if b.is_ascii_alphabetic() || b == b'_' {
+            while i < bytes.len() && (bytes[i].is_ascii_alphanumeric() || bytes[i] == b'_') {
+                i += 1;
+            }
+        } else if b.is_ascii_digit() || (b == b'.' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit)) {
+            i += 1;
+            while i < bytes.len() {
+                let c = bytes[i];
+                let exponent = matches!(c, b'+' | b'-') && matches!(bytes[i - 1], b'e' | b'E' | b'p' | b'P');
+                if !(exponent || c.is_ascii_alphanumeric() || c == b'_' || c == b'.') {
+                    break;
+                }
+                i += 1;
+            }
+        } else if let Some(p) = PUNCTS.iter().find(|p| text[i..].starts_with(**p)) {
+            i += p.len();
+        } else {
+            i += 1;
+        }
+        out.push(text[start..i].to_string());
+    }
+    out
+}
+
+fn cpp_available(test: &str) -> bool {
+    let found = Command::new("cpp").arg("--version").output().is_ok_and(|o| o.status.success());
+    if !found {
+        assert!(std::env::var_os("KILN_REQUIRE_TOOLS").is_none(), "{test}: `cpp` is required but missing");
+        println!("{test}: skipped, gcc's `cpp` is not installed (Debian: apt-get install cpp)");
+    }
+    found
+}
+
+/// The first difference between two token streams, with some context.
+fn first_difference(ours: &[String], theirs: &[String]) -> Option<String> {
+    let at = ours
+        .iter()
+        .zip(theirs)
+        .position(|(a, b)| a != b)
+        .or_else(|| (ours.len() != theirs.len()).then(|| ours.len().min(theirs.len())))?;
+    let window = |t: &[String]| t[at.saturating_sub(12)..(at + 12).min(t.len())].join(" ");
+    Some(format!("at token {at}:\n kiln: {}\n  cpp: {}", window(ours), window(theirs)))
+}
+
+#[test]
+fn if_expressions_take_the_branches_cpp_takes() {
+    if !cpp_available("if_expressions_take_the_branches_cpp_takes") {
+        return;
+    }
+    let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+    let mut text = String::from(PRELUDE);
+    let count = 3000;
+    for i in 0..count {
+        let _ = writeln!(text, "#if {}\nTAKEN_{i}\n#else\nNOT_{i}\n#endif", expression(&mut rng, 4, false));
+    }
+    let (ours, theirs) = (tokens(&kiln_output(&text)), tokens(&cpp_output(&text)));
+    let taken = ours.iter().filter(|t| t.starts_with("TAKEN_")).count();
+    println!("{count} #if expressions: {taken} true, {} false, all as cpp decides", count - taken);
+    assert!(taken > count / 10 && taken < count * 9 / 10, "the generator tests both outcomes: {taken}");
+    if let Some(difference) = first_difference(&ours, &theirs) {
+        panic!("kiln and cpp disagree {difference}");
+    }
+}
+
+#[test]
+fn macro_expansion_gives_the_tokens_cpp_gives() {
+    if !cpp_available("macro_expansion_gives_the_tokens_cpp_gives") {
+        return;
+    }
+    let mut rng = Rng(0xD1B5_4A32_D192_ED03);
+    let mut text = String::from(PRELUDE);
+    let lines = 600;
+    for i in 0..lines {
+        // Some calls span lines, as arguments may.
+        let line = call(&mut rng, 4, false).replacen(", ", if i % 7 == 0 { ",\n    " } else { ", " }, 1);
+        let _ = writeln!(text, "let v{i} = {line};");
+    }
+    let (ours, theirs) = (tokens(&kiln_output(&text)), tokens(&cpp_output(&text)));
+    println!("{lines} lines of macro calls: {} tokens, the same as cpp's", ours.len());
+    if let Some(difference) = first_difference(&ours, &theirs) {
+        panic!("kiln and cpp disagree {difference}");
+    }
+}
