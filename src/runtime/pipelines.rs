@@ -99,6 +99,8 @@ pub struct Runtime {
     /// The output folder the build came from, and its manifest's hash (for [`Runtime::reload`]).
     source: Option<(PathBuf, blake3::Hash)>,
     layouts: HashMap<String, Arc<PassLayout>>,
+    /// Per pass (by shader and index): its layout's key in `layouts`, and its render state read.
+    passes: HashMap<(String, usize), (String, Arc<super::state::PassState>)>,
     modules: HashMap<String, wgpu::ShaderModule>,
     pipelines: HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>,
     created: usize,
@@ -114,6 +116,7 @@ impl Runtime {
             library,
             source: None,
             layouts: HashMap::new(),
+            passes: HashMap::new(),
             modules: HashMap::new(),
             pipelines: HashMap::new(),
             created: 0,
@@ -186,11 +189,11 @@ impl Runtime {
 
     /// The bind group and pipeline layouts of a pass.
     pub fn pass_layout(&mut self, shader: &str, pass: usize) -> Result<Arc<PassLayout>, RuntimeError> {
-        let manifest = self.library.pass(shader, pass)?;
-        let key = serde_json::to_string(&manifest.layout).unwrap_or_default();
+        let (key, _) = self.pass_facts(shader, pass)?;
         if let Some(layout) = self.layouts.get(&key) {
             return Ok(layout.clone());
         }
+        let manifest = self.library.pass(shader, pass)?;
         let layout = PassLayout::new(&self.device, &manifest.layout)
             .map_err(|message| RuntimeError::Layout { shader: shader.to_string(), pass, message })?;
         let layout = Arc::new(layout);
@@ -198,16 +201,39 @@ impl Runtime {
         Ok(layout)
     }
 
+    /// What is worked out once per pass: its layout's key and its render state, read.
+    fn pass_facts(
+        &mut self,
+        shader: &str,
+        pass: usize,
+    ) -> Result<(String, Arc<super::state::PassState>), RuntimeError> {
+        if let Some(facts) = self.passes.get(&(shader.to_string(), pass)) {
+            return Ok(facts.clone());
+        }
+        let manifest = self.library.pass(shader, pass)?;
+        let key = serde_json::to_string(&manifest.layout).unwrap_or_default();
+        let state = super::state::PassState::parse(manifest).map_err(|error| RuntimeError::State {
+            shader: shader.to_string(),
+            pass,
+            error,
+        })?;
+        let facts = (key, Arc::new(state));
+        self.passes.insert((shader.to_string(), pass), facts.clone());
+        Ok(facts)
+    }
+
     /// The pipeline for a draw, created the first time it is asked for.
     pub fn pipeline(&mut self, request: &PipelineRequest) -> Result<Arc<wgpu::RenderPipeline>, RuntimeError> {
         let (shader, pass_index) = (request.shader, request.pass);
         let layout = self.pass_layout(shader, pass_index)?;
+        let (layout_key, pass_state) = self.pass_facts(shader, pass_index)?;
         let variant = self.variant(shader, pass_index, request.keywords)?.clone();
         let library = &self.library;
         let pass = library.pass(shader, pass_index)?;
         let layout_error =
             |message: String| RuntimeError::Layout { shader: shader.to_string(), pass: pass_index, message };
-        let state = super::state::resolve(pass, &|property| request.material.number(property))
+        let state = pass_state
+            .resolve(&|property| request.material.number(property))
             .map_err(|error| RuntimeError::State { shader: shader.to_string(), pass: pass_index, error })?;
         let stages = pass.variant_stages(&variant);
         let [Some(vertex), fragment] = stages else {
@@ -224,7 +250,7 @@ impl Runtime {
         let key = PipelineKey {
             modules: [Some(&vertex), fragment.as_ref()]
                 .map(|s| s.and_then(|s| s.module.wgsl.as_ref()).map(|f| f.hash.clone())),
-            layout: serde_json::to_string(&pass.layout).unwrap_or_default(),
+            layout: layout_key,
             state,
             targets: request.targets.clone(),
             vertex_layout,
@@ -360,6 +386,8 @@ impl Runtime {
         let before = self.pipelines.len();
         self.pipelines.retain(|key, _| key.modules.iter().flatten().all(|h| hashes.contains(h)));
         self.modules.retain(|hash, _| hashes.contains(hash));
+        // Layouts and render state are read again from the new manifest.
+        self.passes.clear();
         let dropped_pipelines = before - self.pipelines.len();
         self.library = library;
         self.source = Some((output, hash));

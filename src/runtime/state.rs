@@ -110,34 +110,62 @@ pub enum StateError {
 /// Resolves a pass's render state with a material's values (`None` for a property the material
 /// does not have: the command's default in the manifest is used, then ShaderLab's).
 pub fn resolve(pass: &PassManifest, value: &dyn Fn(&str) -> Option<f64>) -> Result<RenderState, StateError> {
-    let mut state = RenderState::default();
-    if pass.render_state.is_empty() {
-        return Ok(state);
+    PassState::parse(pass)?.resolve(value)
+}
+
+/// A pass's render state read once: its commands (with their text, for errors) and each
+/// property's default, ready to resolve with any material's values.
+#[derive(Debug, Clone)]
+pub struct PassState {
+    commands: Vec<(String, RenderCommandKind)>,
+    defaults: Vec<(String, f64)>,
+}
+
+impl PassState {
+    pub fn parse(pass: &PassManifest) -> Result<PassState, StateError> {
+        let defaults = pass
+            .render_state
+            .iter()
+            .flat_map(|c| &c.properties)
+            .filter_map(|p| Some((p.name.clone(), p.default.as_f64()?)))
+            .collect();
+        if pass.render_state.is_empty() {
+            return Ok(PassState { commands: Vec::new(), defaults });
+        }
+        let commands: Vec<&str> = pass.render_state.iter().map(|c| c.command.as_str()).collect();
+        let mut store = SourceStore::new();
+        let text = format!("Shader \"state\" {{ SubShader {{ Pass {{\n{}\n}} }} }}", commands.join("\n"));
+        let file = store.add("render state", text);
+        let parsed = crate::shaderlab::parse_shader(&store, file);
+        let unreadable = || {
+            let messages: Vec<String> = parsed.diagnostics.iter().map(|d| d.message.clone()).collect();
+            StateError::Unreadable(messages.join("; "))
+        };
+        let shader = parsed.shader.as_ref().ok_or_else(unreadable)?;
+        let Some(PassItem::Pass(ast)) = shader.subshaders.first().and_then(|s| s.passes.first()) else {
+            return Err(unreadable());
+        };
+        let commands = ast
+            .state
+            .render_state
+            .iter()
+            .map(|command| (store.slice(command.span).trim().to_string(), command.kind.clone()))
+            .collect();
+        Ok(PassState { commands, defaults })
     }
-    let commands: Vec<&str> = pass.render_state.iter().map(|c| c.command.as_str()).collect();
-    let mut store = SourceStore::new();
-    let text = format!("Shader \"state\" {{ SubShader {{ Pass {{\n{}\n}} }} }}", commands.join("\n"));
-    let file = store.add("render state", text);
-    let parsed = crate::shaderlab::parse_shader(&store, file);
-    let unreadable = || {
-        let messages: Vec<String> = parsed.diagnostics.iter().map(|d| d.message.clone()).collect();
-        StateError::Unreadable(messages.join("; "))
-    };
-    let shader = parsed.shader.as_ref().ok_or_else(unreadable)?;
-    let Some(PassItem::Pass(ast)) = shader.subshaders.first().and_then(|s| s.passes.first()) else {
-        return Err(unreadable());
-    };
-    let default_of = |name: &str| {
-        let reference = pass.render_state.iter().flat_map(|c| &c.properties).find(|p| p.name == name);
-        reference.and_then(|p| p.default.as_f64())
-    };
-    for command in &ast.state.render_state {
-        let text = store.slice(command.span).trim().to_string();
+
+    /// The state with a material's values (`None` for a property the material does not have:
+    /// the command's default in the manifest is used, then 0).
+    pub fn resolve(&self, value: &dyn Fn(&str) -> Option<f64>) -> Result<RenderState, StateError> {
+        let mut state = RenderState::default();
+        let default_of = |name: &str| self.defaults.iter().find(|(n, _)| n == name).map(|(_, v)| *v);
         let number = |property: &str| value(property).or_else(|| default_of(property)).unwrap_or(0.0);
-        let mut r = Resolver { command: &text, number: &number };
-        r.apply(&command.kind, &mut state)?;
+        for (text, kind) in &self.commands {
+            let mut r = Resolver { command: text, number: &number };
+            r.apply(kind, &mut state)?;
+        }
+        Ok(state)
     }
-    Ok(state)
 }
 
 struct Resolver<'a> {
