@@ -10,7 +10,7 @@ use crate::project::{BuildMode, ProjectError, build_project};
 use crate::reflect::manifest::{FILE_NAME, Manifest};
 use crate::source::SourceStore;
 use crate::source::relative_to;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// A kiln build from a build script.
 ///
@@ -30,6 +30,7 @@ pub struct Build {
     threads: Option<usize>,
     global_keywords: Option<Vec<String>>,
     variant_logs: Vec<PathBuf>,
+    prebuilt: Option<PathBuf>,
 }
 
 /// What a build script gets back.
@@ -74,6 +75,7 @@ impl Build {
             threads: None,
             global_keywords: None,
             variant_logs: Vec::new(),
+            prebuilt: None,
         }
     }
 
@@ -110,6 +112,14 @@ impl Build {
         self
     }
 
+    /// Starts from a build made elsewhere (`kiln merge`'s output of a build farm, or any `kiln
+    /// build` output of this project): it is copied into `OUT_DIR` and, when the project has not
+    /// changed since, nothing is compiled here. A cargo warning says which it was.
+    pub fn prebuilt(mut self, folder: impl Into<PathBuf>) -> Build {
+        self.prebuilt = Some(folder.into());
+        self
+    }
+
     /// Builds, prints the cargo lines, and returns what was built.
     pub fn run(self) -> Result<BuildOutput, BuildError> {
         let result = self.execute();
@@ -131,6 +141,10 @@ impl Build {
             None => return Err(BuildError::NoOutDir),
         };
         let output = out_dir.join("kiln");
+        if let Some(prebuilt) = &self.prebuilt {
+            copy_newer(prebuilt, &output)
+                .map_err(|source| BuildError::Read { path: prebuilt.clone(), source })?;
+        }
         let mut store = SourceStore::new();
         let mode = BuildMode {
             write: true,
@@ -159,6 +173,15 @@ impl Build {
             return Err(BuildError::Diagnostics { rendered: render_plain(&store, &problems), cargo_lines });
         }
         cargo_lines.extend(unoptimised_warning(result.summary.compiled, env!("KILN_OPT_LEVEL")));
+        if let Some(prebuilt) = &self.prebuilt {
+            let from = prebuilt.display();
+            cargo_lines.push(match result.summary.compiled {
+                0 => format!("cargo:warning=kiln: shaders from the prebuilt build in `{from}`: nothing compiled"),
+                n => format!(
+                    "cargo:warning=kiln: the prebuilt build in `{from}` is out of date: {n} stage modules compiled here"
+                ),
+            });
+        }
         // A no-op build did not read its manifest; the module needs it.
         let manifest = match result.manifest {
             Some(manifest) => manifest,
@@ -174,6 +197,28 @@ impl Build {
         }
         Ok(BuildOutput { module, manifest, summary: result.summary, cargo_lines })
     }
+}
+
+/// Copies every file under `from` to the same place under `to`: packs (named by their content)
+/// only where missing or of another size, every other file (manifest, materials, cache) always.
+fn copy_newer(from: &Path, to: &Path) -> std::io::Result<()> {
+    for entry in walkdir::WalkDir::new(from) {
+        let entry = entry.map_err(std::io::Error::other)?;
+        if !entry.file_type().is_file() {
+            continue;
+        }
+        let relative = entry.path().strip_prefix(from).map_err(std::io::Error::other)?;
+        let target = to.join(relative);
+        let same =
+            std::fs::metadata(&target).is_ok_and(|m| Some(m.len()) == entry.metadata().ok().map(|e| e.len()));
+        if !same || !relative.starts_with("modules") {
+            if let Some(parent) = target.parent() {
+                std::fs::create_dir_all(parent)?;
+            }
+            std::fs::copy(entry.path(), &target)?;
+        }
+    }
+    Ok(())
 }
 
 /// Above this many modules compiled, an unoptimised kiln costs a renderer's build noticeably.

@@ -5,7 +5,7 @@ use clap::{Parser, Subcommand, ValueEnum};
 use kiln::compile::VariantSelection;
 use kiln::diagnostics::{self, Diagnostic};
 use kiln::preprocess::{Includes, Stage};
-use kiln::project::{BuildMode, VariantRequest, include_config};
+use kiln::project::{BuildMode, Part, VariantRequest, include_config};
 use kiln::source::SourceStore;
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -62,6 +62,24 @@ enum Command {
         /// writes them). Repeatable.
         #[arg(long = "variants-from", value_name = "FILE")]
         variants_from: Vec<PathBuf>,
+        /// Build only shard I of N (1 <= I <= N) of the stage modules, into the output folder,
+        /// for `kiln merge` (docs/scaling.md).
+        #[arg(long, value_name = "I/N")]
+        shard: Option<String>,
+    },
+    /// Join the outputs of `kiln build --shard` into the output one `kiln build` would write,
+    /// byte for byte, compiling nothing.
+    Merge {
+        /// The output folder to write.
+        output: PathBuf,
+        /// Every shard's output folder, once each.
+        #[arg(required = true)]
+        shards: Vec<PathBuf>,
+        /// The project (default: the folder the shards were built from).
+        #[arg(long)]
+        project: Option<PathBuf>,
+        #[arg(long)]
+        pretty: bool,
     },
     /// Build, then rebuild on every change to a file the build read (or a new file where it
     /// looks), printing diagnostics and a summary line per build. A failed build leaves its
@@ -149,7 +167,7 @@ fn main() -> ExitCode {
             };
             preprocess(&VariantRequest { shader, pass, keywords, stage })
         }
-        Command::Build { project, threads, output, pretty, variants_from } => {
+        Command::Build { project, threads, output, pretty, variants_from, shard } => {
             let mode = BuildMode {
                 write: true,
                 output,
@@ -159,7 +177,39 @@ fn main() -> ExitCode {
                 pretty_manifest: pretty,
                 variant_logs: variants_from,
             };
-            build(project, mode, Format::Text)
+            let part = match shard.as_deref().map(kiln::compile::shard::Shard::parse) {
+                None => Part::Whole,
+                Some(Ok(shard)) => Part::Shard(shard),
+                Some(Err(message)) => return usage_failure(&message),
+            };
+            build(project, mode, Format::Text, part)
+        }
+        Command::Merge { output, shards, project, pretty } => {
+            let mode = BuildMode {
+                write: true,
+                output: Some(output),
+                unused_shaders: VariantSelection::Used,
+                threads: None,
+                global_keywords: None,
+                pretty_manifest: pretty,
+                variant_logs: Vec::new(),
+            };
+            let mut store = SourceStore::new();
+            match kiln::project::merge_shards(&mut store, &shards, project, &mode) {
+                Ok((result, mut problems)) => {
+                    problems.extend(result.diagnostics);
+                    report(&store, &problems);
+                    print_summary(&result.summary, true, diagnostics::has_errors(&problems));
+                    if !diagnostics::has_errors(&problems) {
+                        eprintln!(
+                            "merged {} shards: every module came from them, naga compiled none",
+                            shards.len()
+                        );
+                    }
+                    exit_code(&problems)
+                }
+                Err(error) => usage_failure(&error.to_string()),
+            }
         }
         Command::Watch { project, output, variants_from } => {
             let mode = BuildMode {
@@ -191,6 +241,7 @@ fn main() -> ExitCode {
                     variant_logs: Vec::new(),
                 },
                 format,
+                Part::Whole,
             )
         }
         Command::Reflect { shader, pass, keywords } => {
@@ -247,7 +298,7 @@ fn accuracy() -> ExitCode {
 /// `kiln check --all-variants` refuses passes with more variants than this.
 const ALL_VARIANTS_LIMIT: u128 = 4096;
 
-fn build(project: Option<PathBuf>, mode: BuildMode, format: Format) -> ExitCode {
+fn build(project: Option<PathBuf>, mode: BuildMode, format: Format, part: Part) -> ExitCode {
     let project = project.unwrap_or_else(kiln::project::bundled_example);
     let mut store = SourceStore::new();
     let bar = std::io::stderr().is_terminal().then(|| {
@@ -264,7 +315,7 @@ fn build(project: Option<PathBuf>, mode: BuildMode, format: Format) -> ExitCode 
             bar.set_position(done as u64);
         }
     };
-    let outcome = kiln::project::build_project(&mut store, &[project], &mode, &progress);
+    let outcome = kiln::project::build_part(&mut store, &[project], &mode, &progress, part);
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }

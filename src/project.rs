@@ -43,6 +43,8 @@ pub enum ProjectError {
     NotAMaterial { path: PathBuf, message: String },
     #[error("cannot write `{path}`: {source}")]
     Write { path: PathBuf, source: std::io::Error },
+    #[error("cannot merge: {0}")]
+    Shards(String),
 }
 
 /// The project a material file belongs to: the nearest folder above it with a `kiln.toml`; without
@@ -431,6 +433,27 @@ pub fn build_project(
     mode: &BuildMode,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
+    build_part(store, paths, mode, progress, Part::Whole)
+}
+
+/// How much of a build one process does.
+#[derive(Debug, Clone)]
+pub enum Part {
+    Whole,
+    /// `kiln build --shard I/N`: one shard's stage modules, as objects (see [`crate::compile::shard`]).
+    Shard(crate::compile::shard::Shard),
+    /// `kiln merge`: the whole build, its modules taken from these shard outputs.
+    Merge(crate::compile::Merge),
+}
+
+/// [`build_project`] for a part of the work.
+pub fn build_part(
+    store: &mut SourceStore,
+    paths: &[PathBuf],
+    mode: &BuildMode,
+    progress: &(dyn Fn(usize, usize) + Sync),
+    part: Part,
+) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
     let (workspace, mut diagnostics) = open_workspace(store, paths)?;
     let mut includes = Includes::new(workspace.include.clone().unwrap_or_else(|| include_config(paths)));
     let (shaders, found) = load_files(store, &workspace.shaders);
@@ -456,8 +479,16 @@ pub fn build_project(
         unused_shaders: mode.unused_shaders,
         pretty_manifest: mode.pretty_manifest,
         record: false,
+        shard: None,
+        merge: None,
     };
+    match part {
+        Part::Whole => {}
+        Part::Shard(shard) => options.shard = Some(shard),
+        Part::Merge(merge) => options.merge = Some(merge),
+    }
     if diagnostics.is_empty()
+        && options.shard.is_none()
         && let Some(result) = crate::compile::unchanged(store, &options)
     {
         return Ok((result, diagnostics));
@@ -471,6 +502,21 @@ pub fn build_project(
         diagnostics::promote_warnings(&mut diagnostics);
     }
     Ok((result, diagnostics))
+}
+
+/// `kiln merge`: checks the shard outputs against each other, then builds the project into
+/// `mode.output` with their modules, which gives the bytes one build of the project gives. The
+/// project is `project`, or the one the shards were built from.
+pub fn merge_shards(
+    store: &mut SourceStore,
+    shards: &[PathBuf],
+    project: Option<PathBuf>,
+    mode: &BuildMode,
+) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
+    let (records, inputs) = crate::compile::shard::check_shards(shards).map_err(ProjectError::Shards)?;
+    let project = project.unwrap_or_else(|| PathBuf::from(&records[0].project));
+    let merge = crate::compile::Merge { folders: shards.to_vec(), inputs };
+    build_part(store, &[project], mode, &|_, _| {}, Part::Merge(merge))
 }
 
 /// One build of `kiln watch`: [`build_project`], and then, in the output folder, the rendered
@@ -541,6 +587,8 @@ pub fn reflect_variant(
         unused_shaders: VariantSelection::Used,
         pretty_manifest: false,
         record: false,
+        shard: None,
+        merge: None,
     };
     let result = build(store, &includes, &catalog, &options, &|_, _| {});
     diagnostics.extend(result.diagnostics);

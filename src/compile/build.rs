@@ -7,6 +7,7 @@
 
 use super::bind::{self, Declared, PassLayout};
 use super::cache::{Cache, CachedStage, Digest, Hashed, ModuleBytes, PassIndex, Recorded, hash};
+use super::shard::{SHARD_FILE, Shard, ShardRecord, read_object, write_object};
 use super::stage::{self, StageRequest};
 use super::target::Allowed;
 use super::{Mapper, parse};
@@ -58,6 +59,19 @@ pub struct BuildOptions {
     /// Record the inputs for the next build's no-op check ([`unchanged`]). Only when the
     /// catalogue reported nothing: a no-op build reports nothing either.
     pub record: bool,
+    /// Build only this shard's stage modules, as objects in the output folder (`shard.json`).
+    pub shard: Option<Shard>,
+    /// Build with the stage modules of these shard outputs instead of compiling them.
+    pub merge: Option<Merge>,
+}
+
+/// Shard outputs a build takes its stage modules from ([`super::shard::check_shards`] checked
+/// them against each other).
+#[derive(Debug, Clone)]
+pub struct Merge {
+    pub folders: Vec<PathBuf>,
+    /// The inputs hash the shards share, which the project must still have.
+    pub inputs: String,
 }
 
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -124,6 +138,10 @@ type Front = Result<(Vec<Declared>, Option<naga::Module>), Diagnostic>;
 enum Built {
     Reused(CachedStage),
     Compiled(Compiled),
+    /// Another shard's to compile.
+    Skipped,
+    /// Already in this shard's objects.
+    Kept,
 }
 
 /// A stage compiled now: its module per backend (`[wgsl, spirv]`), hashed where it was compiled
@@ -186,6 +204,19 @@ fn build_in_pool(
     let mut diagnostics = Vec::new();
     let cache = Cache::new(&options.output, options.write);
     let mut summary = BuildSummary::default();
+    if let Some(merge) = &options.merge
+        && inputs_key(store, options, &[]) != merge.inputs
+    {
+        let error = Diagnostic::error("K0413", "the shards were built from another state of the project")
+            .note("a file the build reads, the project's settings or the build's options changed since")
+            .help("build the shards again from this state of the project, then merge them");
+        return BuildResult {
+            manifest: None,
+            summary,
+            diagnostics: vec![error],
+            output: options.output.clone(),
+        };
+    }
 
     let work = plan(catalog, options.unused_shaders, &mut summary, &mut diagnostics);
     let progress = Progress { report: progress, done: AtomicUsize::new(0), total: summary.variants };
@@ -210,6 +241,24 @@ fn build_in_pool(
     }
 
     let manifest = manifest(store, options, &work, passes);
+    if let Some(shard) = options.shard {
+        // A shard leaves its objects and what `kiln merge` checks; the merge writes the rest.
+        diagnostics::dedup(&mut diagnostics);
+        if options.write && !diagnostics::has_errors(&diagnostics) {
+            let record = ShardRecord {
+                kiln_version: env!("CARGO_PKG_VERSION").to_string(),
+                inputs: inputs_key(store, options, &[]),
+                shard: shard.index + 1,
+                count: shard.count,
+                project: options.root.to_string_lossy().replace('\\', "/"),
+                modules: summary.compiled + summary.reused,
+            };
+            if let Err(error) = write_json(&options.output.join(SHARD_FILE), &record, true) {
+                diagnostics.push(write_failure(&options.output, &error));
+            }
+        }
+        return BuildResult { manifest: None, summary, diagnostics, output: options.output.clone() };
+    }
     let mut packs = Vec::new();
     if options.write && !diagnostics::has_errors(&diagnostics) {
         packs = manifest.packs().into_iter().collect();
@@ -657,6 +706,9 @@ fn build_pass(
             outcome
         })
         .collect();
+    if options.shard.is_some() {
+        return shard_pass(work, store, catalog, options, &jobs, &stages, outcomes, diagnostics);
+    }
     let compiled: Vec<&Compiled> = outcomes
         .iter()
         .filter_map(|o| match o {
@@ -696,7 +748,8 @@ fn build_pass(
                 diagnostics.push(error);
                 None
             }
-            None => None,
+            // Only shards skip or keep modules, and they do not get here.
+            Some(Ok((Built::Skipped | Built::Kept, _))) | None => None,
         };
         modules.push(stage.map(|(stage, key)| {
             fresh.stage.insert(key, stage.clone());
@@ -712,6 +765,49 @@ fn build_pass(
         diagnostics,
         modules: jobs.len(),
         compiled: compiled_count,
+        reused,
+        bytes_written,
+    }
+}
+
+/// A shard's pass: its own modules stored as objects (nothing packed, no manifest part).
+#[allow(clippy::too_many_arguments)]
+fn shard_pass(
+    work: &PassWork,
+    store: &SourceStore,
+    catalog: &Catalog,
+    options: &BuildOptions,
+    jobs: &[Job],
+    stages: &[[Option<usize>; 2]],
+    outcomes: Vec<StageOutcome>,
+    mut diagnostics: Vec<Diagnostic>,
+) -> PassBuilt {
+    let (mut compiled, mut reused, mut bytes_written) = (0, 0, 0);
+    for (outcome, job) in outcomes.into_iter().zip(jobs) {
+        match outcome {
+            Some(Ok((Built::Compiled(module), key))) => {
+                compiled += 1;
+                if options.write {
+                    match write_object(&options.output, &key, &module.modules, &module.reflection) {
+                        Ok(written) => bytes_written += written,
+                        Err(error) => diagnostics.push(write_failure(&options.output, &error)),
+                    }
+                }
+            }
+            Some(Ok((Built::Kept, _))) => reused += 1,
+            Some(Err(mut error)) => {
+                error.notes.push(job.context.clone());
+                diagnostics.push(error);
+            }
+            _ => {}
+        }
+    }
+    let nothing = vec![None; jobs.len()];
+    PassBuilt {
+        manifest: pass_manifest(store, catalog, work, jobs, stages, &nothing),
+        diagnostics,
+        modules: compiled + reused,
+        compiled,
         reused,
         bytes_written,
     }
@@ -745,8 +841,28 @@ fn stage_module(
         )
         .as_bytes(),
     );
+    if let Some(shard) = options.shard {
+        if !shard.owns(&key) {
+            return Ok((Built::Skipped, key));
+        }
+        if read_object(&options.output, &key).is_some() {
+            return Ok((Built::Kept, key));
+        }
+    }
     if let Some(cached) = index.stage.get(&key) {
         return Ok((Built::Reused(cached.clone()), key));
+    }
+    if let Some(merge) = &options.merge {
+        // Every module comes from the shard that owns it; naga is not run.
+        let found = merge.folders.iter().find_map(|folder| read_object(folder, &key));
+        return match found {
+            Some((modules, reflection)) => Ok((Built::Compiled(Compiled { modules, reflection }), key)),
+            None => Err(Diagnostic::error(
+                "K0412",
+                format!("no shard holds the {} module of `{}`", job.stage.name(), job.entry),
+            )
+            .note("its shard's output is damaged, or was built from another state of the project")),
+        };
     }
     let mapper = Mapper { map: &job.map, store };
     let module = match module {

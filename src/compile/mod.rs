@@ -10,10 +10,13 @@
 pub mod bind;
 pub mod build;
 mod cache;
+pub mod shard;
 mod stage;
 pub mod target;
 
-pub use build::{BuildOptions, BuildResult, BuildSummary, VariantSelection, build, stage_texts, unchanged};
+pub use build::{
+    BuildOptions, BuildResult, BuildSummary, Merge, VariantSelection, build, stage_texts, unchanged,
+};
 pub use cache::write_atomically;
 
 use crate::diagnostics::Diagnostic;

@@ -11,7 +11,9 @@ mod state;
 
 pub use layout::{PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
 pub use pipelines::{PipelineRequest, Reload, Runtime, Targets, UsageLog};
-pub use state::{MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state};
+pub use state::{
+    MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state,
+};
 
 use crate::reflect::manifest::{
     FILE_NAME, MATERIALS_FILE, Manifest, MaterialManifest, ModuleFile, PassManifest, ShaderManifest,

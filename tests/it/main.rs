@@ -15,6 +15,7 @@ mod preprocess;
 mod robustness;
 mod runtime;
 mod scale;
+mod shards;
 mod support;
 mod tidy;
 mod validators;

@@ -1,0 +1,211 @@
+//! Sharded builds: shards built by concurrent processes merge into the bytes one build writes,
+//! a second round compiles nothing, a new shader moves only the shards that hold its modules,
+//! and merge refuses shards that do not belong together.
+
+use crate::support::{kiln, synthetic_project};
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+/// Every file under `folder`, relative, with its bytes.
+fn tree(folder: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
+    walkdir::WalkDir::new(folder)
+        .into_iter()
+        .map(|e| e.expect("walk"))
+        .filter(|e| e.file_type().is_file())
+        .map(|e| {
+            (
+                e.path().strip_prefix(folder).expect("inside").to_path_buf(),
+                std::fs::read(e.path()).expect("read"),
+            )
+        })
+        .collect()
+}
+
+fn text(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+/// `kiln build --shard i/4` for every shard at once, as four processes.
+fn build_shards(project: &Path, shards: &[PathBuf]) -> Vec<String> {
+    let children: Vec<_> = shards
+        .iter()
+        .enumerate()
+        .map(|(i, out)| {
+            Command::new(env!("CARGO_BIN_EXE_kiln"))
+                .args(["build", project.to_str().expect("utf-8"), "--output", out.to_str().expect("utf-8")])
+                .args(["--shard", &format!("{}/{}", i + 1, shards.len())])
+                .stderr(std::process::Stdio::piped())
+                .spawn()
+                .expect("kiln runs")
+        })
+        .collect();
+    children
+        .into_iter()
+        .map(|child| {
+            let output = child.wait_with_output().expect("kiln ends");
+            assert_eq!(output.status.code(), Some(0), "{}", text(&output));
+            text(&output)
+        })
+        .collect()
+}
+
+fn compiled(summary: &str) -> usize {
+    let at = summary.find(" compiled,").expect("a summary line");
+    summary[..at].rsplit('(').next().expect("count").parse().expect("number")
+}
+
+/// The object keys each shard holds.
+fn objects(shards: &[PathBuf]) -> Vec<BTreeSet<String>> {
+    shards
+        .iter()
+        .map(|s| tree(&s.join("objects")).keys().map(|k| k.to_string_lossy().into_owned()).collect())
+        .collect()
+}
+
+/// A project of 1,024 variants: the synthetic one (256 materials of one shader) four times over,
+/// under four shader names.
+fn project_of_1024_variants(project: &Path) {
+    synthetic_project(project, 256);
+    let shader = std::fs::read_to_string(project.join("Synth.shader")).expect("shader");
+    for copy in 2..=4 {
+        let name = format!("Custom RP/Lit {copy}");
+        // Another name, and a comment that makes every stage text its own.
+        let renamed = shader.replace("Shader \"Custom RP/Lit\"", &format!("Shader {name:?}")).replacen(
+            "WGSLPROGRAM\n",
+            &format!("WGSLPROGRAM\n            // copy {copy}\n"),
+            1,
+        );
+        assert_ne!(renamed, shader);
+        std::fs::write(project.join(format!("Synth{copy}.shader")), renamed).expect("write");
+        for m in 0..256 {
+            let material =
+                std::fs::read_to_string(project.join(format!("materials/M{m:03}.mat"))).expect("mat");
+            let material = material.replace("\"Custom RP/Lit\"", &format!("{name:?}"));
+            std::fs::write(project.join(format!("materials/M{m:03}_{copy}.mat")), material).expect("write");
+        }
+    }
+}
+
+fn merge(out: &Path, shards: &[PathBuf]) -> Output {
+    let mut args = vec!["merge".to_string(), out.to_string_lossy().into_owned()];
+    args.extend(shards.iter().map(|s| s.to_string_lossy().into_owned()));
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    kiln(&args)
+}
+
+#[test]
+fn four_concurrent_shards_merge_into_the_bytes_of_one_build() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    project_of_1024_variants(&project);
+    let shards: Vec<PathBuf> = (1..=4).map(|i| dir.path().join(format!("shard{i}"))).collect();
+    let summaries = build_shards(&project, &shards);
+    assert!(summaries[0].contains("1024 variants"), "{}", summaries[0]);
+    let per_shard: Vec<usize> = summaries.iter().map(|s| compiled(s)).collect();
+    assert!(per_shard.iter().all(|&n| n > 150), "every shard does its share: {per_shard:?}");
+
+    let single = dir.path().join("single");
+    let run = kiln(&["build", project.to_str().expect("utf-8"), "--output", single.to_str().expect("utf-8")]);
+    assert_eq!(run.status.code(), Some(0), "{}", text(&run));
+    // No module is compiled by two shards: the shards' work adds up to one build's.
+    assert_eq!(per_shard.iter().sum::<usize>(), compiled(&text(&run)), "{summaries:?}");
+
+    let merged = dir.path().join("merged");
+    let run = merge(&merged, &shards);
+    assert_eq!(run.status.code(), Some(0), "{}", text(&run));
+    assert!(text(&run).contains("naga compiled none"), "{}", text(&run));
+    let (ours, theirs) = (tree(&merged), tree(&single));
+    assert_eq!(ours.keys().collect::<Vec<_>>(), theirs.keys().collect::<Vec<_>>());
+    for (path, bytes) in &ours {
+        assert!(bytes == &theirs[path], "{} differs", path.display());
+    }
+    println!(
+        "{} files, {} modules from 4 shards, byte-identical to one build",
+        ours.len(),
+        per_shard.iter().sum::<usize>()
+    );
+
+    // A second round finds every module in place and compiles nothing.
+    for summary in build_shards(&project, &shards) {
+        assert_eq!(compiled(&summary), 0, "{summary}");
+    }
+
+    // A build script can start from the merged folder, and compiles nothing.
+    let out_dir = dir.path().join("out_dir");
+    let output = kiln::Build::new(&project).prebuilt(&merged).out_dir(&out_dir).execute().expect("builds");
+    assert_eq!(output.summary.compiled, 0);
+    assert!(output.cargo_lines.iter().any(|l| l.contains("nothing compiled")), "{:?}", output.cargo_lines);
+}
+
+#[test]
+fn a_new_shader_moves_only_the_shards_that_hold_its_modules() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    synthetic_project(&project, 64);
+    let before: Vec<PathBuf> = (1..=4).map(|i| dir.path().join(format!("before{i}"))).collect();
+    build_shards(&project, &before);
+    // A second shader, used by a material.
+    let root = crate::support::root().join("fixtures/project/shaders");
+    for name in ["Unlit.shader", "UnlitPass.wgsl"] {
+        std::fs::copy(root.join(name), project.join(name)).expect("copy");
+    }
+    std::fs::write(project.join("materials/Unlit.mat"), "shader = \"Custom RP/Unlit\"\n").expect("write");
+    let after: Vec<PathBuf> = (1..=4).map(|i| dir.path().join(format!("after{i}"))).collect();
+    build_shards(&project, &after);
+    let (old, new) = (objects(&before), objects(&after));
+    let mut changed = 0;
+    for (old, new) in old.iter().zip(&new) {
+        assert!(old.is_subset(new), "a shard lost modules it held");
+        changed += usize::from(old != new);
+    }
+    let added: usize = old.iter().zip(&new).map(|(o, n)| n.len() - o.len()).sum();
+    assert_eq!(added, 2, "the Unlit pass adds a vertex and a fragment module");
+    assert!(changed <= 2, "only the shards that hold the new modules change");
+}
+
+#[test]
+fn merge_refuses_shards_that_do_not_belong_together() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    synthetic_project(&project, 16);
+    let shards: Vec<PathBuf> = (1..=3).map(|i| dir.path().join(format!("shard{i}"))).collect();
+    build_shards(&project, &shards);
+    let refused = |shards: &[PathBuf], expected: &str| {
+        let run = merge(&dir.path().join("merged"), shards);
+        assert_eq!(run.status.code(), Some(2), "{}", text(&run));
+        assert!(text(&run).contains(expected), "{expected}: {}", text(&run));
+    };
+    refused(&shards[..2], "shard 3/3 is missing");
+    refused(&[shards[0].clone(), shards[0].clone(), shards[1].clone()], "shard 1/3 is given twice");
+    refused(&[shards[0].clone(), dir.path().join("nothing")], "is not a shard's output");
+
+    // A shard of another build (another shard count) does not belong.
+    let other = dir.path().join("other");
+    let run = kiln(&[
+        "build",
+        project.to_str().expect("utf-8"),
+        "--output",
+        other.to_str().expect("utf-8"),
+        "--shard",
+        "1/2",
+    ]);
+    assert_eq!(run.status.code(), Some(0), "{}", text(&run));
+    refused(&[other.clone(), shards[1].clone(), shards[2].clone()], "a different number of shards");
+
+    // Another kiln.
+    let record_path = shards[2].join("shard.json");
+    let record = std::fs::read_to_string(&record_path).expect("record");
+    std::fs::write(&record_path, record.replace(env!("CARGO_PKG_VERSION"), "0.0.1-other")).expect("write");
+    refused(&shards, "kiln 0.0.1-other");
+    std::fs::write(&record_path, record).expect("write");
+
+    // The project changed since the shards were built: an error, and nothing written.
+    let shader = project.join("Synth.shader");
+    let text_before = std::fs::read_to_string(&shader).expect("shader");
+    std::fs::write(&shader, format!("{text_before}\n// edited\n")).expect("edit");
+    let run = merge(&dir.path().join("merged"), &shards);
+    assert_eq!(run.status.code(), Some(1), "{}", text(&run));
+    assert!(text(&run).contains("error[K0413]"), "{}", text(&run));
+    assert!(!dir.path().join("merged/manifest.json").exists());
+}
