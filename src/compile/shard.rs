@@ -159,7 +159,12 @@ pub fn check_shards(folders: &[PathBuf]) -> Result<(Vec<ShardRecord>, String), S
             0 => return Err(format!("shard {}/{} is missing", i + 1, first.count)),
             1 => {}
             _ => {
-                return Err(format!("shard {}/{} is given twice: {}", i + 1, first.count, holders.join(", ")));
+                return Err(format!(
+                    "shard {}/{} is given twice: {}",
+                    i + 1,
+                    first.count,
+                    holders.join(", ")
+                ));
             }
         }
     }

@@ -3,6 +3,7 @@
 //! and merge refuses shards that do not belong together.
 
 use crate::support::{kiln, synthetic_project};
+use expect_test::expect_file;
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -206,6 +207,27 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     std::fs::write(&shader, format!("{text_before}\n// edited\n")).expect("edit");
     let run = merge(&dir.path().join("merged"), &shards);
     assert_eq!(run.status.code(), Some(1), "{}", text(&run));
-    assert!(text(&run).contains("error[K0413]"), "{}", text(&run));
+    expect_file![crate::support::root().join("tests/golden/shards/project_changed.stderr")]
+        .assert_eq(&diagnostics(&run));
     assert!(!dir.path().join("merged/manifest.json").exists());
+    std::fs::write(&shader, &text_before).expect("restore");
+
+    // A shard's module damaged or gone: the merge names what is missing, and writes nothing.
+    let objects = shards[1].join("objects");
+    let victim = walkdir::WalkDir::new(&objects)
+        .into_iter()
+        .map(|e| e.expect("walk"))
+        .find(|e| e.file_type().is_file())
+        .expect("an object");
+    std::fs::write(victim.path(), b"damaged").expect("damage");
+    let run = merge(&dir.path().join("merged"), &shards);
+    assert_eq!(run.status.code(), Some(1), "{}", text(&run));
+    let shown = diagnostics(&run);
+    assert!(shown.starts_with("error[K0412]: no shard holds the "), "{shown}");
+    assert!(!dir.path().join("merged/manifest.json").exists());
+}
+
+/// The diagnostics of a run, without its closing summary line (which has timings).
+fn diagnostics(run: &Output) -> String {
+    text(run).lines().take_while(|l| !l.starts_with("built ")).map(|l| format!("{l}\n")).collect()
 }
