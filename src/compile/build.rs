@@ -650,8 +650,9 @@ fn pass_key(store: &SourceStore, options: &BuildOptions, work: &PassWork) -> Str
     hash(format!("{file}#{}.{}", work.pass.subshader, work.pass.index).as_bytes())
 }
 
-fn front(job: &Job, store: &SourceStore, index: &PassIndex) -> Front {
-    if let Some(declared) = index.front.get(&job.text_hash) {
+/// A stage text's declared resources: from the cache (`known`), or parsed.
+fn front(job: &Job, store: &SourceStore, known: &BTreeMap<String, Vec<Declared>>) -> Front {
+    if let Some(declared) = known.get(&job.text_hash) {
         return Ok((declared.clone(), None));
     }
     let mapper = Mapper { map: &job.map, store };
@@ -687,7 +688,13 @@ fn build_pass(
     let (mut compiled_count, mut reused, mut bytes_written) = (0, 0, 0);
     let key = pass_key(store, options, work);
     let index = cache.pass_index(&key);
-    let mut fronts: Vec<Front> = jobs.par_iter().map(|job| front(job, store, &index)).collect();
+    // Every shard keeps every stage text's resources, so a merge lays passes out from the first
+    // shard's without parsing anything.
+    let known = match &options.merge {
+        Some(merge) if index.front.is_empty() => Cache::new(&merge.folders[0], false).pass_index(&key).front,
+        _ => index.front.clone(),
+    };
+    let mut fronts: Vec<Front> = jobs.par_iter().map(|job| front(job, store, &known)).collect();
     let layout = lay_out(&jobs, &fronts, store, &mut diagnostics);
     let requests: usize = jobs.iter().map(|j| j.requests).sum();
     let served = AtomicUsize::new(0);
@@ -707,6 +714,15 @@ fn build_pass(
         })
         .collect();
     if options.shard.is_some() {
+        // The resources of every stage text, own or not: the next round and the merge parse none.
+        let front = fronts
+            .iter()
+            .zip(&jobs)
+            .filter_map(|(f, j)| Some((j.text_hash.clone(), f.as_ref().ok()?.0.clone())));
+        let fresh = PassIndex { front: front.collect(), stage: BTreeMap::new() };
+        if fresh != index {
+            let _ = cache.put_pass_index(&key, &fresh);
+        }
         return shard_pass(work, store, catalog, options, &jobs, &stages, outcomes, diagnostics);
     }
     let compiled: Vec<&Compiled> = outcomes
