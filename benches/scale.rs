@@ -120,6 +120,7 @@ fn kiln_build(project: &Path, output: &Path, write: bool) -> (kiln::compile::Bui
         global_keywords: None,
         pretty_manifest: false,
         variant_logs: Vec::new(),
+        cache_dir: None,
     };
     let (result, diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");

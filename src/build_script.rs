@@ -31,6 +31,7 @@ pub struct Build {
     global_keywords: Option<Vec<String>>,
     variant_logs: Vec<PathBuf>,
     prebuilt: Option<PathBuf>,
+    cache_dir: Option<PathBuf>,
 }
 
 /// What a build script gets back.
@@ -76,6 +77,7 @@ impl Build {
             global_keywords: None,
             variant_logs: Vec::new(),
             prebuilt: None,
+            cache_dir: None,
         }
     }
 
@@ -120,6 +122,13 @@ impl Build {
         self
     }
 
+    /// A module cache shared with other builds (CI runners, other crates, developers' machines
+    /// on a shared folder): modules found there are not compiled (see docs/scaling.md).
+    pub fn cache_dir(mut self, folder: impl Into<PathBuf>) -> Build {
+        self.cache_dir = Some(folder.into());
+        self
+    }
+
     /// Builds, prints the cargo lines, and returns what was built.
     pub fn run(self) -> Result<BuildOutput, BuildError> {
         let result = self.execute();
@@ -154,6 +163,7 @@ impl Build {
             global_keywords: self.global_keywords,
             pretty_manifest: false,
             variant_logs: self.variant_logs,
+            cache_dir: self.cache_dir,
         };
         let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
         problems.extend(result.diagnostics);

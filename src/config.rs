@@ -32,6 +32,8 @@ pub struct ProjectConfig {
     /// Variant usage logs (JSON Lines, as `kiln::runtime::UsageLog` writes them): the variants
     /// they name are built besides those the materials use.
     pub variant_logs: Vec<PathBuf>,
+    /// A module cache shared between builds and machines (docs/scaling.md).
+    pub cache_dir: Option<PathBuf>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -53,6 +55,7 @@ impl Default for ProjectConfig {
             global_keywords: None,
             strict: false,
             variant_logs: Vec::new(),
+            cache_dir: None,
         }
     }
 }
@@ -66,7 +69,7 @@ pub fn parse_config(store: &SourceStore, file: FileId) -> (ProjectConfig, Vec<Di
             let message = error.message().trim().trim_end_matches('.').to_string();
             let diagnostic = Diagnostic::error("K0003", "invalid `kiln.toml`")
                 .at(span, message)
-                .help("fields are shaders, materials, include_paths, output, backends, always_include, global_keywords, strict and variant_logs (docs/project.md)");
+                .help("fields are shaders, materials, include_paths, output, backends, always_include, global_keywords, strict, variant_logs and cache_dir (docs/project.md)");
             (ProjectConfig::default(), vec![diagnostic])
         }
     }

@@ -66,6 +66,10 @@ enum Command {
         /// for `kiln merge` (docs/scaling.md).
         #[arg(long, value_name = "I/N")]
         shard: Option<String>,
+        /// A module cache shared by builds, processes and machines (also `KILN_CACHE_DIR`,
+        /// `cache_dir` in kiln.toml).
+        #[arg(long, value_name = "DIR")]
+        cache_dir: Option<PathBuf>,
     },
     /// Join the outputs of `kiln build --shard` into the output one `kiln build` would write,
     /// byte for byte, compiling nothing.
@@ -81,6 +85,9 @@ enum Command {
         #[arg(long)]
         pretty: bool,
     },
+    /// The shared module cache: its size, or shrink it.
+    #[command(subcommand)]
+    Cache(CacheCommand),
     /// Build, then rebuild on every change to a file the build read (or a new file where it
     /// looks), printing diagnostics and a summary line per build. A failed build leaves its
     /// diagnostics in the output folder for a running program (`kiln::runtime`) to report.
@@ -91,6 +98,8 @@ enum Command {
         output: Option<PathBuf>,
         #[arg(long = "variants-from", value_name = "FILE")]
         variants_from: Vec<PathBuf>,
+        #[arg(long, value_name = "DIR")]
+        cache_dir: Option<PathBuf>,
     },
     /// Validate without writing anything: used variants, and for shaders no material uses, the
     /// default variant and each keyword on its own. Exit 1 on any error.
@@ -117,6 +126,23 @@ enum Command {
     /// Create materials and apply presets to them.
     #[command(subcommand)]
     Material(MaterialCommand),
+}
+
+#[derive(Subcommand)]
+enum CacheCommand {
+    /// How many modules the cache holds and their size (and any that no longer verify).
+    Stats {
+        #[arg(long, value_name = "DIR")]
+        cache_dir: Option<PathBuf>,
+    },
+    /// Removes the least recently used entries until the cache is at most SIZE (`500M`, `2G`).
+    /// Safe while builds run: an entry gone is a miss.
+    Gc {
+        #[arg(long, value_name = "SIZE")]
+        max_size: String,
+        #[arg(long, value_name = "DIR")]
+        cache_dir: Option<PathBuf>,
+    },
 }
 
 #[derive(Subcommand)]
@@ -167,7 +193,7 @@ fn main() -> ExitCode {
             };
             preprocess(&VariantRequest { shader, pass, keywords, stage })
         }
-        Command::Build { project, threads, output, pretty, variants_from, shard } => {
+        Command::Build { project, threads, output, pretty, variants_from, shard, cache_dir } => {
             let mode = BuildMode {
                 write: true,
                 output,
@@ -176,6 +202,7 @@ fn main() -> ExitCode {
                 global_keywords: None,
                 pretty_manifest: pretty,
                 variant_logs: variants_from,
+                cache_dir: cache_dir.clone(),
             };
             let part = match shard.as_deref().map(kiln::compile::shard::Shard::parse) {
                 None => Part::Whole,
@@ -184,6 +211,7 @@ fn main() -> ExitCode {
             };
             build(project, mode, Format::Text, part)
         }
+        Command::Cache(command) => cache(command),
         Command::Merge { output, shards, project, pretty } => {
             let mode = BuildMode {
                 write: true,
@@ -193,6 +221,7 @@ fn main() -> ExitCode {
                 global_keywords: None,
                 pretty_manifest: pretty,
                 variant_logs: Vec::new(),
+                cache_dir: None,
             };
             let mut store = SourceStore::new();
             match kiln::project::merge_shards(&mut store, &shards, project, &mode) {
@@ -211,7 +240,7 @@ fn main() -> ExitCode {
                 Err(error) => usage_failure(&error.to_string()),
             }
         }
-        Command::Watch { project, output, variants_from } => {
+        Command::Watch { project, output, variants_from, cache_dir } => {
             let mode = BuildMode {
                 write: true,
                 output,
@@ -220,6 +249,7 @@ fn main() -> ExitCode {
                 global_keywords: None,
                 pretty_manifest: false,
                 variant_logs: variants_from,
+                cache_dir: cache_dir.clone(),
             };
             watch(project.unwrap_or_else(kiln::project::bundled_example), &mode)
         }
@@ -239,6 +269,7 @@ fn main() -> ExitCode {
                     global_keywords: None,
                     pretty_manifest: false,
                     variant_logs: Vec::new(),
+                    cache_dir: None,
                 },
                 format,
                 Part::Whole,
@@ -332,6 +363,47 @@ fn build(project: Option<PathBuf>, mode: BuildMode, format: Format, part: Part) 
     report(&store, &problems);
     print_summary(&result.summary, mode.write, diagnostics::has_errors(&problems));
     exit_code(&problems)
+}
+
+/// `kiln cache stats` and `kiln cache gc`.
+fn cache(command: CacheCommand) -> ExitCode {
+    let folder = |given: Option<PathBuf>| {
+        given
+            .or_else(|| std::env::var_os("KILN_CACHE_DIR").map(PathBuf::from))
+            .ok_or("no cache folder: give --cache-dir or set KILN_CACHE_DIR")
+    };
+    let outcome = match command {
+        CacheCommand::Stats { cache_dir } => folder(cache_dir).map_err(str::to_string).and_then(|dir| {
+            let stats = kiln::compile::shard::cache_stats(&dir)
+                .map_err(|e| format!("cannot read `{}`: {e}", dir.display()))?;
+            println!(
+                "{}: {} modules, {} pass layouts, {} bytes{}",
+                dir.display(),
+                stats.modules,
+                stats.layouts,
+                stats.bytes,
+                if stats.damaged > 0 {
+                    format!(", {} damaged (misses; gc removes them)", stats.damaged)
+                } else {
+                    String::new()
+                }
+            );
+            Ok(())
+        }),
+        CacheCommand::Gc { max_size, cache_dir } => {
+            folder(cache_dir).map_err(str::to_string).and_then(|dir| {
+                let limit = kiln::compile::shard::parse_size(&max_size)?;
+                let (removed, left) = kiln::compile::shard::cache_gc(&dir, limit)
+                    .map_err(|e| format!("cannot clean `{}`: {e}", dir.display()))?;
+                println!("{}: removed {removed} entries, {left} bytes left (limit {limit})", dir.display());
+                Ok(())
+            })
+        }
+    };
+    match outcome {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => usage_failure(&message),
+    }
 }
 
 /// The closing line of a build (and the note about skipped shaders).

@@ -236,6 +236,8 @@ pub struct Workspace {
     pub strict: bool,
     /// `kiln.toml`'s `variant_logs`, relative to the working folder.
     pub variant_logs: Vec<PathBuf>,
+    /// The first project folder's `cache_dir`.
+    pub cache_dir: Option<PathBuf>,
 }
 
 impl Workspace {
@@ -304,6 +306,10 @@ pub fn open_workspace(
         }
         workspace.always_include.extend(config.always_include);
         workspace.variant_logs.extend(under(&config.variant_logs));
+        if workspace.cache_dir.is_none() {
+            workspace.cache_dir =
+                config.cache_dir.as_ref().map(|c| crate::source::normalize_lexically(&path.join(c)));
+        }
         workspace.strict |= config.strict;
         roots.push(path.clone());
     }
@@ -424,6 +430,8 @@ pub struct BuildMode {
     /// Variant usage logs whose variants are built too (`--variants-from`), besides the
     /// project's `variant_logs`.
     pub variant_logs: Vec<PathBuf>,
+    /// The shared module cache; else `KILN_CACHE_DIR`, else the project's `cache_dir`.
+    pub cache_dir: Option<PathBuf>,
 }
 
 /// Builds (or checks) the projects and files at `paths`. `Err` only when a path does not exist.
@@ -481,6 +489,11 @@ pub fn build_part(
         record: false,
         shard: None,
         merge: None,
+        cache_dir: mode
+            .cache_dir
+            .clone()
+            .or_else(|| std::env::var_os("KILN_CACHE_DIR").map(PathBuf::from))
+            .or_else(|| workspace.cache_dir.clone()),
     };
     match part {
         Part::Whole => {}
@@ -589,6 +602,7 @@ pub fn reflect_variant(
         record: false,
         shard: None,
         merge: None,
+        cache_dir: None,
     };
     let result = build(store, &includes, &catalog, &options, &|_, _| {});
     diagnostics.extend(result.diagnostics);

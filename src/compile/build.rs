@@ -7,7 +7,10 @@
 
 use super::bind::{self, Declared, PassLayout};
 use super::cache::{Cache, CachedStage, Digest, Hashed, ModuleBytes, PassIndex, Recorded, hash};
-use super::shard::{SHARD_FILE, Shard, ShardRecord, read_object, write_object};
+use super::shard::{
+    SHARD_FILE, Shard, ShardRecord, fetch_object, publish_layouts, publish_object, read_layouts, read_object,
+    write_object,
+};
 use super::stage::{self, StageRequest};
 use super::target::Allowed;
 use super::{Mapper, parse};
@@ -63,6 +66,9 @@ pub struct BuildOptions {
     pub shard: Option<Shard>,
     /// Build with the stage modules of these shard outputs instead of compiling them.
     pub merge: Option<Merge>,
+    /// A module cache shared with other builds: modules are taken from it before naga runs,
+    /// and every module compiled is published to it.
+    pub cache_dir: Option<PathBuf>,
 }
 
 /// Shard outputs a build takes its stage modules from ([`super::shard::check_shards`] checked
@@ -142,6 +148,8 @@ enum Built {
     Skipped,
     /// Already in this shard's objects.
     Kept,
+    /// From the shared cache: packed as if compiled now, but not compiled.
+    Fetched(Compiled),
 }
 
 /// A stage compiled now: its module per backend (`[wgsl, spirv]`), hashed where it was compiled
@@ -690,11 +698,28 @@ fn build_pass(
     let index = cache.pass_index(&key);
     // Every shard keeps every stage text's resources, so a merge lays passes out from the first
     // shard's without parsing anything.
-    let known = match &options.merge {
+    let mut known = match &options.merge {
         Some(merge) if index.front.is_empty() => Cache::new(&merge.folders[0], false).pass_index(&key).front,
         _ => index.front.clone(),
     };
+    if let Some(dir) = &options.cache_dir
+        && jobs.iter().any(|j| !known.contains_key(&j.text_hash))
+    {
+        for (text, declared) in read_layouts(dir, &key) {
+            known.entry(text).or_insert(declared);
+        }
+    }
     let mut fronts: Vec<Front> = jobs.par_iter().map(|job| front(job, store, &known)).collect();
+    // What was parsed now is published for every other build of the pass.
+    if let Some(dir) = &options.cache_dir
+        && fronts.iter().any(|f| matches!(f, Ok((_, Some(_)))))
+    {
+        let all = fronts
+            .iter()
+            .zip(&jobs)
+            .filter_map(|(f, j)| Some((j.text_hash.clone(), f.as_ref().ok()?.0.clone())));
+        publish_layouts(dir, &key, &all.collect());
+    }
     let layout = lay_out(&jobs, &fronts, store, &mut diagnostics);
     let requests: usize = jobs.iter().map(|j| j.requests).sum();
     let served = AtomicUsize::new(0);
@@ -728,7 +753,7 @@ fn build_pass(
     let compiled: Vec<&Compiled> = outcomes
         .iter()
         .filter_map(|o| match o {
-            Some(Ok((Built::Compiled(output), _))) => Some(output),
+            Some(Ok((Built::Compiled(output) | Built::Fetched(output), _))) => Some(output),
             _ => None,
         })
         .collect();
@@ -755,9 +780,17 @@ fn build_pass(
             }
             Some(Ok((Built::Compiled(compiled), key))) => {
                 compiled_count += 1;
+                if let Some(dir) = &options.cache_dir {
+                    publish_object(dir, &key, &compiled.modules, &compiled.reflection);
+                }
                 // Packing failed: the error is reported, the stage has no files.
                 let [wgsl, spirv] = files.next().unwrap_or_default();
                 Some((CachedStage { wgsl, spirv, reflection: compiled.reflection }, key))
+            }
+            Some(Ok((Built::Fetched(fetched), key))) => {
+                reused += 1;
+                let [wgsl, spirv] = files.next().unwrap_or_default();
+                Some((CachedStage { wgsl, spirv, reflection: fetched.reflection }, key))
             }
             Some(Err(mut error)) => {
                 error.notes.push(job.context.clone());
@@ -801,8 +834,16 @@ fn shard_pass(
     let (mut compiled, mut reused, mut bytes_written) = (0, 0, 0);
     for (outcome, job) in outcomes.into_iter().zip(jobs) {
         match outcome {
-            Some(Ok((Built::Compiled(module), key))) => {
-                compiled += 1;
+            Some(Ok((built @ (Built::Compiled(_) | Built::Fetched(_)), key))) => {
+                let (Built::Compiled(module) | Built::Fetched(module)) = &built else { continue };
+                if matches!(built, Built::Compiled(_)) {
+                    compiled += 1;
+                    if let Some(dir) = &options.cache_dir {
+                        publish_object(dir, &key, &module.modules, &module.reflection);
+                    }
+                } else {
+                    reused += 1;
+                }
                 if options.write {
                     match write_object(&options.output, &key, &module.modules, &module.reflection) {
                         Ok(written) => bytes_written += written,
@@ -867,6 +908,12 @@ fn stage_module(
     }
     if let Some(cached) = index.stage.get(&key) {
         return Ok((Built::Reused(cached.clone()), key));
+    }
+    if options.merge.is_none()
+        && let Some(dir) = &options.cache_dir
+        && let Some((modules, reflection)) = fetch_object(dir, &key)
+    {
+        return Ok((Built::Fetched(Compiled { modules, reflection }), key));
     }
     if let Some(merge) = &options.merge {
         // Every module comes from the shard that owns it; naga is not run.

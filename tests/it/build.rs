@@ -36,6 +36,7 @@ fn build_with(
         global_keywords: None,
         pretty_manifest,
         variant_logs: Vec::new(),
+        cache_dir: None,
     };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from(project)], &mode, &|_, _| {}).expect("project exists");
@@ -230,6 +231,7 @@ fn every_bad_build_input_has_a_pinned_diagnostic() {
             global_keywords: None,
             pretty_manifest: false,
             variant_logs: Vec::new(),
+            cache_dir: None,
         };
         let (result, mut diagnostics) =
             build_project(&mut store, std::slice::from_ref(&path), &mode, &|_, _| {}).expect("exists");
@@ -338,6 +340,7 @@ fn an_always_included_shader_with_too_many_variants_is_refused_with_the_count() 
         global_keywords: None,
         pretty_manifest: false,
         variant_logs: Vec::new(),
+        cache_dir: None,
     };
     let path = PathBuf::from("fixtures/bad/always_include");
     let (result, mut diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
@@ -360,6 +363,7 @@ fn a_variant_log_line_that_names_nothing_is_an_error_at_its_line() {
         global_keywords: None,
         pretty_manifest: false,
         variant_logs: Vec::new(),
+        cache_dir: None,
     };
     let path = PathBuf::from("fixtures/bad/variant_log");
     let (result, diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
@@ -422,6 +426,7 @@ fn progress_counts_what_the_closing_line_counts() {
         global_keywords: None,
         pretty_manifest: false,
         variant_logs: Vec::new(),
+        cache_dir: None,
     };
     let mut store = SourceStore::new();
     let (result, _) =

@@ -162,6 +162,7 @@ fn every_variant_makes_a_render_pipeline() {
         global_keywords: None,
         pretty_manifest: false,
         variant_logs: Vec::new(),
+        cache_dir: None,
     };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from("fixtures/project")], &mode, &|_, _| {})

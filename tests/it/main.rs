@@ -4,6 +4,7 @@
 mod accuracy;
 mod bad;
 mod build;
+mod cache;
 mod cli;
 mod cpp;
 mod gpu;

@@ -284,6 +284,7 @@ fn a_running_program_swaps_in_a_rebuilt_shader_and_keeps_the_last_good_one_on_er
         global_keywords: None,
         pretty_manifest: false,
         variant_logs: Vec::new(),
+        cache_dir: None,
     };
     let rebuild = || {
         let mut store = SourceStore::new();

@@ -116,6 +116,7 @@ fn a_deleted_include_is_reported_not_skipped_by_the_no_op_check() {
         global_keywords: None,
         pretty_manifest: false,
         variant_logs: Vec::new(),
+        cache_dir: None,
     };
     let (result, mut diagnostics) =
         kiln::project::build_project(&mut store, std::slice::from_ref(&project), &mode, &|_, _| {})

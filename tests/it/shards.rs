@@ -2,33 +2,19 @@
 //! a second round compiles nothing, a new shader moves only the shards that hold its modules,
 //! and merge refuses shards that do not belong together.
 
-use crate::support::{kiln, synthetic_project};
+use crate::support::{compiled, kiln, synthetic_project, tree};
 use expect_test::expect_file;
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
-
-/// Every file under `folder`, relative, with its bytes.
-fn tree(folder: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
-    walkdir::WalkDir::new(folder)
-        .into_iter()
-        .map(|e| e.expect("walk"))
-        .filter(|e| e.file_type().is_file())
-        .map(|e| {
-            (
-                e.path().strip_prefix(folder).expect("inside").to_path_buf(),
-                std::fs::read(e.path()).expect("read"),
-            )
-        })
-        .collect()
-}
 
 fn text(output: &Output) -> String {
     String::from_utf8_lossy(&output.stderr).into_owned()
 }
 
-/// `kiln build --shard i/4` for every shard at once, as four processes.
-fn build_shards(project: &Path, shards: &[PathBuf]) -> Vec<String> {
+/// `kiln build --shard i/N` for every shard at once, as N processes (sharing a module cache when
+/// one is given).
+fn build_shards(project: &Path, shards: &[PathBuf], cache: Option<&Path>) -> Vec<String> {
     let children: Vec<_> = shards
         .iter()
         .enumerate()
@@ -36,6 +22,12 @@ fn build_shards(project: &Path, shards: &[PathBuf]) -> Vec<String> {
             Command::new(env!("CARGO_BIN_EXE_kiln"))
                 .args(["build", project.to_str().expect("utf-8"), "--output", out.to_str().expect("utf-8")])
                 .args(["--shard", &format!("{}/{}", i + 1, shards.len())])
+                .args(
+                    cache
+                        .map(|c| ["--cache-dir".to_string(), c.to_string_lossy().into_owned()])
+                        .into_iter()
+                        .flatten(),
+                )
                 .stderr(std::process::Stdio::piped())
                 .spawn()
                 .expect("kiln runs")
@@ -49,11 +41,6 @@ fn build_shards(project: &Path, shards: &[PathBuf]) -> Vec<String> {
             text(&output)
         })
         .collect()
-}
-
-fn compiled(summary: &str) -> usize {
-    let at = summary.find(" compiled,").expect("a summary line");
-    summary[..at].rsplit('(').next().expect("count").parse().expect("number")
 }
 
 /// The object keys each shard holds.
@@ -101,7 +88,8 @@ fn four_concurrent_shards_merge_into_the_bytes_of_one_build() {
     let project = dir.path().join("project");
     project_of_1024_variants(&project);
     let shards: Vec<PathBuf> = (1..=4).map(|i| dir.path().join(format!("shard{i}"))).collect();
-    let summaries = build_shards(&project, &shards);
+    let cache = dir.path().join("cache");
+    let summaries = build_shards(&project, &shards, Some(&cache));
     assert!(summaries[0].contains("1024 variants"), "{}", summaries[0]);
     let per_shard: Vec<usize> = summaries.iter().map(|s| compiled(s)).collect();
     assert!(per_shard.iter().all(|&n| n > 150), "every shard does its share: {per_shard:?}");
@@ -127,8 +115,14 @@ fn four_concurrent_shards_merge_into_the_bytes_of_one_build() {
         per_shard.iter().sum::<usize>()
     );
 
-    // A second round finds every module in place and compiles nothing.
-    for summary in build_shards(&project, &shards) {
+    // A second round finds every module in place and compiles nothing; so do fresh shard
+    // folders, from the cache the first round shared.
+    for summary in build_shards(&project, &shards, Some(&cache)) {
+        assert_eq!(compiled(&summary), 0, "{summary}");
+    }
+
+    let fresh: Vec<PathBuf> = (1..=4).map(|i| dir.path().join(format!("fresh{i}"))).collect();
+    for summary in build_shards(&project, &fresh, Some(&cache)) {
         assert_eq!(compiled(&summary), 0, "{summary}");
     }
 
@@ -145,7 +139,7 @@ fn a_new_shader_moves_only_the_shards_that_hold_its_modules() {
     let project = dir.path().join("project");
     synthetic_project(&project, 64);
     let before: Vec<PathBuf> = (1..=4).map(|i| dir.path().join(format!("before{i}"))).collect();
-    build_shards(&project, &before);
+    build_shards(&project, &before, None);
     // A second shader, used by a material.
     let root = crate::support::root().join("fixtures/project/shaders");
     for name in ["Unlit.shader", "UnlitPass.wgsl"] {
@@ -153,7 +147,7 @@ fn a_new_shader_moves_only_the_shards_that_hold_its_modules() {
     }
     std::fs::write(project.join("materials/Unlit.mat"), "shader = \"Custom RP/Unlit\"\n").expect("write");
     let after: Vec<PathBuf> = (1..=4).map(|i| dir.path().join(format!("after{i}"))).collect();
-    build_shards(&project, &after);
+    build_shards(&project, &after, None);
     let (old, new) = (objects(&before), objects(&after));
     let mut changed = 0;
     for (old, new) in old.iter().zip(&new) {
@@ -171,7 +165,7 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     let project = dir.path().join("project");
     synthetic_project(&project, 16);
     let shards: Vec<PathBuf> = (1..=3).map(|i| dir.path().join(format!("shard{i}"))).collect();
-    build_shards(&project, &shards);
+    build_shards(&project, &shards, None);
     let refused = |shards: &[PathBuf], expected: &str| {
         let run = merge(&dir.path().join("merged"), shards);
         assert_eq!(run.status.code(), Some(2), "{}", text(&run));

@@ -142,6 +142,7 @@ pub fn build_without_errors(
         global_keywords: None,
         pretty_manifest: false,
         variant_logs: Vec::new(),
+        cache_dir: None,
     };
     let (result, mut diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
@@ -149,4 +150,25 @@ pub fn build_without_errors(
     let rendered = kiln::diagnostics::render_plain(&store, &diagnostics);
     assert!(!kiln::diagnostics::has_errors(&diagnostics), "{}:\n{rendered}", project.display());
     (result.summary, rendered)
+}
+
+/// Every file under `folder`, relative, with its bytes.
+pub fn tree(folder: &Path) -> std::collections::BTreeMap<PathBuf, Vec<u8>> {
+    walkdir::WalkDir::new(folder)
+        .into_iter()
+        .map(|e| e.expect("walk"))
+        .filter(|e| e.file_type().is_file())
+        .map(|e| {
+            (
+                e.path().strip_prefix(folder).expect("inside").to_path_buf(),
+                std::fs::read(e.path()).expect("read"),
+            )
+        })
+        .collect()
+}
+
+/// The number of stage modules a build's summary line says it compiled.
+pub fn compiled(summary: &str) -> usize {
+    let at = summary.find(" compiled,").expect("a summary line");
+    summary[..at].rsplit('(').next().expect("count").parse().expect("number")
 }
