@@ -118,3 +118,36 @@ fn a_damaged_entry_is_a_miss_and_gc_keeps_builds_working() {
     verified_manifest(&during);
     assert_eq!(tree(&during), tree(&dir.path().join("first")));
 }
+
+#[test]
+fn the_cache_folder_comes_from_the_flag_the_environment_or_kiln_toml() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    synthetic_project(&project, 4);
+    // KILN_CACHE_DIR.
+    let from_env = dir.path().join("from_env");
+    let mut command = build(&project, &dir.path().join("a"), None);
+    finished(command.env("KILN_CACHE_DIR", &from_env).output().expect("kiln runs"));
+    assert!(stats(&from_env).contains(" modules"), "{}", stats(&from_env));
+    // kiln.toml's cache_dir, relative to the project; the flag wins over it.
+    let toml = std::fs::read_to_string(project.join("kiln.toml")).expect("kiln.toml");
+    std::fs::write(project.join("kiln.toml"), format!("{toml}cache_dir = \"../from_toml\"\n"))
+        .expect("write");
+    let summary = finished(
+        build(&project, &dir.path().join("b"), None)
+            .env_remove("KILN_CACHE_DIR")
+            .output()
+            .expect("kiln runs"),
+    );
+    assert!(compiled(&summary) > 0, "{summary}");
+    let from_toml = dir.path().join("from_toml");
+    assert!(bytes(&stats(&from_toml)) > 0);
+    let from_flag = dir.path().join("from_flag");
+    finished(
+        build(&project, &dir.path().join("c"), Some(&from_flag))
+            .env_remove("KILN_CACHE_DIR")
+            .output()
+            .expect("kiln runs"),
+    );
+    assert!(bytes(&stats(&from_flag)) > 0);
+}

@@ -188,6 +188,21 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     assert_eq!(run.status.code(), Some(0), "{}", text(&run));
     refused(&[other.clone(), shards[1].clone(), shards[2].clone()], "a different number of shards");
 
+    // A shard of another project.
+    let elsewhere = dir.path().join("elsewhere");
+    synthetic_project(&elsewhere, 8);
+    let stranger = dir.path().join("stranger");
+    let run = kiln(&[
+        "build",
+        elsewhere.to_str().expect("utf-8"),
+        "--output",
+        stranger.to_str().expect("utf-8"),
+        "--shard",
+        "2/3",
+    ]);
+    assert_eq!(run.status.code(), Some(0), "{}", text(&run));
+    refused(&[shards[0].clone(), stranger, shards[2].clone()], "another project");
+
     // Another kiln.
     let record_path = shards[2].join("shard.json");
     let record = std::fs::read_to_string(&record_path).expect("record");
