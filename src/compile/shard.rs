@@ -171,12 +171,23 @@ pub(super) fn read_layouts(
     found
 }
 
+/// Publishes a pass's parsed resources, joined with what the cache already has for the pass (the
+/// same file in another project, another variant set): entries are by text hash, so joining is
+/// always right; two builds publishing at once may lose each other's additions, a miss later.
 pub(super) fn publish_layouts(
     folder: &Path,
     pass: &str,
     layouts: &std::collections::BTreeMap<String, Vec<super::bind::Declared>>,
 ) {
-    let Ok(json) = serde_json::to_vec(layouts) else { return };
+    let mut all = read_layouts(folder, pass);
+    let before = all.len();
+    for (text, declared) in layouts {
+        all.entry(text.clone()).or_insert_with(|| declared.clone());
+    }
+    if all.len() == before && before > 0 {
+        return;
+    }
+    let Ok(json) = serde_json::to_vec(&all) else { return };
     let mut bytes = hash(&json).into_bytes();
     bytes.push(b'\n');
     bytes.extend(json);
