@@ -988,6 +988,7 @@ fn manifest(
         .map(|(shader, passes)| ShaderManifest {
             name: shader.shader.name.value.clone(),
             file: recorded_name(store, shader.file, options),
+            render_queue: crate::material::shader_queue(&shader.shader),
             properties: properties(&shader.shader, &passes),
             passes,
         })

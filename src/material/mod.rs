@@ -272,7 +272,7 @@ fn render_queue(value: &toml::Value) -> Option<i64> {
 }
 
 /// `Geometry`, `Transparent+1`, ... as Unity's `Queue` tag and materials spell them.
-fn queue_by_name(text: &str) -> Option<i64> {
+pub fn queue_by_name(text: &str) -> Option<i64> {
     let (name, offset) = match text.split_once(['+', '-']) {
         Some((name, offset)) => {
             let offset: i64 = offset.trim().parse().ok()?;
@@ -285,7 +285,8 @@ fn queue_by_name(text: &str) -> Option<i64> {
 }
 
 /// The shader's `Queue` tag (first SubShader), else Geometry.
-fn shader_queue(shader: &Shader) -> i64 {
+/// The render queue of a material that sets none: its shader's `Queue` tag, else 2000.
+pub fn shader_queue(shader: &Shader) -> i64 {
     shader
         .subshaders
         .first()

@@ -69,8 +69,15 @@ pub struct ShaderManifest {
     pub name: String,
     /// Relative to the project folder, with `/` separators.
     pub file: String,
+    /// The render queue its first SubShader's `Queue` tag gives a material without one (2000).
+    #[serde(default = "default_queue")]
+    pub render_queue: i64,
     pub properties: Vec<PropertyManifest>,
     pub passes: Vec<PassManifest>,
+}
+
+fn default_queue() -> i64 {
+    2000
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -246,8 +246,11 @@ impl Library {
             keywords.insert(keyword.to_string());
         }
         let render_queue = match document.get("render_queue") {
-            Some(queue) => queue.as_integer().ok_or_else(|| error("`render_queue` is a number".into()))?,
-            None => preset.map_or(2000, |p| p.render_queue()),
+            Some(toml::Value::Integer(queue)) if (0..=5000).contains(queue) => *queue,
+            Some(toml::Value::String(name)) => crate::material::queue_by_name(name)
+                .ok_or_else(|| error(format!("`render_queue` `{name}` is not a queue")))?,
+            Some(other) => return Err(error(format!("`render_queue` {other} is not a queue"))),
+            None => preset.map_or(shader.render_queue, |p| p.render_queue()),
         };
         Ok(MaterialManifest {
             name: name.to_string(),
