@@ -9,7 +9,7 @@
 //! docs/performance.md.
 
 use kiln::catalog::catalog;
-use kiln::compile::{VariantSelection, stage_texts};
+use kiln::compile::stage_texts;
 use kiln::preprocess::{Includes, Stage};
 use kiln::project::{BuildMode, build_project, load_files, open_workspace};
 use kiln::source::SourceStore;
@@ -112,16 +112,7 @@ fn median(mut times: Vec<Duration>) -> Duration {
 fn kiln_build(project: &Path, output: &Path, write: bool) -> (kiln::compile::BuildSummary, Duration) {
     let started = Instant::now();
     let mut store = SourceStore::new();
-    let mode = BuildMode {
-        write,
-        output: Some(output.to_path_buf()),
-        unused_shaders: VariantSelection::Used,
-        threads: None,
-        global_keywords: None,
-        pretty_manifest: false,
-        variant_logs: Vec::new(),
-        cache_dir: None,
-    };
+    let mode = BuildMode { write, output: Some(output.to_path_buf()), ..BuildMode::default() };
     let (result, diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
     let mut all = diagnostics;

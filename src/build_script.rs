@@ -4,7 +4,7 @@
 //!
 //! [`Build::run`] is the one place in the library that prints: to stdout, for cargo.
 
-use crate::compile::{BuildSummary, VariantSelection};
+use crate::compile::BuildSummary;
 use crate::diagnostics::{self, Severity, render_plain};
 use crate::project::{BuildMode, ProjectError, build_project};
 use crate::reflect::manifest::{FILE_NAME, Manifest};
@@ -156,14 +156,12 @@ impl Build {
         }
         let mut store = SourceStore::new();
         let mode = BuildMode {
-            write: true,
             output: Some(output.clone()),
-            unused_shaders: VariantSelection::Used,
             threads: self.threads,
             global_keywords: self.global_keywords,
-            pretty_manifest: false,
             variant_logs: self.variant_logs,
             cache_dir: self.cache_dir,
+            ..BuildMode::default()
         };
         let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
         problems.extend(result.diagnostics);

@@ -195,14 +195,12 @@ fn main() -> ExitCode {
         }
         Command::Build { project, threads, output, pretty, variants_from, shard, cache_dir } => {
             let mode = BuildMode {
-                write: true,
                 output,
-                unused_shaders: VariantSelection::Used,
                 threads,
-                global_keywords: None,
                 pretty_manifest: pretty,
                 variant_logs: variants_from,
-                cache_dir: cache_dir.clone(),
+                cache_dir,
+                ..BuildMode::default()
             };
             let part = match shard.as_deref().map(kiln::compile::shard::Shard::parse) {
                 None => Part::Whole,
@@ -213,16 +211,7 @@ fn main() -> ExitCode {
         }
         Command::Cache(command) => cache(command),
         Command::Merge { output, shards, project, pretty } => {
-            let mode = BuildMode {
-                write: true,
-                output: Some(output),
-                unused_shaders: VariantSelection::Used,
-                threads: None,
-                global_keywords: None,
-                pretty_manifest: pretty,
-                variant_logs: Vec::new(),
-                cache_dir: None,
-            };
+            let mode = BuildMode { output: Some(output), pretty_manifest: pretty, ..BuildMode::default() };
             let mut store = SourceStore::new();
             match kiln::project::merge_shards(&mut store, &shards, project, &mode) {
                 Ok((result, mut problems)) => {
@@ -241,16 +230,7 @@ fn main() -> ExitCode {
             }
         }
         Command::Watch { project, output, variants_from, cache_dir } => {
-            let mode = BuildMode {
-                write: true,
-                output,
-                unused_shaders: VariantSelection::Used,
-                threads: None,
-                global_keywords: None,
-                pretty_manifest: false,
-                variant_logs: variants_from,
-                cache_dir: cache_dir.clone(),
-            };
+            let mode = BuildMode { output, variant_logs: variants_from, cache_dir, ..BuildMode::default() };
             watch(project.unwrap_or_else(kiln::project::bundled_example), &mode)
         }
         Command::Check { project, format, all_variants } => {
@@ -261,16 +241,7 @@ fn main() -> ExitCode {
             };
             build(
                 project,
-                BuildMode {
-                    write: false,
-                    output: None,
-                    unused_shaders,
-                    threads: None,
-                    global_keywords: None,
-                    pretty_manifest: false,
-                    variant_logs: Vec::new(),
-                    cache_dir: None,
-                },
+                BuildMode { write: false, unused_shaders, ..BuildMode::default() },
                 format,
                 Part::Whole,
             )

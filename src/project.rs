@@ -434,6 +434,23 @@ pub struct BuildMode {
     pub cache_dir: Option<PathBuf>,
 }
 
+impl Default for BuildMode {
+    /// `kiln build` as it runs without options: written, the project's output folder, the
+    /// variants the materials use, every core.
+    fn default() -> BuildMode {
+        BuildMode {
+            write: true,
+            output: None,
+            unused_shaders: VariantSelection::Used,
+            threads: None,
+            global_keywords: None,
+            pretty_manifest: false,
+            variant_logs: Vec::new(),
+            cache_dir: None,
+        }
+    }
+}
+
 /// Builds (or checks) the projects and files at `paths`. `Err` only when a path does not exist.
 pub fn build_project(
     store: &mut SourceStore,

@@ -28,16 +28,8 @@ fn build_with(
     pretty_manifest: bool,
 ) -> (BuildResult, Vec<Diagnostic>, SourceStore) {
     let mut store = SourceStore::new();
-    let mode = BuildMode {
-        write: true,
-        output: Some(output.to_path_buf()),
-        unused_shaders: VariantSelection::Used,
-        threads,
-        global_keywords: None,
-        pretty_manifest,
-        variant_logs: Vec::new(),
-        cache_dir: None,
-    };
+    let mode =
+        BuildMode { output: Some(output.to_path_buf()), threads, pretty_manifest, ..BuildMode::default() };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from(project)], &mode, &|_, _| {}).expect("project exists");
     (result, diagnostics, store)
@@ -225,13 +217,9 @@ fn every_bad_build_input_has_a_pinned_diagnostic() {
         let mut store = SourceStore::new();
         let mode = BuildMode {
             write: false,
-            output: None,
             unused_shaders: VariantSelection::All { limit: 4096 },
             threads: Some(1),
-            global_keywords: None,
-            pretty_manifest: false,
-            variant_logs: Vec::new(),
-            cache_dir: None,
+            ..BuildMode::default()
         };
         let (result, mut diagnostics) =
             build_project(&mut store, std::slice::from_ref(&path), &mode, &|_, _| {}).expect("exists");
@@ -332,16 +320,7 @@ fn a_build_script_error_reads_like_a_compiler_error() {
 #[test]
 fn an_always_included_shader_with_too_many_variants_is_refused_with_the_count() {
     let mut store = SourceStore::new();
-    let mode = BuildMode {
-        write: false,
-        output: None,
-        unused_shaders: VariantSelection::Used,
-        threads: Some(1),
-        global_keywords: None,
-        pretty_manifest: false,
-        variant_logs: Vec::new(),
-        cache_dir: None,
-    };
+    let mode = BuildMode { write: false, threads: Some(1), ..BuildMode::default() };
     let path = PathBuf::from("fixtures/bad/always_include");
     let (result, mut diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
     diagnostics.extend(result.diagnostics);
@@ -355,16 +334,8 @@ fn an_always_included_shader_with_too_many_variants_is_refused_with_the_count() 
 fn a_variant_log_line_that_names_nothing_is_an_error_at_its_line() {
     let mut store = SourceStore::new();
     let output = tempfile::tempdir().expect("temp dir");
-    let mode = BuildMode {
-        write: true,
-        output: Some(output.path().to_path_buf()),
-        unused_shaders: VariantSelection::Used,
-        threads: Some(1),
-        global_keywords: None,
-        pretty_manifest: false,
-        variant_logs: Vec::new(),
-        cache_dir: None,
-    };
+    let mode =
+        BuildMode { output: Some(output.path().to_path_buf()), threads: Some(1), ..BuildMode::default() };
     let path = PathBuf::from("fixtures/bad/variant_log");
     let (result, diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
     expect_file![root().join("fixtures/bad/variant_log/kiln.stderr")]
@@ -418,16 +389,8 @@ fn progress_counts_what_the_closing_line_counts() {
         let mut seen = seen.lock().expect("lock");
         *seen = (seen.0.max(done), seen.1.max(total));
     };
-    let mode = BuildMode {
-        write: true,
-        output: Some(output.path().to_path_buf()),
-        unused_shaders: VariantSelection::Used,
-        threads: Some(2),
-        global_keywords: None,
-        pretty_manifest: false,
-        variant_logs: Vec::new(),
-        cache_dir: None,
-    };
+    let mode =
+        BuildMode { output: Some(output.path().to_path_buf()), threads: Some(2), ..BuildMode::default() };
     let mut store = SourceStore::new();
     let (result, _) =
         build_project(&mut store, &[PathBuf::from("fixtures/project")], &mode, &progress).expect("project");

@@ -2,7 +2,6 @@
 //! pipeline with the manifest's layout (lavapipe in CI). Without an adapter the test says why and
 //! passes, unless `KILN_REQUIRE_GPU=1` (set by CI) makes that a failure.
 
-use kiln::compile::VariantSelection;
 use kiln::project::{BuildMode, build_project};
 use kiln::reflect::Resource;
 use kiln::reflect::manifest::{Manifest, PassManifest, StageView};
@@ -154,16 +153,7 @@ fn every_variant_makes_a_render_pipeline() {
     };
     let output = tempfile::tempdir().expect("temp dir");
     let mut store = SourceStore::new();
-    let mode = BuildMode {
-        write: true,
-        output: Some(output.path().to_path_buf()),
-        unused_shaders: VariantSelection::Used,
-        threads: None,
-        global_keywords: None,
-        pretty_manifest: false,
-        variant_logs: Vec::new(),
-        cache_dir: None,
-    };
+    let mode = BuildMode { output: Some(output.path().to_path_buf()), ..BuildMode::default() };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from("fixtures/project")], &mode, &|_, _| {})
             .expect("project exists");

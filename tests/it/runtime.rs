@@ -276,16 +276,8 @@ fn a_running_program_swaps_in_a_rebuilt_shader_and_keeps_the_last_good_one_on_er
         std::fs::copy(root().join("fixtures/runtime").join(name), to).expect("copy");
     }
     let output = project.path().join("out");
-    let mode = kiln::project::BuildMode {
-        write: true,
-        output: Some(output.clone()),
-        unused_shaders: VariantSelection::Used,
-        threads: None,
-        global_keywords: None,
-        pretty_manifest: false,
-        variant_logs: Vec::new(),
-        cache_dir: None,
-    };
+    let mode =
+        kiln::project::BuildMode { output: Some(output.clone()), ..kiln::project::BuildMode::default() };
     let rebuild = || {
         let mut store = SourceStore::new();
         kiln::project::watch_build(&mut store, &[project.path().to_path_buf()], &mode).expect("builds");

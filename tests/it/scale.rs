@@ -109,14 +109,8 @@ fn a_deleted_include_is_reported_not_skipped_by_the_no_op_check() {
     std::fs::remove_file(project.join("Tint.wgsl")).expect("delete an include");
     let mut store = kiln::source::SourceStore::new();
     let mode = kiln::project::BuildMode {
-        write: true,
-        output: None,
         unused_shaders: kiln::compile::VariantSelection::Used,
-        threads: None,
-        global_keywords: None,
-        pretty_manifest: false,
-        variant_logs: Vec::new(),
-        cache_dir: None,
+        ..kiln::project::BuildMode::default()
     };
     let (result, mut diagnostics) =
         kiln::project::build_project(&mut store, std::slice::from_ref(&project), &mode, &|_, _| {})

@@ -134,16 +134,7 @@ pub fn build_without_errors(
     unused_shaders: VariantSelection,
 ) -> (kiln::compile::BuildSummary, String) {
     let mut store = SourceStore::new();
-    let mode = BuildMode {
-        write: true,
-        output: output.map(Path::to_path_buf),
-        unused_shaders,
-        threads: None,
-        global_keywords: None,
-        pretty_manifest: false,
-        variant_logs: Vec::new(),
-        cache_dir: None,
-    };
+    let mode = BuildMode { output: output.map(Path::to_path_buf), unused_shaders, ..BuildMode::default() };
     let (result, mut diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
     diagnostics.extend(result.diagnostics);
