@@ -345,7 +345,7 @@ fn cache(command: CacheCommand) -> ExitCode {
     };
     let outcome = match command {
         CacheCommand::Stats { cache_dir } => folder(cache_dir).map_err(str::to_string).and_then(|dir| {
-            let stats = kiln::compile::shard::cache_stats(&dir)
+            let stats = kiln::compile::objects::cache_stats(&dir)
                 .map_err(|e| format!("cannot read `{}`: {e}", dir.display()))?;
             println!(
                 "{}: {} modules, {} pass layouts, {} bytes{}",
@@ -363,8 +363,8 @@ fn cache(command: CacheCommand) -> ExitCode {
         }),
         CacheCommand::Gc { max_size, cache_dir } => {
             folder(cache_dir).map_err(str::to_string).and_then(|dir| {
-                let limit = kiln::compile::shard::parse_size(&max_size)?;
-                let (removed, left) = kiln::compile::shard::cache_gc(&dir, limit)
+                let limit = kiln::compile::objects::parse_size(&max_size)?;
+                let (removed, left) = kiln::compile::objects::cache_gc(&dir, limit)
                     .map_err(|e| format!("cannot clean `{}`: {e}", dir.display()))?;
                 println!("{}: removed {removed} entries, {left} bytes left (limit {limit})", dir.display());
                 Ok(())

@@ -7,10 +7,10 @@
 
 use super::bind::{self, Declared, PassLayout};
 use super::cache::{Cache, CachedStage, Digest, Hashed, ModuleBytes, PassIndex, Recorded, hash};
-use super::shard::{
-    SHARD_FILE, Shard, ShardRecord, fetch_object, publish_layouts, publish_object, read_layouts, read_object,
-    write_object,
+use super::objects::{
+    fetch_object, publish_layouts, publish_object, read_layouts, read_object, write_object,
 };
+use super::shard::{SHARD_FILE, Shard, ShardRecord};
 use super::stage::{self, StageRequest};
 use super::target::Allowed;
 use super::{Mapper, parse};

@@ -10,6 +10,7 @@
 pub mod bind;
 pub mod build;
 mod cache;
+pub mod objects;
 pub mod shard;
 mod stage;
 pub mod target;

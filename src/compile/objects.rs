@@ -1,0 +1,246 @@
+//! Stage modules as objects: one file per content key (a JSON line with the reflection and each
+//! backend's size and hash, then the bytes), written whole or not at all and verified on every
+//! read. Shards store their modules as objects, `kiln merge` reads them, and the shared cache
+//! (`cache_dir`) keeps objects and each pass's parsed resources in a folder that builds,
+//! processes and machines use at once: entries are published by a rename (never seen half
+//! written), a damaged one is a miss, and an entry's modification time is its last use, for
+//! `kiln cache gc`.
+
+use super::cache::{ModuleBytes, hash, write_atomically};
+use crate::reflect::StageReflection;
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+/// Where objects are, in a shard's output folder or the shared cache.
+const OBJECTS: &str = "objects";
+
+/// A stage module as an object: one file per key, a JSON line (reflection, and each
+/// backend's size and hash) and then the modules' bytes. Written whole or not at all; a file
+/// whose bytes do not match their hashes is not a module.
+#[derive(Serialize, Deserialize)]
+struct ObjectHeader {
+    reflection: StageReflection,
+    modules: [Option<(u64, String)>; 2],
+}
+
+fn object_path(folder: &Path, key: &str) -> PathBuf {
+    folder.join(OBJECTS).join(&key[..2.min(key.len())]).join(key)
+}
+
+pub(super) fn write_object(
+    folder: &Path,
+    key: &str,
+    modules: &[Option<ModuleBytes>; 2],
+    reflection: &StageReflection,
+) -> std::io::Result<u64> {
+    let header = ObjectHeader {
+        reflection: reflection.clone(),
+        modules: [0, 1].map(|i| modules[i].as_ref().map(|m| (m.bytes.len() as u64, m.hash.clone()))),
+    };
+    let mut bytes = serde_json::to_vec(&header).map_err(std::io::Error::other)?;
+    bytes.push(b'\n');
+    for module in modules.iter().flatten() {
+        bytes.extend_from_slice(&module.bytes);
+    }
+    write_atomically(&object_path(folder, key), &bytes)?;
+    Ok(bytes.len() as u64)
+}
+
+/// A stored module, or `None` when there is none or it is damaged.
+pub(super) fn read_object(folder: &Path, key: &str) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
+    let bytes = std::fs::read(object_path(folder, key)).ok()?;
+    let split = bytes.iter().position(|&b| b == b'\n')?;
+    let header: ObjectHeader = serde_json::from_slice(&bytes[..split]).ok()?;
+    let mut at = split + 1;
+    let mut modules: [Option<ModuleBytes>; 2] = [None, None];
+    for (slot, entry) in header.modules.iter().enumerate() {
+        let Some((size, expected)) = entry else { continue };
+        let body = bytes.get(at..at + *size as usize)?;
+        if hash(body) != *expected {
+            return None;
+        }
+        modules[slot] = Some(ModuleBytes { bytes: body.to_vec(), hash: expected.clone() });
+        at += *size as usize;
+    }
+    (at == bytes.len()).then_some((modules, header.reflection))
+}
+
+/// A module from the shared cache, marked as used now (for `kiln cache gc`), or `None`.
+pub(super) fn fetch_object(folder: &Path, key: &str) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
+    let found = read_object(folder, key)?;
+    touch(&object_path(folder, key));
+    Some(found)
+}
+
+/// Publishes a module to the shared cache, unless it is there (same key, same bytes).
+pub(super) fn publish_object(
+    folder: &Path,
+    key: &str,
+    modules: &[Option<ModuleBytes>; 2],
+    reflection: &StageReflection,
+) {
+    if !object_path(folder, key).is_file() {
+        // A cache that cannot be written only costs speed.
+        let _ = write_object(folder, key, modules, reflection);
+    }
+}
+
+fn touch(path: &Path) {
+    if let Ok(file) = std::fs::File::options().write(true).open(path) {
+        let _ = file.set_modified(std::time::SystemTime::now());
+    }
+}
+
+/// Where the shared cache keeps a pass's parsed resources (by stage text hash).
+fn layouts_path(folder: &Path, pass: &str) -> PathBuf {
+    folder.join("layouts").join(format!("{pass}.json"))
+}
+
+/// A pass's parsed resources from the shared cache (empty when there are none or they are
+/// damaged).
+pub(super) fn read_layouts(
+    folder: &Path,
+    pass: &str,
+) -> std::collections::BTreeMap<String, Vec<super::bind::Declared>> {
+    let path = layouts_path(folder, pass);
+    let read = || {
+        let bytes = std::fs::read(&path).ok()?;
+        let split = bytes.iter().position(|&b| b == b'\n')?;
+        let json = &bytes[split + 1..];
+        (bytes[..split] == *hash(json).as_bytes()).then(|| serde_json::from_slice(json).ok())?
+    };
+    let found = read().unwrap_or_default();
+    touch(&path);
+    found
+}
+
+/// Publishes a pass's parsed resources, joined with what the cache already has for the pass (the
+/// same file in another project, another variant set): entries are by text hash, so joining is
+/// always right; two builds publishing at once may lose each other's additions, a miss later.
+pub(super) fn publish_layouts(
+    folder: &Path,
+    pass: &str,
+    layouts: &std::collections::BTreeMap<String, Vec<super::bind::Declared>>,
+) {
+    let mut all = read_layouts(folder, pass);
+    let before = all.len();
+    for (text, declared) in layouts {
+        all.entry(text.clone()).or_insert_with(|| declared.clone());
+    }
+    if all.len() == before && before > 0 {
+        return;
+    }
+    let Ok(json) = serde_json::to_vec(&all) else { return };
+    let mut bytes = hash(&json).into_bytes();
+    bytes.push(b'\n');
+    bytes.extend(json);
+    let _ = write_atomically(&layouts_path(folder, pass), &bytes);
+}
+
+/// What `kiln cache stats` prints.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct CacheStats {
+    pub modules: usize,
+    pub layouts: usize,
+    pub bytes: u64,
+    /// Modules whose bytes no longer match their hashes (misses until gc removes them).
+    pub damaged: usize,
+}
+
+/// Every entry of a shared cache: path, size, last use.
+fn entries(folder: &Path) -> std::io::Result<Vec<(PathBuf, u64, std::time::SystemTime)>> {
+    let mut found = Vec::new();
+    for sub in [OBJECTS, "layouts"] {
+        let root = folder.join(sub);
+        if !root.is_dir() {
+            continue;
+        }
+        for entry in walkdir::WalkDir::new(&root) {
+            let entry = entry.map_err(std::io::Error::other)?;
+            // Temporary files of writes in progress are not entries.
+            let name = entry.file_name().to_string_lossy();
+            if !entry.file_type().is_file() || name.starts_with('.') {
+                continue;
+            }
+            let Ok(meta) = entry.metadata() else { continue };
+            found.push((entry.into_path(), meta.len(), meta.modified().unwrap_or(std::time::UNIX_EPOCH)));
+        }
+    }
+    Ok(found)
+}
+
+pub fn cache_stats(folder: &Path) -> std::io::Result<CacheStats> {
+    let mut stats = CacheStats::default();
+    for (path, size, _) in entries(folder)? {
+        stats.bytes += size;
+        if path.starts_with(folder.join(OBJECTS)) {
+            stats.modules += 1;
+            let key = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+            stats.damaged += usize::from(read_object(folder, &key).is_none());
+        } else {
+            stats.layouts += 1;
+        }
+    }
+    Ok(stats)
+}
+
+/// Removes damaged modules, then the least recently used entries until the cache holds at most
+/// `limit` bytes. Returns how many were removed and the bytes left. A build running meanwhile
+/// loses nothing but the entries' use: an entry gone is a miss, and it is compiled again.
+pub fn cache_gc(folder: &Path, limit: u64) -> std::io::Result<(usize, u64)> {
+    let mut all = entries(folder)?;
+    let mut removed = 0;
+    all.retain(|(path, _, _)| {
+        let key = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let damaged = path.starts_with(folder.join(OBJECTS)) && read_object(folder, &key).is_none();
+        if damaged && std::fs::remove_file(path).is_ok() {
+            removed += 1;
+        }
+        !damaged
+    });
+    all.sort_by_key(|(_, _, used)| *used);
+    let mut total: u64 = all.iter().map(|(_, size, _)| size).sum();
+    for (path, size, _) in all {
+        if total <= limit {
+            break;
+        }
+        // Another gc may have removed it first.
+        if std::fs::remove_file(&path).is_ok() {
+            removed += 1;
+        }
+        total -= size;
+    }
+    Ok((removed, total))
+}
+
+/// `500M`, `2G`, `64K` or a number of bytes.
+pub fn parse_size(text: &str) -> Result<u64, String> {
+    let text = text.trim();
+    let (digits, unit) = text.split_at(text.find(|c: char| !c.is_ascii_digit()).unwrap_or(text.len()));
+    let scale: u64 = match unit.to_ascii_uppercase().trim_end_matches(['B', 'I']) {
+        "" => 1,
+        "K" => 1 << 10,
+        "M" => 1 << 20,
+        "G" => 1 << 30,
+        "T" => 1 << 40,
+        _ => return Err(format!("`{text}` is not a size: write bytes, or a number and K, M, G or T")),
+    };
+    let n: u64 = digits
+        .parse()
+        .map_err(|_| format!("`{text}` is not a size: write bytes, or a number and K, M, G or T"))?;
+    Ok(n.saturating_mul(scale))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sizes_parse() {
+        assert_eq!(parse_size("500M"), Ok(500 << 20));
+        assert_eq!(parse_size("2G"), Ok(2 << 30));
+        assert_eq!(parse_size("64KiB"), Ok(64 << 10));
+        assert_eq!(parse_size("1000"), Ok(1000));
+        assert!(parse_size("lots").is_err() && parse_size("5X").is_err());
+    }
+}
