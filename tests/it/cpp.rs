@@ -3,6 +3,7 @@
 //! macros) preprocessed by both, compared token by token. Required in CI (`KILN_REQUIRE_TOOLS`),
 //! skipped with a printed reason where `cpp` is missing.
 
+use crate::support::tool;
 use kiln::preprocess::{IncludeConfig, Includes, Stage};
 use kiln::source::{SourceStore, Span};
 use std::fmt::Write as _;
@@ -200,15 +201,6 @@ fn tokens(text: &str) -> Vec<String> {
     out
 }
 
-fn cpp_available(test: &str) -> bool {
-    let found = Command::new("cpp").arg("--version").output().is_ok_and(|o| o.status.success());
-    if !found {
-        assert!(std::env::var_os("KILN_REQUIRE_TOOLS").is_none(), "{test}: `cpp` is required but missing");
-        println!("{test}: skipped, gcc's `cpp` is not installed (Debian: apt-get install cpp)");
-    }
-    found
-}
-
 /// The first difference between two token streams, with some context.
 fn first_difference(ours: &[String], theirs: &[String]) -> Option<String> {
     let at = ours
@@ -222,7 +214,7 @@ fn first_difference(ours: &[String], theirs: &[String]) -> Option<String> {
 
 #[test]
 fn if_expressions_take_the_branches_cpp_takes() {
-    if !cpp_available("if_expressions_take_the_branches_cpp_takes") {
+    if !tool("cpp", "cpp", "if_expressions_take_the_branches_cpp_takes") {
         return;
     }
     let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
@@ -242,7 +234,7 @@ fn if_expressions_take_the_branches_cpp_takes() {
 
 #[test]
 fn macro_expansion_gives_the_tokens_cpp_gives() {
-    if !cpp_available("macro_expansion_gives_the_tokens_cpp_gives") {
+    if !tool("cpp", "cpp", "macro_expansion_gives_the_tokens_cpp_gives") {
         return;
     }
     let mut rng = Rng(0xD1B5_4A32_D192_ED03);
@@ -285,7 +277,7 @@ fn the_cases_kiln_once_got_wrong_expand_as_c_expands_them() {
         // Variadic macros, empty arguments and __VA_OPT__.
         ("#define V(a, ...) a __VA_OPT__(: __VA_ARGS__)\nV(1) V(1, 2, 3) V(, x)\n", "1 1 : 2, 3 : x"),
     ];
-    let cpp = Command::new("cpp").arg("--version").output().is_ok_and(|o| o.status.success());
+    let cpp = tool("cpp", "cpp", "the_cases_kiln_once_got_wrong_expand_as_c_expands_them");
     for (text, expected) in cases {
         let ours = kiln_output(text);
         assert_eq!(tokens(&ours), tokens(expected), "{text} gave {ours}");

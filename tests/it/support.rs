@@ -163,3 +163,15 @@ pub fn compiled(summary: &str) -> usize {
     let at = summary.find(" compiled,").expect("a summary line");
     summary[..at].rsplit('(').next().expect("count").parse().expect("number")
 }
+
+/// Whether a command other tests compare with is installed (`spirv-val`, gcc's `cpp`); without it
+/// the test is skipped with the reason printed, unless `KILN_REQUIRE_TOOLS=1` (set by CI) makes
+/// its absence a failure.
+pub fn tool(name: &str, debian_package: &str, test: &str) -> bool {
+    let found = std::process::Command::new(name).arg("--version").output().is_ok_and(|o| o.status.success());
+    if !found {
+        assert!(std::env::var_os("KILN_REQUIRE_TOOLS").is_none(), "{test}: `{name}` is required but missing");
+        println!("{test}: skipped, `{name}` is not installed (Debian: apt-get install {debian_package})");
+    }
+    found
+}

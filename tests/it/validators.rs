@@ -3,7 +3,7 @@
 //! modules come from the bundled project, every fixture project and a generated project with
 //! hundreds of variants, each built with every variant its shaders declare.
 
-use crate::support::{build_without_errors, root, synthetic_project};
+use crate::support::{build_without_errors, root, synthetic_project, tool};
 use kiln::compile::VariantSelection;
 use kiln::reflect::manifest::Manifest;
 use std::path::{Path, PathBuf};
@@ -64,20 +64,9 @@ fn modules(outputs: &Outputs, spirv: bool) -> Vec<(String, Vec<u8>, Vec<String>)
     found
 }
 
-/// Whether a tool other tests need is here; `KILN_REQUIRE_TOOLS=1` (set by CI) makes its
-/// absence a failure rather than a skip.
-fn tool(name: &str, test: &str) -> bool {
-    let found = Command::new(name).arg("--version").output().is_ok_and(|o| o.status.success());
-    if !found {
-        assert!(std::env::var_os("KILN_REQUIRE_TOOLS").is_none(), "{test}: `{name}` is required but missing");
-        println!("{test}: skipped, `{name}` is not installed (Debian: apt-get install spirv-tools)");
-    }
-    found
-}
-
 #[test]
 fn spirv_val_accepts_every_spirv_module() {
-    if !tool("spirv-val", "spirv_val_accepts_every_spirv_module") {
+    if !tool("spirv-val", "spirv-tools", "spirv_val_accepts_every_spirv_module") {
         return;
     }
     let outputs = outputs();
