@@ -36,7 +36,8 @@ pub struct PipelineRequest<'a> {
 struct PipelineKey {
     /// BLAKE3 of the vertex and fragment modules' WGSL.
     modules: [Option<String>; 2],
-    layout: String,
+    /// The pass's layout, by the hash of its manifest entry.
+    layout: blake3::Hash,
     state: super::RenderState,
     targets: Targets,
     vertex_layout: VertexLayout,
@@ -91,6 +92,14 @@ impl UsageLog {
     }
 }
 
+/// What a pass needs once, not per pipeline request: its layout and its render state, read.
+#[derive(Clone)]
+struct PassFacts {
+    layout_key: blake3::Hash,
+    layout: Arc<PassLayout>,
+    state: Arc<super::state::PassState>,
+}
+
 /// A device's pipelines for one build, created once each and kept across reloads of unchanged
 /// modules.
 pub struct Runtime {
@@ -98,9 +107,10 @@ pub struct Runtime {
     library: Library,
     /// The output folder the build came from, and its manifest's hash (for [`Runtime::reload`]).
     source: Option<(PathBuf, blake3::Hash)>,
-    layouts: HashMap<String, Arc<PassLayout>>,
-    /// Per pass (by shader and index): its layout's key in `layouts`, and its render state read.
-    passes: HashMap<(String, usize), (String, Arc<super::state::PassState>)>,
+    /// By the hash of the pass's layout entry: passes laid out alike share one.
+    layouts: HashMap<blake3::Hash, Arc<PassLayout>>,
+    /// Per shader, per pass index: what is worked out once (looked up without allocating).
+    passes: HashMap<String, HashMap<usize, PassFacts>>,
     modules: HashMap<String, wgpu::ShaderModule>,
     pipelines: HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>,
     created: usize,
@@ -180,62 +190,65 @@ impl Runtime {
         pass: usize,
         keywords: &[&str],
     ) -> Result<&crate::reflect::manifest::VariantManifest, RuntimeError> {
-        let found = self.library.variant(shader, pass, keywords);
+        self.log_request(shader, pass, keywords);
+        self.library.variant(shader, pass, keywords)
+    }
+
+    fn log_request(&mut self, shader: &str, pass: usize, keywords: &[&str]) {
         if let Some(log) = &mut self.usage {
-            log.record(shader, pass, keywords, found.is_err());
+            let missing = self.library.variant(shader, pass, keywords).is_err();
+            log.record(shader, pass, keywords, missing);
         }
-        found
     }
 
     /// The bind group and pipeline layouts of a pass.
     pub fn pass_layout(&mut self, shader: &str, pass: usize) -> Result<Arc<PassLayout>, RuntimeError> {
-        let (key, _) = self.pass_facts(shader, pass)?;
-        if let Some(layout) = self.layouts.get(&key) {
-            return Ok(layout.clone());
-        }
-        let manifest = self.library.pass(shader, pass)?;
-        let layout = PassLayout::new(&self.device, &manifest.layout)
-            .map_err(|message| RuntimeError::Layout { shader: shader.to_string(), pass, message })?;
-        let layout = Arc::new(layout);
-        self.layouts.insert(key, layout.clone());
-        Ok(layout)
+        Ok(self.pass_facts(shader, pass)?.layout)
     }
 
-    /// What is worked out once per pass: its layout's key and its render state, read.
-    fn pass_facts(
-        &mut self,
-        shader: &str,
-        pass: usize,
-    ) -> Result<(String, Arc<super::state::PassState>), RuntimeError> {
-        if let Some(facts) = self.passes.get(&(shader.to_string(), pass)) {
+    /// What is worked out once per pass: its layout (shared by passes laid out alike) and its
+    /// render state, read.
+    fn pass_facts(&mut self, shader: &str, pass: usize) -> Result<PassFacts, RuntimeError> {
+        if let Some(facts) = self.passes.get(shader).and_then(|p| p.get(&pass)) {
             return Ok(facts.clone());
         }
         let manifest = self.library.pass(shader, pass)?;
-        let key = serde_json::to_string(&manifest.layout).unwrap_or_default();
+        let layout_key = blake3::hash(serde_json::to_string(&manifest.layout).unwrap_or_default().as_bytes());
         let state = super::state::PassState::parse(manifest).map_err(|error| RuntimeError::State {
             shader: shader.to_string(),
             pass,
             error,
         })?;
-        let facts = (key, Arc::new(state));
-        self.passes.insert((shader.to_string(), pass), facts.clone());
+        let layout = match self.layouts.get(&layout_key) {
+            Some(layout) => layout.clone(),
+            None => {
+                let layout = PassLayout::new(&self.device, &manifest.layout)
+                    .map_err(|message| RuntimeError::Layout { shader: shader.to_string(), pass, message })?;
+                let layout = Arc::new(layout);
+                self.layouts.insert(layout_key, layout.clone());
+                layout
+            }
+        };
+        let facts = PassFacts { layout_key, layout, state: Arc::new(state) };
+        self.passes.entry(shader.to_string()).or_default().insert(pass, facts.clone());
         Ok(facts)
     }
 
     /// The pipeline for a draw, created the first time it is asked for.
     pub fn pipeline(&mut self, request: &PipelineRequest) -> Result<Arc<wgpu::RenderPipeline>, RuntimeError> {
         let (shader, pass_index) = (request.shader, request.pass);
-        let layout = self.pass_layout(shader, pass_index)?;
-        let (layout_key, pass_state) = self.pass_facts(shader, pass_index)?;
-        let variant = self.variant(shader, pass_index, request.keywords)?.clone();
+        let facts = self.pass_facts(shader, pass_index)?;
+        self.log_request(shader, pass_index, request.keywords);
         let library = &self.library;
+        let variant = library.variant(shader, pass_index, request.keywords)?;
         let pass = library.pass(shader, pass_index)?;
         let layout_error =
             |message: String| RuntimeError::Layout { shader: shader.to_string(), pass: pass_index, message };
-        let state = pass_state
+        let state = facts
+            .state
             .resolve(&|property| request.material.number(property))
             .map_err(|error| RuntimeError::State { shader: shader.to_string(), pass: pass_index, error })?;
-        let stages = pass.variant_stages(&variant);
+        let stages = pass.variant_stages(variant);
         let [Some(vertex), fragment] = stages else {
             return Err(layout_error("the variant has no vertex stage".into()));
         };
@@ -250,7 +263,7 @@ impl Runtime {
         let key = PipelineKey {
             modules: [Some(&vertex), fragment.as_ref()]
                 .map(|s| s.and_then(|s| s.module.wgsl.as_ref()).map(|f| f.hash.clone())),
-            layout: layout_key,
+            layout: facts.layout_key,
             state,
             targets: request.targets.clone(),
             vertex_layout,
@@ -297,7 +310,7 @@ impl Runtime {
         let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let pipeline = self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(&label),
-            layout: Some(&layout.pipeline),
+            layout: Some(&facts.layout.pipeline),
             vertex: wgpu::VertexState {
                 module: &vertex_module,
                 entry_point: Some(&vertex_entry),
