@@ -193,6 +193,17 @@ pub(crate) struct BodyToken {
     paste: bool,
 }
 
+impl BodyToken {
+    /// Its byte range in the body's text.
+    pub fn range(&self) -> Range<usize> {
+        self.range.start as usize..self.range.end as usize
+    }
+
+    pub fn text<'v>(&self, value: &'v str) -> &'v str {
+        &value[self.range()]
+    }
+}
+
 /// The tokens of a macro's body.
 pub(crate) fn lex_body(value: &str) -> Vec<BodyToken> {
     lex(value)
@@ -235,7 +246,7 @@ impl<'a> MacroDef<'a> {
     }
 
     fn text(&self, token: &BodyToken) -> &'a str {
-        &self.value[token.range.start as usize..token.range.end as usize]
+        token.text(self.value)
     }
 
     fn token(&self, token: &BodyToken) -> Token<'a> {

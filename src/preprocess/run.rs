@@ -171,7 +171,7 @@ impl<'a> Runner<'a> {
                     continue;
                 }
                 self.copy(text, file, copied..s, inclusion);
-                copied = self.expand(text, file, s..end, inclusion);
+                copied = self.expand(text, file, s..end, &text[s..e as usize], inclusion);
             }
         }
         self.copy(text, file, copied..end, inclusion);
@@ -184,6 +184,7 @@ impl<'a> Runner<'a> {
         text: &'a str,
         file: FileId,
         range: std::ops::Range<usize>,
+        name: &str,
         inclusion: u32,
     ) -> usize {
         let (start, end) = (range.start, range.end);
@@ -192,9 +193,7 @@ impl<'a> Runner<'a> {
         let tokens = expander.invocation(&mut lexer);
         let errors = std::mem::take(&mut expander.errors);
         let consumed = lexer.position();
-        let name_end =
-            text[start..].bytes().position(|b| !super::macros::is_ident_char(b)).map_or(end, |n| start + n);
-        let definition = self.macros.get(&text[start..name_end]).and_then(|m| m.defined_at);
+        let definition = self.macros.get(name).and_then(|m| m.defined_at);
         let before = self.out.len();
         for (i, token) in tokens.iter().enumerate() {
             if (i > 0 && token.space) || glues(&self.out, &token.text) {

@@ -3,6 +3,7 @@
 //! mistakes (unbalanced conditionals, malformed directives) are reported once, not per variant.
 
 use super::error::PreprocessError;
+use super::macros::{BodyToken, is_ident_char, is_ident_start, lex_body};
 use crate::source::{FileId, Span};
 use std::ops::Range;
 
@@ -161,14 +162,6 @@ fn line_content(line: &str) -> &str {
 
 fn is_directive(line: &str) -> bool {
     line.trim_start_matches([' ', '\t']).starts_with('#')
-}
-
-fn is_ident_start(b: u8) -> bool {
-    b.is_ascii_alphabetic() || b == b'_' || b >= 0x80
-}
-
-fn is_ident_char(b: u8) -> bool {
-    b.is_ascii_alphanumeric() || b == b'_' || b >= 0x80
 }
 
 /// Identifiers of an expression or macro value with their offsets (numbers are skipped, so the
@@ -477,10 +470,10 @@ impl Scanner<'_> {
         };
         let value_start = cursor.base + cursor.at + (cursor.rest().len() - cursor.rest().trim_start().len());
         let value = cursor.rest().trim().to_string();
-        if !self.check_body(&value, value_start, params.as_deref(), variadic) {
+        let body = lex_body(&value);
+        if !self.check_body(&value, &body, value_start, params.as_deref(), variadic) {
             return;
         }
-        let body = super::macros::lex_body(&value);
         self.unit.items.push(Item::Define { name, span, params, variadic, value, body });
     }
 
@@ -528,23 +521,29 @@ impl Scanner<'_> {
 
     /// A macro body's operators: `#` stringification is refused (WGSL has no strings), and `##`
     /// needs a token on each side. `start` is the file offset of `value`.
-    fn check_body(&mut self, value: &str, start: usize, params: Option<&[String]>, variadic: bool) -> bool {
-        let tokens = super::macros::lex(value);
-        let span = |t: &super::macros::Token| {
-            let at = start + t.at;
-            Span::new(self.file, at..at + t.text.len())
+    fn check_body(
+        &mut self,
+        value: &str,
+        tokens: &[BodyToken],
+        start: usize,
+        params: Option<&[String]>,
+        variadic: bool,
+    ) -> bool {
+        let span = |t: &BodyToken| {
+            let range = t.range();
+            Span::new(self.file, start + range.start..start + range.end)
         };
         let is_param = |name: &str| {
             params.is_some_and(|p| p.iter().any(|q| q == name) || (variadic && name == "__VA_ARGS__"))
         };
         for (i, token) in tokens.iter().enumerate() {
-            if token.text == "##" && (i == 0 || i + 1 == tokens.len()) {
+            if token.text(value) == "##" && (i == 0 || i + 1 == tokens.len()) {
                 self.errors.push(PreprocessError::PasteAtEdge { span: span(token) });
                 return false;
             }
-            if token.text == "#" && params.is_some() {
-                let next = tokens.get(i + 1).filter(|t| is_param(&t.text));
-                let name = next.map_or(String::new(), |t| t.text.to_string());
+            if token.text(value) == "#" && params.is_some() {
+                let next = tokens.get(i + 1).filter(|t| is_param(t.text(value)));
+                let name = next.map_or(String::new(), |t| t.text(value).to_string());
                 let whole = next.map_or(span(token), |n| span(token).to(span(n)));
                 self.errors.push(PreprocessError::Stringification { span: whole, name });
                 return false;
