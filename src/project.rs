@@ -3,6 +3,7 @@
 //! stages get file ids, never paths.
 
 use crate::catalog::{Catalog, CatalogInput, CatalogProgram, catalog};
+pub use crate::compile::Part;
 use crate::compile::{BuildOptions, BuildResult, VariantSelection, build};
 use crate::config::ProjectConfig;
 use crate::diagnostics::{self, Diagnostic};
@@ -461,16 +462,6 @@ pub fn build_project(
     build_part(store, paths, mode, progress, Part::Whole)
 }
 
-/// How much of a build one process does.
-#[derive(Debug, Clone)]
-pub enum Part {
-    Whole,
-    /// `kiln build --shard I/N`: one shard's stage modules, as objects (see [`crate::compile::shard`]).
-    Shard(crate::compile::shard::Shard),
-    /// `kiln merge`: the whole build, its modules taken from these shard outputs.
-    Merge(crate::compile::Merge),
-}
-
 /// [`build_project`] for a part of the work.
 pub fn build_part(
     store: &mut SourceStore,
@@ -504,21 +495,15 @@ pub fn build_part(
         unused_shaders: mode.unused_shaders,
         pretty_manifest: mode.pretty_manifest,
         record: false,
-        shard: None,
-        merge: None,
+        part,
         cache_dir: mode
             .cache_dir
             .clone()
             .or_else(|| std::env::var_os("KILN_CACHE_DIR").map(PathBuf::from))
             .or_else(|| workspace.cache_dir.clone()),
     };
-    match part {
-        Part::Whole => {}
-        Part::Shard(shard) => options.shard = Some(shard),
-        Part::Merge(merge) => options.merge = Some(merge),
-    }
     if diagnostics.is_empty()
-        && options.shard.is_none()
+        && !matches!(options.part, Part::Shard(_))
         && let Some(result) = crate::compile::unchanged(store, &options)
     {
         return Ok((result, diagnostics));
@@ -617,8 +602,7 @@ pub fn reflect_variant(
         unused_shaders: VariantSelection::Used,
         pretty_manifest: false,
         record: false,
-        shard: None,
-        merge: None,
+        part: Part::Whole,
         cache_dir: None,
     };
     let result = build(store, &includes, &catalog, &options, &|_, _| {});

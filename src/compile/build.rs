@@ -62,13 +62,39 @@ pub struct BuildOptions {
     /// Record the inputs for the next build's no-op check ([`unchanged`]). Only when the
     /// catalogue reported nothing: a no-op build reports nothing either.
     pub record: bool,
-    /// Build only this shard's stage modules, as objects in the output folder (`shard.json`).
-    pub shard: Option<Shard>,
-    /// Build with the stage modules of these shard outputs instead of compiling them.
-    pub merge: Option<Merge>,
+    /// The whole build, one shard of it, or a merge of shards.
+    pub part: Part,
     /// A module cache shared with other builds: modules are taken from it before naga runs,
     /// and every module compiled is published to it.
     pub cache_dir: Option<PathBuf>,
+}
+
+/// How much of a build one process does.
+#[derive(Debug, Clone, Default)]
+pub enum Part {
+    #[default]
+    Whole,
+    /// `kiln build --shard I/N`: only this shard's stage modules, as objects in the output folder
+    /// (`shard.json`).
+    Shard(Shard),
+    /// `kiln merge`: the whole build, with the stage modules of shard outputs instead of naga's.
+    Merge(Merge),
+}
+
+impl BuildOptions {
+    fn shard(&self) -> Option<Shard> {
+        match self.part {
+            Part::Shard(shard) => Some(shard),
+            _ => None,
+        }
+    }
+
+    fn merge(&self) -> Option<&Merge> {
+        match &self.part {
+            Part::Merge(merge) => Some(merge),
+            _ => None,
+        }
+    }
 }
 
 /// Shard outputs a build takes its stage modules from ([`super::shard::check_shards`] checked
@@ -212,7 +238,7 @@ fn build_in_pool(
     let mut diagnostics = Vec::new();
     let cache = Cache::new(&options.output, options.write);
     let mut summary = BuildSummary::default();
-    if let Some(merge) = &options.merge
+    if let Some(merge) = options.merge()
         && inputs_key(store, options, &[]) != merge.inputs
     {
         let error = Diagnostic::error("K0413", "the shards were built from another state of the project")
@@ -249,7 +275,7 @@ fn build_in_pool(
     }
 
     let manifest = manifest(store, options, &work, passes);
-    if let Some(shard) = options.shard {
+    if let Some(shard) = options.shard() {
         // A shard leaves its objects and what `kiln merge` checks; the merge writes the rest.
         diagnostics::dedup(&mut diagnostics);
         if options.write && !diagnostics::has_errors(&diagnostics) {
@@ -698,7 +724,7 @@ fn build_pass(
     let index = cache.pass_index(&key);
     // Every shard keeps every stage text's resources, so a merge lays passes out from the first
     // shard's without parsing anything.
-    let mut known = match &options.merge {
+    let mut known = match options.merge() {
         Some(merge) if index.front.is_empty() => Cache::new(&merge.folders[0], false).pass_index(&key).front,
         _ => index.front.clone(),
     };
@@ -738,7 +764,7 @@ fn build_pass(
             outcome
         })
         .collect();
-    if options.shard.is_some() {
+    if options.shard().is_some() {
         // The resources of every stage text, own or not: the next round and the merge parse none.
         let front = fronts
             .iter()
@@ -898,7 +924,7 @@ fn stage_module(
         )
         .as_bytes(),
     );
-    if let Some(shard) = options.shard {
+    if let Some(shard) = options.shard() {
         if !shard.owns(&key) {
             return Ok((Built::Skipped, key));
         }
@@ -909,13 +935,13 @@ fn stage_module(
     if let Some(cached) = index.stage.get(&key) {
         return Ok((Built::Reused(cached.clone()), key));
     }
-    if options.merge.is_none()
+    if options.merge().is_none()
         && let Some(dir) = &options.cache_dir
         && let Some((modules, reflection)) = fetch_object(dir, &key)
     {
         return Ok((Built::Fetched(Compiled { modules, reflection }), key));
     }
-    if let Some(merge) = &options.merge {
+    if let Some(merge) = options.merge() {
         // Every module comes from the shard that owns it; naga is not run.
         let found = merge.folders.iter().find_map(|folder| read_object(folder, &key));
         return match found {

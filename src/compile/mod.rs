@@ -16,7 +16,7 @@ mod stage;
 pub mod target;
 
 pub use build::{
-    BuildOptions, BuildResult, BuildSummary, Merge, VariantSelection, build, stage_texts, unchanged,
+    BuildOptions, BuildResult, BuildSummary, Merge, Part, VariantSelection, build, stage_texts, unchanged,
 };
 pub use cache::write_atomically;
 
