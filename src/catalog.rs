@@ -3,7 +3,7 @@
 //! them, and each pass's keywords and used variants.
 
 use crate::diagnostics::{self, Diagnostic};
-use crate::keywords::{MAX_VARIANTS_PER_PASS, PassKeywords, Variant};
+use crate::keywords::{KeywordBits, MAX_VARIANTS_PER_PASS, PassKeywords, Variant};
 use crate::material::{Material, ShaderEntries, ShaderEntry, load_material};
 use crate::preprocess::{Includes, Program, load_pass};
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
@@ -13,7 +13,7 @@ use crate::shaderlab::pragma::{
 };
 use crate::source::{FileId, SourceStore, Span, Spanned};
 use rayon::prelude::*;
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 /// More keywords than this in one pass is refused (each is a bit of every variant key, and no
 /// real pass comes close).
@@ -105,7 +105,11 @@ impl CatalogShader {
 /// Adds the variants a usage log names (one JSON object a line: `{"shader": "Custom RP/Lit",
 /// "pass": 0, "keywords": ["_CLIPPING"]}`) to the passes' variants, each exactly as logged; a
 /// line naming a shader, pass or keyword that does not exist is an error at that line.
-fn add_logged_variants(store: &SourceStore, log: FileId, shaders: &mut [CatalogShader]) -> Vec<Diagnostic> {
+fn add_logged_variants(
+    store: &SourceStore,
+    logs: &[FileId],
+    shaders: &mut [CatalogShader],
+) -> Vec<Diagnostic> {
     #[derive(serde::Deserialize)]
     struct Logged {
         shader: String,
@@ -113,11 +117,19 @@ fn add_logged_variants(store: &SourceStore, log: FileId, shaders: &mut [CatalogS
         keywords: Vec<String>,
     }
     let mut diagnostics = Vec::new();
-    let text = store.text(log);
-    let mut start = 0;
-    for line in text.split_inclusive('\n') {
-        let span = Span::new(log, start..start + line.trim_end().len());
-        start += line.len();
+    // Found once, not per line: the shaders by name, the logged variants by program.
+    let by_name: HashMap<String, usize> =
+        shaders.iter().enumerate().rev().map(|(i, s)| (s.shader.name.value.clone(), i)).collect();
+    let mut added: HashMap<(usize, usize), Vec<Variant>> = HashMap::new();
+    let lines = logs.iter().flat_map(|&log| {
+        let mut start = 0;
+        store.text(log).split_inclusive('\n').map(move |line| {
+            let span = Span::new(log, start..start + line.trim_end().len());
+            start += line.len();
+            (line, span)
+        })
+    });
+    for (line, span) in lines {
         if line.trim().is_empty() {
             continue;
         }
@@ -136,7 +148,7 @@ fn add_logged_variants(store: &SourceStore, log: FileId, shaders: &mut [CatalogS
                 continue;
             }
         };
-        let Some(shader) = shaders.iter_mut().find(|s| s.shader.name.value == logged.shader) else {
+        let Some(&index) = by_name.get(&logged.shader) else {
             diagnostics.push(error(
                 "K0531",
                 format!("no shader named `{}` in the project", logged.shader),
@@ -144,12 +156,12 @@ fn add_logged_variants(store: &SourceStore, log: FileId, shaders: &mut [CatalogS
             ));
             continue;
         };
-        let program = shader
-            .passes
-            .iter_mut()
-            .filter(|p| p.index == logged.pass)
-            .find_map(|p| p.program.as_mut().filter(|program| program.wgsl.is_some()));
-        let Some(program) = program else {
+        let position = shaders[index].passes.iter().position(|p| {
+            p.index == logged.pass && p.program.as_ref().is_some_and(|program| program.wgsl.is_some())
+        });
+        let Some((position, Some(program))) =
+            position.map(|p| (p, shaders[index].passes[p].program.as_ref()))
+        else {
             let message = format!("`{}` has no WGSL pass {}", logged.shader, logged.pass);
             diagnostics.push(error("K0532", message, "logged here"));
             continue;
@@ -157,14 +169,16 @@ fn add_logged_variants(store: &SourceStore, log: FileId, shaders: &mut [CatalogS
         match crate::keywords::select_variant(program.keywords.sets(), &logged.keywords) {
             Ok(keywords) => {
                 let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
-                let variant = program.keywords.variant_of(&keywords);
-                if !program.variants.iter().any(|v| v.bits == variant.bits) {
-                    program.variants.push(variant);
-                    program.variants.sort_by(|a, b| a.choices.cmp(&b.choices));
-                }
+                added.entry((index, position)).or_default().push(program.keywords.variant_of(&keywords));
             }
             Err(e) => diagnostics.push(error("K0533", e.to_string(), "logged here")),
         }
+    }
+    for ((shader, pass), variants) in added {
+        let Some(program) = shaders[shader].passes[pass].program.as_mut() else { continue };
+        let mut known: HashSet<KeywordBits> = program.variants.iter().map(|v| v.bits.clone()).collect();
+        program.variants.extend(variants.into_iter().filter(|v| known.insert(v.bits.clone())));
+        program.variants.sort_by(|a, b| a.choices.cmp(&b.choices));
     }
     diagnostics
 }
@@ -277,9 +291,7 @@ pub fn catalog(
         })
         .collect();
     diagnostics.extend(enumerated.into_iter().flatten());
-    for &log in &input.variant_logs {
-        diagnostics.extend(add_logged_variants(store, log, &mut shaders));
-    }
+    diagnostics.extend(add_logged_variants(store, &input.variant_logs, &mut shaders));
     // Include blocks and files are shared by passes: report each of their problems once.
     diagnostics::dedup(&mut diagnostics);
     (Catalog { shaders, materials }, diagnostics)
