@@ -132,12 +132,16 @@ enum Command {
 enum CacheCommand {
     /// How many modules the cache holds and their size (and any that no longer verify).
     Stats {
+        /// The project whose kiln.toml names the cache (default: the bundled example project).
+        project: Option<PathBuf>,
         #[arg(long, value_name = "DIR")]
         cache_dir: Option<PathBuf>,
     },
     /// Removes the least recently used entries until the cache is at most SIZE (`500M`, `2G`).
     /// Safe while builds run: an entry gone is a miss.
     Gc {
+        /// The project whose kiln.toml names the cache (default: the bundled example project).
+        project: Option<PathBuf>,
         #[arg(long, value_name = "SIZE")]
         max_size: String,
         #[arg(long, value_name = "DIR")]
@@ -338,38 +342,49 @@ fn build(project: Option<PathBuf>, mode: BuildMode, format: Format, part: Part) 
 
 /// `kiln cache stats` and `kiln cache gc`.
 fn cache(command: CacheCommand) -> ExitCode {
-    let folder = |given: Option<PathBuf>| {
-        given
-            .or_else(|| std::env::var_os("KILN_CACHE_DIR").map(PathBuf::from))
-            .ok_or("no cache folder: give --cache-dir or set KILN_CACHE_DIR")
+    let (project, given) = match &command {
+        CacheCommand::Stats { project, cache_dir } | CacheCommand::Gc { project, cache_dir, .. } => {
+            (project.clone().unwrap_or_else(kiln::project::bundled_example), cache_dir.clone())
+        }
+    };
+    let mut store = SourceStore::new();
+    let (workspace, problems) = match kiln::project::open_workspace(&mut store, &[project.clone()]) {
+        Ok(opened) => opened,
+        Err(error) => return usage_failure(&error.to_string()),
+    };
+    report(&store, &problems);
+    if diagnostics::has_errors(&problems) {
+        return ExitCode::from(1);
+    }
+    let Some(dir) = workspace.shared_cache_dir(given) else {
+        return usage_failure(&format!(
+            "no cache folder: give --cache-dir, set KILN_CACHE_DIR, or set `cache_dir` in {}",
+            project.join(kiln::config::FILE_NAME).display()
+        ));
     };
     let outcome = match command {
-        CacheCommand::Stats { cache_dir } => folder(cache_dir).map_err(str::to_string).and_then(|dir| {
-            let stats = kiln::compile::objects::cache_stats(&dir)
-                .map_err(|e| format!("cannot read `{}`: {e}", dir.display()))?;
-            println!(
-                "{}: {} modules, {} pass layouts, {} bytes{}",
-                dir.display(),
-                stats.modules,
-                stats.layouts,
-                stats.bytes,
-                if stats.damaged > 0 {
+        CacheCommand::Stats { .. } => kiln::compile::objects::cache_stats(&dir)
+            .map_err(|e| format!("cannot read `{}`: {e}", dir.display()))
+            .map(|stats| {
+                let damaged = if stats.damaged > 0 {
                     format!(", {} damaged (misses; gc removes them)", stats.damaged)
                 } else {
                     String::new()
-                }
-            );
+                };
+                println!(
+                    "{}: {} modules, {} pass layouts, {} bytes{damaged}",
+                    dir.display(),
+                    stats.modules,
+                    stats.layouts,
+                    stats.bytes
+                );
+            }),
+        CacheCommand::Gc { max_size, .. } => kiln::compile::objects::parse_size(&max_size).and_then(|limit| {
+            let (removed, left) = kiln::compile::objects::cache_gc(&dir, limit)
+                .map_err(|e| format!("cannot clean `{}`: {e}", dir.display()))?;
+            println!("{}: removed {removed} entries, {left} bytes left (limit {limit})", dir.display());
             Ok(())
         }),
-        CacheCommand::Gc { max_size, cache_dir } => {
-            folder(cache_dir).map_err(str::to_string).and_then(|dir| {
-                let limit = kiln::compile::objects::parse_size(&max_size)?;
-                let (removed, left) = kiln::compile::objects::cache_gc(&dir, limit)
-                    .map_err(|e| format!("cannot clean `{}`: {e}", dir.display()))?;
-                println!("{}: removed {removed} entries, {left} bytes left (limit {limit})", dir.display());
-                Ok(())
-            })
-        }
     };
     match outcome {
         Ok(()) => ExitCode::SUCCESS,

@@ -242,6 +242,14 @@ pub struct Workspace {
 }
 
 impl Workspace {
+    /// The shared module cache a command uses: the folder given, else `KILN_CACHE_DIR`, else
+    /// the project's `cache_dir`.
+    pub fn shared_cache_dir(&self, given: Option<PathBuf>) -> Option<PathBuf> {
+        given
+            .or_else(|| std::env::var_os("KILN_CACHE_DIR").map(PathBuf::from))
+            .or_else(|| self.cache_dir.clone())
+    }
+
     /// What the catalogue is built from: the loaded shader and material files, with this
     /// workspace's settings.
     pub fn catalog_input(&self, shaders: Vec<FileId>, materials: Vec<FileId>) -> CatalogInput {
@@ -496,11 +504,7 @@ pub fn build_part(
         pretty_manifest: mode.pretty_manifest,
         record: false,
         part,
-        cache_dir: mode
-            .cache_dir
-            .clone()
-            .or_else(|| std::env::var_os("KILN_CACHE_DIR").map(PathBuf::from))
-            .or_else(|| workspace.cache_dir.clone()),
+        cache_dir: workspace.shared_cache_dir(mode.cache_dir.clone()),
     };
     if diagnostics.is_empty()
         && !matches!(options.part, Part::Shard(_))

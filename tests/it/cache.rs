@@ -150,4 +150,20 @@ fn the_cache_folder_comes_from_the_flag_the_environment_or_kiln_toml() {
             .expect("kiln runs"),
     );
     assert!(bytes(&stats(&from_flag)) > 0);
+    // `kiln cache` finds the project's cache_dir too, and says where it looked when none is set.
+    let cache_command = |args: &[&str], project: &Path| {
+        let mut command = Command::new(env!("CARGO_BIN_EXE_kiln"));
+        command.arg("cache").args(args).arg(project).env_remove("KILN_CACHE_DIR").env("NO_COLOR", "1");
+        command.output().expect("kiln runs")
+    };
+    let listed = cache_command(&["stats"], &project);
+    assert_eq!(String::from_utf8_lossy(&listed.stdout), stats(&from_toml));
+    finished(cache_command(&["gc", "--max-size", "0"], &project));
+    assert_eq!(bytes(&stats(&from_toml)), 0);
+    let bare = dir.path().join("bare");
+    synthetic_project(&bare, 1);
+    let refused = cache_command(&["stats"], &bare);
+    assert_eq!(refused.status.code(), Some(2));
+    let message = String::from_utf8_lossy(&refused.stderr);
+    assert!(message.contains("no cache folder") && message.contains("kiln.toml"), "{message}");
 }
