@@ -209,14 +209,14 @@ pub fn catalog(
     let entries = ShaderEntries::new(
         shaders
             .iter()
-            .map(|s| ShaderEntry {
-                shader: &s.shader,
-                keyword_sets: s
+            .map(|s| {
+                let sets: Vec<_> = s
                     .passes
                     .iter()
                     .filter_map(|p| p.program.as_ref())
                     .flat_map(|p| p.keywords.sets().to_vec())
-                    .collect(),
+                    .collect();
+                ShaderEntry::from_shader(&s.shader, &sets)
             })
             .collect(),
     );

@@ -348,10 +348,11 @@ fn cache(command: CacheCommand) -> ExitCode {
         }
     };
     let mut store = SourceStore::new();
-    let (workspace, problems) = match kiln::project::open_workspace(&mut store, &[project.clone()]) {
-        Ok(opened) => opened,
-        Err(error) => return usage_failure(&error.to_string()),
-    };
+    let (workspace, problems) =
+        match kiln::project::open_workspace(&mut store, std::slice::from_ref(&project)) {
+            Ok(opened) => opened,
+            Err(error) => return usage_failure(&error.to_string()),
+        };
     report(&store, &problems);
     if diagnostics::has_errors(&problems) {
         return ExitCode::from(1);
@@ -379,12 +380,14 @@ fn cache(command: CacheCommand) -> ExitCode {
                     stats.bytes
                 );
             }),
-        CacheCommand::Gc { max_size, .. } => kiln::compile::objects::parse_size(&max_size).and_then(|limit| {
-            let (removed, left) = kiln::compile::objects::cache_gc(&dir, limit)
-                .map_err(|e| format!("cannot clean `{}`: {e}", dir.display()))?;
-            println!("{}: removed {removed} entries, {left} bytes left (limit {limit})", dir.display());
-            Ok(())
-        }),
+        CacheCommand::Gc { max_size, .. } => {
+            kiln::compile::objects::parse_size(&max_size).and_then(|limit| {
+                let (removed, left) = kiln::compile::objects::cache_gc(&dir, limit)
+                    .map_err(|e| format!("cannot clean `{}`: {e}", dir.display()))?;
+                println!("{}: removed {removed} entries, {left} bytes left (limit {limit})", dir.display());
+                Ok(())
+            })
+        }
     };
     match outcome {
         Ok(()) => ExitCode::SUCCESS,

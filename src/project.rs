@@ -80,7 +80,7 @@ fn find_shader(
 
 fn parse_preset(name: &str, shader: &crate::shaderlab::ast::Shader) -> Result<Preset, ProjectError> {
     let preset = Preset::parse(name).ok_or_else(|| ProjectError::UnknownPreset(name.to_string()))?;
-    if !preset.offered_for(shader) {
+    if !preset.offered_for(|p| shader.property(p).is_some()) {
         return Err(ProjectError::PresetNotOffered {
             preset: preset.name(),
             shader: shader.name.value.clone(),

@@ -21,7 +21,7 @@ use crate::keywords::{KeywordBits, Variant};
 use crate::preprocess::{Includes, LIBRARY_PREFIX, SourceMap, Stage, preprocess};
 use crate::reflect::manifest::*;
 use crate::reflect::{Resource, StageReflection, UniformBlock};
-use crate::shaderlab::ast::{PropertyDefault, PropertyType, Shader};
+use crate::shaderlab::ast::{PropertyDefault, Shader};
 use crate::shaderlab::pragma::KeywordScope;
 use crate::source::{FileId, SourceStore, Span, relative_to};
 use rayon::prelude::*;
@@ -387,14 +387,14 @@ fn disk_files(store: &SourceStore) -> impl Iterator<Item = FileId> + '_ {
     store.ids().filter(|&f| store.path(f).is_some())
 }
 
+/// Raised when what a build writes changes shape (files added), so that an earlier build's
+/// record no longer passes for a no-op. (A new manifest schema does the same.)
+const OUTPUT_FORMAT: u32 = 2;
+
 /// Everything a build's outcome depends on: the options, the texts given in memory (global
 /// keywords from a build script; the bundled library is part of kiln's version), and every file
 /// read from disk (shaders, includes, materials, the project file) by its name relative to the
 /// project, in the order read, followed by `more` files read since (name, bytes).
-/// Raised when what a build writes changes shape (files added), so that an earlier build's
-/// record no longer passes for a no-op.
-const OUTPUT_FORMAT: u32 = 2;
-
 fn inputs_key(store: &SourceStore, options: &BuildOptions, more: &[(String, Vec<u8>)]) -> String {
     let mut hasher = blake3::Hasher::new();
     let mut file = |name: &str, bytes: &[u8]| {
@@ -414,7 +414,7 @@ fn inputs_key(store: &SourceStore, options: &BuildOptions, more: &[(String, Vec<
         file(name, bytes);
     }
     let options = format!(
-        "{:?}{:?}{}{}{NAGA_VERSION} output {OUTPUT_FORMAT}",
+        "{:?}{:?}{}{}{NAGA_VERSION} output {OUTPUT_FORMAT} manifest {SCHEMA_VERSION}",
         options.backends,
         options.unused_shaders,
         options.pretty_manifest,
@@ -1132,7 +1132,7 @@ fn pass_manifest(
         .flatten()
         .chain(work.shader.pass_ast(work.pass).map(|p| &p.state.render_state).into_iter().flatten())
         .map(|command| {
-            let text = store.slice(command.span).to_string();
+            let text = store.slice(command.span).trim().to_string();
             let properties = property_references(&text)
                 .into_iter()
                 .map(|name| PropertyReference {
@@ -1142,7 +1142,7 @@ fn pass_manifest(
                     name: name.to_string(),
                 })
                 .collect();
-            RenderState { command: text, properties }
+            RenderState { command: text, state: StateCommand::from_ast(&command.kind), properties }
         })
         .collect();
     PassManifest {
@@ -1187,33 +1187,10 @@ fn default_json(default: &PropertyDefault) -> serde_json::Value {
 
 /// Every resolved material, for the run time (`materials.json`).
 fn materials(catalog: &Catalog) -> Vec<MaterialManifest> {
-    use crate::material::MaterialValue;
-    let shader_name =
-        |m: &crate::material::Material| catalog.shaders.get(m.shader).map(|s| s.shader.name.value.clone());
     catalog
         .materials
         .iter()
-        .filter_map(|m| {
-            Some(MaterialManifest {
-                name: m.name.clone(),
-                shader: shader_name(m)?,
-                preset: m.preset.map(|p| p.name().to_string()),
-                render_queue: m.render_queue,
-                keywords: m.keywords.iter().map(|(k, _)| k.clone()).collect(),
-                values: m
-                    .values
-                    .iter()
-                    .map(|(name, value)| {
-                        let json = match value {
-                            MaterialValue::Number(n) => serde_json::json!(n),
-                            MaterialValue::Vector(v) => serde_json::json!(v),
-                            MaterialValue::Texture(t) => serde_json::json!(t),
-                        };
-                        (name.clone(), json)
-                    })
-                    .collect(),
-            })
-        })
+        .filter_map(|m| Some(MaterialManifest::new(m, &catalog.shaders.get(m.shader)?.shader.name.value)))
         .collect()
 }
 
@@ -1237,16 +1214,14 @@ fn properties(shader: &Shader, passes: &[PassManifest]) -> Vec<PropertyManifest>
         .map(|p| PropertyManifest {
             name: p.name.value.clone(),
             display_name: p.display_name.value.clone(),
-            ty: match p.ty.value {
-                PropertyType::Range { min, max } => format!("Range({min}, {max})"),
-                other => other.name().to_string(),
-            },
+            ty: p.ty.value.manifest_text(),
             default: default_json(&p.default.value),
             offset: material_block
                 .and_then(|b| b.members.iter().find(|m| m.name == p.name.value))
                 .map(|m| m.offset),
             binding: bindings.get(p.name.value.as_str()).copied(),
             drawer: crate::material::KeywordDrawer::of(p),
+            enum_names: crate::material::enum_names(p),
         })
         .collect()
 }

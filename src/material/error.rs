@@ -14,8 +14,8 @@ pub enum MaterialError {
     PresetNotOffered { span: Span, preset: &'static str, shader: String },
     RenderQueue { span: Span, found: String },
     KeywordNotDeclared { span: Span, keyword: String, shader: String },
-    TwoKeywordsOfOneSet { span: Span, first: String, second: String, set: Span },
-    NoKeywordOfSet { span: Span, set: Span, options: String },
+    TwoKeywordsOfOneSet { span: Span, first: String, second: String, set: Option<Span> },
+    NoKeywordOfSet { span: Span, set: Option<Span>, options: String },
     KeywordDisagrees { span: Span, keyword: String, property: String, value: f64, enabled: bool },
 }
 
@@ -70,17 +70,19 @@ impl From<MaterialError> for Diagnostic {
             )
             .at(span, "this keyword changes no variant")
             .help("remove it, or declare it with `#pragma shader_feature`"),
-            TwoKeywordsOfOneSet { span, first, second, set } => {
+            TwoKeywordsOfOneSet { span, first, second, set } => set_label(
                 Diagnostic::error("K0508", format!("`{first}` and `{second}` belong to one keyword set"))
-                    .at(span, "a material enables at most one keyword of a set")
-                    .label(set, "the set")
-            }
-            NoKeywordOfSet { span, set, options } => {
+                    .at(span, "a material enables at most one keyword of a set"),
+                set,
+                "the set",
+            ),
+            NoKeywordOfSet { span, set, options } => set_label(
                 Diagnostic::error("K0509", format!("no keyword of the set `{options}` is enabled"))
                     .at(span, "this material enables none of them")
-                    .label(set, "the set has no `_` (off) choice")
-                    .help("enable one of its keywords, or add `_` to the pragma")
-            }
+                    .help("enable one of its keywords, or add `_` to the pragma"),
+                set,
+                "the set has no `_` (off) choice",
+            ),
             KeywordDisagrees { span, keyword, property, value, enabled } => {
                 let (is, says) = if enabled { ("lists", "turns it off") } else { ("omits", "turns it on") };
                 Diagnostic::error(
@@ -91,5 +93,14 @@ impl From<MaterialError> for Diagnostic {
                 .help(format!("set `{property}` instead; its drawer decides `{keyword}`"))
             }
         }
+    }
+}
+
+/// Points at the pragma that declares a keyword set, where it is known (a build; not the run
+/// time, which reads the set from the manifest).
+fn set_label(diagnostic: Diagnostic, set: Option<Span>, message: &str) -> Diagnostic {
+    match set {
+        Some(set) => diagnostic.label(set, message),
+        None => diagnostic,
     }
 }

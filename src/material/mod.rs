@@ -39,24 +39,140 @@ pub enum MaterialValue {
     Texture(String),
 }
 
-/// A shader materials may name, with the keyword sets of all its passes.
-pub struct ShaderEntry<'a> {
-    pub shader: &'a Shader,
-    pub keyword_sets: Vec<KeywordSet>,
+/// What resolving a material needs of its shader. A build takes it from the parsed shader
+/// ([`ShaderEntry::from_shader`]) and the run time from the manifest
+/// ([`ShaderEntry::from_manifest`]), so a `.mat` file resolves alike in both.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShaderEntry {
+    pub name: String,
+    pub properties: Vec<EntryProperty>,
+    /// The render queue of a material that sets none.
+    pub render_queue: i64,
+    /// The keyword sets of all its passes.
+    pub keyword_sets: Vec<EntrySet>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct EntryProperty {
+    pub name: String,
+    pub ty: PropertyType,
+    pub default: MaterialValue,
+    pub drawer: Option<KeywordDrawer>,
+    /// An `[Enum]` drawer's names and values (a material may write the name).
+    pub enum_names: Option<Vec<(String, f64)>>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct EntrySet {
+    pub shader_feature: bool,
+    pub keywords: Vec<String>,
+    /// The set has `_`: a material may enable none of its keywords.
+    pub off_option: bool,
+    /// The pragma that declares it (none at run time).
+    pub span: Option<Span>,
+}
+
+impl ShaderEntry {
+    /// From a parsed shader and the keyword sets of its passes.
+    pub fn from_shader(shader: &Shader, keyword_sets: &[KeywordSet]) -> ShaderEntry {
+        ShaderEntry {
+            name: shader.name.value.clone(),
+            properties: shader
+                .properties
+                .iter()
+                .map(|p| EntryProperty {
+                    name: p.name.value.clone(),
+                    ty: p.ty.value,
+                    default: match &p.default.value {
+                        PropertyDefault::Number(n) => MaterialValue::Number(*n),
+                        PropertyDefault::Vector(v) => MaterialValue::Vector(v.clone()),
+                        PropertyDefault::Texture { name, .. } => MaterialValue::Texture(name.clone()),
+                    },
+                    drawer: KeywordDrawer::of(p),
+                    enum_names: enum_names(p),
+                })
+                .collect(),
+            render_queue: shader_queue(shader),
+            keyword_sets: keyword_sets
+                .iter()
+                .map(|set| EntrySet {
+                    shader_feature: set.kind == KeywordKind::ShaderFeature,
+                    keywords: set.keywords().map(str::to_string).collect(),
+                    off_option: set.has_off_option(),
+                    span: Some(set.span),
+                })
+                .collect(),
+        }
+    }
+
+    /// From a shader in a manifest kiln wrote (`None` when a property's type does not read).
+    pub fn from_manifest(shader: &crate::reflect::manifest::ShaderManifest) -> Option<ShaderEntry> {
+        let properties = shader
+            .properties
+            .iter()
+            .map(|p| {
+                let default = match &p.default {
+                    serde_json::Value::Number(n) => MaterialValue::Number(n.as_f64()?),
+                    serde_json::Value::Array(v) => {
+                        MaterialValue::Vector(v.iter().map(serde_json::Value::as_f64).collect::<Option<_>>()?)
+                    }
+                    serde_json::Value::String(t) => MaterialValue::Texture(t.clone()),
+                    _ => return None,
+                };
+                Some(EntryProperty {
+                    name: p.name.clone(),
+                    ty: PropertyType::from_manifest(&p.ty)?,
+                    default,
+                    drawer: p.drawer.clone(),
+                    enum_names: p.enum_names.clone(),
+                })
+            })
+            .collect::<Option<_>>()?;
+        let keyword_sets = shader
+            .passes
+            .iter()
+            .flat_map(|pass| &pass.keyword_sets)
+            .map(|set| EntrySet {
+                shader_feature: set.kind == KeywordKind::ShaderFeature.name(),
+                keywords: set.keywords.iter().filter(|k| *k != "_").cloned().collect(),
+                off_option: set.keywords.iter().any(|k| k == "_"),
+                span: None,
+            })
+            .collect();
+        Some(ShaderEntry {
+            name: shader.name.clone(),
+            properties,
+            render_queue: shader.render_queue,
+            keyword_sets,
+        })
+    }
+
+    pub fn property(&self, name: &str) -> Option<&EntryProperty> {
+        self.properties.iter().find(|p| p.name == name)
+    }
 }
 
 /// The shaders materials may name, found by name (a project has thousands of shaders and
 /// hundreds of thousands of materials; the first of two shaders with one name wins).
-pub struct ShaderEntries<'a> {
-    entries: Vec<ShaderEntry<'a>>,
-    by_name: std::collections::HashMap<&'a str, usize>,
+#[derive(Debug)]
+pub struct ShaderEntries {
+    entries: Vec<ShaderEntry>,
+    by_name: std::collections::HashMap<String, usize>,
 }
 
-impl<'a> ShaderEntries<'a> {
-    pub fn new(entries: Vec<ShaderEntry<'a>>) -> ShaderEntries<'a> {
+impl ShaderEntries {
+    /// The shader a [`Material::shader`] index names.
+    ///
+    /// # Panics
+    /// When `index` is not one of these entries' (a material resolved against other entries).
+    pub fn entry(&self, index: usize) -> &ShaderEntry {
+        &self.entries[index]
+    }
+
+    pub fn new(entries: Vec<ShaderEntry>) -> ShaderEntries {
         let mut by_name = std::collections::HashMap::with_capacity(entries.len());
         for (index, entry) in entries.iter().enumerate() {
-            by_name.entry(entry.shader.name.value.as_str()).or_insert(index);
+            by_name.entry(entry.name.clone()).or_insert(index);
         }
         ShaderEntries { entries, by_name }
     }
@@ -103,7 +219,7 @@ fn resolve(
     };
     let shader_name = raw.shader.get_ref();
     let Some(&index) = shaders.by_name.get(shader_name.as_str()) else {
-        let suggestion = closest(shader_name, shaders.entries.iter().map(|s| s.shader.name.value.as_str()));
+        let suggestion = closest(shader_name, shaders.entries.iter().map(|s| s.name.as_str()));
         errors.push(MaterialError::UnknownShader {
             span: span(raw.shader.span()),
             name: shader_name.clone(),
@@ -111,16 +227,15 @@ fn resolve(
         });
         return None;
     };
-    let entry = &shaders.entries[index];
-    let shader = entry.shader;
+    let shader = &shaders.entries[index];
 
     let preset = raw.preset.as_ref().and_then(|p| match Preset::parse(p.get_ref()) {
-        Some(preset) if preset.offered_for(shader) => Some(preset),
+        Some(preset) if preset.offered_for(|p| shader.property(p).is_some()) => Some(preset),
         Some(preset) => {
             errors.push(MaterialError::PresetNotOffered {
                 span: span(p.span()),
                 preset: preset.name(),
-                shader: shader.name.value.clone(),
+                shader: shader.name.clone(),
             });
             None
         }
@@ -132,18 +247,8 @@ fn resolve(
 
     // Defaults, then the preset, then the file: later wins, as pressing a preset button and then
     // editing a value does in Unity.
-    let mut values: BTreeMap<String, MaterialValue> = shader
-        .properties
-        .iter()
-        .map(|p| {
-            let value = match &p.default.value {
-                PropertyDefault::Number(n) => MaterialValue::Number(*n),
-                PropertyDefault::Vector(v) => MaterialValue::Vector(v.clone()),
-                PropertyDefault::Texture { name, .. } => MaterialValue::Texture(name.clone()),
-            };
-            (p.name.value.clone(), value)
-        })
-        .collect();
+    let mut values: BTreeMap<String, MaterialValue> =
+        shader.properties.iter().map(|p| (p.name.clone(), p.default.clone())).collect();
     if let Some(preset) = preset {
         for (name, value) in preset.values() {
             if let Some(slot) = values.get_mut(name) {
@@ -157,19 +262,18 @@ fn resolve(
     for (key, value) in entries {
         let name = key.get_ref();
         let Some(property) = shader.property(name) else {
-            let suggestion = closest(name, shader.properties.iter().map(|p| p.name.value.as_str()));
+            let suggestion = closest(name, shader.properties.iter().map(|p| p.name.as_str()));
             errors.push(MaterialError::UnknownProperty {
                 span: span(key.span()),
                 name: name.clone(),
-                shader: shader.name.value.clone(),
+                shader: shader.name.clone(),
                 suggestion,
             });
             continue;
         };
         match property_value(property, value.get_ref()) {
             Ok(resolved) => {
-                if let (PropertyType::Range { min, max }, MaterialValue::Number(n)) =
-                    (property.ty.value, &resolved)
+                if let (PropertyType::Range { min, max }, MaterialValue::Number(n)) = (property.ty, &resolved)
                     && !(min..=max).contains(n)
                 {
                     errors.push(MaterialError::OutOfRange {
@@ -199,13 +303,13 @@ fn resolve(
             });
             2000
         }),
-        None => preset.map(Preset::render_queue).unwrap_or_else(|| shader_queue(shader)),
+        None => preset.map_or(shader.render_queue, Preset::render_queue),
     };
 
     let shader_span = span(raw.shader.span());
     let keywords =
         keywords(shader, &values, &value_spans, shader_span, raw.keywords.as_deref(), &span, errors);
-    check_sets(entry, &keywords, shader_span, errors);
+    check_sets(shader, &keywords, shader_span, errors);
     let name = store
         .path(file)
         .and_then(|p| p.file_stem())
@@ -214,19 +318,16 @@ fn resolve(
 }
 
 /// The value a TOML value gives a property, or what was expected instead.
-fn property_value(
-    property: &crate::shaderlab::ast::Property,
-    value: &toml::Value,
-) -> Result<MaterialValue, String> {
+fn property_value(property: &EntryProperty, value: &toml::Value) -> Result<MaterialValue, String> {
     use toml::Value as V;
     let number = |v: &V| match v {
         V::Integer(i) => Some(*i as f64),
         V::Float(f) => Some(*f),
         _ => None,
     };
-    match property.ty.value {
+    match property.ty {
         PropertyType::Float | PropertyType::Int | PropertyType::Integer | PropertyType::Range { .. } => {
-            let names = enum_names(property);
+            let names = &property.enum_names;
             match value {
                 V::Boolean(b) => Ok(MaterialValue::Number(if *b { 1.0 } else { 0.0 })),
                 V::String(s) => names
@@ -245,10 +346,10 @@ fn property_value(
         }
         PropertyType::Color | PropertyType::Vector => {
             let components: Option<Vec<f64>> = value.as_array().and_then(|a| a.iter().map(number).collect());
-            let allowed = if property.ty.value == PropertyType::Color { 3..=4 } else { 2..=4 };
+            let allowed = if property.ty == PropertyType::Color { 3..=4 } else { 2..=4 };
             match components {
                 Some(mut c) if allowed.contains(&c.len()) => {
-                    if c.len() == 3 && property.ty.value == PropertyType::Color {
+                    if c.len() == 3 && property.ty == PropertyType::Color {
                         c.push(1.0);
                     }
                     Ok(MaterialValue::Vector(c))
@@ -297,7 +398,7 @@ pub fn shader_queue(shader: &Shader) -> i64 {
 
 /// Keywords from the drawers, checked against and completed by an explicit `keywords` list.
 fn keywords(
-    shader: &Shader,
+    shader: &ShaderEntry,
     values: &BTreeMap<String, MaterialValue>,
     value_spans: &BTreeMap<String, Span>,
     shader_span: Span,
@@ -309,17 +410,15 @@ fn keywords(
     // Which drawer decides each keyword, and its verdict.
     let mut decided: BTreeMap<String, (String, f64, bool)> = BTreeMap::new();
     for property in &shader.properties {
-        let Some(drawer) = KeywordDrawer::of(property) else { continue };
-        let Some(MaterialValue::Number(value)) = values.get(&property.name.value) else { continue };
+        let Some(drawer) = &property.drawer else { continue };
+        let Some(MaterialValue::Number(value)) = values.get(&property.name) else { continue };
         let on = drawer.keyword_for(*value);
         for keyword in drawer.keywords() {
-            decided.insert(keyword.to_string(), (property.name.value.clone(), *value, Some(keyword) == on));
+            decided.insert(keyword.to_string(), (property.name.clone(), *value, Some(keyword) == on));
         }
         if let Some(keyword) = on {
-            enabled.push((
-                keyword.to_string(),
-                value_spans.get(&property.name.value).copied().unwrap_or(shader_span),
-            ));
+            enabled
+                .push((keyword.to_string(), value_spans.get(&property.name).copied().unwrap_or(shader_span)));
         }
     }
     if let Some(explicit) = explicit {
@@ -364,28 +463,27 @@ fn check_sets(
     errors: &mut Vec<MaterialError>,
 ) {
     for (keyword, at) in keywords {
-        if !entry.keyword_sets.iter().any(|s| s.keywords().any(|k| k == keyword)) {
+        if !entry.keyword_sets.iter().any(|s| s.keywords.contains(keyword)) {
             errors.push(MaterialError::KeywordNotDeclared {
                 span: *at,
                 keyword: keyword.clone(),
-                shader: entry.shader.name.value.clone(),
+                shader: entry.name.clone(),
             });
         }
     }
-    let mut seen_sets: Vec<Span> = Vec::new();
-    for set in entry.keyword_sets.iter().filter(|s| s.kind == KeywordKind::ShaderFeature) {
-        // Passes often repeat a set: check each declaration text once.
-        if seen_sets.contains(&set.span) {
+    let mut seen_sets: Vec<&EntrySet> = Vec::new();
+    for set in entry.keyword_sets.iter().filter(|s| s.shader_feature) {
+        // Passes often repeat a set: check it once.
+        if seen_sets.iter().any(|seen| (&seen.keywords, seen.off_option) == (&set.keywords, set.off_option)) {
             continue;
         }
-        seen_sets.push(set.span);
-        let on: Vec<&(String, Span)> =
-            keywords.iter().filter(|(k, _)| set.keywords().any(|s| s == k)).collect();
+        seen_sets.push(set);
+        let on: Vec<&(String, Span)> = keywords.iter().filter(|(k, _)| set.keywords.contains(k)).collect();
         match on.as_slice() {
-            [] if !set.has_off_option() => errors.push(MaterialError::NoKeywordOfSet {
+            [] if !set.off_option => errors.push(MaterialError::NoKeywordOfSet {
                 span: shader_span,
                 set: set.span,
-                options: set.keywords().collect::<Vec<_>>().join(" "),
+                options: set.keywords.join(" "),
             }),
             [first, second, ..] => errors.push(MaterialError::TwoKeywordsOfOneSet {
                 span: second.1,

@@ -60,8 +60,8 @@ impl Preset {
     }
 
     /// Transparent is offered only where the shader has `_PremulAlpha`, as in the seed's GUI.
-    pub fn offered_for(self, shader: &Shader) -> bool {
-        self != Preset::Transparent || shader.property("_PremulAlpha").is_some()
+    pub fn offered_for(self, has_property: impl Fn(&str) -> bool) -> bool {
+        self != Preset::Transparent || has_property("_PremulAlpha")
     }
 }
 

@@ -6,11 +6,15 @@
 //! keywords and module indices.
 
 use super::{Attribute, Resource, UniformBlock};
+use crate::shaderlab::ast::{
+    BlendFactor, BlendOperation, ColorMask, CompareFunction, CullMode, RenderCommandKind, StencilField,
+    StencilValue, Value,
+};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
 /// Raised whenever a field changes meaning or is removed (adding fields keeps it).
-pub const SCHEMA_VERSION: u32 = 4;
+pub const SCHEMA_VERSION: u32 = 5;
 
 /// The manifest's file name, at the top of the output folder.
 pub const FILE_NAME: &str = "manifest.json";
@@ -95,6 +99,10 @@ pub struct PropertyManifest {
     /// that a material read at run time gets the same keywords the build gave it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub drawer: Option<crate::material::KeywordDrawer>,
+    /// An `[Enum]` drawer's names and values (`[["Off", 0], ["Front", 1], ["Back", 2]]`): a
+    /// material may write the name.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub enum_names: Option<Vec<(String, f64)>>,
 }
 
 /// `materials.json`, beside the manifest: every material the build resolved, as the build
@@ -117,6 +125,30 @@ pub struct MaterialManifest {
 }
 
 impl MaterialManifest {
+    /// A resolved material of the shader named `shader`.
+    pub fn new(material: &crate::material::Material, shader: &str) -> MaterialManifest {
+        use crate::material::MaterialValue;
+        MaterialManifest {
+            name: material.name.clone(),
+            shader: shader.to_string(),
+            preset: material.preset.map(|p| p.name().to_string()),
+            render_queue: material.render_queue,
+            keywords: material.keywords.iter().map(|(k, _)| k.clone()).collect(),
+            values: material
+                .values
+                .iter()
+                .map(|(name, value)| {
+                    let json = match value {
+                        MaterialValue::Number(n) => serde_json::json!(n),
+                        MaterialValue::Vector(v) => serde_json::json!(v),
+                        MaterialValue::Texture(t) => serde_json::json!(t),
+                    };
+                    (name.clone(), json)
+                })
+                .collect(),
+        }
+    }
+
     /// A number property's value (`None` for other kinds and unknown names).
     pub fn number(&self, property: &str) -> Option<f64> {
         self.values.get(property).and_then(serde_json::Value::as_f64)
@@ -186,11 +218,114 @@ impl PassManifest {
     }
 }
 
-/// A render-state command as written, with the properties it refers to resolved.
+/// A render-state command: as written (for messages), structured, and with the properties it
+/// refers to and their defaults.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RenderState {
     pub command: String,
+    pub state: StateCommand,
     pub properties: Vec<PropertyReference>,
+}
+
+/// One ShaderLab render-state command (`kind` is its keyword), its values literal or
+/// `[_Property]` (a material's value, read at draw time as Unity's enums number them).
+/// `target: null` is every colour target.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind")]
+pub enum StateCommand {
+    /// `factors: null` is `Blend Off`.
+    Blend {
+        target: Option<u32>,
+        factors: Option<BlendFactors>,
+    },
+    BlendOp {
+        target: Option<u32>,
+        color: Value<BlendOperation>,
+        alpha: Option<Value<BlendOperation>>,
+    },
+    ZWrite {
+        on: Value<bool>,
+    },
+    ZTest {
+        function: Value<CompareFunction>,
+    },
+    ZClip {
+        on: Value<bool>,
+    },
+    Cull {
+        mode: Value<CullMode>,
+    },
+    ColorMask {
+        target: Option<u32>,
+        mask: Value<ColorMask>,
+    },
+    Offset {
+        factor: Value<f64>,
+        units: Value<f64>,
+    },
+    AlphaToMask {
+        on: Value<bool>,
+    },
+    Conservative {
+        on: Value<bool>,
+    },
+    /// In the order written: a later setting of one field wins.
+    Stencil {
+        settings: Vec<StencilSetting>,
+    },
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BlendFactors {
+    pub src: Value<BlendFactor>,
+    pub dst: Value<BlendFactor>,
+    /// Separate alpha factors (`Blend A B, C D`); `null`: the colour factors.
+    pub alpha: Option<[Value<BlendFactor>; 2]>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StencilSetting {
+    pub field: StencilField,
+    pub value: StencilValue,
+}
+
+impl StateCommand {
+    /// The command as parsed, without its spans.
+    pub fn from_ast(command: &RenderCommandKind) -> StateCommand {
+        match command {
+            RenderCommandKind::Blend { target, factors } => StateCommand::Blend {
+                target: *target,
+                factors: factors.as_ref().map(|f| BlendFactors {
+                    src: f.src.value.clone(),
+                    dst: f.dst.value.clone(),
+                    alpha: f.alpha.as_ref().map(|(s, d)| [s.value.clone(), d.value.clone()]),
+                }),
+            },
+            RenderCommandKind::BlendOp { target, color, alpha } => StateCommand::BlendOp {
+                target: *target,
+                color: color.value.clone(),
+                alpha: alpha.as_ref().map(|a| a.value.clone()),
+            },
+            RenderCommandKind::ZWrite(on) => StateCommand::ZWrite { on: on.value.clone() },
+            RenderCommandKind::ZTest(function) => StateCommand::ZTest { function: function.value.clone() },
+            RenderCommandKind::ZClip(on) => StateCommand::ZClip { on: on.value.clone() },
+            RenderCommandKind::Cull(mode) => StateCommand::Cull { mode: mode.value.clone() },
+            RenderCommandKind::ColorMask { mask, target } => {
+                StateCommand::ColorMask { target: *target, mask: mask.value.clone() }
+            }
+            RenderCommandKind::Offset { factor, units } => {
+                StateCommand::Offset { factor: factor.value.clone(), units: units.value.clone() }
+            }
+            RenderCommandKind::AlphaToMask(on) => StateCommand::AlphaToMask { on: on.value.clone() },
+            RenderCommandKind::Conservative(on) => StateCommand::Conservative { on: on.value.clone() },
+            RenderCommandKind::Stencil(entries) => StateCommand::Stencil {
+                settings: entries
+                    .iter()
+                    .map(|e| StencilSetting { field: e.op, value: e.value.value.clone() })
+                    .collect(),
+            },
+        }
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

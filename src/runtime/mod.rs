@@ -15,12 +15,13 @@ pub use state::{
     MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state,
 };
 
+use crate::material::{ShaderEntries, ShaderEntry};
 use crate::reflect::manifest::{
     FILE_NAME, MATERIALS_FILE, Manifest, MaterialManifest, ModuleFile, PassManifest, ShaderManifest,
     VariantManifest,
 };
 use std::borrow::Cow;
-use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::collections::{BTreeSet, HashMap};
 use std::path::{Path, PathBuf};
 
 /// Why the runtime could not do what was asked.
@@ -58,6 +59,8 @@ pub struct Library {
     materials: Vec<MaterialManifest>,
     /// Per pass (shader index, pass position): its variants by keyword set.
     variants: HashMap<(usize, usize), HashMap<BTreeSet<String>, usize>>,
+    /// The shaders as `.mat` files are resolved against, made at the first `load_material`.
+    material_shaders: std::sync::OnceLock<ShaderEntries>,
 }
 
 impl Library {
@@ -112,7 +115,7 @@ impl Library {
                 variants.insert((s, p), by_keywords.collect());
             }
         }
-        Library { manifest, packs, materials, variants }
+        Library { manifest, packs, materials, variants, material_shaders: std::sync::OnceLock::new() }
     }
 
     pub fn manifest(&self) -> &Manifest {
@@ -179,86 +182,23 @@ impl Library {
         pack.get(file.offset as usize..(file.offset + file.size) as usize)
     }
 
-    /// A material from a `.mat` file's text, resolved against this build's shader the way the
-    /// build resolves materials: defaults, then the preset, then the file's values; keywords from
-    /// the property drawers and the `keywords` list. Names and types are checked; keywords the
-    /// shader does not declare are refused.
+    /// A material from a `.mat` file's text, resolved against this build's shaders by the
+    /// resolver builds use (defaults, then the preset, then the file's values; keywords from the
+    /// property drawers and the `keywords` list), so it resolves as a build would resolve it.
+    /// Any diagnostic refuses it, warnings too (at run time no one would see them), rendered as
+    /// a build renders them: `name:line:col`.
     pub fn load_material(&self, name: &str, text: &str) -> Result<MaterialManifest, RuntimeError> {
-        let error = |message: String| RuntimeError::Material(format!("{name}: {message}"));
-        let document: toml::Table = text.parse().map_err(|e: toml::de::Error| error(e.to_string()))?;
-        let shader_name = document
-            .get("shader")
-            .and_then(toml::Value::as_str)
-            .ok_or_else(|| error("it names no `shader`".into()))?;
-        let shader = self.shader(shader_name)?;
-        let mut values: BTreeMap<String, serde_json::Value> =
-            shader.properties.iter().map(|p| (p.name.clone(), p.default.clone())).collect();
-        let preset = match document.get("preset").and_then(toml::Value::as_str) {
-            Some(p) => Some(
-                crate::material::Preset::parse(p).ok_or_else(|| error(format!("unknown preset `{p}`")))?,
-            ),
-            None => None,
-        };
-        if let Some(preset) = preset {
-            for (property, value) in preset.values() {
-                if let Some(slot) = values.get_mut(property) {
-                    *slot = serde_json::json!(value);
-                }
+        let shaders = self.material_shaders.get_or_init(|| {
+            ShaderEntries::new(self.manifest.shaders.iter().filter_map(ShaderEntry::from_manifest).collect())
+        });
+        let mut store = crate::source::SourceStore::new();
+        let file = store.add(name, text.to_string());
+        let (material, problems) = crate::material::load_material(&store, file, shaders);
+        match material {
+            Some(material) if problems.is_empty() => {
+                Ok(MaterialManifest::new(&material, &shaders.entry(material.shader).name))
             }
+            _ => Err(RuntimeError::Material(crate::diagnostics::render_plain(&store, &problems))),
         }
-        if let Some(properties) = document.get("properties").and_then(toml::Value::as_table) {
-            for (property, value) in properties {
-                let slot = values
-                    .get_mut(property)
-                    .ok_or_else(|| error(format!("`{shader_name}` has no property `{property}`")))?;
-                let json = serde_json::to_value(value).map_err(|e| error(e.to_string()))?;
-                let same_kind = (slot.is_number() && json.is_number())
-                    || (slot.is_array() && json.is_array())
-                    || (slot.is_string() && json.is_string());
-                if !same_kind {
-                    return Err(error(format!("`{property}` takes a value like {slot}, not {json}")));
-                }
-                *slot = json;
-            }
-        }
-        let mut keywords: BTreeSet<String> = BTreeSet::new();
-        for property in &shader.properties {
-            let value = values.get(&property.name).and_then(serde_json::Value::as_f64);
-            if let (Some(drawer), Some(value)) = (&property.drawer, value)
-                && let Some(keyword) = drawer.keyword_for(value)
-            {
-                keywords.insert(keyword.to_string());
-            }
-        }
-        let listed = document.get("keywords").and_then(toml::Value::as_array).into_iter().flatten();
-        let declared: BTreeSet<&str> = shader
-            .passes
-            .iter()
-            .flat_map(|p| &p.keyword_sets)
-            .flat_map(|s| &s.keywords)
-            .map(String::as_str)
-            .collect();
-        for keyword in listed {
-            let keyword = keyword.as_str().ok_or_else(|| error("`keywords` holds strings".into()))?;
-            if !declared.contains(keyword) {
-                return Err(error(format!("`{shader_name}` declares no keyword `{keyword}`")));
-            }
-            keywords.insert(keyword.to_string());
-        }
-        let render_queue = match document.get("render_queue") {
-            Some(toml::Value::Integer(queue)) if (0..=5000).contains(queue) => *queue,
-            Some(toml::Value::String(name)) => crate::material::queue_by_name(name)
-                .ok_or_else(|| error(format!("`render_queue` `{name}` is not a queue")))?,
-            Some(other) => return Err(error(format!("`render_queue` {other} is not a queue"))),
-            None => preset.map_or(shader.render_queue, |p| p.render_queue()),
-        };
-        Ok(MaterialManifest {
-            name: name.to_string(),
-            shader: shader_name.to_string(),
-            preset: preset.map(|p| p.name().to_string()),
-            render_queue,
-            keywords: keywords.into_iter().collect(),
-            values,
-        })
     }
 }

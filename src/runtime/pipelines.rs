@@ -214,11 +214,7 @@ impl Runtime {
         }
         let manifest = self.library.pass(shader, pass)?;
         let layout_key = blake3::hash(serde_json::to_string(&manifest.layout).unwrap_or_default().as_bytes());
-        let state = super::state::PassState::parse(manifest).map_err(|error| RuntimeError::State {
-            shader: shader.to_string(),
-            pass,
-            error,
-        })?;
+        let state = super::state::PassState::new(manifest);
         let layout = match self.layouts.get(&layout_key) {
             Some(layout) => layout.clone(),
             None => {

@@ -1,17 +1,15 @@
 //! A pass's ShaderLab render state (`Blend [_SrcBlend] [_DstBlend]`, `ZWrite [_ZWrite]`, ...)
 //! resolved with a material's property values into wgpu's pipeline state.
 //!
-//! The manifest keeps each command as written; they are read again here with kiln's own
-//! ShaderLab parser, so the runtime accepts exactly what the compiler did. `[_Property]` values
+//! The manifest holds each command parsed (and as written, for messages). `[_Property]` values
 //! are numbers in Unity's enums (`UnityEngine.Rendering.BlendMode` and its siblings).
 
 use crate::material::unity_enum_name;
-use crate::reflect::manifest::PassManifest;
+use crate::reflect::manifest::{PassManifest, StateCommand, StencilSetting};
 use crate::shaderlab::ast::{
-    BlendFactor, BlendOperation, CompareFunction, CullMode, PassItem, RenderCommandKind, StencilField,
-    StencilOperation, StencilValue, Value,
+    BlendFactor, BlendOperation, CompareFunction, CullMode, StencilField, StencilOperation, StencilValue,
+    Value,
 };
-use crate::source::SourceStore;
 
 /// Colour targets wgpu allows a pipeline.
 pub const MAX_TARGETS: usize = 8;
@@ -103,55 +101,32 @@ pub enum StateError {
     Unsupported { command: String, what: String },
     #[error("`{command}`: property `{property}` is {value}, which is not a {kind}")]
     BadValue { command: String, property: String, value: String, kind: &'static str },
-    #[error("the pass's render state does not parse: {0}")]
-    Unreadable(String),
 }
 
 /// Resolves a pass's render state with a material's values (`None` for a property the material
 /// does not have: the command's default in the manifest is used, then ShaderLab's).
 pub fn resolve(pass: &PassManifest, value: &dyn Fn(&str) -> Option<f64>) -> Result<RenderState, StateError> {
-    PassState::parse(pass)?.resolve(value)
+    PassState::new(pass).resolve(value)
 }
 
-/// A pass's render state read once: its commands (with their text, for errors) and each
-/// property's default, ready to resolve with any material's values.
+/// A pass's render state commands (with their text, for errors) and each property's default,
+/// ready to resolve with any material's values.
 #[derive(Debug, Clone)]
 pub struct PassState {
-    commands: Vec<(String, RenderCommandKind)>,
+    commands: Vec<(String, StateCommand)>,
     defaults: Vec<(String, f64)>,
 }
 
 impl PassState {
-    pub fn parse(pass: &PassManifest) -> Result<PassState, StateError> {
+    pub fn new(pass: &PassManifest) -> PassState {
         let defaults = pass
             .render_state
             .iter()
             .flat_map(|c| &c.properties)
             .filter_map(|p| Some((p.name.clone(), p.default.as_f64()?)))
             .collect();
-        if pass.render_state.is_empty() {
-            return Ok(PassState { commands: Vec::new(), defaults });
-        }
-        let commands: Vec<&str> = pass.render_state.iter().map(|c| c.command.as_str()).collect();
-        let mut store = SourceStore::new();
-        let text = format!("Shader \"state\" {{ SubShader {{ Pass {{\n{}\n}} }} }}", commands.join("\n"));
-        let file = store.add("render state", text);
-        let parsed = crate::shaderlab::parse_shader(&store, file);
-        let unreadable = || {
-            let messages: Vec<String> = parsed.diagnostics.iter().map(|d| d.message.clone()).collect();
-            StateError::Unreadable(messages.join("; "))
-        };
-        let shader = parsed.shader.as_ref().ok_or_else(unreadable)?;
-        let Some(PassItem::Pass(ast)) = shader.subshaders.first().and_then(|s| s.passes.first()) else {
-            return Err(unreadable());
-        };
-        let commands = ast
-            .state
-            .render_state
-            .iter()
-            .map(|command| (store.slice(command.span).trim().to_string(), command.kind.clone()))
-            .collect();
-        Ok(PassState { commands, defaults })
+        let commands = pass.render_state.iter().map(|c| (c.command.clone(), c.state.clone())).collect();
+        PassState { commands, defaults }
     }
 
     /// The state with a material's values (`None` for a property the material does not have:
@@ -160,9 +135,9 @@ impl PassState {
         let mut state = RenderState::default();
         let default_of = |name: &str| self.defaults.iter().find(|(n, _)| n == name).map(|(_, v)| *v);
         let number = |property: &str| value(property).or_else(|| default_of(property)).unwrap_or(0.0);
-        for (text, kind) in &self.commands {
+        for (text, command) in &self.commands {
             let mut r = Resolver { command: text, number: &number };
-            r.apply(kind, &mut state)?;
+            r.apply(command, &mut state)?;
         }
         Ok(state)
     }
@@ -323,15 +298,15 @@ impl Resolver<'_> {
         }
     }
 
-    fn apply(&mut self, command: &RenderCommandKind, state: &mut RenderState) -> Result<(), StateError> {
+    fn apply(&mut self, command: &StateCommand, state: &mut RenderState) -> Result<(), StateError> {
         match command {
-            RenderCommandKind::Blend { target, factors } => {
+            StateCommand::Blend { target, factors } => {
                 let blend = match factors {
                     None => None,
                     Some(f) => {
-                        let (src, dst) = (self.factor(&f.src.value)?, self.factor(&f.dst.value)?);
+                        let (src, dst) = (self.factor(&f.src)?, self.factor(&f.dst)?);
                         let (src_alpha, dst_alpha) = match &f.alpha {
-                            Some((a, b)) => (self.factor(&a.value)?, self.factor(&b.value)?),
+                            Some([a, b]) => (self.factor(a)?, self.factor(b)?),
                             None => (src, dst),
                         };
                         let component = |src_factor, dst_factor| wgpu::BlendComponent {
@@ -353,10 +328,10 @@ impl Resolver<'_> {
                     });
                 }
             }
-            RenderCommandKind::BlendOp { target, color, alpha } => {
-                let color_op = self.operation(&color.value)?;
+            StateCommand::BlendOp { target, color, alpha } => {
+                let color_op = self.operation(color)?;
                 let alpha_op = match alpha {
-                    Some(a) => self.operation(&a.value)?,
+                    Some(a) => self.operation(a)?,
                     None => color_op,
                 };
                 for t in self.targets(state, *target)? {
@@ -372,24 +347,20 @@ impl Resolver<'_> {
                     t.blend = Some(blend);
                 }
             }
-            RenderCommandKind::ZWrite(on) => state.depth_write = self.flag(&on.value),
-            RenderCommandKind::ZTest(function) => state.depth_compare = self.compare(&function.value)?,
-            RenderCommandKind::ZClip(on) => state.unclipped_depth = !self.flag(&on.value),
-            RenderCommandKind::Cull(mode) => {
-                let mode = self.word(
-                    &mode.value,
-                    "UnityEngine.Rendering.CullMode",
-                    "cull mode",
-                    CullMode::from_word,
-                )?;
+            StateCommand::ZWrite { on } => state.depth_write = self.flag(on),
+            StateCommand::ZTest { function } => state.depth_compare = self.compare(function)?,
+            StateCommand::ZClip { on } => state.unclipped_depth = !self.flag(on),
+            StateCommand::Cull { mode } => {
+                let mode =
+                    self.word(mode, "UnityEngine.Rendering.CullMode", "cull mode", CullMode::from_word)?;
                 state.cull_mode = match mode {
                     CullMode::Off => None,
                     CullMode::Front => Some(wgpu::Face::Front),
                     CullMode::Back => Some(wgpu::Face::Back),
                 };
             }
-            RenderCommandKind::ColorMask { mask, target } => {
-                let write_mask = match &mask.value {
+            StateCommand::ColorMask { mask, target } => {
+                let write_mask = match mask {
                     Value::Literal(m) => {
                         let mut w = wgpu::ColorWrites::empty();
                         for (on, bit) in [
@@ -425,38 +396,34 @@ impl Resolver<'_> {
                     t.write_mask = write_mask;
                 }
             }
-            RenderCommandKind::Offset { factor, units } => {
-                let units = self.float(&units.value);
+            StateCommand::Offset { factor, units } => {
+                let units = self.float(units);
                 if units.fract() != 0.0 {
                     return Err(self.unsupported(format!("fractional depth bias units ({units})")));
                 }
                 state.depth_bias = wgpu::DepthBiasState {
                     constant: units as i32,
-                    slope_scale: self.float(&factor.value) as f32,
+                    slope_scale: self.float(factor) as f32,
                     clamp: 0.0,
                 };
             }
-            RenderCommandKind::AlphaToMask(on) => state.alpha_to_coverage = self.flag(&on.value),
-            RenderCommandKind::Conservative(on) => state.conservative = self.flag(&on.value),
-            RenderCommandKind::Stencil(entries) => self.stencil(entries, state)?,
+            StateCommand::AlphaToMask { on } => state.alpha_to_coverage = self.flag(on),
+            StateCommand::Conservative { on } => state.conservative = self.flag(on),
+            StateCommand::Stencil { settings } => self.stencil(settings, state)?,
         }
         Ok(())
     }
 
-    fn stencil(
-        &self,
-        entries: &[crate::shaderlab::ast::StencilEntry],
-        state: &mut RenderState,
-    ) -> Result<(), StateError> {
+    fn stencil(&self, settings: &[StencilSetting], state: &mut RenderState) -> Result<(), StateError> {
         let (stencil, reference) = (&mut state.stencil, &mut state.stencil_reference);
         let byte = |value: &StencilValue| match value {
             StencilValue::Byte(Value::Literal(b)) => Some(u32::from(*b)),
             StencilValue::Byte(Value::Property(p)) => Some((self.number)(p).round().clamp(0.0, 255.0) as u32),
             _ => None,
         };
-        for entry in entries {
-            let value = &entry.value.value;
-            let faces: &mut [&mut wgpu::StencilFaceState] = match entry.op {
+        for setting in settings {
+            let value = &setting.value;
+            let faces: &mut [&mut wgpu::StencilFaceState] = match setting.field {
                 StencilField::Comp | StencilField::Pass | StencilField::Fail | StencilField::ZFail => {
                     &mut [&mut stencil.front, &mut stencil.back]
                 }
@@ -482,7 +449,7 @@ impl Resolver<'_> {
                 }
             };
             for face in faces.iter_mut() {
-                match (entry.op, value) {
+                match (setting.field, value) {
                     (
                         StencilField::Comp | StencilField::CompFront | StencilField::CompBack,
                         StencilValue::Compare(c),
@@ -515,17 +482,31 @@ mod tests {
     use super::*;
     use crate::reflect::manifest::{PropertyReference, RenderState as Command};
 
+    /// A pass with these commands, parsed by kiln's ShaderLab parser as a build would.
     fn pass(commands: &[&str]) -> PassManifest {
-        let render_state = commands
+        let mut store = crate::source::SourceStore::new();
+        let text = format!("Shader \"state\" {{ SubShader {{ Pass {{\n{}\n}} }} }}", commands.join("\n"));
+        let file = store.add("render state", text);
+        let parsed = crate::shaderlab::parse_shader(&store, file);
+        assert!(parsed.diagnostics.is_empty(), "{:?}", parsed.diagnostics);
+        let shader = parsed.shader.expect("parses");
+        let (_, _, _, ast) = shader.passes().next().expect("a pass");
+        let render_state: Vec<Command> = ast
+            .state
+            .render_state
             .iter()
             .map(|c| Command {
-                command: c.to_string(),
+                command: store.slice(c.span).trim().to_string(),
+                state: StateCommand::from_ast(&c.kind),
                 properties: vec![PropertyReference {
                     name: "_ZTest".into(),
                     default: serde_json::json!(4.0),
                 }],
             })
             .collect();
+        // Through JSON, as the runtime reads a manifest.
+        let render_state = serde_json::from_value(serde_json::to_value(&render_state).expect("serializes"))
+            .expect("reads back");
         PassManifest {
             subshader: 0,
             index: 0,

@@ -69,6 +69,36 @@ impl PropertyType {
             PropertyType::Texture(TextureDimension::Any) => "Any",
         }
     }
+
+    /// As the manifest writes it: the name, with a range's bounds (`Range(0, 1)`).
+    pub fn manifest_text(&self) -> String {
+        match self {
+            PropertyType::Range { min, max } => format!("Range({min}, {max})"),
+            other => other.name().to_string(),
+        }
+    }
+
+    /// Reads [`PropertyType::manifest_text`] back.
+    pub fn from_manifest(text: &str) -> Option<PropertyType> {
+        if let Some(bounds) = text.strip_prefix("Range(").and_then(|t| t.strip_suffix(')')) {
+            let (min, max) = bounds.split_once(',')?;
+            return Some(PropertyType::Range {
+                min: min.trim().parse().ok()?,
+                max: max.trim().parse().ok()?,
+            });
+        }
+        use TextureDimension as D;
+        [
+            PropertyType::Float,
+            PropertyType::Int,
+            PropertyType::Integer,
+            PropertyType::Color,
+            PropertyType::Vector,
+        ]
+        .into_iter()
+        .chain([D::D2, D::D2Array, D::D3, D::Cube, D::CubeArray, D::Any].map(PropertyType::Texture))
+        .find(|ty| ty.name() == text)
+    }
 }
 
 #[derive(Debug, Clone, PartialEq)]
@@ -202,8 +232,10 @@ pub struct Dependency {
     pub shader: Spanned<String>,
 }
 
-/// A render-state value: a literal, or `[_Property]` taken from the material.
-#[derive(Debug, Clone, PartialEq)]
+/// A render-state value: a literal, or `[_Property]` taken from the material. In the manifest:
+/// `{"literal": ...}` or `{"property": "_Name"}`.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Value<T> {
     Literal(T),
     Property(String),
@@ -275,7 +307,7 @@ pub struct BlendFactors {
 }
 
 /// Channels written by `ColorMask`: `0` is none.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub struct ColorMask {
     pub r: bool,
     pub g: bool,
@@ -290,7 +322,8 @@ pub struct StencilEntry {
     pub span: Span,
 }
 
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
 pub enum StencilValue {
     /// `Ref`, `ReadMask`, `WriteMask`: 0 to 255.
     Byte(Value<u8>),
@@ -382,6 +415,20 @@ macro_rules! shaderlab_words {
 
             pub fn name(self) -> &'static str {
                 match self { $($name::$variant => $text),+ }
+            }
+        }
+
+        /// Written as its ShaderLab word (the manifest's structured render state).
+        impl serde::Serialize for $name {
+            fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+                serializer.serialize_str(self.name())
+            }
+        }
+
+        impl<'de> serde::Deserialize<'de> for $name {
+            fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<$name, D::Error> {
+                let word = String::deserialize(deserializer)?;
+                $name::from_word(&word).ok_or_else(|| serde::de::Error::unknown_variant(&word, $name::NAMES))
             }
         }
     };

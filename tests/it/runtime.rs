@@ -243,7 +243,7 @@ fn a_material_file_read_at_run_time_resolves_as_the_build_resolved_it() {
     let output = tempfile::tempdir().expect("temp dir");
     built(&root().join("fixtures/runtime"), output.path());
     let library = Library::open(output.path()).expect("opens");
-    for name in ["Opaque", "Fade", "Transparent"] {
+    for name in ["Opaque", "Fade", "Transparent", "Named"] {
         let text = std::fs::read_to_string(root().join(format!("fixtures/runtime/materials/{name}.mat")))
             .expect("mat");
         assert_eq!(
@@ -254,8 +254,19 @@ fn a_material_file_read_at_run_time_resolves_as_the_build_resolved_it() {
     let tinted =
         library.load_material("t", "shader = \"Test/Blend\"\n[properties]\n_Tint = 1\n").expect("resolves");
     assert_eq!(tinted.keywords, ["_TINT"]);
-    let wrong = library.load_material("w", "shader = \"Test/Blend\"\nkeywords = [\"_NOPE\"]\n");
-    assert!(wrong.expect_err("refused").to_string().contains("declares no keyword `_NOPE`"));
+    let named = library.material("Named").expect("built");
+    assert_eq!(
+        (named.number("_SrcBlend"), named.number("_ZWrite"), named.render_queue),
+        (Some(5.0), Some(0.0), 3000)
+    );
+    // Refused as a build refuses it, at the line and column in the text.
+    let wrong = library.load_material("w.mat", "shader = \"Test/Blend\"\nkeywords = [\"_NOPE\"]\n");
+    let message = wrong.expect_err("refused").to_string();
+    assert!(message.contains("K0507") && message.contains("w.mat:2:13"), "{message}");
+    let wrong =
+        library.load_material("v.mat", "shader = \"Test/Blend\"\n[properties]\n_ZWrite = \"Sideways\"\n");
+    let message = wrong.expect_err("refused").to_string();
+    assert!(message.contains("v.mat:3:11") && message.contains("one of `Off` or `On`"), "{message}");
     // The generated module embeds the same build.
     let embedded = Library::embedded(
         &std::fs::read_to_string(output.path().join("manifest.json")).expect("manifest"),
