@@ -399,9 +399,13 @@ fn cache(command: CacheCommand) -> ExitCode {
 fn print_summary(s: &kiln::compile::BuildSummary, write: bool, errors: bool) {
     let verb = if write { "built" } else { "checked" };
     let mut line = format!(
-        "{verb} {} shaders, {} passes, {} variants: {} stage modules ({} compiled, {} reused from cache)",
+        "{verb} {} shaders, {} passes, {} variants: {} stage modules ({} compiled, {} reused from cache",
         s.shaders, s.passes, s.variants, s.modules, s.compiled, s.reused
     );
+    if s.shared > 0 {
+        line.push_str(&format!(", {} shared between passes", s.shared));
+    }
+    line.push(')');
     if write {
         line.push_str(&format!(", {} bytes written", s.bytes_written));
     }

@@ -8,7 +8,7 @@
 use super::bind::{self, Declared, PassLayout};
 use super::cache::{Cache, CachedStage, Digest, Hashed, ModuleBytes, PassIndex, Recorded, hash};
 use super::objects::{
-    fetch_object, publish_layouts, publish_object, read_layouts, read_object, write_object,
+    Recent, fetch_object, publish_layouts, publish_object, read_layouts, read_object, write_object,
 };
 use super::shard::{SHARD_FILE, Shard, ShardRecord};
 use super::stage::{self, StageRequest};
@@ -28,6 +28,7 @@ use rayon::prelude::*;
 use std::borrow::Cow;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 use std::path::PathBuf;
+use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
@@ -115,6 +116,8 @@ pub struct BuildSummary {
     pub modules: usize,
     pub compiled: usize,
     pub reused: usize,
+    /// Modules another pass of the build compiled (identical stage texts, laid out alike).
+    pub shared: usize,
     pub bytes_written: u64,
     pub elapsed: Duration,
     /// Shaders with WGSL programs that no material uses, so nothing of them was built.
@@ -168,14 +171,16 @@ type Front = Result<(Vec<Declared>, Option<naga::Module>), Diagnostic>;
 /// A stage module of a pass, with its cache key: reused from the cache, or compiled now and not
 /// yet stored (the pass's compiled modules are packed together once all are done).
 enum Built {
-    Reused(CachedStage),
-    Compiled(Compiled),
+    Reused(Box<CachedStage>),
+    Compiled(Arc<Compiled>),
     /// Another shard's to compile.
     Skipped,
     /// Already in this shard's objects.
     Kept,
     /// From the shared cache: packed as if compiled now, but not compiled.
-    Fetched(Compiled),
+    Fetched(Arc<Compiled>),
+    /// Compiled by another pass of this build: packed as if compiled now.
+    Shared(Arc<Compiled>),
 }
 
 /// A stage compiled now: its module per backend (`[wgsl, spirv]`), hashed where it was compiled
@@ -187,6 +192,27 @@ struct Compiled {
 
 /// `None` when the stage's pass could not be laid out.
 type StageOutcome = Option<Result<(Built, String), Diagnostic>>;
+
+/// What the passes of one build share: the output's cache, progress, and what other passes
+/// compiled and parsed lately (a whole build only: a shard's modules are objects already, a
+/// merge compiles nothing).
+struct Session<'a> {
+    cache: Cache,
+    progress: Progress<'a>,
+    compiled: Recent<Compiled>,
+    parsed: Recent<Vec<Declared>>,
+}
+
+/// Bytes of compiled modules, and of parsed resources, a build keeps for its other passes.
+const SHARED_MODULE_BYTES: usize = 48 << 20;
+const SHARED_FRONT_BYTES: usize = 8 << 20;
+
+impl Compiled {
+    /// About what it holds in memory.
+    fn size(&self) -> usize {
+        self.modules.iter().flatten().map(|m| m.bytes.len() + m.hash.len()).sum::<usize>() + 1024
+    }
+}
 
 /// Progress in variants: a pass's variants are counted off as its jobs finish.
 struct Progress<'a> {
@@ -236,7 +262,6 @@ fn build_in_pool(
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> BuildResult {
     let mut diagnostics = Vec::new();
-    let cache = Cache::new(&options.output, options.write);
     let mut summary = BuildSummary::default();
     if let Some(merge) = options.merge()
         && inputs_key(store, options, &[]) != merge.inputs
@@ -253,7 +278,15 @@ fn build_in_pool(
     }
 
     let work = plan(catalog, options.unused_shaders, &mut summary, &mut diagnostics);
-    let progress = Progress { report: progress, done: AtomicUsize::new(0), total: summary.variants };
+    let (module_bytes, front_bytes) =
+        if matches!(options.part, Part::Whole) { (SHARED_MODULE_BYTES, SHARED_FRONT_BYTES) } else { (0, 0) };
+    let session = Session {
+        cache: Cache::new(&options.output, options.write),
+        progress: Progress { report: progress, done: AtomicUsize::new(0), total: summary.variants },
+        compiled: Recent::new(module_bytes),
+        parsed: Recent::new(front_bytes),
+    };
+    let cache = &session.cache;
 
     // Every pass is a task: its stage texts, their resources (cache or parse), one layout, its
     // stage modules (cache or compile), its packs and its part of the manifest. Threads take
@@ -262,13 +295,14 @@ fn build_in_pool(
     let built: Vec<PassBuilt> = work
         .par_iter()
         .with_max_len(1)
-        .map(|pass| build_pass(pass, store, includes, catalog, options, &cache, &progress))
+        .map(|pass| build_pass(pass, store, includes, catalog, options, &session))
         .collect();
     let mut passes: Vec<PassManifest> = Vec::with_capacity(work.len());
     for pass in built {
         summary.modules += pass.modules;
         summary.compiled += pass.compiled;
         summary.reused += pass.reused;
+        summary.shared += pass.shared;
         summary.bytes_written += pass.bytes_written;
         diagnostics.extend(pass.diagnostics);
         passes.push(pass.manifest);
@@ -684,14 +718,26 @@ fn pass_key(store: &SourceStore, options: &BuildOptions, work: &PassWork) -> Str
     hash(format!("{file}#{}.{}", work.pass.subshader, work.pass.index).as_bytes())
 }
 
-/// A stage text's declared resources: from the cache (`known`), or parsed.
-fn front(job: &Job, store: &SourceStore, known: &BTreeMap<String, Vec<Declared>>) -> Front {
+/// A stage text's declared resources: from the cache (`known`), another pass of the build
+/// (`parsed`), or parsed now.
+fn front(
+    job: &Job,
+    store: &SourceStore,
+    known: &BTreeMap<String, Vec<Declared>>,
+    parsed: &Recent<Vec<Declared>>,
+) -> Front {
     if let Some(declared) = known.get(&job.text_hash) {
         return Ok((declared.clone(), None));
     }
+    if let Some(declared) = parsed.get(&job.text_hash) {
+        return Ok(((*declared).clone(), None));
+    }
     let mapper = Mapper { map: &job.map, store };
     let module = parse(&job.text, &mapper).map_err(|d| d.note(job.context.clone()))?;
-    Ok((bind::declared(&module), Some(module)))
+    let declared = bind::declared(&module);
+    let size = declared.iter().map(|d| d.name.len() + 64).sum();
+    parsed.insert(&job.text_hash, Arc::new(declared.clone()), size);
+    Ok((declared, Some(module)))
 }
 
 /// What building one pass gives: its part of the manifest, its diagnostics and its share of the
@@ -702,6 +748,7 @@ struct PassBuilt {
     modules: usize,
     compiled: usize,
     reused: usize,
+    shared: usize,
     bytes_written: u64,
 }
 
@@ -714,12 +761,12 @@ fn build_pass(
     includes: &Includes,
     catalog: &Catalog,
     options: &BuildOptions,
-    cache: &Cache,
-    progress: &Progress,
+    session: &Session,
 ) -> PassBuilt {
+    let (cache, progress) = (&session.cache, &session.progress);
     let mut diagnostics = Vec::new();
     let PassJobs { jobs, stages } = pass_jobs(store, includes, work, &mut diagnostics);
-    let (mut compiled_count, mut reused, mut bytes_written) = (0, 0, 0);
+    let (mut compiled_count, mut reused, mut shared, mut bytes_written) = (0, 0, 0, 0);
     let key = pass_key(store, options, work);
     let index = cache.pass_index(&key);
     // Every shard keeps every stage text's resources, so a merge lays passes out from the first
@@ -735,7 +782,8 @@ fn build_pass(
             known.entry(text).or_insert(declared);
         }
     }
-    let mut fronts: Vec<Front> = jobs.par_iter().map(|job| front(job, store, &known)).collect();
+    let mut fronts: Vec<Front> =
+        jobs.par_iter().map(|job| front(job, store, &known, &session.parsed)).collect();
     // What was parsed now is published for every other build of the pass.
     if let Some(dir) = &options.cache_dir
         && fronts.iter().any(|f| matches!(f, Ok((_, Some(_)))))
@@ -754,9 +802,9 @@ fn build_pass(
         .zip(fronts.par_iter_mut())
         .map(|(job, front)| {
             let outcome = match front {
-                Ok((declared, module)) => layout
-                    .as_ref()
-                    .map(|layout| stage_module(job, declared, module.take(), layout, options, store, &index)),
+                Ok((declared, module)) => layout.as_ref().map(|layout| {
+                    stage_module(job, declared, module.take(), layout, options, store, &index, session)
+                }),
                 Err(_) => None,
             };
             let before = served.fetch_add(job.requests, Ordering::Relaxed);
@@ -779,7 +827,9 @@ fn build_pass(
     let compiled: Vec<&Compiled> = outcomes
         .iter()
         .filter_map(|o| match o {
-            Some(Ok((Built::Compiled(output) | Built::Fetched(output), _))) => Some(output),
+            Some(Ok((Built::Compiled(output) | Built::Fetched(output) | Built::Shared(output), _))) => {
+                Some(&**output)
+            }
             _ => None,
         })
         .collect();
@@ -802,7 +852,7 @@ fn build_pass(
         let stage = match outcome {
             Some(Ok((Built::Reused(stage), key))) => {
                 reused += 1;
-                Some((stage, key))
+                Some((*stage, key))
             }
             Some(Ok((Built::Compiled(compiled), key))) => {
                 compiled_count += 1;
@@ -811,12 +861,17 @@ fn build_pass(
                 }
                 // Packing failed: the error is reported, the stage has no files.
                 let [wgsl, spirv] = files.next().unwrap_or_default();
-                Some((CachedStage { wgsl, spirv, reflection: compiled.reflection }, key))
+                Some((CachedStage { wgsl, spirv, reflection: compiled.reflection.clone() }, key))
             }
-            Some(Ok((Built::Fetched(fetched), key))) => {
-                reused += 1;
+            Some(Ok((built @ (Built::Fetched(_) | Built::Shared(_)), key))) => {
+                let (Built::Fetched(module) | Built::Shared(module)) = &built else { continue };
+                if matches!(built, Built::Shared(_)) {
+                    shared += 1
+                } else {
+                    reused += 1
+                }
                 let [wgsl, spirv] = files.next().unwrap_or_default();
-                Some((CachedStage { wgsl, spirv, reflection: fetched.reflection }, key))
+                Some((CachedStage { wgsl, spirv, reflection: module.reflection.clone() }, key))
             }
             Some(Err(mut error)) => {
                 error.notes.push(job.context.clone());
@@ -841,6 +896,7 @@ fn build_pass(
         modules: jobs.len(),
         compiled: compiled_count,
         reused,
+        shared,
         bytes_written,
     }
 }
@@ -892,10 +948,12 @@ fn shard_pass(
         modules: compiled + reused,
         compiled,
         reused,
+        shared: 0,
         bytes_written,
     }
 }
 
+#[allow(clippy::too_many_arguments)]
 fn stage_module(
     job: &Job,
     declared: &[Declared],
@@ -904,6 +962,7 @@ fn stage_module(
     options: &BuildOptions,
     store: &SourceStore,
     index: &PassIndex,
+    session: &Session,
 ) -> Result<(Built, String), Diagnostic> {
     let slots: Vec<String> = declared
         .iter()
@@ -933,25 +992,30 @@ fn stage_module(
         }
     }
     if let Some(cached) = index.stage.get(&key) {
-        return Ok((Built::Reused(cached.clone()), key));
+        return Ok((Built::Reused(Box::new(cached.clone())), key));
     }
     if options.merge().is_none()
         && let Some(dir) = &options.cache_dir
         && let Some((modules, reflection)) = fetch_object(dir, &key)
     {
-        return Ok((Built::Fetched(Compiled { modules, reflection }), key));
+        return Ok((Built::Fetched(Arc::new(Compiled { modules, reflection })), key));
     }
     if let Some(merge) = options.merge() {
         // Every module comes from the shard that owns it; naga is not run.
         let found = merge.folders.iter().find_map(|folder| read_object(folder, &key));
         return match found {
-            Some((modules, reflection)) => Ok((Built::Compiled(Compiled { modules, reflection }), key)),
+            Some((modules, reflection)) => {
+                Ok((Built::Compiled(Arc::new(Compiled { modules, reflection })), key))
+            }
             None => Err(Diagnostic::error(
                 "K0412",
                 format!("no shard holds the {} module of `{}`", job.stage.name(), job.entry),
             )
             .note("its shard's output is damaged, or was built from another state of the project")),
         };
+    }
+    if let Some(compiled) = session.compiled.get(&key) {
+        return Ok((Built::Shared(compiled), key));
     }
     let mapper = Mapper { map: &job.map, store };
     let module = match module {
@@ -971,7 +1035,9 @@ fn stage_module(
     let module = |bytes: Vec<u8>| ModuleBytes { hash: hash(&bytes), bytes };
     let spirv = output.spirv.map(|words| module(words.iter().flat_map(|w| w.to_le_bytes()).collect()));
     let modules = [output.wgsl.map(|text| module(text.into_bytes())), spirv];
-    Ok((Built::Compiled(Compiled { modules, reflection: output.reflection }), key))
+    let compiled = Arc::new(Compiled { modules, reflection: output.reflection });
+    session.compiled.insert(&key, compiled.clone(), compiled.size());
+    Ok((Built::Compiled(compiled), key))
 }
 
 /// Packs a pass's newly compiled modules, one pack per backend; returns each module's

@@ -231,6 +231,49 @@ pub fn parse_size(text: &str) -> Result<u64, String> {
     Ok(n.saturating_mul(scale))
 }
 
+/// What a build's passes compiled or parsed lately, by key, for the other passes of the same
+/// build: shaders copied under other names and stages several passes share are compiled once.
+/// Bounded by `budget` bytes: past it the oldest entries go, so memory stays bounded and a miss
+/// only costs the work again.
+pub(super) struct Recent<V> {
+    budget: usize,
+    inner: std::sync::Mutex<RecentEntries<V>>,
+}
+
+struct RecentEntries<V> {
+    map: std::collections::HashMap<String, std::sync::Arc<V>>,
+    order: std::collections::VecDeque<(String, usize)>,
+    bytes: usize,
+}
+
+impl<V> Recent<V> {
+    pub(super) fn new(budget: usize) -> Recent<V> {
+        let entries = RecentEntries { map: Default::default(), order: Default::default(), bytes: 0 };
+        Recent { budget, inner: std::sync::Mutex::new(entries) }
+    }
+
+    pub(super) fn get(&self, key: &str) -> Option<std::sync::Arc<V>> {
+        self.inner.lock().ok()?.map.get(key).cloned()
+    }
+
+    /// Keeps `value` (about `size` bytes) under `key`, dropping the oldest entries past the budget.
+    pub(super) fn insert(&self, key: &str, value: std::sync::Arc<V>, size: usize) {
+        // A poisoned lock means another pass panicked; sharing is only an optimisation.
+        let Ok(mut entries) = self.inner.lock() else { return };
+        if size > self.budget || entries.map.contains_key(key) {
+            return;
+        }
+        entries.map.insert(key.to_string(), value);
+        entries.order.push_back((key.to_string(), size));
+        entries.bytes += size;
+        while entries.bytes > self.budget {
+            let Some((old, old_size)) = entries.order.pop_front() else { break };
+            entries.map.remove(&old);
+            entries.bytes -= old_size;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -242,5 +285,20 @@ mod tests {
         assert_eq!(parse_size("64KiB"), Ok(64 << 10));
         assert_eq!(parse_size("1000"), Ok(1000));
         assert!(parse_size("lots").is_err() && parse_size("5X").is_err());
+    }
+
+    #[test]
+    fn recent_entries_stay_within_their_budget_oldest_out_first() {
+        let recent = Recent::new(10);
+        recent.insert("a", std::sync::Arc::new(1), 4);
+        recent.insert("b", std::sync::Arc::new(2), 4);
+        assert_eq!(recent.get("a").as_deref(), Some(&1));
+        recent.insert("c", std::sync::Arc::new(3), 4);
+        assert_eq!(
+            (recent.get("a"), recent.get("b").as_deref(), recent.get("c").as_deref()),
+            (None, Some(&2), Some(&3))
+        );
+        recent.insert("huge", std::sync::Arc::new(4), 11);
+        assert_eq!(recent.get("huge"), None);
     }
 }

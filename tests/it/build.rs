@@ -445,3 +445,56 @@ fn a_build_script_builds_the_variants_a_usage_log_names() {
     let rerun = format!("cargo:rerun-if-changed={}", log.display());
     assert!(output.cargo_lines.contains(&rerun), "{:?}", output.cargo_lines);
 }
+
+#[test]
+fn a_shader_copied_under_another_name_is_compiled_once() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    for entry in walkdir::WalkDir::new(root().join("fixtures/project")).into_iter().filter_map(Result::ok) {
+        let relative = entry.path().strip_prefix(root().join("fixtures/project")).expect("inside");
+        if entry.file_type().is_file() && !relative.starts_with("build") {
+            let to = project.join(relative);
+            std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
+            std::fs::copy(entry.path(), to).expect("copy");
+        }
+    }
+    let original = std::fs::read_to_string(project.join("shaders/Lit.shader")).expect("Lit");
+    let copy = original.replace("Shader \"Custom RP/Lit\"", "Shader \"Custom RP/Lit Copy\"");
+    assert_ne!(copy, original);
+    std::fs::write(project.join("shaders/LitCopy.shader"), copy).expect("write");
+    for name in ["LitClip", "LitFade", "LitOpaque", "LitTransparent"] {
+        let text = std::fs::read_to_string(project.join(format!("materials/{name}.mat"))).expect("mat");
+        let text = text.replace("\"Custom RP/Lit\"", "\"Custom RP/Lit Copy\"");
+        std::fs::write(project.join(format!("materials/{name}Copy.mat")), text).expect("write");
+    }
+    let output = dir.path().join("out");
+    let run = kiln(&["build", project.to_str().expect("utf-8"), "--output", output.to_str().expect("utf-8")]);
+    let summary = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(0), "{summary}");
+    let manifest = read_manifest(&output);
+    let pass_of = |name: &str| &manifest.shaders.iter().find(|s| s.name == name).expect(name).passes[0];
+    let (lit, copy) = (pass_of("Custom RP/Lit"), pass_of("Custom RP/Lit Copy"));
+    // The bundled project compiles 19 modules; the copy's are those of Lit, compiled once.
+    let count = |what: &str| -> usize {
+        let at = summary.find(what).unwrap_or_else(|| panic!("`{what}` in {summary}"));
+        summary[..at].rsplit([' ', '(']).next().expect("count").parse().expect("number")
+    };
+    assert_eq!((count(" compiled,"), count(" shared between passes")), (19, count(" stage modules") - 19));
+    assert!(count(" stage modules") > 19, "{summary}");
+    let hashes = |pass: &kiln::reflect::manifest::PassManifest| -> Vec<Vec<String>> {
+        pass.variants
+            .iter()
+            .map(|v| {
+                pass.variant_stages(v)
+                    .iter()
+                    .flatten()
+                    .flat_map(|s| [&s.module.wgsl, &s.module.spirv])
+                    .flatten()
+                    .map(|f| f.hash.clone())
+                    .collect()
+            })
+            .collect()
+    };
+    assert_eq!(hashes(lit), hashes(copy));
+    assert!(!hashes(copy).is_empty());
+}
