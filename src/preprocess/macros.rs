@@ -576,9 +576,13 @@ impl<'m, 'a> Expander<'m, 'a> {
         while i < body.len() {
             let token = def.token(&body[i]);
             if def.variadic && token.kind == Kind::Ident && token.text == "__VA_OPT__" {
-                // `__VA_OPT__(x)`: x when there are variadic arguments, nothing otherwise.
+                // `__VA_OPT__(x)`: x when the variadic arguments expand to tokens, nothing
+                // otherwise (as C23 and gcc: an argument that expands to nothing is none).
                 let (group, after) = parenthesised(def, i + 1);
-                if !variadic.is_empty() {
+                if expanded[named].is_none() {
+                    expanded[named] = Some(self.all(variadic.clone()));
+                }
+                if expanded[named].as_ref().is_some_and(|tokens| !tokens.is_empty()) {
                     let inner = MacroDef { body: Cow::Owned(group), defined_at: None, ..def.clone() };
                     out.extend(self.substitute(&inner, name, args, 0, invocation).into_iter().map(Some));
                 }
