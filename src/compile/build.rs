@@ -18,10 +18,11 @@ use crate::catalog::{Catalog, CatalogPass, CatalogProgram, CatalogShader, proper
 use crate::config::Backend;
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{KeywordBits, Variant};
+use crate::material::MaterialValue;
 use crate::preprocess::{Includes, LIBRARY_PREFIX, SourceMap, Stage, preprocess};
 use crate::reflect::manifest::*;
 use crate::reflect::{Resource, StageReflection, UniformBlock};
-use crate::shaderlab::ast::{PropertyDefault, Shader};
+use crate::shaderlab::ast::Shader;
 use crate::shaderlab::pragma::KeywordScope;
 use crate::source::{FileId, SourceStore, Span, relative_to};
 use rayon::prelude::*;
@@ -1204,7 +1205,7 @@ fn pass_manifest(
                 .map(|name| PropertyReference {
                     default: shader
                         .property(name)
-                        .map_or(serde_json::Value::Null, |p| default_json(&p.default.value)),
+                        .map_or(serde_json::Value::Null, |p| MaterialValue::from(&p.default.value).to_json()),
                     name: name.to_string(),
                 })
                 .collect();
@@ -1243,14 +1244,6 @@ fn pass_manifest(
     }
 }
 
-fn default_json(default: &PropertyDefault) -> serde_json::Value {
-    match default {
-        PropertyDefault::Number(n) => serde_json::json!(n),
-        PropertyDefault::Vector(v) => serde_json::json!(v),
-        PropertyDefault::Texture { name, .. } => serde_json::json!(name),
-    }
-}
-
 /// Every resolved material, for the run time (`materials.json`).
 fn materials(catalog: &Catalog) -> Vec<MaterialManifest> {
     catalog
@@ -1281,7 +1274,7 @@ fn properties(shader: &Shader, passes: &[PassManifest]) -> Vec<PropertyManifest>
             name: p.name.value.clone(),
             display_name: p.display_name.value.clone(),
             ty: p.ty.value.manifest_text(),
-            default: default_json(&p.default.value),
+            default: MaterialValue::from(&p.default.value).to_json(),
             offset: material_block
                 .and_then(|b| b.members.iter().find(|m| m.name == p.name.value))
                 .map(|m| m.offset),

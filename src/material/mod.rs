@@ -39,6 +39,39 @@ pub enum MaterialValue {
     Texture(String),
 }
 
+impl MaterialValue {
+    /// As the manifest and `materials.json` write it: a number, an array, or a texture name.
+    pub fn to_json(&self) -> serde_json::Value {
+        match self {
+            MaterialValue::Number(n) => serde_json::json!(n),
+            MaterialValue::Vector(v) => serde_json::json!(v),
+            MaterialValue::Texture(t) => serde_json::json!(t),
+        }
+    }
+
+    /// Reads [`MaterialValue::to_json`] back.
+    pub fn from_json(value: &serde_json::Value) -> Option<MaterialValue> {
+        Some(match value {
+            serde_json::Value::Number(n) => MaterialValue::Number(n.as_f64()?),
+            serde_json::Value::Array(v) => {
+                MaterialValue::Vector(v.iter().map(serde_json::Value::as_f64).collect::<Option<_>>()?)
+            }
+            serde_json::Value::String(t) => MaterialValue::Texture(t.clone()),
+            _ => return None,
+        })
+    }
+}
+
+impl From<&PropertyDefault> for MaterialValue {
+    fn from(default: &PropertyDefault) -> MaterialValue {
+        match default {
+            PropertyDefault::Number(n) => MaterialValue::Number(*n),
+            PropertyDefault::Vector(v) => MaterialValue::Vector(v.clone()),
+            PropertyDefault::Texture { name, .. } => MaterialValue::Texture(name.clone()),
+        }
+    }
+}
+
 /// What resolving a material needs of its shader. A build takes it from the parsed shader
 /// ([`ShaderEntry::from_shader`]) and the run time from the manifest
 /// ([`ShaderEntry::from_manifest`]), so a `.mat` file resolves alike in both.
@@ -83,11 +116,7 @@ impl ShaderEntry {
                 .map(|p| EntryProperty {
                     name: p.name.value.clone(),
                     ty: p.ty.value,
-                    default: match &p.default.value {
-                        PropertyDefault::Number(n) => MaterialValue::Number(*n),
-                        PropertyDefault::Vector(v) => MaterialValue::Vector(v.clone()),
-                        PropertyDefault::Texture { name, .. } => MaterialValue::Texture(name.clone()),
-                    },
+                    default: MaterialValue::from(&p.default.value),
                     drawer: KeywordDrawer::of(p),
                     enum_names: enum_names(p),
                 })
@@ -111,18 +140,10 @@ impl ShaderEntry {
             .properties
             .iter()
             .map(|p| {
-                let default = match &p.default {
-                    serde_json::Value::Number(n) => MaterialValue::Number(n.as_f64()?),
-                    serde_json::Value::Array(v) => {
-                        MaterialValue::Vector(v.iter().map(serde_json::Value::as_f64).collect::<Option<_>>()?)
-                    }
-                    serde_json::Value::String(t) => MaterialValue::Texture(t.clone()),
-                    _ => return None,
-                };
                 Some(EntryProperty {
                     name: p.name.clone(),
                     ty: PropertyType::from_manifest(&p.ty)?,
-                    default,
+                    default: MaterialValue::from_json(&p.default)?,
                     drawer: p.drawer.clone(),
                     enum_names: p.enum_names.clone(),
                 })

@@ -127,25 +127,13 @@ pub struct MaterialManifest {
 impl MaterialManifest {
     /// A resolved material of the shader named `shader`.
     pub fn new(material: &crate::material::Material, shader: &str) -> MaterialManifest {
-        use crate::material::MaterialValue;
         MaterialManifest {
             name: material.name.clone(),
             shader: shader.to_string(),
             preset: material.preset.map(|p| p.name().to_string()),
             render_queue: material.render_queue,
             keywords: material.keywords.iter().map(|(k, _)| k.clone()).collect(),
-            values: material
-                .values
-                .iter()
-                .map(|(name, value)| {
-                    let json = match value {
-                        MaterialValue::Number(n) => serde_json::json!(n),
-                        MaterialValue::Vector(v) => serde_json::json!(v),
-                        MaterialValue::Texture(t) => serde_json::json!(t),
-                    };
-                    (name.clone(), json)
-                })
-                .collect(),
+            values: material.values.iter().map(|(name, value)| (name.clone(), value.to_json())).collect(),
         }
     }
 
