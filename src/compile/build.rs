@@ -8,7 +8,8 @@
 use super::bind::{self, Declared, PassLayout};
 use super::cache::{Cache, CachedStage, Digest, Hashed, ModuleBytes, PassIndex, Recorded, hash};
 use super::objects::{
-    Recent, fetch_object, publish_layouts, publish_object, read_layouts, read_object, write_object,
+    Recent, TextCounts, fetch_object, publish_layouts, publish_object, read_layouts, read_object,
+    write_object,
 };
 use super::shard::{SHARD_FILE, Shard, ShardRecord};
 use super::stage::{self, StageRequest};
@@ -200,6 +201,8 @@ type StageOutcome = Option<Result<(Built, String), Diagnostic>>;
 struct Session<'a> {
     cache: Cache,
     progress: Progress<'a>,
+    /// Only texts more than one pass has are kept for sharing.
+    texts: TextCounts,
     compiled: Recent<Compiled>,
     parsed: Recent<Vec<Declared>>,
 }
@@ -207,6 +210,7 @@ struct Session<'a> {
 /// Bytes of compiled modules, and of parsed resources, a build keeps for its other passes.
 const SHARED_MODULE_BYTES: usize = 48 << 20;
 const SHARED_FRONT_BYTES: usize = 8 << 20;
+const RECENT_SHARDS: usize = 64;
 
 impl Compiled {
     /// About what it holds in memory.
@@ -279,13 +283,14 @@ fn build_in_pool(
     }
 
     let work = plan(catalog, options.unused_shaders, &mut summary, &mut diagnostics);
-    let (module_bytes, front_bytes) =
-        if matches!(options.part, Part::Whole) { (SHARED_MODULE_BYTES, SHARED_FRONT_BYTES) } else { (0, 0) };
+    let whole = matches!(options.part, Part::Whole);
+    let (module_bytes, front_bytes) = if whole { (SHARED_MODULE_BYTES, SHARED_FRONT_BYTES) } else { (0, 0) };
     let session = Session {
         cache: Cache::new(&options.output, options.write),
         progress: Progress { report: progress, done: AtomicUsize::new(0), total: summary.variants },
-        compiled: Recent::new(module_bytes),
-        parsed: Recent::new(front_bytes),
+        texts: TextCounts::new(if whole { RECENT_SHARDS } else { 0 }),
+        compiled: Recent::new(module_bytes, RECENT_SHARDS),
+        parsed: Recent::new(front_bytes, RECENT_SHARDS),
     };
     let cache = &session.cache;
 
@@ -719,25 +724,28 @@ fn pass_key(store: &SourceStore, options: &BuildOptions, work: &PassWork) -> Str
     hash(format!("{file}#{}.{}", work.pass.subshader, work.pass.index).as_bytes())
 }
 
-/// A stage text's declared resources: from the cache (`known`), another pass of the build
-/// (`parsed`), or parsed now.
+/// A stage text's declared resources: from the cache (`known`), another pass of the build, or
+/// parsed now.
 fn front(
     job: &Job,
     store: &SourceStore,
     known: &BTreeMap<String, Vec<Declared>>,
-    parsed: &Recent<Vec<Declared>>,
+    session: &Session,
 ) -> Front {
     if let Some(declared) = known.get(&job.text_hash) {
         return Ok((declared.clone(), None));
     }
-    if let Some(declared) = parsed.get(&job.text_hash) {
+    let shared = session.texts.shared(&job.text_hash);
+    if shared && let Some(declared) = session.parsed.get(&job.text_hash) {
         return Ok(((*declared).clone(), None));
     }
     let mapper = Mapper { map: &job.map, store };
     let module = parse(&job.text, &mapper).map_err(|d| d.note(job.context.clone()))?;
     let declared = bind::declared(&module);
-    let size = declared.iter().map(|d| d.name.len() + 64).sum();
-    parsed.insert(&job.text_hash, Arc::new(declared.clone()), size);
+    if shared {
+        let size = declared.iter().map(|d| d.name.len() + 64).sum();
+        session.parsed.insert(&job.text_hash, Arc::new(declared.clone()), size);
+    }
     Ok((declared, Some(module)))
 }
 
@@ -767,6 +775,9 @@ fn build_pass(
     let (cache, progress) = (&session.cache, &session.progress);
     let mut diagnostics = Vec::new();
     let PassJobs { jobs, stages } = pass_jobs(store, includes, work, &mut diagnostics);
+    for job in &jobs {
+        session.texts.add(&job.text_hash);
+    }
     let (mut compiled_count, mut reused, mut shared, mut bytes_written) = (0, 0, 0, 0);
     let key = pass_key(store, options, work);
     let index = cache.pass_index(&key);
@@ -783,8 +794,7 @@ fn build_pass(
             known.entry(text).or_insert(declared);
         }
     }
-    let mut fronts: Vec<Front> =
-        jobs.par_iter().map(|job| front(job, store, &known, &session.parsed)).collect();
+    let mut fronts: Vec<Front> = jobs.par_iter().map(|job| front(job, store, &known, session)).collect();
     // What was parsed now is published for every other build of the pass.
     if let Some(dir) = &options.cache_dir
         && fronts.iter().any(|f| matches!(f, Ok((_, Some(_)))))
@@ -1015,7 +1025,9 @@ fn stage_module(
             .note("its shard's output is damaged, or was built from another state of the project")),
         };
     }
-    if let Some(compiled) = session.compiled.get(&key) {
+    if session.texts.shared(&job.text_hash)
+        && let Some(compiled) = session.compiled.get(&key)
+    {
         return Ok((Built::Shared(compiled), key));
     }
     let mapper = Mapper { map: &job.map, store };
@@ -1037,7 +1049,10 @@ fn stage_module(
     let spirv = output.spirv.map(|words| module(words.iter().flat_map(|w| w.to_le_bytes()).collect()));
     let modules = [output.wgsl.map(|text| module(text.into_bytes())), spirv];
     let compiled = Arc::new(Compiled { modules, reflection: output.reflection });
-    session.compiled.insert(&key, compiled.clone(), compiled.size());
+    // Asked again now: another pass may have found the text meanwhile.
+    if session.texts.shared(&job.text_hash) {
+        session.compiled.insert(&key, compiled.clone(), compiled.size());
+    }
     Ok((Built::Compiled(compiled), key))
 }
 
