@@ -185,6 +185,17 @@ enum Built {
     Shared(Arc<Compiled>),
 }
 
+impl Built {
+    /// The modules this build packs (compiled now, fetched from the shared cache, or another
+    /// pass's); `None` for modules already packed or not this build's.
+    fn output(&self) -> Option<&Arc<Compiled>> {
+        match self {
+            Built::Compiled(output) | Built::Fetched(output) | Built::Shared(output) => Some(output),
+            Built::Reused(_) | Built::Skipped | Built::Kept => None,
+        }
+    }
+}
+
 /// A stage compiled now: its module per backend (`[wgsl, spirv]`), hashed where it was compiled
 /// so that packing, which is serial, only concatenates.
 struct Compiled {
@@ -386,11 +397,10 @@ fn recorded_name(store: &SourceStore, file: FileId, options: &BuildOptions) -> S
     }
 }
 
-/// Writes the manifest streamed (a million variants' manifest is never a string in memory) and
-/// hashed as it goes; a file that already holds exactly these bytes is left as it is, so that a
-/// rebuild that compiles nothing touches nothing. Returns its length and whether it was written.
-/// Writes JSON (the manifest, the materials) streamed and hashed as it goes; an unchanged file is
-/// kept as it is. Returns its length and whether it was written.
+/// Writes JSON (the manifest, the materials) streamed, so that a million variants' manifest is
+/// never a string in memory, and hashed as it goes; a file that already holds exactly these bytes
+/// is left as it is, so that a rebuild that compiles nothing touches nothing. Returns its length
+/// and whether it was written.
 fn write_json(
     path: &std::path::Path,
     value: &impl serde::Serialize,
@@ -749,6 +759,15 @@ fn front(
     Ok((declared, Some(module)))
 }
 
+/// The resources each stage text of a pass declares, by text hash (texts that did not parse
+/// left out).
+fn declared_by_text(jobs: &[Job], fronts: &[Front]) -> BTreeMap<String, Vec<Declared>> {
+    jobs.iter()
+        .zip(fronts)
+        .filter_map(|(job, front)| Some((job.text_hash.clone(), front.as_ref().ok()?.0.clone())))
+        .collect()
+}
+
 /// What building one pass gives: its part of the manifest, its diagnostics and its share of the
 /// summary.
 struct PassBuilt {
@@ -799,11 +818,7 @@ fn build_pass(
     if let Some(dir) = &options.cache_dir
         && fronts.iter().any(|f| matches!(f, Ok((_, Some(_)))))
     {
-        let all = fronts
-            .iter()
-            .zip(&jobs)
-            .filter_map(|(f, j)| Some((j.text_hash.clone(), f.as_ref().ok()?.0.clone())));
-        publish_layouts(dir, &key, &all.collect());
+        publish_layouts(dir, &key, &declared_by_text(&jobs, &fronts));
     }
     let layout = lay_out(&jobs, &fronts, store, &mut diagnostics);
     let requests: usize = jobs.iter().map(|j| j.requests).sum();
@@ -825,25 +840,14 @@ fn build_pass(
         .collect();
     if options.shard().is_some() {
         // The resources of every stage text, own or not: the next round and the merge parse none.
-        let front = fronts
-            .iter()
-            .zip(&jobs)
-            .filter_map(|(f, j)| Some((j.text_hash.clone(), f.as_ref().ok()?.0.clone())));
-        let fresh = PassIndex { front: front.collect(), stage: BTreeMap::new() };
+        let fresh = PassIndex { front: declared_by_text(&jobs, &fronts), stage: BTreeMap::new() };
         if fresh != index {
             let _ = cache.put_pass_index(&key, &fresh);
         }
         return shard_pass(work, store, catalog, options, &jobs, &stages, outcomes, diagnostics);
     }
-    let compiled: Vec<&Compiled> = outcomes
-        .iter()
-        .filter_map(|o| match o {
-            Some(Ok((Built::Compiled(output) | Built::Fetched(output) | Built::Shared(output), _))) => {
-                Some(&**output)
-            }
-            _ => None,
-        })
-        .collect();
+    let compiled: Vec<&Compiled> =
+        outcomes.iter().filter_map(|o| Some(&**o.as_ref()?.as_ref().ok()?.0.output()?)).collect();
     let mut files = match pack_pass(cache, &compiled) {
         Ok((files, written)) => {
             bytes_written += written;
@@ -854,43 +858,35 @@ fn build_pass(
             Vec::new().into_iter()
         }
     };
-    let mut fresh = PassIndex::default();
+    let mut fresh = PassIndex { front: declared_by_text(&jobs, &fronts), stage: BTreeMap::new() };
     let mut modules: Vec<Option<CachedStage>> = Vec::with_capacity(jobs.len());
-    for ((outcome, front), job) in outcomes.into_iter().zip(&fronts).zip(&jobs) {
-        if let Ok((declared, _)) = front {
-            fresh.front.insert(job.text_hash.clone(), declared.clone());
-        }
+    for (outcome, job) in outcomes.into_iter().zip(&jobs) {
         let stage = match outcome {
             Some(Ok((Built::Reused(stage), key))) => {
                 reused += 1;
                 Some((*stage, key))
             }
-            Some(Ok((Built::Compiled(compiled), key))) => {
-                compiled_count += 1;
-                if let Some(dir) = &options.cache_dir {
-                    publish_object(dir, &key, &compiled.modules, &compiled.reflection);
+            Some(Ok((built, key))) => built.output().map(|module| {
+                match built {
+                    Built::Compiled(_) => {
+                        compiled_count += 1;
+                        if let Some(dir) = &options.cache_dir {
+                            publish_object(dir, &key, &module.modules, &module.reflection);
+                        }
+                    }
+                    Built::Shared(_) => shared += 1,
+                    _ => reused += 1,
                 }
                 // Packing failed: the error is reported, the stage has no files.
                 let [wgsl, spirv] = files.next().unwrap_or_default();
-                Some((CachedStage { wgsl, spirv, reflection: compiled.reflection.clone() }, key))
-            }
-            Some(Ok((built @ (Built::Fetched(_) | Built::Shared(_)), key))) => {
-                let (Built::Fetched(module) | Built::Shared(module)) = &built else { continue };
-                if matches!(built, Built::Shared(_)) {
-                    shared += 1
-                } else {
-                    reused += 1
-                }
-                let [wgsl, spirv] = files.next().unwrap_or_default();
-                Some((CachedStage { wgsl, spirv, reflection: module.reflection.clone() }, key))
-            }
+                (CachedStage { wgsl, spirv, reflection: module.reflection.clone() }, key)
+            }),
             Some(Err(mut error)) => {
                 error.notes.push(job.context.clone());
                 diagnostics.push(error);
                 None
             }
-            // Only shards skip or keep modules, and they do not get here.
-            Some(Ok((Built::Skipped | Built::Kept, _))) | None => None,
+            None => None,
         };
         modules.push(stage.map(|(stage, key)| {
             fresh.stage.insert(key, stage.clone());
@@ -927,9 +923,11 @@ fn shard_pass(
     let (mut compiled, mut reused, mut bytes_written) = (0, 0, 0);
     for (outcome, job) in outcomes.into_iter().zip(jobs) {
         match outcome {
-            Some(Ok((built @ (Built::Compiled(_) | Built::Fetched(_)), key))) => {
-                let (Built::Compiled(module) | Built::Fetched(module)) = &built else { continue };
-                if matches!(built, Built::Compiled(_)) {
+            Some(Ok((Built::Kept, _))) => reused += 1,
+            Some(Ok((built, key))) => {
+                // Only a whole build shares between passes: a shard compiles or fetches.
+                let Some(module) = built.output() else { continue };
+                if let Built::Compiled(_) = built {
                     compiled += 1;
                     if let Some(dir) = &options.cache_dir {
                         publish_object(dir, &key, &module.modules, &module.reflection);
@@ -944,12 +942,11 @@ fn shard_pass(
                     }
                 }
             }
-            Some(Ok((Built::Kept, _))) => reused += 1,
             Some(Err(mut error)) => {
                 error.notes.push(job.context.clone());
                 diagnostics.push(error);
             }
-            _ => {}
+            None => {}
         }
     }
     let nothing = vec![None; jobs.len()];
@@ -1005,12 +1002,6 @@ fn stage_module(
     if let Some(cached) = index.stage.get(&key) {
         return Ok((Built::Reused(Box::new(cached.clone())), key));
     }
-    if options.merge().is_none()
-        && let Some(dir) = &options.cache_dir
-        && let Some((modules, reflection)) = fetch_object(dir, &key)
-    {
-        return Ok((Built::Fetched(Arc::new(Compiled { modules, reflection })), key));
-    }
     if let Some(merge) = options.merge() {
         // Every module comes from the shard that owns it; naga is not run.
         let found = merge.folders.iter().find_map(|folder| read_object(folder, &key));
@@ -1024,6 +1015,11 @@ fn stage_module(
             )
             .note("its shard's output is damaged, or was built from another state of the project")),
         };
+    }
+    if let Some(dir) = &options.cache_dir
+        && let Some((modules, reflection)) = fetch_object(dir, &key)
+    {
+        return Ok((Built::Fetched(Arc::new(Compiled { modules, reflection })), key));
     }
     if session.texts.shared(&job.text_hash)
         && let Some(compiled) = session.compiled.get(&key)
