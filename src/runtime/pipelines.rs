@@ -78,18 +78,38 @@ impl UsageLog {
         let mut keywords: Vec<String> = keywords.iter().map(|k| k.to_string()).collect();
         keywords.sort();
         keywords.dedup();
-        let line = serde_json::json!({ "shader": shader, "pass": pass, "keywords": keywords }).to_string();
+        // Formatted only for a request not logged before (a frame repeats its requests).
+        let mut line = None;
         for (file, is_missing_log) in [(&mut self.requested, false), (&mut self.missing, true)] {
             if is_missing_log && !missing {
                 continue;
             }
             let first = self.seen.insert((shader.to_string(), pass, keywords.clone(), is_missing_log));
             if let (true, Some(file)) = (first, file.as_mut()) {
+                let line = line.get_or_insert_with(|| {
+                    serde_json::json!({ "shader": shader, "pass": pass, "keywords": keywords }).to_string()
+                });
                 // A log that cannot be written must not stop a frame.
                 let _ = writeln!(file, "{line}").and_then(|()| file.flush());
             }
         }
     }
+}
+
+/// The variant with exactly these keywords, looked up once and recorded in the usage log (when
+/// there is one) as found or missing.
+fn logged_variant<'l>(
+    library: &'l Library,
+    usage: &mut Option<UsageLog>,
+    shader: &str,
+    pass: usize,
+    keywords: &[&str],
+) -> Result<&'l crate::reflect::manifest::VariantManifest, RuntimeError> {
+    let found = library.variant(shader, pass, keywords);
+    if let Some(log) = usage {
+        log.record(shader, pass, keywords, found.is_err());
+    }
+    found
 }
 
 /// What a pass needs once, not per pipeline request: its layout and its render state, read.
@@ -190,15 +210,7 @@ impl Runtime {
         pass: usize,
         keywords: &[&str],
     ) -> Result<&crate::reflect::manifest::VariantManifest, RuntimeError> {
-        self.log_request(shader, pass, keywords);
-        self.library.variant(shader, pass, keywords)
-    }
-
-    fn log_request(&mut self, shader: &str, pass: usize, keywords: &[&str]) {
-        if let Some(log) = &mut self.usage {
-            let missing = self.library.variant(shader, pass, keywords).is_err();
-            log.record(shader, pass, keywords, missing);
-        }
+        logged_variant(&self.library, &mut self.usage, shader, pass, keywords)
     }
 
     /// The bind group and pipeline layouts of a pass.
@@ -234,9 +246,8 @@ impl Runtime {
     pub fn pipeline(&mut self, request: &PipelineRequest) -> Result<Arc<wgpu::RenderPipeline>, RuntimeError> {
         let (shader, pass_index) = (request.shader, request.pass);
         let facts = self.pass_facts(shader, pass_index)?;
-        self.log_request(shader, pass_index, request.keywords);
         let library = &self.library;
-        let variant = library.variant(shader, pass_index, request.keywords)?;
+        let variant = logged_variant(library, &mut self.usage, shader, pass_index, request.keywords)?;
         let pass = library.pass(shader, pass_index)?;
         let layout_error =
             |message: String| RuntimeError::Layout { shader: shader.to_string(), pass: pass_index, message };
