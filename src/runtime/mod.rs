@@ -57,6 +57,8 @@ pub struct Library {
     manifest: Manifest,
     packs: HashMap<String, Cow<'static, [u8]>>,
     materials: Vec<MaterialManifest>,
+    /// Shader indices by name (the first of two shaders with one name), for lookups per draw.
+    shader_indices: HashMap<String, usize>,
     /// Per pass (shader index, pass position): its variants by keyword set.
     variants: HashMap<(usize, usize), HashMap<BTreeSet<String>, usize>>,
     /// The shaders as `.mat` files are resolved against, made at the first `load_material`.
@@ -105,7 +107,9 @@ impl Library {
         packs: HashMap<String, Cow<'static, [u8]>>,
     ) -> Library {
         let mut variants = HashMap::new();
+        let mut shader_indices = HashMap::with_capacity(manifest.shaders.len());
         for (s, shader) in manifest.shaders.iter().enumerate() {
+            shader_indices.entry(shader.name.clone()).or_insert(s);
             for (p, pass) in shader.passes.iter().enumerate() {
                 let by_keywords = pass
                     .variants
@@ -115,7 +119,14 @@ impl Library {
                 variants.insert((s, p), by_keywords.collect());
             }
         }
-        Library { manifest, packs, materials, variants, material_shaders: std::sync::OnceLock::new() }
+        Library {
+            manifest,
+            packs,
+            materials,
+            shader_indices,
+            variants,
+            material_shaders: std::sync::OnceLock::new(),
+        }
     }
 
     pub fn manifest(&self) -> &Manifest {
@@ -135,11 +146,7 @@ impl Library {
     }
 
     fn shader_index(&self, name: &str) -> Result<usize, RuntimeError> {
-        self.manifest
-            .shaders
-            .iter()
-            .position(|s| s.name == name)
-            .ok_or_else(|| RuntimeError::NoShader(name.to_string()))
+        self.shader_indices.get(name).copied().ok_or_else(|| RuntimeError::NoShader(name.to_string()))
     }
 
     pub fn shader(&self, name: &str) -> Result<&ShaderManifest, RuntimeError> {
