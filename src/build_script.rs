@@ -165,10 +165,14 @@ impl Build {
         };
         let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
         problems.extend(result.diagnostics);
-        let mut cargo_lines: Vec<String> =
-            store.files_read().map(|path| format!("cargo:rerun-if-changed={}", path.display())).collect();
-        cargo_lines.sort();
-        cargo_lines.dedup();
+        // The folders searched: kiln.toml was read by the build, so this cannot fail now.
+        let searched = crate::project::open_workspace(&mut SourceStore::new(), &self.paths)
+            .map(|(workspace, _)| workspace.searched)
+            .unwrap_or_default();
+        let mut cargo_lines: Vec<String> = watched(store.files_read(), &searched, &out_dir)
+            .iter()
+            .map(|path| format!("cargo:rerun-if-changed={}", path.display()))
+            .collect();
         for warning in problems.iter().filter(|d| d.severity == Severity::Warning) {
             // cargo shows one line per warning; the rendered form spans several.
             for line in
@@ -204,6 +208,41 @@ impl Build {
                 .map_err(|source| BuildError::Write { path: module.clone(), source })?;
         }
         Ok(BuildOutput { module, manifest, summary: result.summary, cargo_lines })
+    }
+}
+
+/// What cargo should watch: every file the build read and every folder it searched (so that a
+/// new shader, material or include reruns the build script), sorted, each once. Nothing under
+/// `out_dir` is watched: a build script that writes there (materials made from a scene) would
+/// otherwise rerun on every build. A searched folder that holds `out_dir` is watched through its
+/// other entries; a path that does not exist is left out (cargo would rerun every time).
+fn watched<'a>(
+    read: impl Iterator<Item = &'a Path>,
+    searched: &'a [PathBuf],
+    out_dir: &Path,
+) -> Vec<PathBuf> {
+    let out_dir = std::fs::canonicalize(out_dir).unwrap_or_else(|_| out_dir.to_path_buf());
+    let mut paths = Vec::new();
+    for path in read.chain(searched.iter().map(PathBuf::as_path)) {
+        watch(path, &out_dir, &mut paths);
+    }
+    paths.sort();
+    paths.dedup();
+    paths
+}
+
+fn watch(path: &Path, out_dir: &Path, paths: &mut Vec<PathBuf>) {
+    let Ok(canonical) = std::fs::canonicalize(path) else { return };
+    if canonical.starts_with(out_dir) {
+        return;
+    }
+    if !out_dir.starts_with(&canonical) {
+        paths.push(path.to_path_buf());
+        return;
+    }
+    let Ok(entries) = std::fs::read_dir(path) else { return };
+    for entry in entries.flatten() {
+        watch(&entry.path(), out_dir, paths);
     }
 }
 

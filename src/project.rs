@@ -239,6 +239,9 @@ pub struct Workspace {
     pub variant_logs: Vec<PathBuf>,
     /// The first project folder's `cache_dir`.
     pub cache_dir: Option<PathBuf>,
+    /// The folders searched for shaders, materials and includes: a new file there can change a
+    /// build (a build script asks cargo to watch them).
+    pub searched: Vec<PathBuf>,
 }
 
 impl Workspace {
@@ -306,6 +309,9 @@ pub fn open_workspace(
         };
         workspace.shaders.extend(find_files(&under(&config.shaders), "shader")?);
         workspace.materials.extend(find_files(&under(&config.materials), "mat")?);
+        workspace.searched.extend(under(&config.shaders));
+        workspace.searched.extend(under(&config.materials));
+        workspace.searched.extend(under(&config.include_paths));
         shader_sources += config.shaders.len();
         material_sources += config.materials.len();
         include_paths.extend(under(&config.include_paths));
@@ -505,6 +511,7 @@ pub fn build_part(
         record: false,
         part,
         cache_dir: workspace.shared_cache_dir(mode.cache_dir.clone()),
+        given_files: store.files_read().count(),
     };
     if diagnostics.is_empty()
         && !matches!(options.part, Part::Shard(_))
@@ -608,6 +615,7 @@ pub fn reflect_variant(
         record: false,
         part: Part::Whole,
         cache_dir: None,
+        given_files: 0,
     };
     let result = build(store, &includes, &catalog, &options, &|_, _| {});
     diagnostics.extend(result.diagnostics);

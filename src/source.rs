@@ -68,7 +68,8 @@ pub fn normalize_lexically(path: &Path) -> PathBuf {
             other => out.push(other),
         }
     }
-    out
+    // `.` and `a/..` name the current folder; an empty path names nothing (`exists` is false).
+    if out.as_os_str().is_empty() { PathBuf::from(".") } else { out }
 }
 
 /// 1-based line and column (in characters) of a byte offset.
@@ -390,6 +391,9 @@ mod tests {
         assert_eq!(n("../x/../y"), "../y");
         assert_eq!(n("a/../../b"), "../b");
         assert_eq!(n("/../a"), "/a");
+        // `kiln list .` searched an empty path, which exists nowhere.
+        assert_eq!(n("./."), ".");
+        assert_eq!(n("a/.."), ".");
     }
 
     #[test]

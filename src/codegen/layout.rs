@@ -188,6 +188,14 @@ impl<'a> Structs<'a> {
     /// An array member's element type in Rust, with its size.
     fn element_type(&mut self, out: &mut String, owner: &str, member: &'a Member) -> Option<(String, u32)> {
         let element = array_element(&member.ty)?;
+        if element.starts_with("array<") {
+            // An array of arrays: nested Rust arrays where the inner elements have no padding
+            // (`members` then lists the innermost struct's, which stays raw bytes).
+            let length: u32 = element.rsplit_once(',')?.1.trim_end_matches('>').trim().parse().ok()?;
+            let (rust, size) = rust_type(array_element(element)?)?;
+            let fits = member.members.is_empty() && member.array_stride? == size * length;
+            return fits.then(|| (format!("[{rust}; {length}]"), size * length));
+        }
         if member.members.is_empty() {
             return rust_type(element);
         }

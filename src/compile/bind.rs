@@ -2,9 +2,12 @@
 //! per frame, 1 per material, 2 per object), the same for every variant of a pass so that one
 //! bind group layout serves all of them. Explicit attributes win and are checked for clashes.
 
-use naga::{AddressSpace, Module, ResourceBinding};
+use naga::{
+    AddressSpace, Expression, GlobalVariable, Handle, Module, ResourceBinding, ShaderStage, Statement,
+};
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
+use std::collections::HashSet;
 
 pub const PER_FRAME: u32 = 0;
 pub const PER_MATERIAL: u32 = 1;
@@ -38,12 +41,17 @@ fn is_resource(space: AddressSpace) -> bool {
     matches!(space, AddressSpace::Uniform | AddressSpace::Storage { .. } | AddressSpace::Handle)
 }
 
-/// The resources of a parsed module, in declaration order.
-pub fn declared(module: &Module) -> Vec<Declared> {
+/// The resources an entry point of a parsed module reaches (directly or through the functions it
+/// calls), in declaration order: those the stage's module keeps once compacted, and so the only
+/// ones its pass's layout and clash checks should see. All of them when the entry point is not
+/// there (the stage reports that).
+pub fn declared(module: &Module, entry: &str, stage: ShaderStage) -> Vec<Declared> {
+    let reached =
+        module.entry_points.iter().find(|e| e.name == entry && e.stage == stage).map(|e| reached(module, e));
     module
         .global_variables
         .iter()
-        .filter(|(_, g)| is_resource(g.space))
+        .filter(|(handle, g)| is_resource(g.space) && reached.as_ref().is_none_or(|r| r.contains(handle)))
         .map(|(handle, g)| {
             let range = module.global_variables.get_span(handle).to_range().unwrap_or(0..0);
             Declared {
@@ -53,6 +61,52 @@ pub fn declared(module: &Module) -> Vec<Declared> {
             }
         })
         .collect()
+}
+
+/// The global variables an entry point uses, through every function it calls.
+fn reached(module: &Module, entry: &naga::EntryPoint) -> HashSet<Handle<GlobalVariable>> {
+    let mut globals = HashSet::new();
+    let mut called = HashSet::new();
+    let mut pending = vec![&entry.function];
+    while let Some(function) = pending.pop() {
+        let mut calls = Vec::new();
+        for (_, expression) in function.expressions.iter() {
+            match expression {
+                Expression::GlobalVariable(global) => {
+                    globals.insert(*global);
+                }
+                Expression::CallResult(callee) => calls.push(*callee),
+                _ => {}
+            }
+        }
+        statement_calls(&function.body, &mut calls);
+        for callee in calls {
+            if called.insert(callee) {
+                pending.push(&module.functions[callee]);
+            }
+        }
+    }
+    globals
+}
+
+/// The functions a block calls, nested blocks included.
+fn statement_calls(block: &naga::Block, out: &mut Vec<Handle<naga::Function>>) {
+    for statement in block.iter() {
+        match statement {
+            Statement::Call { function, .. } => out.push(*function),
+            Statement::Block(inner) => statement_calls(inner, out),
+            Statement::If { accept, reject, .. } => {
+                statement_calls(accept, out);
+                statement_calls(reject, out);
+            }
+            Statement::Switch { cases, .. } => cases.iter().for_each(|case| statement_calls(&case.body, out)),
+            Statement::Loop { body, continuing, .. } => {
+                statement_calls(body, out);
+                statement_calls(continuing, out);
+            }
+            _ => {}
+        }
+    }
 }
 
 /// Where each resource of a pass is bound.

@@ -37,6 +37,11 @@ use std::time::{Duration, Instant};
 /// Part of every cache key: a new naga may compile differently.
 const NAGA_VERSION: &str = "naga 30";
 
+/// Part of every cache key, raised when kiln compiles the same text differently (revision 2:
+/// layouts by the WGSL spec, a wider capability baseline), so that a cache an earlier kiln of the
+/// same version filled is not taken for current.
+const COMPILER_REVISION: u32 = 2;
+
 /// Which variants of a shader no material uses are compiled.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum VariantSelection {
@@ -70,6 +75,10 @@ pub struct BuildOptions {
     /// A module cache shared with other builds: modules are taken from it before naga runs,
     /// and every module compiled is published to it.
     pub cache_dir: Option<PathBuf>,
+    /// How many files the store held from disk before the catalogue was built (the project
+    /// file, shaders, materials, variant logs): the rest were read through includes. A no-op
+    /// needs the same files given, not merely the same files read.
+    pub given_files: usize,
 }
 
 /// How much of a build one process does.
@@ -149,6 +158,13 @@ struct Job<'a> {
     context: String,
     /// How many stage requests of the pass's variants it serves (for progress).
     requests: usize,
+}
+
+impl Job<'_> {
+    /// What the resources a job's module reaches depend on: its text, stage and entry point.
+    fn front_key(&self) -> String {
+        format!("{} {} {}", self.text_hash, self.stage.name(), self.entry)
+    }
 }
 
 /// A pass to build. Its jobs are made when it is built, and dropped with it.
@@ -280,7 +296,7 @@ fn build_in_pool(
     let mut diagnostics = Vec::new();
     let mut summary = BuildSummary::default();
     if let Some(merge) = options.merge()
-        && inputs_key(store, options, &[]) != merge.inputs
+        && inputs_key(store, options) != merge.inputs
     {
         let error = Diagnostic::error("K0413", "the shards were built from another state of the project")
             .note("a file the build reads, the project's settings or the build's options changed since")
@@ -332,7 +348,7 @@ fn build_in_pool(
         if options.write && !diagnostics::has_errors(&diagnostics) {
             let record = ShardRecord {
                 kiln_version: env!("CARGO_PKG_VERSION").to_string(),
-                inputs: inputs_key(store, options, &[]),
+                inputs: inputs_key(store, options),
                 shard: shard.index + 1,
                 count: shard.count,
                 project: options.root.to_string_lossy().replace('\\', "/"),
@@ -375,7 +391,8 @@ fn build_in_pool(
         let absent: BTreeSet<String> = store.absent().iter().map(|p| relative_to(p, &options.root)).collect();
         // Only costs a full build next time if it cannot be written.
         let _ = cache.record_inputs(&Recorded {
-            key: inputs_key(store, options, &[]),
+            key: inputs_key(store, options),
+            given: options.given_files,
             shaders: summary.shaders,
             passes: summary.passes,
             variants: summary.variants,
@@ -443,9 +460,9 @@ const OUTPUT_FORMAT: u32 = 2;
 
 /// Everything a build's outcome depends on: the options, the texts given in memory (global
 /// keywords from a build script; the bundled library is part of kiln's version), and every file
-/// read from disk (shaders, includes, materials, the project file) by its name relative to the
-/// project, in the order read, followed by `more` files read since (name, bytes).
-fn inputs_key(store: &SourceStore, options: &BuildOptions, more: &[(String, Vec<u8>)]) -> String {
+/// read from disk (shaders, includes, materials, variant logs, the project file) by its name
+/// relative to the project, in the order read.
+fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String {
     let mut hasher = blake3::Hasher::new();
     let mut file = |name: &str, bytes: &[u8]| {
         hasher.update(&(name.len() as u64).to_le_bytes());
@@ -460,11 +477,8 @@ fn inputs_key(store: &SourceStore, options: &BuildOptions, more: &[(String, Vec<
     for f in disk_files(store) {
         file(&recorded_name(store, f, options), store.text(f).as_bytes());
     }
-    for (name, bytes) in more {
-        file(name, bytes);
-    }
     let options = format!(
-        "{:?}{:?}{}{}{NAGA_VERSION} output {OUTPUT_FORMAT} manifest {SCHEMA_VERSION}",
+        "{:?}{:?}{}{} revision {COMPILER_REVISION} {NAGA_VERSION} output {OUTPUT_FORMAT} manifest {SCHEMA_VERSION}",
         options.backends,
         options.unused_shaders,
         options.pretty_manifest,
@@ -475,26 +489,30 @@ fn inputs_key(store: &SourceStore, options: &BuildOptions, more: &[(String, Vec<
 }
 
 /// The no-op check, made before the catalogue is built: `store` holds the files found so far
-/// (the project file, shaders, materials). When they are the first files the last clean build
-/// read, the rest it read (includes) are unchanged, nothing appeared where it looked in vain,
+/// (the project file, shaders, materials, variant logs). When they are exactly the files the last
+/// clean build was given, the rest it read (includes, read again here into `store`) are
+/// unchanged, nothing appeared where it looked in vain,
 /// and every file it wrote is in place, nothing needs doing: no parsing, no preprocessing, no
 /// naga, and the manifest is not read.
-pub fn unchanged(store: &SourceStore, options: &BuildOptions) -> Option<BuildResult> {
+pub fn unchanged(store: &mut SourceStore, options: &BuildOptions) -> Option<BuildResult> {
     let started = Instant::now();
     let cache = Cache::new(&options.output, false);
     let recorded = cache.recorded()?;
     let found: Vec<String> = disk_files(store).map(|f| recorded_name(store, f, options)).collect();
-    if found.len() > recorded.read.len() || recorded.read[..found.len()] != found[..] {
+    if found.len() != recorded.given || recorded.read.get(..found.len()) != Some(&found[..]) {
         return None;
     }
     if recorded.absent.par_iter().any(|path| std::fs::symlink_metadata(options.root.join(path)).is_ok()) {
         return None;
     }
-    let more: Vec<(String, Vec<u8>)> = recorded.read[found.len()..]
-        .par_iter()
-        .map(|name| Some((name.clone(), std::fs::read(options.root.join(name)).ok()?)))
-        .collect::<Option<_>>()?;
-    if !cache.unchanged(&recorded, &inputs_key(store, options, &more)) {
+    // The includes are read through the store, as a build reads them, so that what it reports
+    // as read (a build script's `rerun-if-changed`) is the same whether it compiled or not.
+    for name in &recorded.read[found.len()..] {
+        let path = options.root.join(name);
+        let canonical = store.canonical_file(&path)?;
+        store.load_once(&path, canonical).ok()?;
+    }
+    if !cache.unchanged(&recorded, &inputs_key(store, options)) {
         return None;
     }
     let summary = BuildSummary {
@@ -742,19 +760,20 @@ fn front(
     known: &BTreeMap<String, Vec<Declared>>,
     session: &Session,
 ) -> Front {
-    if let Some(declared) = known.get(&job.text_hash) {
+    let key = job.front_key();
+    if let Some(declared) = known.get(&key) {
         return Ok((declared.clone(), None));
     }
     let shared = session.texts.shared(&job.text_hash);
-    if shared && let Some(declared) = session.parsed.get(&job.text_hash) {
+    if shared && let Some(declared) = session.parsed.get(&key) {
         return Ok(((*declared).clone(), None));
     }
     let mapper = Mapper { map: &job.map, store };
     let module = parse(&job.text, &mapper).map_err(|d| d.note(job.context.clone()))?;
-    let declared = bind::declared(&module);
+    let declared = bind::declared(&module, job.entry, stage::naga_stage(job.stage));
     if shared {
         let size = declared.iter().map(|d| d.name.len() + 64).sum();
-        session.parsed.insert(&job.text_hash, Arc::new(declared.clone()), size);
+        session.parsed.insert(&key, Arc::new(declared.clone()), size);
     }
     Ok((declared, Some(module)))
 }
@@ -764,7 +783,7 @@ fn front(
 fn declared_by_text(jobs: &[Job], fronts: &[Front]) -> BTreeMap<String, Vec<Declared>> {
     jobs.iter()
         .zip(fronts)
-        .filter_map(|(job, front)| Some((job.text_hash.clone(), front.as_ref().ok()?.0.clone())))
+        .filter_map(|(job, front)| Some((job.front_key(), front.as_ref().ok()?.0.clone())))
         .collect()
 }
 
@@ -807,7 +826,7 @@ fn build_pass(
         _ => index.front.clone(),
     };
     if let Some(dir) = &options.cache_dir
-        && jobs.iter().any(|j| !known.contains_key(&j.text_hash))
+        && jobs.iter().any(|j| !known.contains_key(&j.front_key()))
     {
         for (text, declared) in read_layouts(dir, &key) {
             known.entry(text).or_insert(declared);
@@ -980,7 +999,7 @@ fn stage_module(
         options.backends.iter().map(|b| if *b == Backend::Wgsl { "wgsl" } else { "spirv" }).collect();
     let key = hash(
         format!(
-            "{}\n{}\n{}\n{}\n{}\n{}\nkiln {}\n{NAGA_VERSION}",
+            "{}\n{}\n{}\n{}\n{}\n{}\nkiln {} revision {COMPILER_REVISION}\n{NAGA_VERSION}",
             job.text_hash,
             job.stage.name(),
             job.entry,
@@ -999,7 +1018,10 @@ fn stage_module(
             return Ok((Built::Kept, key));
         }
     }
-    if let Some(cached) = index.stage.get(&key) {
+    // A shard's modules are objects: a whole build's packs in the same folder are not its own.
+    if options.shard().is_none()
+        && let Some(cached) = index.stage.get(&key)
+    {
         return Ok((Built::Reused(Box::new(cached.clone())), key));
     }
     if let Some(merge) = options.merge() {

@@ -31,6 +31,8 @@ pub struct PassIndex {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Recorded {
     pub key: String,
+    /// How many of `read` were given to the build (the rest came through includes).
+    pub given: usize,
     pub shaders: usize,
     pub passes: usize,
     pub variants: usize,

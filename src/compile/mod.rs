@@ -3,6 +3,8 @@
 //!
 //! - `bind.rs`: binding assignment by update frequency, one layout per pass.
 //! - `target.rs`: what `#pragma target` / `require` allow.
+//! - `layout.rs`: host-shareable layouts by the WGSL spec (naga's offsets corrected, `@align`/`@size`
+//!   written back into emitted WGSL, constructs naga's SPIR-V writer gets wrong refused).
 //! - `stage.rs`: one stage module from parsed text to WGSL, SPIR-V and reflection.
 //! - `cache.rs`: the content-addressed cache and output files.
 //! - `build.rs`: the whole project: jobs, deduplication, parallelism, the manifest.
@@ -10,6 +12,7 @@
 pub mod bind;
 pub mod build;
 mod cache;
+mod layout;
 pub mod objects;
 pub mod shard;
 mod stage;
@@ -36,7 +39,8 @@ pub struct Checked {
 /// checked: resources without `@group`/`@binding` get them when a pass is built.
 pub fn check(preprocessed: &Preprocessed, store: &SourceStore) -> Result<Checked, Vec<Diagnostic>> {
     let mapper = Mapper { map: &preprocessed.source_map, store };
-    let module = parse(&preprocessed.text, &mapper).map_err(|d| vec![d])?;
+    let mut module = parse(&preprocessed.text, &mapper).map_err(|d| vec![d])?;
+    layout::correct(&mut module, &preprocessed.text, &mapper).map_err(|d| vec![d])?;
     let flags = ValidationFlags::all() - ValidationFlags::BINDINGS;
     let info = validate(&module, flags, Capabilities::all(), &mapper).map_err(|d| vec![d])?;
     Ok(Checked { module, info })
@@ -144,7 +148,8 @@ pub fn compile_compute(
 ) -> Result<(String, Bindings), Vec<Diagnostic>> {
     let mapper = Mapper { map: &preprocessed.source_map, store };
     let mut module = parse(&preprocessed.text, &mapper).map_err(|d| vec![d])?;
-    let (layout, _) = bind::layout(&[&bind::declared(&module)]);
+    let host = layout::correct(&mut module, &preprocessed.text, &mapper).map_err(|d| vec![d])?;
+    let (layout, _) = bind::layout(&[&bind::declared(&module, entry, naga::ShaderStage::Compute)]);
     bind::apply(&mut module, &layout);
     let compute = naga::ShaderStage::Compute;
     if !module.entry_points.iter().any(|e| e.name == entry && e.stage == compute) {
@@ -152,7 +157,7 @@ pub fn compile_compute(
     }
     let info =
         stage::keep_entry_point(&mut module, entry, compute, capabilities, &mapper).map_err(|d| vec![d])?;
-    let wgsl = stage::write_wgsl(&module, &info, capabilities).map_err(|d| vec![d])?;
+    let wgsl = stage::write_wgsl(&module, &info, capabilities, &host).map_err(|d| vec![d])?;
     let used: Bindings = module
         .global_variables
         .iter()

@@ -2,6 +2,7 @@
 //! point, validated with what its target allows, and written as WGSL and SPIR-V.
 
 use super::bind::{self, PassLayout};
+use super::layout::{self, HostLayout};
 use super::target::Allowed;
 use super::{Mapper, validate};
 use crate::config::Backend;
@@ -30,18 +31,106 @@ pub struct StageRequest<'a> {
     pub backends: &'a [Backend],
 }
 
-fn naga_stage(stage: Stage) -> naga::ShaderStage {
+pub(super) fn naga_stage(stage: Stage) -> naga::ShaderStage {
     match stage {
         Stage::Vertex => naga::ShaderStage::Vertex,
         Stage::Fragment => naga::ShaderStage::Fragment,
     }
 }
 
+/// Compiles one stage module. A panic inside naga (or kiln) becomes a diagnostic for this module
+/// (K0416), so one bad module never takes the build down.
 pub fn compile(
+    module: naga::Module,
+    request: &StageRequest,
+    mapper: &Mapper,
+) -> Result<StageOutput, Diagnostic> {
+    contain_panics(|| compile_unguarded(module, request, mapper)).unwrap_or_else(|panic| {
+        Err(Diagnostic::error(
+            "K0416",
+            format!("internal error while compiling the {} stage: {}", request.stage.name(), panic.message),
+        )
+        .at(request.entry_pragma, "compiling this entry point")
+        .note(format!("the panic was at {}", panic.location))
+        .note(
+            "this is a bug in naga or kiln, not in the shader; please report it with this variant's \
+             `kiln preprocess` output (naga: https://github.com/gfx-rs/wgpu/issues)",
+        ))
+    })
+}
+
+/// A panic caught while compiling, with where it happened.
+struct Panic {
+    message: String,
+    location: String,
+}
+
+thread_local! {
+    /// Set while this thread compiles a module: its panics are caught, not printed.
+    static GUARDED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    static CAUGHT: std::cell::RefCell<Option<Panic>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Runs `f`, turning a panic into a value. The process's panic hook is wrapped once so that a
+/// panic inside a guarded call is recorded instead of printed (the library never prints); every
+/// other panic goes to the hook that was there before.
+fn contain_panics<T>(f: impl FnOnce() -> T) -> Result<T, Panic> {
+    static HOOK: std::sync::Once = std::sync::Once::new();
+    HOOK.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            if !GUARDED.with(std::cell::Cell::get) {
+                return previous(info);
+            }
+            let payload = info.payload();
+            let message = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "a panic without a message".to_string());
+            let location = info.location().map_or_else(
+                || "an unknown place".to_string(),
+                |l| {
+                    // `…/registry/src/<index>/naga-30.0.1/src/back/spv/block.rs` → from the crate on.
+                    let file = l.file().replace('\\', "/");
+                    let short = match file.rsplit_once("/src/") {
+                        Some((krate, rest)) => {
+                            format!("{}/src/{rest}", krate.rsplit('/').next().unwrap_or(krate))
+                        }
+                        None => file,
+                    };
+                    format!("{short}:{}:{}", l.line(), l.column())
+                },
+            );
+            CAUGHT.with(|c| *c.borrow_mut() = Some(Panic { message, location }));
+        }));
+    });
+    let was_guarded = GUARDED.with(|g| g.replace(true));
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f));
+    GUARDED.with(|g| g.set(was_guarded));
+    result.map_err(|_| {
+        CAUGHT.with(|c| c.borrow_mut().take()).unwrap_or(Panic {
+            message: "a panic".to_string(),
+            location: "an unknown place (another panic hook was installed)".to_string(),
+        })
+    })
+}
+
+/// A fault for the tests of [`contain_panics`]: debug builds panic while compiling an entry
+/// point named by `KILN_INJECT_PANIC`.
+fn injected_fault(entry: &str) {
+    if cfg!(debug_assertions) && std::env::var("KILN_INJECT_PANIC").is_ok_and(|name| name == entry) {
+        panic!("fault injected by KILN_INJECT_PANIC");
+    }
+}
+
+fn compile_unguarded(
     mut module: naga::Module,
     request: &StageRequest,
     mapper: &Mapper,
 ) -> Result<StageOutput, Diagnostic> {
+    injected_fault(request.entry);
+    let host = layout::correct(&mut module, request.text, mapper)?;
     let stage = naga_stage(request.stage);
     if !module.entry_points.iter().any(|e| e.name == request.entry && e.stage == stage) {
         let other = module.entry_points.iter().find(|e| e.name == request.entry);
@@ -67,9 +156,10 @@ pub fn compile(
     bind::apply(&mut module, request.layout);
     let info = keep_entry_point(&mut module, request.entry, stage, request.allowed.capabilities(), mapper)?;
     check_limits(&module, request, mapper)?;
+    layout::check_uniform_constructs(&module, request.text, mapper)?;
 
     let wgsl = if request.backends.contains(&Backend::Wgsl) {
-        Some(write_wgsl(&module, &info, request.allowed.capabilities())?)
+        Some(write_wgsl(&module, &info, request.allowed.capabilities(), &host)?)
     } else {
         None
     };
@@ -87,7 +177,11 @@ pub fn compile(
     } else {
         None
     };
-    Ok(StageOutput { wgsl, spirv, reflection: reflect_stage(&module, request.entry) })
+    Ok(StageOutput {
+        wgsl,
+        spirv,
+        reflection: reflect_stage(&module, request.entry, &|ty| host.alignment(&module, ty)),
+    })
 }
 
 /// The SPIR-V version a module is written in: 1.0 (every Vulkan device) unless it may use 16-bit
@@ -110,16 +204,19 @@ pub(super) fn keep_entry_point(
     validate(module, ValidationFlags::all(), capabilities, mapper)
 }
 
-/// WGSL for a validated module. naga's writer emits `enable f16;` only when a type declaration
+/// WGSL for a validated module, with the struct layouts of the source (naga's writer drops
+/// `@align`/`@size`). naga's writer emits `enable f16;` only when a type declaration
 /// uses f16, not for f16 arithmetic in expressions (conversions, `h` literals), which the WGSL
 /// front end then rejects; a module allowed f16 always gets the directive.
 pub(super) fn write_wgsl(
     module: &naga::Module,
     info: &naga::valid::ModuleInfo,
     capabilities: naga::valid::Capabilities,
+    host: &HostLayout,
 ) -> Result<String, Diagnostic> {
     let wgsl = naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
         .map_err(|e| backend_error("WGSL", e.to_string()))?;
+    let wgsl = layout::annotate_wgsl(wgsl, module, host)?;
     let needs_enable = capabilities.contains(naga::valid::Capabilities::SHADER_FLOAT16)
         && !wgsl.lines().any(|line| line.trim() == "enable f16;");
     Ok(if needs_enable { format!("enable f16;\n{wgsl}") } else { wgsl })

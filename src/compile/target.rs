@@ -4,6 +4,33 @@
 use crate::shaderlab::pragma::{ProgramPragmas, TARGET_LEVELS};
 use naga::valid::Capabilities;
 
+/// `#pragma require` names that stand for naga capabilities, with the optional wgpu feature a
+/// device needs for them (`None`: every WebGPU-compliant device has it, so it is granted at every
+/// target anyway). The other requirement names are limits kiln checks itself (interpolators,
+/// colour targets) or core WebGPU (`msaatex`: multisampled textures). docs/keywords.md.
+pub const REQUIREMENT_CAPABILITIES: [(&str, Capabilities, Option<&str>); 11] = [
+    ("native16bit", Capabilities::SHADER_FLOAT16, Some("shader-f16")),
+    ("int64", Capabilities::SHADER_INT64, Some("shader-int64")),
+    ("cubearray", Capabilities::CUBE_ARRAY_TEXTURES, None),
+    ("sampleshading", Capabilities::MULTISAMPLED_SHADING, None),
+    ("msaatex", Capabilities::empty(), None),
+    ("barycentrics", Capabilities::SHADER_BARYCENTRICS, Some("shader-barycentrics")),
+    ("wavebasic", Capabilities::SUBGROUP, Some("subgroup")),
+    ("wavevote", Capabilities::SUBGROUP, Some("subgroup")),
+    ("waveballot", Capabilities::SUBGROUP, Some("subgroup")),
+    ("wavemath", Capabilities::SUBGROUP, Some("subgroup")),
+    ("waveshuffle", Capabilities::SUBGROUP, Some("subgroup")),
+];
+
+/// What wgpu lets every WebGPU-compliant device's shaders use: its mapping from no optional
+/// features and the compliant downlevel flags to naga capabilities.
+pub fn webgpu_baseline() -> Capabilities {
+    wgpu_naga_bridge::features_to_naga_capabilities(
+        wgpu_types::Features::empty(),
+        wgpu_types::DownlevelFlags::compliant(),
+    )
+}
+
 /// The requirement set a variant may use.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Allowed {
@@ -44,27 +71,29 @@ impl Allowed {
         self.features.iter().any(|f| f == feature)
     }
 
-    /// naga capabilities: WGSL's baseline, plus 16-bit floats with `native16bit`, 64-bit
-    /// integers with `int64`.
+    /// naga capabilities: what every WebGPU-compliant device has (wgpu's own mapping, so cube
+    /// array textures and multisampled shading at every target), plus what the requirements name
+    /// ([`REQUIREMENT_CAPABILITIES`]).
     pub fn capabilities(&self) -> Capabilities {
-        let mut capabilities = Capabilities::empty();
-        if self.has("native16bit") {
-            capabilities |= Capabilities::SHADER_FLOAT16;
-        }
-        if self.has("int64") {
-            capabilities |= Capabilities::SHADER_INT64;
+        let mut capabilities = webgpu_baseline();
+        for (name, capability, _) in REQUIREMENT_CAPABILITIES {
+            if self.has(name) {
+                capabilities |= capability;
+            }
         }
         capabilities
     }
 
-    /// The optional GPU features of [`Allowed::capabilities`], by wgpu's names.
+    /// The optional GPU features the requirements need, by wgpu's names (`shader-f16`).
     pub fn features(&self) -> Vec<String> {
-        let capabilities = self.capabilities();
-        [(Capabilities::SHADER_FLOAT16, "shader-f16"), (Capabilities::SHADER_INT64, "shader-int64")]
-            .into_iter()
-            .filter(|(c, _)| capabilities.contains(*c))
-            .map(|(_, name)| name.to_string())
-            .collect()
+        let mut features: Vec<String> = REQUIREMENT_CAPABILITIES
+            .iter()
+            .filter(|(name, _, feature)| feature.is_some() && self.has(name))
+            .filter_map(|(_, _, feature)| feature.map(str::to_string))
+            .collect();
+        features.sort();
+        features.dedup();
+        features
     }
 
     /// User interpolators the vertex stage may pass to the fragment stage (WebGPU allows 16).

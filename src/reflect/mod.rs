@@ -86,18 +86,25 @@ pub struct Member {
     pub members: Vec<Member>,
 }
 
+/// Sizes from naga's `Layouter` (its offsets, spans and strides are the spec's once kiln has
+/// corrected them), alignments from the spec's rules, which naga's `Layouter` does not follow
+/// for structs raised by `@align`.
+struct Layouts<'a> {
+    layouter: Layouter,
+    alignment: &'a dyn Fn(Handle<Type>) -> u32,
+}
+
 /// The block a uniform or storage buffer binding holds.
-fn block(module: &Module, layouter: &Layouter, global: &naga::GlobalVariable) -> Option<UniformBlock> {
+fn block(module: &Module, layouts: &Layouts, global: &naga::GlobalVariable) -> Option<UniformBlock> {
     let storage = match global.space {
         AddressSpace::Uniform => false,
         AddressSpace::Storage { .. } => true,
         _ => return None,
     };
     let name = global.name.clone().unwrap_or_default();
-    let layout = &layouter[global.ty];
     let (size, members) = match &module.types[global.ty].inner {
         TypeInner::Struct { members, span } => {
-            let members = struct_members(module, layouter, members);
+            let members = struct_members(module, layouts, members);
             // A runtime-sized array has no size of its own: the block's size is where it starts.
             let size = match members.last() {
                 Some(last) if last.array_stride.is_some() && last.array_length.is_none() => last.offset,
@@ -105,27 +112,27 @@ fn block(module: &Module, layouter: &Layouter, global: &naga::GlobalVariable) ->
             };
             (size, members)
         }
-        TypeInner::Array { .. } => (0, vec![member(module, layouter, &name, global.ty, 0)]),
+        TypeInner::Array { .. } => (0, vec![member(module, layouts, &name, global.ty, 0)]),
         _ => return None,
     };
     Some(UniformBlock {
         name,
         type_name: type_name(module, global.ty),
         size,
-        alignment: layout.alignment.round_up(1),
+        alignment: (layouts.alignment)(global.ty),
         storage,
         members,
     })
 }
 
-fn struct_members(module: &Module, layouter: &Layouter, members: &[naga::StructMember]) -> Vec<Member> {
+fn struct_members(module: &Module, layouts: &Layouts, members: &[naga::StructMember]) -> Vec<Member> {
     members
         .iter()
-        .map(|m| member(module, layouter, m.name.as_deref().unwrap_or_default(), m.ty, m.offset))
+        .map(|m| member(module, layouts, m.name.as_deref().unwrap_or_default(), m.ty, m.offset))
         .collect()
 }
 
-fn member(module: &Module, layouter: &Layouter, name: &str, ty: Handle<Type>, offset: u32) -> Member {
+fn member(module: &Module, layouts: &Layouts, name: &str, ty: Handle<Type>, offset: u32) -> Member {
     let (array_stride, array_length, element) = match &module.types[ty].inner {
         TypeInner::Array { base, size, stride } => {
             let length = match size {
@@ -136,8 +143,13 @@ fn member(module: &Module, layouter: &Layouter, name: &str, ty: Handle<Type>, of
         }
         _ => (None, None, ty),
     };
-    let members = match &module.types[element].inner {
-        TypeInner::Struct { members, .. } => struct_members(module, layouter, members),
+    // An array of arrays of structs lists the innermost struct's members too.
+    let mut innermost = element;
+    while let TypeInner::Array { base, .. } = module.types[innermost].inner {
+        innermost = base;
+    }
+    let members = match &module.types[innermost].inner {
+        TypeInner::Struct { members, .. } => struct_members(module, layouts, members),
         _ => Vec::new(),
     };
     Member {
@@ -145,19 +157,25 @@ fn member(module: &Module, layouter: &Layouter, name: &str, ty: Handle<Type>, of
         ty: type_name(module, ty),
         offset,
         // naga's layouter gives a runtime-sized array the size of one element.
-        size: if array_stride.is_some() && array_length.is_none() { 0 } else { layouter[ty].size },
-        alignment: layouter[ty].alignment.round_up(1),
+        size: if array_stride.is_some() && array_length.is_none() { 0 } else { layouts.layouter[ty].size },
+        alignment: (layouts.alignment)(ty),
         array_stride,
         array_length,
         members,
     }
 }
 
-/// Reflects a module compacted to one entry point.
-pub fn reflect_stage(module: &Module, entry_point: &str) -> StageReflection {
+/// Reflects a module compacted to one entry point; `alignment` gives a type's alignment by the
+/// WGSL spec (`compile::layout::HostLayout`).
+pub fn reflect_stage(
+    module: &Module,
+    entry_point: &str,
+    alignment: &dyn Fn(Handle<Type>) -> u32,
+) -> StageReflection {
     let mut layouter = Layouter::default();
     // A module that validated always lays out; an error would leave sizes at 0, not crash.
     let _ = layouter.update(module.to_ctx());
+    let layouts = Layouts { layouter, alignment };
     let mut reflection = StageReflection {
         entry_point: entry_point.to_string(),
         inputs: Vec::new(),
@@ -181,8 +199,8 @@ pub fn reflect_stage(module: &Module, entry_point: &str) -> StageReflection {
     for (_, global) in module.global_variables.iter() {
         let Some(binding) = &global.binding else { continue };
         let name = global.name.clone().unwrap_or_default();
-        let resource = resource(module, &layouter, global.space, global.ty);
-        if let Some(block) = block(module, &layouter, global) {
+        let resource = resource(module, &layouts.layouter, global.space, global.ty);
+        if let Some(block) = block(module, &layouts, global) {
             reflection.uniform_blocks.push(block);
         }
         reflection.bindings.push(BindingInfo {

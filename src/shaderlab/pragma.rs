@@ -141,7 +141,7 @@ pub const TARGET_LEVELS: [(&str, &[&str]); 8] = [
 ];
 
 /// Every requirement name `#pragma require` accepts.
-pub const REQUIREMENTS: [&str; 22] = [
+pub const REQUIREMENTS: [&str; 30] = [
     "interpolators10",
     "interpolators15",
     "interpolators32",
@@ -164,6 +164,14 @@ pub const REQUIREMENTS: [&str; 22] = [
     "framebufferfetch",
     "setrtarrayindexfromanyshader",
     "native16bit",
+    "int64",
+    "sampleshading",
+    "barycentrics",
+    "wavebasic",
+    "wavevote",
+    "waveballot",
+    "wavemath",
+    "waveshuffle",
 ];
 
 /// Unity's shorthand pragmas and the keyword sets kiln expands them to (docs/keywords.md).

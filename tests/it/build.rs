@@ -264,7 +264,7 @@ fn an_unwritable_output_is_a_diagnostic() {
 }
 
 #[test]
-fn the_build_script_api_reruns_on_every_file_read_and_nothing_else() {
+fn the_build_script_api_reruns_on_every_file_read_and_folder_searched_and_nothing_else() {
     let out = tempfile::tempdir().expect("temp dir");
     let output = kiln::Build::new("fixtures/project").out_dir(out.path()).execute().expect("builds");
     let mut reruns: Vec<String> = output
@@ -274,12 +274,17 @@ fn the_build_script_api_reruns_on_every_file_read_and_nothing_else() {
         .map(|p| p.replace('\\', "/"))
         .collect();
     reruns.sort();
-    let mut expected: Vec<String> = ["fixtures/project/kiln.toml".to_string()]
-        .into_iter()
-        .chain(fixture_files("fixtures/project/shaders", "shader").iter().map(|p| p.display().to_string()))
-        .chain(fixture_files("fixtures/project/shaders", "wgsl").iter().map(|p| p.display().to_string()))
-        .chain(fixture_files("fixtures/project/materials", "mat").iter().map(|p| p.display().to_string()))
-        .collect();
+    // The folders too: a new shader or material there must rerun the build script.
+    let mut expected: Vec<String> =
+        ["fixtures/project/kiln.toml", "fixtures/project/materials", "fixtures/project/shaders"]
+            .map(String::from)
+            .into_iter()
+            .chain(
+                fixture_files("fixtures/project/shaders", "shader").iter().map(|p| p.display().to_string()),
+            )
+            .chain(fixture_files("fixtures/project/shaders", "wgsl").iter().map(|p| p.display().to_string()))
+            .chain(fixture_files("fixtures/project/materials", "mat").iter().map(|p| p.display().to_string()))
+            .collect();
     expected.sort();
     assert_eq!(reruns, expected, "the bundled library is embedded, so it is not a file to watch");
     assert!(output.cargo_lines.iter().all(|l| l.starts_with("cargo:rerun-if-changed=")), "no warnings here");
@@ -468,7 +473,15 @@ fn a_shader_copied_under_another_name_is_compiled_once() {
         std::fs::write(project.join(format!("materials/{name}Copy.mat")), text).expect("write");
     }
     let output = dir.path().join("out");
-    let run = kiln(&["build", project.to_str().expect("utf-8"), "--output", output.to_str().expect("utf-8")]);
+    // One thread: two passes in flight at once may each compile a text before either has it.
+    let run = kiln(&[
+        "build",
+        project.to_str().expect("utf-8"),
+        "--output",
+        output.to_str().expect("utf-8"),
+        "--threads",
+        "1",
+    ]);
     let summary = String::from_utf8_lossy(&run.stderr);
     assert_eq!(run.status.code(), Some(0), "{summary}");
     let manifest = read_manifest(&output);

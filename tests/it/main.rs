@@ -9,6 +9,7 @@ mod cli;
 mod cpp;
 mod gpu;
 mod integrity;
+mod layouts;
 mod list;
 mod materials;
 mod parse;

@@ -1,0 +1,582 @@
+//! Host-shareable memory layout as the WGSL spec defines it, made true in every output.
+//!
+//! naga's WGSL front end places a member by its `@align`, but a struct's alignment in naga is
+//! the largest of its members' *types'* alignments, so a struct raised by `@align` is placed too
+//! early when nested or used as an array element (gfx-rs/wgpu#4377); and naga's WGSL writer drops
+//! `@align` and `@size`. kiln reads the attributes from the text ([`scan_structs`]), lays every
+//! struct out by the spec and rewrites naga's offsets, spans and strides before anything else
+//! sees the module ([`correct`]), writes the attributes back into the WGSL it emits
+//! ([`annotate_wgsl`]), and refuses what naga's SPIR-V writer cannot express
+//! ([`check_uniform_constructs`]).
+
+use super::Mapper;
+use crate::diagnostics::Diagnostic;
+use naga::{AddressSpace, ArraySize, Handle, Module, Type, TypeInner};
+use std::collections::HashMap;
+use std::ops::Range;
+
+/// The spec's layout of each struct of a module, by name: what naga's IR cannot hold (a
+/// struct's alignment, each member's `@align`/`@size`), for reflection and the WGSL writer.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct HostLayout {
+    structs: HashMap<String, StructLayout>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+struct StructLayout {
+    alignment: u32,
+    /// Each member's alignment and size in the struct: its `@align`/`@size`, else its type's.
+    members: Vec<(u32, u32)>,
+}
+
+/// A type's size and alignment by the spec's rules.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct TypeLayout {
+    size: u32,
+    alignment: u32,
+}
+
+impl HostLayout {
+    /// The spec's alignment of a type (naga's `Layouter` gives a struct the largest alignment of
+    /// its members' types, ignoring `@align`).
+    pub fn alignment(&self, module: &Module, ty: Handle<Type>) -> u32 {
+        match &module.types[ty].inner {
+            TypeInner::Struct { members, .. } => {
+                let name = module.types[ty].name.as_deref().unwrap_or_default();
+                match self.structs.get(name) {
+                    Some(layout) => layout.alignment,
+                    None => members.iter().map(|m| self.alignment(module, m.ty)).max().unwrap_or(1),
+                }
+            }
+            TypeInner::Array { base, .. } => self.alignment(module, *base),
+            inner => plain_layout(inner, &[]).map_or(1, |layout| layout.alignment),
+        }
+    }
+}
+
+/// A struct declaration as written.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeclaredStruct {
+    pub name: String,
+    /// The struct's name in the text.
+    pub name_range: Range<usize>,
+    pub members: Vec<DeclaredMember>,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct DeclaredMember {
+    pub name: String,
+    pub range: Range<usize>,
+    pub align: Option<LayoutAttribute>,
+    pub size: Option<LayoutAttribute>,
+}
+
+/// An `@align(...)` or `@size(...)`, with its value when it is an integer literal or a named
+/// constant (naga evaluated it too; kiln needs it because naga's IR keeps only its effect).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LayoutAttribute {
+    /// The attribute as written (`@align(2 * 16)`).
+    pub written: String,
+    /// Its argument (`2 * 16`).
+    pub expression: String,
+    pub range: Range<usize>,
+}
+
+/// Tokens of WGSL text with their byte offsets, comments and whitespace left out.
+fn tokens(text: &str) -> Vec<(&str, usize)> {
+    let bytes = text.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < bytes.len() {
+        let c = bytes[i];
+        if c.is_ascii_whitespace() {
+            i += 1;
+        } else if bytes[i..].starts_with(b"//") {
+            i += bytes[i..].iter().position(|&b| b == b'\n').unwrap_or(bytes.len() - i);
+        } else if bytes[i..].starts_with(b"/*") {
+            // WGSL block comments nest.
+            let mut depth = 0;
+            while i < bytes.len() {
+                if bytes[i..].starts_with(b"/*") {
+                    depth += 1;
+                    i += 2;
+                } else if bytes[i..].starts_with(b"*/") {
+                    depth -= 1;
+                    i += 2;
+                    if depth == 0 {
+                        break;
+                    }
+                } else {
+                    i += 1;
+                }
+            }
+        } else if c == b'_' || c.is_ascii_alphanumeric() || c >= 0x80 {
+            let start = i;
+            while i < bytes.len()
+                && (bytes[i] == b'_' || bytes[i].is_ascii_alphanumeric() || bytes[i] >= 0x80)
+            {
+                i += 1;
+            }
+            // Numbers keep their fraction (`1.5`), which no layout attribute has, as one token.
+            if c.is_ascii_digit() {
+                while i < bytes.len() && (bytes[i] == b'.' || bytes[i].is_ascii_alphanumeric()) {
+                    i += 1;
+                }
+            }
+            out.push((&text[start..i], start));
+        } else {
+            let len = text[i..].chars().next().map_or(1, char::len_utf8);
+            out.push((&text[i..i + len], i));
+            i += len;
+        }
+    }
+    out
+}
+
+fn is_identifier(token: &str) -> bool {
+    token.chars().next().is_some_and(|c| c == '_' || c.is_alphabetic() || !c.is_ascii())
+}
+
+/// Every `struct` declaration of a text, with its members' `@align` and `@size`.
+pub fn scan_structs(text: &str) -> Vec<DeclaredStruct> {
+    let tokens = tokens(text);
+    let mut structs = Vec::new();
+    let mut i = 0;
+    while i + 2 < tokens.len() {
+        let (name, at) = tokens[i + 1];
+        if tokens[i].0 != "struct" || !is_identifier(name) || tokens[i + 2].0 != "{" {
+            i += 1;
+            continue;
+        }
+        i += 3;
+        let mut members = Vec::new();
+        while i < tokens.len() && tokens[i].0 != "}" {
+            let mut member = DeclaredMember { name: String::new(), range: 0..0, align: None, size: None };
+            while i + 1 < tokens.len() && tokens[i].0 == "@" {
+                let attribute = tokens[i + 1].0;
+                let start = tokens[i].1;
+                i += 2;
+                // The text between the parentheses, as written.
+                let mut inside = start..start;
+                if tokens.get(i).is_some_and(|t| t.0 == "(") {
+                    inside = tokens[i].1 + 1..tokens[i].1 + 1;
+                    let mut depth = 0;
+                    while let Some(&(token, at)) = tokens.get(i) {
+                        i += 1;
+                        depth += match token {
+                            "(" => 1,
+                            ")" => -1,
+                            _ => 0,
+                        };
+                        if depth == 0 {
+                            inside.end = at;
+                            break;
+                        }
+                    }
+                }
+                let end = tokens.get(i - 1).map_or(text.len(), |t| t.1 + t.0.len());
+                let expression = text[inside].trim().to_string();
+                let written = text[start..end].to_string();
+                let value = Some(LayoutAttribute { written, expression, range: start..end });
+                match attribute {
+                    "align" => member.align = value,
+                    "size" => member.size = value,
+                    _ => {}
+                }
+            }
+            let Some(&(name, at)) = tokens.get(i) else { break };
+            member.name = name.to_string();
+            member.range = at..at + name.len();
+            // Skip `: type` up to the `,` or `}` that ends the member.
+            let mut depth = 0i32;
+            while let Some(&(token, _)) = tokens.get(i) {
+                match token {
+                    "<" | "(" | "[" => depth += 1,
+                    ">" | ")" | "]" => depth -= 1,
+                    "," if depth <= 0 => {
+                        i += 1;
+                        break;
+                    }
+                    "}" if depth <= 0 => break,
+                    _ => {}
+                }
+                i += 1;
+            }
+            members.push(member);
+        }
+        structs.push(DeclaredStruct { name: name.to_string(), name_range: at..at + name.len(), members });
+    }
+    structs
+}
+
+/// An attribute's value: an integer literal, or the name of an integer `const`.
+fn attribute_value(module: &Module, attribute: &LayoutAttribute) -> Option<u32> {
+    let text = attribute.expression.trim();
+    let digits = text.trim_end_matches(['u', 'i']);
+    let literal = match digits.strip_prefix("0x").or_else(|| digits.strip_prefix("0X")) {
+        Some(hex) => u32::from_str_radix(hex, 16).ok(),
+        None => digits.parse().ok(),
+    };
+    literal.or_else(|| {
+        let constant = module.constants.iter().find(|(_, c)| c.name.as_deref() == Some(text))?.1;
+        match module.global_expressions[constant.init] {
+            naga::Expression::Literal(naga::Literal::U32(v)) => Some(v),
+            naga::Expression::Literal(naga::Literal::I32(v)) => u32::try_from(v).ok(),
+            naga::Expression::Literal(naga::Literal::AbstractInt(v)) => u32::try_from(v).ok(),
+            _ => None,
+        }
+    })
+}
+
+fn round_up(alignment: u32, n: u32) -> u32 {
+    n.div_ceil(alignment.max(1)) * alignment.max(1)
+}
+
+/// The spec's size and alignment of a non-struct type whose parts are laid out in `layouts`.
+fn plain_layout(inner: &TypeInner, layouts: &[Option<TypeLayout>]) -> Option<TypeLayout> {
+    let vector =
+        |n: u32, width: u32| TypeLayout { size: n * width, alignment: if n == 3 { 4 } else { n } * width };
+    Some(match *inner {
+        TypeInner::Scalar(s) | TypeInner::Atomic(s) if s.kind != naga::ScalarKind::Bool => {
+            vector(1, u32::from(s.width))
+        }
+        TypeInner::Vector { size, scalar } if scalar.kind != naga::ScalarKind::Bool => {
+            vector(size as u32, u32::from(scalar.width))
+        }
+        TypeInner::Matrix { columns, rows, scalar } => {
+            let column = vector(rows as u32, u32::from(scalar.width));
+            let stride = round_up(column.alignment, column.size);
+            TypeLayout { size: columns as u32 * stride, alignment: column.alignment }
+        }
+        TypeInner::Array { base, size, .. } => {
+            let element = layouts[base.index()]?;
+            let stride = round_up(element.alignment, element.size);
+            let count = match size {
+                ArraySize::Constant(n) => n.get(),
+                // As naga counts it: a runtime-sized array is as large as one element.
+                _ => 1,
+            };
+            TypeLayout { size: count.checked_mul(stride)?, alignment: element.alignment }
+        }
+        _ => return None,
+    })
+}
+
+/// Lays every struct of a freshly parsed module out by the spec, rewriting naga's member
+/// offsets, struct spans and array strides where they differ. Refuses (at the struct's
+/// file:line) attributes kiln cannot read and `@align` values below the type's alignment.
+pub(crate) fn correct(module: &mut Module, text: &str, mapper: &Mapper) -> Result<HostLayout, Diagnostic> {
+    let declared: HashMap<String, DeclaredStruct> =
+        scan_structs(text).into_iter().map(|s| (s.name.clone(), s)).collect();
+    let handles: Vec<Handle<Type>> = module.types.iter().map(|(h, _)| h).collect();
+    let mut layouts: Vec<Option<TypeLayout>> = vec![None; handles.len()];
+    let mut host = HostLayout::default();
+    for handle in handles {
+        let ty = module.types[handle].clone();
+        let (layout, corrected) = match &ty.inner {
+            TypeInner::Struct { members, span } => {
+                let written = ty.name.as_ref().and_then(|name| declared.get(name)).filter(|d| {
+                    d.members.len() == members.len()
+                        && d.members
+                            .iter()
+                            .zip(members)
+                            .all(|(d, m)| m.name.as_deref() == Some(d.name.as_str()))
+                });
+                let Some(placed) = place_members(module, members, written, &layouts, mapper)? else {
+                    continue;
+                };
+                let StructPlacement { offsets, members: member_layouts, alignment, size } = placed;
+                if let Some(name) = &ty.name {
+                    host.structs.insert(name.clone(), StructLayout { alignment, members: member_layouts });
+                }
+                let mut fixed = members.clone();
+                for (member, offset) in fixed.iter_mut().zip(&offsets) {
+                    member.offset = *offset;
+                }
+                let changed = fixed != *members || size != *span;
+                let corrected = TypeInner::Struct { members: fixed, span: size };
+                (TypeLayout { size, alignment }, changed.then_some(corrected))
+            }
+            TypeInner::Array { base, size, stride } => {
+                let Some(layout) = plain_layout(&ty.inner, &layouts) else { continue };
+                let element = layouts[base.index()].unwrap_or(layout);
+                let spec_stride = round_up(element.alignment, element.size);
+                let corrected = TypeInner::Array { base: *base, size: *size, stride: spec_stride };
+                (layout, (spec_stride != *stride).then_some(corrected))
+            }
+            inner => match plain_layout(inner, &layouts) {
+                Some(layout) => (layout, None),
+                None => continue,
+            },
+        };
+        layouts[handle.index()] = Some(layout);
+        if let Some(inner) = corrected {
+            let replacement = Type { name: ty.name.clone(), inner };
+            // `replace` panics when an equal type exists; naga never makes one (its stride and
+            // offsets are a function of the same inputs), but a panic here is not an option.
+            if module.types.get(&replacement).is_some() {
+                return Err(Diagnostic::error(
+                    "K0416",
+                    format!("internal error: two layouts of type `{}`", ty.name.as_deref().unwrap_or("?")),
+                ));
+            }
+            module.types.replace(handle, replacement);
+        }
+    }
+    Ok(host)
+}
+
+struct StructPlacement {
+    offsets: Vec<u32>,
+    members: Vec<(u32, u32)>,
+    alignment: u32,
+    size: u32,
+}
+
+/// Places a struct's members by the spec: each at its alignment (its `@align`, else its type's)
+/// after the previous member's size (its `@size`, else its type's). `None` when a member's type
+/// is not host-shareable (the struct's layout then does not matter).
+fn place_members(
+    module: &Module,
+    members: &[naga::StructMember],
+    written: Option<&DeclaredStruct>,
+    layouts: &[Option<TypeLayout>],
+    mapper: &Mapper,
+) -> Result<Option<StructPlacement>, Diagnostic> {
+    let mut placement = StructPlacement { offsets: Vec::new(), members: Vec::new(), alignment: 1, size: 0 };
+    let mut end = 0u32;
+    let struct_name = written.map_or("", |w| w.name.as_str());
+    for (index, member) in members.iter().enumerate() {
+        let Some(ty) = layouts[member.ty.index()] else { return Ok(None) };
+        let declared = written.map(|w| &w.members[index]);
+        let value = |attribute: &Option<LayoutAttribute>| -> Result<Option<u32>, Diagnostic> {
+            let Some(attribute) = attribute else { return Ok(None) };
+            match attribute_value(module, attribute) {
+                Some(v) => Ok(Some(v)),
+                None => Err(refusal(
+                    mapper,
+                    "K0414",
+                    format!(
+                        "kiln cannot read the value of `{}` on `{struct_name}.{}`",
+                        attribute.written,
+                        member.name.as_deref().unwrap_or_default()
+                    ),
+                    attribute.range.clone(),
+                    "not an integer literal or the name of an integer `const`",
+                    "write the value, or a `const` holding it (naga's IR keeps only the offsets it gives)",
+                )),
+            }
+        };
+        let explicit_align = value(&declared.and_then(|d| d.align.clone()))?;
+        let explicit_size = value(&declared.and_then(|d| d.size.clone()))?;
+        if let (Some(align), Some(declared)) = (explicit_align, declared)
+            && (align < ty.alignment || align % ty.alignment != 0)
+        {
+            let range = declared.align.as_ref().map_or(declared.range.clone(), |a| a.range.clone());
+            return Err(refusal(
+                mapper,
+                "K0417",
+                format!(
+                    "`@align({align})` on `{struct_name}.{}` is not a multiple of its type's alignment, {}",
+                    declared.name, ty.alignment
+                ),
+                range,
+                "not a multiple of this member's type's alignment",
+                &format!(
+                    "use `@align({})` or more: a struct's alignment includes its members' `@align`",
+                    ty.alignment
+                ),
+            ));
+        }
+        let alignment = explicit_align.unwrap_or(ty.alignment);
+        let size = explicit_size.unwrap_or(ty.size).max(ty.size);
+        let offset = round_up(alignment, end);
+        placement.offsets.push(offset);
+        placement.members.push((alignment, size));
+        placement.alignment = placement.alignment.max(alignment);
+        end = offset.saturating_add(size);
+    }
+    placement.size = round_up(placement.alignment, end);
+    Ok(Some(placement))
+}
+
+fn refusal(
+    mapper: &Mapper,
+    code: &'static str,
+    message: String,
+    range: Range<usize>,
+    label: &str,
+    help: &str,
+) -> Diagnostic {
+    mapper.diagnostic_at(
+        Diagnostic::error(code, message).help(help.to_string()),
+        vec![(range, label.to_string())],
+    )
+}
+
+/// The WGSL naga wrote for a module, with `@align`/`@size` written back on every struct member
+/// whose layout is not its type's own, so that the text gives the layout the source did (to naga
+/// and to a reader that follows the spec).
+pub fn annotate_wgsl(wgsl: String, module: &Module, host: &HostLayout) -> Result<String, Diagnostic> {
+    let mut layouter = naga::proc::Layouter::default();
+    if layouter.update(module.to_ctx()).is_err() {
+        return Ok(wgsl);
+    }
+    // naga's writer emits the module's structs in arena order, skipping predeclared ones.
+    let predeclared: Vec<Handle<Type>> = module.special_types.predeclared_types.values().copied().collect();
+    let mut attributes: Vec<Vec<String>> = Vec::new();
+    for (handle, ty) in module.types.iter() {
+        let TypeInner::Struct { members, .. } = &ty.inner else { continue };
+        if predeclared.contains(&handle)
+            || Some(handle) == module.special_types.external_texture_params
+            || Some(handle) == module.special_types.external_texture_transfer_function
+        {
+            continue;
+        }
+        let layout = ty.name.as_ref().and_then(|n| host.structs.get(n));
+        attributes.push(
+            members
+                .iter()
+                .enumerate()
+                .map(|(i, member)| {
+                    let Some(&(alignment, size)) = layout.and_then(|l| l.members.get(i)) else {
+                        return String::new();
+                    };
+                    let natural = &layouter[member.ty];
+                    let mut written = String::new();
+                    if alignment != natural.alignment.round_up(1) {
+                        written.push_str(&format!("@align({alignment}) "));
+                    }
+                    if size != natural.size {
+                        written.push_str(&format!("@size({size}) "));
+                    }
+                    written
+                })
+                .collect(),
+        );
+    }
+    if attributes.iter().flatten().all(String::is_empty) {
+        return Ok(wgsl);
+    }
+    let mut out = String::with_capacity(wgsl.len() + 64);
+    let mut structs = attributes.iter();
+    let mut pending: std::slice::Iter<String> = [].iter();
+    for line in wgsl.split_inclusive('\n') {
+        if line.starts_with("struct ") && line.trim_end().ends_with('{') {
+            pending = match structs.next() {
+                Some(members) => members.iter(),
+                None => return Err(writer_mismatch()),
+            };
+            out.push_str(line);
+            continue;
+        }
+        if line.starts_with('}') && pending.len() > 0 {
+            return Err(writer_mismatch());
+        }
+        match line.strip_prefix("    ").filter(|_| pending.len() > 0) {
+            Some(member) => {
+                out.push_str("    ");
+                out.push_str(pending.next().map_or("", String::as_str));
+                out.push_str(member);
+            }
+            None => out.push_str(line),
+        }
+    }
+    if structs.next().is_some() {
+        return Err(writer_mismatch());
+    }
+    Ok(out)
+}
+
+fn writer_mismatch() -> Diagnostic {
+    Diagnostic::error("K0409", "the WGSL writer's structs are not where kiln expects them")
+        .note("kiln writes each struct member's `@align`/`@size` into naga's WGSL; this naga writes structs differently")
+}
+
+/// Refuses what naga's SPIR-V writer gets wrong in uniform buffers, which Vulkan drivers would
+/// reject or misread: a two-column-row matrix (`matCx2`) anywhere but directly in the block's
+/// struct or alone (naga's std140 rewrite misses nested structs and panics or writes invalid
+/// access chains), and `f16` matrices with 3 or 4 rows (column stride 8; std140 needs 16).
+pub(crate) fn check_uniform_constructs(
+    module: &Module,
+    text: &str,
+    mapper: &Mapper,
+) -> Result<(), Diagnostic> {
+    for (_, global) in module.global_variables.iter() {
+        if global.space != AddressSpace::Uniform {
+            continue;
+        }
+        if let Some((struct_ty, member, why, help)) = uniform_problem(module, global.ty, false) {
+            let struct_name = module.types[struct_ty].name.clone().unwrap_or_default();
+            let declared = scan_structs(text).into_iter().find(|s| s.name == struct_name);
+            let range = declared.as_ref().and_then(|s| s.members.get(member)).map(|m| m.range.clone());
+            let member_name = match &module.types[struct_ty].inner {
+                TypeInner::Struct { members, .. } => members[member].name.clone().unwrap_or_default(),
+                _ => String::new(),
+            };
+            let diagnostic = Diagnostic::error(
+                "K0415",
+                format!("`{struct_name}.{member_name}` in uniform buffer `{}`: {why}", global.name.as_deref().unwrap_or("?")),
+            )
+            .help(help)
+            .note("naga's SPIR-V writer cannot lay this out for Vulkan (docs/diagnostics.md); wgpu compiles WGSL through it too");
+            return Err(mapper.diagnostic_at(
+                diagnostic,
+                range.into_iter().map(|r| (r, "this member".to_string())).collect(),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The first member of a uniform buffer's struct (or a struct nested in it, `nested`) that naga
+/// cannot write: (its struct, member index, why, help).
+fn uniform_problem(
+    module: &Module,
+    ty: Handle<Type>,
+    nested: bool,
+) -> Option<(Handle<Type>, usize, &'static str, &'static str)> {
+    let TypeInner::Struct { members, .. } = &module.types[ty].inner else { return None };
+    members.iter().enumerate().find_map(|(i, member)| {
+        let mut innermost = member.ty;
+        while let TypeInner::Array { base, .. } = module.types[innermost].inner {
+            innermost = base;
+        }
+        match module.types[innermost].inner {
+            TypeInner::Matrix { rows, scalar, .. } if scalar.width == 2 && rows != naga::VectorSize::Bi => Some((
+                ty,
+                i,
+                "an f16 matrix with 3 or 4 rows has a column stride of 8, which a Vulkan uniform buffer cannot have",
+                "use an f32 matrix, or move the block to a `var<storage, read>` buffer",
+            )),
+            TypeInner::Matrix { rows: naga::VectorSize::Bi, .. } if nested => Some((
+                ty,
+                i,
+                "a two-row matrix in a struct nested in a uniform buffer is written wrongly by naga's SPIR-V back end",
+                "move the matrix into the buffer's own struct, store its columns as `vec2` members, or use a `var<storage, read>` buffer",
+            )),
+            TypeInner::Struct { .. } => uniform_problem(module, innermost, true),
+            _ => None,
+        }
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn struct_declarations_are_read_with_their_layout_attributes() {
+        let text = "/* struct Hidden { a: f32 } */ struct A { @align(32) a: f32, // x\n @size(N) @location(0) b: array<vec4<f32>, 2>, c: mat2x2<f32> }\nfn f() {}";
+        let structs = scan_structs(text);
+        assert_eq!(structs.len(), 1);
+        let a = &structs[0];
+        assert_eq!(a.name, "A");
+        let names: Vec<&str> = a.members.iter().map(|m| m.name.as_str()).collect();
+        assert_eq!(names, ["a", "b", "c"]);
+        assert_eq!(a.members[0].align.as_ref().map(|x| x.expression.as_str()), Some("32"));
+        assert_eq!(a.members[1].size.as_ref().map(|x| x.expression.as_str()), Some("N"));
+        assert_eq!(&text[a.members[1].size.as_ref().map(|x| x.range.clone()).unwrap()], "@size(N)");
+        assert!(a.members[2].align.is_none() && a.members[2].size.is_none());
+    }
+}
