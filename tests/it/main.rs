@@ -20,4 +20,5 @@ mod scale;
 mod shards;
 mod support;
 mod tidy;
+mod trust;
 mod validators;

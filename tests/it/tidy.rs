@@ -19,6 +19,7 @@ const NOT_IN_GOLDENS: &[(&str, &str)] = &[
     ("K0002", "an I/O failure while reading a file that exists"),
     ("K0004", "a file over 16 MiB (tests/it/robustness.rs makes a sparse one)"),
     ("K0409", "a naga back end failing on a module naga validated"),
+    ("K0416", "a panic while compiling: tests/it/trust.rs injects one with KILN_INJECT_PANIC (debug builds)"),
     ("K0410", "the output folder cannot be written (tests/it/build.rs checks it, its text is the OS's)"),
     (
         "K0412",

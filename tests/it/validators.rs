@@ -32,6 +32,8 @@ fn outputs() -> Outputs {
         root().join("fixtures/warn/global_keywords"),
         root().join("fixtures/warn/gbk_comments.shader"),
         root().join("fixtures/macros"),
+        root().join("fixtures/blocks"),
+        root().join("fixtures/accepted"),
         generated,
     ];
     let folders = projects
@@ -108,7 +110,8 @@ fn every_wgsl_module_parses_and_validates_again() {
     assert!(modules.len() >= 250, "only {} WGSL modules", modules.len());
     let mut failures = Vec::new();
     for (name, bytes, features) in &modules {
-        let mut capabilities = Capabilities::empty();
+        // What every WebGPU device has, as kiln grants it, plus the module's features.
+        let mut capabilities = kiln::compile::target::webgpu_baseline();
         for feature in features {
             capabilities |= match feature.as_str() {
                 "shader-f16" => Capabilities::SHADER_FLOAT16,
