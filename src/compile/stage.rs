@@ -154,7 +154,8 @@ fn compile_unguarded(
         });
     }
     bind::apply(&mut module, request.layout);
-    let info = keep_entry_point(&mut module, request.entry, stage, request.allowed.capabilities(), mapper)?;
+    let info = keep_entry_point(&mut module, request.entry, stage, request.allowed.capabilities(), mapper)
+        .map_err(|d| located(d, request, mapper))?;
     check_limits(&module, request, mapper)?;
     layout::check_uniform_constructs(&module, request.text, mapper)?;
 
@@ -173,7 +174,7 @@ fn compile_unguarded(
             naga::back::spv::PipelineOptions { shader_stage: stage, entry_point: request.entry.to_string() };
         let words = naga::back::spv::write_vec(&module, &info, &options, Some(&pipeline))
             .map_err(|e| backend_error("SPIR-V", e.to_string()))?;
-        Some(words)
+        Some(super::spirv::sample_mask_as_array(words))
     } else {
         None
     };
@@ -227,6 +228,27 @@ fn backend_error(backend: &str, message: String) -> Diagnostic {
         .note("naga validated the module, so this is a gap in naga's back end; please report it")
 }
 
+/// Where the entry point's name is declared in the preprocessed text (`fn NAME`).
+fn entry_declaration(request: &StageRequest) -> Option<std::ops::Range<usize>> {
+    let needle = format!("fn {}", request.entry);
+    request.text.find(&needle).map(|at| at + 3..at + needle.len())
+}
+
+/// A diagnostic naga gave no place for (an entry point's interface, say), placed at the entry
+/// point's declaration, or else its pragma.
+fn located(diagnostic: Diagnostic, request: &StageRequest, mapper: &Mapper) -> Diagnostic {
+    if diagnostic.primary.is_some() {
+        return diagnostic;
+    }
+    let declaration = entry_declaration(request).map(|r| (r, "in this entry point".to_string()));
+    let diagnostic = mapper.diagnostic_at(diagnostic, declaration.into_iter().collect());
+    if diagnostic.primary.is_some() {
+        diagnostic
+    } else {
+        diagnostic.at(request.entry_pragma, "in this entry point")
+    }
+}
+
 /// Interpolators and colour targets beyond what the variant's target allows.
 fn check_limits(module: &naga::Module, request: &StageRequest, mapper: &Mapper) -> Result<(), Diagnostic> {
     let Some(entry) = module.entry_points.first() else { return Ok(()) };
@@ -246,8 +268,7 @@ fn check_limits(module: &naga::Module, request: &StageRequest, mapper: &Mapper) 
     if used <= limit {
         return Ok(());
     }
-    let needle = format!("fn {}", request.entry);
-    let declaration = request.text.find(&needle).map(|at| at + 3..at + needle.len());
+    let declaration = entry_declaration(request);
     let d = Diagnostic::error(
         code,
         format!("`{}` writes {used} {what}; target {} allows {limit}", request.entry, request.allowed.level),

@@ -12,6 +12,7 @@ mod integrity;
 mod layouts;
 mod list;
 mod materials;
+mod naga_corpus;
 mod parse;
 mod preprocess;
 mod robustness;

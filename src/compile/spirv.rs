@@ -1,0 +1,135 @@
+//! Corrections to the SPIR-V naga writes, where naga's output breaks a Vulkan rule that
+//! `spirv-val` checks: today the `SampleMask` built-in, which naga declares as a scalar `u32`
+//! while Vulkan requires an array of 32-bit integers (VUID-SampleMask-SampleMask-04359). The
+//! variable becomes an array of one, and each load and store reaches its element through an
+//! access chain; nothing else in the module changes.
+
+const OP_TYPE_INT: u32 = 21;
+const OP_TYPE_ARRAY: u32 = 28;
+const OP_TYPE_POINTER: u32 = 32;
+const OP_CONSTANT: u32 = 43;
+const OP_VARIABLE: u32 = 59;
+const OP_LOAD: u32 = 61;
+const OP_STORE: u32 = 62;
+const OP_ACCESS_CHAIN: u32 = 65;
+const OP_DECORATE: u32 = 71;
+const DECORATION_BUILT_IN: u32 = 11;
+const BUILT_IN_SAMPLE_MASK: u32 = 20;
+
+/// One instruction: its opcode and operand words.
+struct Instruction {
+    opcode: u32,
+    operands: Vec<u32>,
+}
+
+impl Instruction {
+    fn new(opcode: u32, operands: Vec<u32>) -> Instruction {
+        Instruction { opcode, operands }
+    }
+}
+
+/// `words` with every scalar `SampleMask` variable made an array of one. A module that does not
+/// parse as SPIR-V, or has no such variable, is returned as it is.
+pub fn sample_mask_as_array(words: Vec<u32>) -> Vec<u32> {
+    let Some(mut instructions) = parse(&words) else { return words };
+    let masks: Vec<u32> = instructions
+        .iter()
+        .filter(|i| {
+            i.opcode == OP_DECORATE
+                && i.operands.get(1..3) == Some(&[DECORATION_BUILT_IN, BUILT_IN_SAMPLE_MASK])
+        })
+        .map(|i| i.operands[0])
+        .collect();
+    if masks.is_empty() {
+        return words;
+    }
+    let mut bound = words[3];
+    let mut fresh = || {
+        bound += 1;
+        bound - 1
+    };
+    for mask in masks {
+        let Some(at) =
+            instructions.iter().position(|i| i.opcode == OP_VARIABLE && i.operands.get(1) == Some(&mask))
+        else {
+            continue;
+        };
+        let pointer = instructions[at].operands[0];
+        let Some((class, element)) = instructions
+            .iter()
+            .find(|i| i.opcode == OP_TYPE_POINTER && i.operands[0] == pointer)
+            .map(|i| (i.operands[1], i.operands[2]))
+        else {
+            continue;
+        };
+        // Only a scalar 32-bit integer needs it: an array (from another writer) is left alone.
+        if !instructions.iter().any(|i| i.opcode == OP_TYPE_INT && i.operands.first() == Some(&element)) {
+            continue;
+        }
+        let unsigned = instructions
+            .iter()
+            .find(|i| i.opcode == OP_TYPE_INT && i.operands.get(1..3) == Some(&[32, 0]))
+            .map(|i| i.operands[0]);
+        let (zero, one, array, array_pointer) = (fresh(), fresh(), fresh(), fresh());
+        let mut declarations = Vec::new();
+        let index_type = match unsigned {
+            Some(id) => id,
+            None => {
+                let id = fresh();
+                declarations.push(Instruction::new(OP_TYPE_INT, vec![id, 32, 0]));
+                id
+            }
+        };
+        declarations.push(Instruction::new(OP_CONSTANT, vec![index_type, zero, 0]));
+        declarations.push(Instruction::new(OP_CONSTANT, vec![index_type, one, 1]));
+        declarations.push(Instruction::new(OP_TYPE_ARRAY, vec![array, element, one]));
+        declarations.push(Instruction::new(OP_TYPE_POINTER, vec![array_pointer, class, array]));
+        instructions[at].operands[0] = array_pointer;
+        instructions.splice(at..at, declarations);
+        // Each load and store of the variable goes through its one element.
+        let mut i = 0;
+        while i < instructions.len() {
+            let operand = match instructions[i].opcode {
+                OP_LOAD => 2,
+                OP_STORE => 0,
+                _ => {
+                    i += 1;
+                    continue;
+                }
+            };
+            if instructions[i].operands.get(operand) != Some(&mask) {
+                i += 1;
+                continue;
+            }
+            let chain = fresh();
+            instructions[i].operands[operand] = chain;
+            instructions.insert(i, Instruction::new(OP_ACCESS_CHAIN, vec![pointer, chain, mask, zero]));
+            i += 2;
+        }
+    }
+    let mut out = Vec::with_capacity(words.len() + 32);
+    out.extend_from_slice(&words[..5]);
+    out[3] = bound;
+    for instruction in instructions {
+        out.push(((instruction.operands.len() as u32 + 1) << 16) | instruction.opcode);
+        out.extend(instruction.operands);
+    }
+    out
+}
+
+fn parse(words: &[u32]) -> Option<Vec<Instruction>> {
+    if words.len() < 5 || words[0] != 0x0723_0203 {
+        return None;
+    }
+    let mut instructions = Vec::new();
+    let mut at = 5;
+    while at < words.len() {
+        let count = (words[at] >> 16) as usize;
+        if count == 0 || at + count > words.len() {
+            return None;
+        }
+        instructions.push(Instruction::new(words[at] & 0xffff, words[at + 1..at + count].to_vec()));
+        at += count;
+    }
+    Some(instructions)
+}
