@@ -292,7 +292,29 @@ fn unoptimised_warning(compiled: usize, opt_level: &str) -> Vec<String> {
 
 #[cfg(test)]
 mod tests {
-    use super::unoptimised_warning;
+    use super::{unoptimised_warning, watched};
+    use std::path::{Path, PathBuf};
+
+    #[test]
+    fn nothing_under_out_dir_is_watched_and_a_folder_holding_it_is_watched_through_its_other_entries() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let root = dir.path();
+        for path in ["shaders/Lit.shader", "shaders/Lit.wgsl", "target/out/scene/A.mat", "target/keep.txt"] {
+            std::fs::create_dir_all(root.join(path).parent().expect("folder")).expect("mkdir");
+            std::fs::write(root.join(path), "x").expect("write");
+        }
+        let out_dir = root.join("target/out");
+        let read: Vec<PathBuf> =
+            ["shaders/Lit.shader", "target/out/scene/A.mat"].map(|p| root.join(p)).into();
+        // The project folder holds OUT_DIR (a crate pointing kiln at itself).
+        let searched = [root.join("shaders"), root.to_path_buf(), root.join("target/out/scene")];
+        let paths = watched(read.iter().map(PathBuf::as_path), &searched, &out_dir);
+        let relative: Vec<String> = paths
+            .iter()
+            .map(|p| p.strip_prefix(root).unwrap_or(Path::new("?")).to_string_lossy().replace('\\', "/"))
+            .collect();
+        assert_eq!(relative, ["shaders", "shaders/Lit.shader", "target/keep.txt"]);
+    }
 
     #[test]
     fn only_many_modules_compiled_unoptimised_are_worth_a_warning() {

@@ -36,6 +36,13 @@ struct TypeLayout {
     alignment: u32,
 }
 
+impl TypeLayout {
+    /// The stride of an array of this type (and of a matrix's columns).
+    fn stride(self) -> u32 {
+        round_up(self.alignment, self.size)
+    }
+}
+
 impl HostLayout {
     /// The spec's alignment of a type (naga's `Layouter` gives a struct the largest alignment of
     /// its members' types, ignoring `@align`).
@@ -245,12 +252,11 @@ fn plain_layout(inner: &TypeInner, layouts: &[Option<TypeLayout>]) -> Option<Typ
         }
         TypeInner::Matrix { columns, rows, scalar } => {
             let column = vector(rows as u32, u32::from(scalar.width));
-            let stride = round_up(column.alignment, column.size);
-            TypeLayout { size: columns as u32 * stride, alignment: column.alignment }
+            TypeLayout { size: columns as u32 * column.stride(), alignment: column.alignment }
         }
         TypeInner::Array { base, size, .. } => {
             let element = layouts[base.index()]?;
-            let stride = round_up(element.alignment, element.size);
+            let stride = element.stride();
             let count = match size {
                 ArraySize::Constant(n) => n.get(),
                 // As naga counts it: a runtime-sized array is as large as one element.
@@ -298,9 +304,12 @@ pub(crate) fn correct(module: &mut Module, text: &str, mapper: &Mapper) -> Resul
                 (TypeLayout { size, alignment }, changed.then_some(corrected))
             }
             TypeInner::Array { base, size, stride } => {
-                let Some(layout) = plain_layout(&ty.inner, &layouts) else { continue };
-                let element = layouts[base.index()].unwrap_or(layout);
-                let spec_stride = round_up(element.alignment, element.size);
+                let (Some(layout), Some(element)) =
+                    (plain_layout(&ty.inner, &layouts), layouts[base.index()])
+                else {
+                    continue;
+                };
+                let spec_stride = element.stride();
                 let corrected = TypeInner::Array { base: *base, size: *size, stride: spec_stride };
                 (layout, (spec_stride != *stride).then_some(corrected))
             }
@@ -370,7 +379,7 @@ fn place_members(
         let explicit_align = value(&declared.and_then(|d| d.align.clone()))?;
         let explicit_size = value(&declared.and_then(|d| d.size.clone()))?;
         if let (Some(align), Some(declared)) = (explicit_align, declared)
-            && (align < ty.alignment || align % ty.alignment != 0)
+            && (align < ty.alignment || !align.is_multiple_of(ty.alignment))
         {
             let range = declared.align.as_ref().map_or(declared.range.clone(), |a| a.range.clone());
             return Err(refusal(

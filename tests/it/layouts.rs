@@ -126,7 +126,8 @@ fn uniform_violation(ty: &Ty, structs: &Structs) -> Option<String> {
         Ty::Array(_, None) => Some("a runtime-sized array in a uniform buffer".into()),
         Ty::Array(element, Some(_)) => {
             let stride = stride_of(element, structs);
-            if stride % uniform_required_align(element, structs) != 0 || stride % 16 != 0 {
+            if !stride.is_multiple_of(uniform_required_align(element, structs)) || !stride.is_multiple_of(16)
+            {
                 return Some(format!("array stride {stride} is not a multiple of 16"));
             }
             uniform_violation(element, structs)
@@ -135,7 +136,7 @@ fn uniform_violation(ty: &Ty, structs: &Structs) -> Option<String> {
             let def = &structs[name];
             let offsets = offsets(def, structs);
             for (i, member) in def.members.iter().enumerate() {
-                if offsets[i] % uniform_required_align(&member.ty, structs) != 0 {
+                if !offsets[i].is_multiple_of(uniform_required_align(&member.ty, structs)) {
                     return Some(format!("{name}.{} at offset {}", member.name, offsets[i]));
                 }
                 if let (Ty::Struct(_), Some(next)) = (&member.ty, offsets.get(i + 1))
@@ -303,7 +304,10 @@ fn random_case(index: usize, rng: &mut Rng) -> Case {
 }
 
 /// The spec's own examples (WGSL § Memory Layout), with the numbers the spec gives.
-fn spec_examples() -> Vec<(Case, Vec<(&'static str, Vec<u32>, u32, u32)>)> {
+/// A struct of a spec example: its name, member offsets, size and alignment as the spec gives them.
+type SpecNumbers = (&'static str, Vec<u32>, u32, u32);
+
+fn spec_examples() -> Vec<(Case, Vec<SpecNumbers>)> {
     let member = |name: &str, ty: Ty, align: Option<u32>, size: Option<u32>| MemberDef {
         name: name.to_string(),
         ty,

@@ -167,7 +167,7 @@ fn naga_s_wgsl_tests_build_through_kiln_as_naga_judges_them() {
         ..BuildMode::default()
     };
     let (result, mut diagnostics) =
-        build_project(&mut store, &[project.clone()], &mode, &|_, _| {}).expect("project");
+        build_project(&mut store, std::slice::from_ref(&project), &mode, &|_, _| {}).expect("project");
     diagnostics.extend(result.diagnostics);
     // Each error by the corpus file it is about (its own text, or the wrapper including it).
     let mut errors: BTreeMap<String, Vec<kiln::diagnostics::Diagnostic>> = BTreeMap::new();
