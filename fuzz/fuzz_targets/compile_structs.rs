@@ -41,7 +41,7 @@ fn plain(c: &mut Choices, half: bool) -> String {
 }
 
 fn member_type(c: &mut Choices, half: bool, earlier: &[String]) -> String {
-    let mut element = |c: &mut Choices| {
+    let element = |c: &mut Choices| {
         if !earlier.is_empty() && c.pick(3) == 0 { earlier[c.pick(earlier.len())].clone() } else { plain(c, half) }
     };
     match c.pick(6) {

@@ -31,6 +31,10 @@ impl Instruction {
 /// `words` with every scalar `SampleMask` variable made an array of one. A module that does not
 /// parse as SPIR-V, or has no such variable, is returned as it is.
 pub fn sample_mask_as_array(words: Vec<u32>) -> Vec<u32> {
+    // Most modules have none: found without building the instruction list.
+    if !decorates_sample_mask(&words) {
+        return words;
+    }
     let Some(mut instructions) = parse(&words) else { return words };
     let masks: Vec<u32> = instructions
         .iter()
@@ -115,6 +119,24 @@ pub fn sample_mask_as_array(words: Vec<u32>) -> Vec<u32> {
         out.extend(instruction.operands);
     }
     out
+}
+
+/// Whether any instruction is `OpDecorate %x BuiltIn SampleMask`.
+fn decorates_sample_mask(words: &[u32]) -> bool {
+    let mut at = 5;
+    while at < words.len() {
+        let count = (words[at] >> 16) as usize;
+        if count == 0 {
+            return false;
+        }
+        if words[at] & 0xffff == OP_DECORATE
+            && words.get(at + 2..at + 4) == Some(&[DECORATION_BUILT_IN, BUILT_IN_SAMPLE_MASK])
+        {
+            return true;
+        }
+        at += count;
+    }
+    false
 }
 
 fn parse(words: &[u32]) -> Option<Vec<Instruction>> {

@@ -944,6 +944,27 @@ fn every_output_lays_random_structs_out_as_the_wgsl_spec_does() {
                 }
             },
         );
+        // `kiln reflect` (one case in ten: it compiles the variant again).
+        if case.index % 10 == 0 {
+            let request = kiln::project::VariantRequest {
+                shader: dir.path().join(format!("valid/project/Case{}.shader", case.index)),
+                pass: None,
+                keywords: Vec::new(),
+                stage: kiln::preprocess::Stage::Fragment,
+            };
+            let (json, _) =
+                kiln::project::reflect_variant(&mut SourceStore::new(), &request).expect("reflect");
+            let blocks: Vec<kiln::reflect::UniformBlock> = json
+                .and_then(|j| serde_json::from_value(j["uniform_blocks"].clone()).ok())
+                .unwrap_or_default();
+            check(
+                "kiln reflect",
+                match blocks.iter().find(|b| b.name == "blk") {
+                    None => Err(format!("{name}: `kiln reflect` gives no block")),
+                    Some(block) => compare_members(&block.members, &structs[root], &structs, &name),
+                },
+            );
+        }
         // The generated Rust, struct by struct (names as WGSL's; layouts named once).
         for def in structs.values() {
             let Some((size, fields)) = assertions.get(&def.name) else { continue };

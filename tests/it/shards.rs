@@ -131,6 +131,19 @@ fn four_concurrent_shards_merge_into_the_bytes_of_one_build() {
     let output = kiln::Build::new(&project).prebuilt(&merged).out_dir(&out_dir).execute().expect("builds");
     assert_eq!(output.summary.compiled, 0);
     assert!(output.cargo_lines.iter().any(|l| l.contains("nothing compiled")), "{:?}", output.cargo_lines);
+    // It asks cargo to watch what a build that compiled does, includes too.
+    let compiled_here =
+        kiln::Build::new(&project).out_dir(dir.path().join("out_dir2")).execute().expect("builds");
+    assert!(compiled_here.summary.compiled > 0);
+    let watched = |lines: &[String]| -> Vec<String> {
+        lines.iter().filter(|l| l.starts_with("cargo:rerun-if-changed=")).cloned().collect()
+    };
+    assert_eq!(watched(&output.cargo_lines), watched(&compiled_here.cargo_lines));
+    assert!(
+        watched(&output.cargo_lines).iter().any(|l| l.ends_with("SynthPass.wgsl")),
+        "{:?}",
+        output.cargo_lines
+    );
 }
 
 #[test]
