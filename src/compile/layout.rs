@@ -272,6 +272,11 @@ fn plain_layout(inner: &TypeInner, layouts: &[Option<TypeLayout>]) -> Option<Typ
 /// offsets, struct spans and array strides where they differ. Refuses (at the struct's
 /// file:line) attributes kiln cannot read and `@align` values below the type's alignment.
 pub(crate) fn correct(module: &mut Module, text: &str, mapper: &Mapper) -> Result<HostLayout, Diagnostic> {
+    // Without `@align` naga lays every struct out as the spec does, and without `@size` too
+    // there is nothing to write back: most texts need no more than this look.
+    if !has_layout_attribute(text) {
+        return Ok(HostLayout::default());
+    }
     let declared: HashMap<String, DeclaredStruct> =
         scan_structs(text).into_iter().map(|s| (s.name.clone(), s)).collect();
     let handles: Vec<Handle<Type>> = module.types.iter().map(|(h, _)| h).collect();
@@ -333,6 +338,14 @@ pub(crate) fn correct(module: &mut Module, text: &str, mapper: &Mapper) -> Resul
         }
     }
     Ok(host)
+}
+
+/// Whether the text has an `@align` or `@size` attribute (or the words in a comment).
+fn has_layout_attribute(text: &str) -> bool {
+    text.match_indices('@').any(|(at, _)| {
+        let name = text[at + 1..].trim_start();
+        name.starts_with("align") || name.starts_with("size")
+    })
 }
 
 struct StructPlacement {
@@ -427,6 +440,9 @@ fn refusal(
 /// whose layout is not its type's own, so that the text gives the layout the source did (to naga
 /// and to a reader that follows the spec).
 pub fn annotate_wgsl(wgsl: String, module: &Module, host: &HostLayout) -> Result<String, Diagnostic> {
+    if host.structs.is_empty() {
+        return Ok(wgsl);
+    }
     let mut layouter = naga::proc::Layouter::default();
     if layouter.update(module.to_ctx()).is_err() {
         return Ok(wgsl);
