@@ -18,6 +18,14 @@ use std::fmt::Write as _;
 const PRELUDE: &str = r#"#[cfg(target_endian = "big")]
 compile_error!("kiln embeds SPIR-V as little-endian words");
 
+/// The structs below pad with byte arrays and hold WGSL arrays of any length, for which bytemuck
+/// derives `Pod` with its `min_const_generics` feature. Without it this names what to add:
+/// `bytemuck = { version = "1", features = ["derive", "min_const_generics"] }`.
+const _: fn() = || {
+    fn bytemuck_needs_its_min_const_generics_feature<T: bytemuck::Pod>() {}
+    bytemuck_needs_its_min_const_generics_feature::<[u8; 33]>();
+};
+
 /// Bytes aligned for reading as `u32` words.
 #[repr(C, align(4))]
 struct Aligned<B: ?Sized>(B);

@@ -1097,6 +1097,53 @@ fn every_output_lays_random_structs_out_as_the_wgsl_spec_does() {
     assert!(structs_checked >= 500, "only {structs_checked} structs");
 }
 
+/// The generated Rust of a quarter of the cases, compiled by cargo: rustc evaluates its `const`
+/// size and offset assertions on the real `#[repr(C)]` layouts (and the offsets asserted are
+/// the spec's, checked above), so a struct the renderer fills has the WGSL layout.
+#[test]
+fn the_generated_rust_of_random_structs_compiles_with_its_layout_assertions() {
+    let all = cases();
+    let sample: Vec<&Case> = all.iter().filter(|c| verdict(c) == Verdict::Valid).step_by(4).collect();
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (manifest, diagnostics, store) = build(dir.path(), &sample);
+    assert!(
+        !kiln::diagnostics::has_errors(&diagnostics),
+        "{}",
+        kiln::diagnostics::render_plain(&store, &diagnostics)
+    );
+    let manifest = manifest.expect("manifest");
+    let krate = dir.path().join("crate");
+    std::fs::create_dir_all(krate.join("src")).expect("crate");
+    std::fs::write(
+        krate.join("Cargo.toml"),
+        "[package]\nname = \"kiln-layouts-check\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n\
+         [dependencies]\nbytemuck = { version = \"1\", features = [\"derive\", \"min_const_generics\"] }\n\n[workspace]\n",
+    )
+    .expect("Cargo.toml");
+    // The packs beside the module, as a build script's OUT_DIR holds them.
+    for (path, bytes) in crate::support::tree(&dir.path().join("out")) {
+        let to = krate.join("src/out").join(path);
+        std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
+        std::fs::write(to, bytes).expect("pack");
+    }
+    let module = kiln::codegen::generate(&manifest, "out");
+    std::fs::write(krate.join("src/shaders.rs"), &module).expect("module");
+    std::fs::write(
+        krate.join("src/lib.rs"),
+        "#![allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]\npub mod shaders;\n",
+    )
+    .expect("lib.rs");
+    let run = crate::support::cargo_scratch(&krate, &["build"]);
+    assert!(
+        run.status.success(),
+        "the generated Rust does not compile:\n{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let assertions = module.matches("const _: () = assert!(core::mem::").count();
+    println!("{} cases' generated Rust compiled: {assertions} size and offset assertions hold", sample.len());
+    assert!(assertions > 500, "{assertions}");
+}
+
 #[test]
 fn structs_the_spec_or_kiln_refuses_are_refused_at_their_struct() {
     let all = cases();

@@ -175,3 +175,19 @@ pub fn tool(name: &str, debian_package: &str, test: &str) -> bool {
     }
     found
 }
+
+/// Runs cargo on a scratch crate the tests wrote (a renderer's build script, generated Rust), in a
+/// target folder of its own that outlives the test, so that its dependencies (kiln as a
+/// build-dependency, bytemuck) compile once per machine. The crate carries a copy of kiln's
+/// `Cargo.lock` so that `--offline` finds every version.
+pub fn cargo_scratch(krate: &Path, args: &[&str]) -> Output {
+    std::fs::copy(root().join("Cargo.lock"), krate.join("Cargo.lock")).expect("lock file");
+    std::process::Command::new(env!("CARGO"))
+        .args(args)
+        .arg("--offline")
+        .current_dir(krate)
+        .env("CARGO_TARGET_DIR", root().join("target/scratch-crates"))
+        .env_remove("RUSTFLAGS")
+        .output()
+        .expect("cargo runs")
+}

@@ -152,7 +152,7 @@ fn scratch_crate(dir: &Path) -> PathBuf {
         "Cargo.toml",
         &format!(
             "[package]\nname = \"scratch-renderer\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n\
-             [dependencies]\nbytemuck = {{ version = \"1\", features = [\"derive\"] }}\n\n\
+             [dependencies]\nbytemuck = {{ version = \"1\", features = [\"derive\", \"min_const_generics\"] }}\n\n\
              [build-dependencies]\nkiln = {{ path = {:?}, default-features = false }}\n\n[workspace]\n",
             root().display().to_string().replace('\\', "/")
         ),
@@ -184,21 +184,12 @@ fn scratch_crate(dir: &Path) -> PathBuf {
     );
     write("shaders/Tint.wgsl", "fn tint() -> f32 { return 0.25; }\n");
     write("scene/materials/Plain.mat", "shader = \"Scratch/Tint\"\n");
-    std::fs::copy(root().join("Cargo.lock"), krate.join("Cargo.lock")).expect("lock file");
     krate
 }
 
 /// `cargo build` of the crate: its `OUT_DIR` and how many times its build script has run.
 fn cargo_build(krate: &Path) -> (PathBuf, usize) {
-    // A target folder of its own that outlives the test, so that kiln compiles once per machine.
-    let target = root().join("target/build-script-test");
-    let run = Command::new(env!("CARGO"))
-        .args(["build", "--offline", "--message-format=json-render-diagnostics"])
-        .current_dir(krate)
-        .env("CARGO_TARGET_DIR", &target)
-        .env_remove("RUSTFLAGS")
-        .output()
-        .expect("cargo runs");
+    let run = crate::support::cargo_scratch(krate, &["build", "--message-format=json-render-diagnostics"]);
     assert!(run.status.success(), "cargo build failed:\n{}", String::from_utf8_lossy(&run.stderr));
     let stdout = String::from_utf8_lossy(&run.stdout);
     let out_dir = stdout
