@@ -11,6 +11,7 @@
 
 use super::Mapper;
 use crate::diagnostics::Diagnostic;
+use crate::preprocess::comment_len;
 use naga::{AddressSpace, ArraySize, Handle, Module, Type, TypeInner};
 use std::collections::HashMap;
 use std::ops::Range;
@@ -98,25 +99,8 @@ fn tokens(text: &str) -> Vec<(&str, usize)> {
         let c = bytes[i];
         if c.is_ascii_whitespace() {
             i += 1;
-        } else if bytes[i..].starts_with(b"//") {
-            i += bytes[i..].iter().position(|&b| b == b'\n').unwrap_or(bytes.len() - i);
-        } else if bytes[i..].starts_with(b"/*") {
-            // WGSL block comments nest.
-            let mut depth = 0;
-            while i < bytes.len() {
-                if bytes[i..].starts_with(b"/*") {
-                    depth += 1;
-                    i += 2;
-                } else if bytes[i..].starts_with(b"*/") {
-                    depth -= 1;
-                    i += 2;
-                    if depth == 0 {
-                        break;
-                    }
-                } else {
-                    i += 1;
-                }
-            }
+        } else if let Some(len) = comment_len(&bytes[i..]) {
+            i += len;
         } else if c == b'_' || c.is_ascii_alphanumeric() || c >= 0x80 {
             let start = i;
             while i < bytes.len()

@@ -64,6 +64,34 @@ fn punctuator_len(rest: &[u8]) -> usize {
     }
 }
 
+/// The length of the comment `rest` starts with: a `//` comment up to its line's end, or a
+/// `/* */` comment, which nest in WGSL (an unclosed one runs to the end).
+pub(crate) fn comment_len(rest: &[u8]) -> Option<usize> {
+    if rest.starts_with(b"//") {
+        return Some(rest.iter().position(|&b| b == b'\n').unwrap_or(rest.len()));
+    }
+    if !rest.starts_with(b"/*") {
+        return None;
+    }
+    let mut depth = 0;
+    let mut i = 0;
+    while i < rest.len() {
+        if rest[i..].starts_with(b"/*") {
+            depth += 1;
+            i += 2;
+        } else if rest[i..].starts_with(b"*/") {
+            depth -= 1;
+            i += 2;
+            if depth == 0 {
+                break;
+            }
+        } else {
+            i += 1;
+        }
+    }
+    Some(i)
+}
+
 pub(crate) fn is_ident_start(b: u8) -> bool {
     b.is_ascii_alphabetic() || b == b'_' || b >= 0x80
 }
@@ -98,26 +126,8 @@ impl<'a> Lexer<'a> {
             let rest = &bytes[self.pos..self.end];
             if rest[0].is_ascii_whitespace() {
                 self.pos += 1;
-            } else if rest.starts_with(b"//") {
-                self.pos += rest.iter().position(|&b| b == b'\n').unwrap_or(rest.len());
-            } else if rest.starts_with(b"/*") {
-                let mut depth = 0;
-                let mut i = 0;
-                while i < rest.len() {
-                    if rest[i..].starts_with(b"/*") {
-                        depth += 1;
-                        i += 2;
-                    } else if rest[i..].starts_with(b"*/") {
-                        depth -= 1;
-                        i += 2;
-                        if depth == 0 {
-                            break;
-                        }
-                    } else {
-                        i += 1;
-                    }
-                }
-                self.pos += i;
+            } else if let Some(len) = comment_len(rest) {
+                self.pos += len;
             } else {
                 break;
             }

@@ -454,15 +454,7 @@ fn a_build_script_builds_the_variants_a_usage_log_names() {
 #[test]
 fn a_shader_copied_under_another_name_is_compiled_once() {
     let dir = tempfile::tempdir().expect("temp dir");
-    let project = dir.path().join("project");
-    for entry in walkdir::WalkDir::new(root().join("fixtures/project")).into_iter().filter_map(Result::ok) {
-        let relative = entry.path().strip_prefix(root().join("fixtures/project")).expect("inside");
-        if entry.file_type().is_file() && !relative.starts_with("build") {
-            let to = project.join(relative);
-            std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
-            std::fs::copy(entry.path(), to).expect("copy");
-        }
-    }
+    let project = crate::support::example_project_copy(dir.path());
     let original = std::fs::read_to_string(project.join("shaders/Lit.shader")).expect("Lit");
     let copy = original.replace("Shader \"Custom RP/Lit\"", "Shader \"Custom RP/Lit Copy\"");
     assert_ne!(copy, original);

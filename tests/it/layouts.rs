@@ -830,6 +830,17 @@ fn build(dir: &Path, cases: &[&Case]) -> (Option<Manifest>, Vec<kiln::diagnostic
     (Manifest::read(&output).ok(), diagnostics, store)
 }
 
+/// [`build`] of cases that must build: the manifest, or the diagnostics as the failure.
+fn build_valid(dir: &Path, cases: &[&Case]) -> Manifest {
+    let (manifest, diagnostics, store) = build(dir, cases);
+    assert!(
+        !kiln::diagnostics::has_errors(&diagnostics),
+        "{}",
+        kiln::diagnostics::render_plain(&store, &diagnostics)
+    );
+    manifest.expect("manifest")
+}
+
 #[test]
 fn the_reference_gives_the_spec_examples_numbers() {
     for (case, expected) in spec_examples() {
@@ -1105,13 +1116,7 @@ fn the_generated_rust_of_random_structs_compiles_with_its_layout_assertions() {
     let all = cases();
     let sample: Vec<&Case> = all.iter().filter(|c| verdict(c) == Verdict::Valid).step_by(4).collect();
     let dir = tempfile::tempdir().expect("temp dir");
-    let (manifest, diagnostics, store) = build(dir.path(), &sample);
-    assert!(
-        !kiln::diagnostics::has_errors(&diagnostics),
-        "{}",
-        kiln::diagnostics::render_plain(&store, &diagnostics)
-    );
-    let manifest = manifest.expect("manifest");
+    let manifest = build_valid(dir.path(), &sample);
     let krate = dir.path().join("crate");
     std::fs::create_dir_all(krate.join("src")).expect("crate");
     std::fs::write(
@@ -1217,13 +1222,7 @@ fn the_gpu_reads_every_scalar_where_the_spec_puts_it() {
         .collect();
     assert!(sample.len() >= 20, "{} cases", sample.len());
     let dir = tempfile::tempdir().expect("temp dir");
-    let (manifest, diagnostics, store) = build(dir.path(), &sample);
-    assert!(
-        !kiln::diagnostics::has_errors(&diagnostics),
-        "{}",
-        kiln::diagnostics::render_plain(&store, &diagnostics)
-    );
-    let manifest = manifest.expect("manifest");
+    let manifest = build_valid(dir.path(), &sample);
     let output = dir.path().join("out");
     let mut scalars = 0;
     for case in &sample {

@@ -191,3 +191,17 @@ pub fn cargo_scratch(krate: &Path, args: &[&str]) -> Output {
         .output()
         .expect("cargo runs")
 }
+
+/// A copy of the bundled example project (without build output) in `dir/project`.
+pub fn example_project_copy(dir: &Path) -> PathBuf {
+    let project = dir.join("project");
+    for entry in walkdir::WalkDir::new(root().join("fixtures/project")).into_iter().filter_map(Result::ok) {
+        let relative = entry.path().strip_prefix(root().join("fixtures/project")).expect("inside");
+        if entry.file_type().is_file() && !relative.starts_with("build") {
+            let to = project.join(relative);
+            std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
+            std::fs::copy(entry.path(), to).expect("copy");
+        }
+    }
+    project
+}

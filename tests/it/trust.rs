@@ -2,23 +2,9 @@
 //! diagnostic and never damages what is there; nothing goes stale, seen the way cargo and the
 //! CLI see it (a scratch crate with the README's build script, built with cargo itself).
 
-use crate::support::{kiln, root, tree};
+use crate::support::{example_project_copy, kiln, root, tree};
 use std::path::{Path, PathBuf};
 use std::process::Command;
-
-/// A copy of the bundled example project in a temporary folder.
-fn project_copy(dir: &Path) -> PathBuf {
-    let project = dir.join("project");
-    for entry in walkdir::WalkDir::new(root().join("fixtures/project")).into_iter().filter_map(Result::ok) {
-        let relative = entry.path().strip_prefix(root().join("fixtures/project")).expect("inside");
-        if entry.file_type().is_file() && !relative.starts_with("build") {
-            let to = project.join(relative);
-            std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
-            std::fs::copy(entry.path(), to).expect("copy");
-        }
-    }
-    project
-}
 
 fn text(path: &Path) -> &str {
     path.to_str().expect("UTF-8 path")
@@ -27,7 +13,7 @@ fn text(path: &Path) -> &str {
 #[test]
 fn a_panic_while_compiling_one_module_is_a_diagnostic_and_the_last_output_stays_whole() {
     let dir = tempfile::tempdir().expect("temp dir");
-    let project = project_copy(dir.path());
+    let project = example_project_copy(dir.path());
     let output = dir.path().join("out");
     let first = kiln(&["build", text(&project), "--output", text(&output)]);
     assert_eq!(first.status.code(), Some(0), "{}", String::from_utf8_lossy(&first.stderr));
@@ -90,7 +76,7 @@ fn variants(output: &Path) -> usize {
 #[test]
 fn a_build_without_the_variant_log_of_the_last_is_not_a_no_op() {
     let dir = tempfile::tempdir().expect("temp dir");
-    let project = project_copy(dir.path());
+    let project = example_project_copy(dir.path());
     let output = dir.path().join("out");
     let log = dir.path().join("usage.jsonl");
     std::fs::write(
@@ -115,7 +101,7 @@ fn a_build_without_the_variant_log_of_the_last_is_not_a_no_op() {
 #[test]
 fn a_shard_in_a_folder_holding_a_whole_build_writes_its_own_objects() {
     let dir = tempfile::tempdir().expect("temp dir");
-    let project = project_copy(dir.path());
+    let project = example_project_copy(dir.path());
     let (whole, one, two, merged) =
         (dir.path().join("whole"), dir.path().join("one"), dir.path().join("two"), dir.path().join("merged"));
     assert_eq!(kiln(&["build", text(&project), "--output", text(&whole)]).status.code(), Some(0));
