@@ -1,7 +1,7 @@
 //! The one diagnostic type every stage reports with, and the one place that renders it: as text
 //! through codespan-reporting, or as JSON for machines.
 
-use crate::source::{SourceStore, Span};
+use crate::source::{FileId, SourceStore, Span, TextProblem};
 use codespan_reporting::diagnostic as cs;
 use codespan_reporting::term;
 use serde::Serialize;
@@ -79,6 +79,29 @@ impl Diagnostic {
 
     pub fn is_error(&self) -> bool {
         self.severity == Severity::Error
+    }
+}
+
+/// The warnings reading `file` gave: bytes that are not UTF-8, NUL bytes.
+pub fn text_warnings(store: &SourceStore, file: FileId) -> Vec<Diagnostic> {
+    store.text_problems(file).iter().map(|&problem| text_warning(problem, file)).collect()
+}
+
+fn text_warning(problem: TextProblem, file: FileId) -> Diagnostic {
+    match problem {
+        TextProblem::NotUtf8 { at, count } => {
+            let places = if count == 1 { "1 place".to_string() } else { format!("{count} places") };
+            Diagnostic::warning("K0001", "file is not valid UTF-8")
+                .at(Span::new(file, at..at + char::REPLACEMENT_CHARACTER.len_utf8()), "first byte that is not UTF-8")
+                .note(format!(
+                    "bytes that are not UTF-8 ({places}) are read as U+FFFD; they are harmless in \
+                     comments, and an error anywhere kiln uses them"
+                ))
+                .help("this looks like a legacy code page (GBK, Shift-JIS, Windows-1252): save the file as UTF-8")
+        }
+        TextProblem::Nul { at } => Diagnostic::warning("K0006", "NUL byte in a text file")
+            .at(Span::new(file, at..at + 1), "NUL byte")
+            .note("a NUL byte is never part of shader text; the file may be binary or damaged"),
     }
 }
 

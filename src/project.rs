@@ -164,7 +164,7 @@ fn requested_variant(
     let file = store.load(&request.shader)?;
     let mut includes = Includes::new(include_config(std::slice::from_ref(&request.shader)));
     let input = CatalogInput { shaders: vec![file], ..CatalogInput::default() };
-    let mut diagnostics = store.text_warnings(file);
+    let mut diagnostics = crate::diagnostics::text_warnings(store, file);
     let (catalog, found) = catalog(store, &mut includes, &input);
     diagnostics.extend(found);
     let Some(shader) = catalog.shaders.first() else { return Ok((None, diagnostics)) };
@@ -292,7 +292,7 @@ pub fn open_workspace(
         let config_path = path.join(crate::config::FILE_NAME);
         let config = if config_path.is_file() {
             let file = store.load(&config_path)?;
-            diagnostics.extend(store.text_warnings(file));
+            diagnostics.extend(crate::diagnostics::text_warnings(store, file));
             let (config, problems) = crate::config::parse_config(store, file);
             diagnostics.extend(problems);
             if let Some(global) = &config.global_keywords {
@@ -405,7 +405,7 @@ pub fn load_files(store: &mut SourceStore, paths: &[PathBuf]) -> (Vec<FileId>, V
     for loaded in store.load_all(paths) {
         match loaded {
             Ok(id) => {
-                diagnostics.extend(store.text_warnings(id));
+                diagnostics.extend(crate::diagnostics::text_warnings(store, id));
                 ids.push(id);
             }
             Err(error) => diagnostics.push(load_error(&error)),

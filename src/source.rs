@@ -4,7 +4,6 @@
 //! it read (so a build script can print `rerun-if-changed` for exactly those), and diagnostics find
 //! line and column through it.
 
-use crate::diagnostics::Diagnostic;
 use std::collections::HashMap;
 use std::ops::Range;
 use std::path::{Component, Path, PathBuf};
@@ -103,29 +102,6 @@ pub enum TextProblem {
     /// A NUL byte: the file may be binary.
     Nul { at: usize },
 }
-
-impl TextProblem {
-    /// The warning for this problem in `file`.
-    pub fn diagnostic(self, file: FileId) -> Diagnostic {
-        match self {
-            TextProblem::NotUtf8 { at, count } => {
-                let places = if count == 1 { "1 place".to_string() } else { format!("{count} places") };
-                Diagnostic::warning("K0001", "file is not valid UTF-8")
-                    .at(Span::new(file, at..at + REPLACEMENT_LEN), "first byte that is not UTF-8")
-                    .note(format!(
-                        "bytes that are not UTF-8 ({places}) are read as U+FFFD; they are harmless in \
-                         comments, and an error anywhere kiln uses them"
-                    ))
-                    .help("this looks like a legacy code page (GBK, Shift-JIS, Windows-1252): save the file as UTF-8")
-            }
-            TextProblem::Nul { at } => Diagnostic::warning("K0006", "NUL byte in a text file")
-                .at(Span::new(file, at..at + 1), "NUL byte")
-                .note("a NUL byte is never part of shader text; the file may be binary or damaged"),
-        }
-    }
-}
-
-const REPLACEMENT_LEN: usize = char::REPLACEMENT_CHARACTER.len_utf8();
 
 /// How far into a file kiln looks to tell text from binary data (as git does).
 const BINARY_SNIFF_LEN: usize = 8000;
@@ -274,9 +250,10 @@ impl SourceStore {
         id
     }
 
-    /// The warnings reading `file` gave: bytes that are not UTF-8, NUL bytes.
-    pub fn text_warnings(&self, file: FileId) -> Vec<Diagnostic> {
-        self.files[file.0 as usize].problems.iter().map(|p| p.diagnostic(file)).collect()
+    /// What reading `file` found in its bytes: sequences that are not UTF-8, NUL bytes
+    /// (`diagnostics::text_warnings` makes them warnings).
+    pub fn text_problems(&self, file: FileId) -> &[TextProblem] {
+        &self.files[file.0 as usize].problems
     }
 
     pub fn text(&self, file: FileId) -> &str {

@@ -74,7 +74,7 @@ impl From<&PropertyDefault> for MaterialValue {
 
 /// What resolving a material needs of its shader. A build takes it from the parsed shader
 /// ([`ShaderEntry::from_shader`]) and the run time from the manifest
-/// ([`ShaderEntry::from_manifest`]), so a `.mat` file resolves alike in both.
+/// ([`ShaderManifest::material_entry`](crate::reflect::manifest::ShaderManifest::material_entry)), so a `.mat` file resolves alike in both.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShaderEntry {
     pub name: String,
@@ -132,40 +132,6 @@ impl ShaderEntry {
                 })
                 .collect(),
         }
-    }
-
-    /// From a shader in a manifest kiln wrote (`None` when a property's type does not read).
-    pub fn from_manifest(shader: &crate::reflect::manifest::ShaderManifest) -> Option<ShaderEntry> {
-        let properties = shader
-            .properties
-            .iter()
-            .map(|p| {
-                Some(EntryProperty {
-                    name: p.name.clone(),
-                    ty: PropertyType::from_manifest(&p.ty)?,
-                    default: MaterialValue::from_json(&p.default)?,
-                    drawer: p.drawer.clone(),
-                    enum_names: p.enum_names.clone(),
-                })
-            })
-            .collect::<Option<_>>()?;
-        let keyword_sets = shader
-            .passes
-            .iter()
-            .flat_map(|pass| &pass.keyword_sets)
-            .map(|set| EntrySet {
-                shader_feature: set.kind == KeywordKind::ShaderFeature.name(),
-                keywords: set.keywords.iter().filter(|k| *k != "_").cloned().collect(),
-                off_option: set.keywords.iter().any(|k| k == "_"),
-                span: None,
-            })
-            .collect();
-        Some(ShaderEntry {
-            name: shader.name.clone(),
-            properties,
-            render_queue: shader.render_queue,
-            keyword_sets,
-        })
     }
 
     pub fn property(&self, name: &str) -> Option<&EntryProperty> {

@@ -199,7 +199,7 @@ impl Includes {
         }
         match store.load_once(&path, canonical.clone()) {
             Ok(file) => {
-                diagnostics.extend(store.text_warnings(file));
+                diagnostics.extend(crate::diagnostics::text_warnings(store, file));
                 let place = Place::Folder(path.parent().map(Path::to_path_buf).unwrap_or_default());
                 let len = store.text(file).len();
                 let unit = self.add_unit(store, file, 0..len, place, diagnostics);

@@ -6,10 +6,12 @@
 //! keywords and module indices.
 
 use super::{Attribute, Resource, UniformBlock};
+use crate::material::{EntryProperty, EntrySet, MaterialValue, ShaderEntry};
 use crate::shaderlab::ast::{
-    BlendFactor, BlendOperation, ColorMask, CompareFunction, CullMode, RenderCommandKind, StencilField,
-    StencilValue, Value,
+    BlendFactor, BlendOperation, ColorMask, CompareFunction, CullMode, PropertyType, RenderCommandKind,
+    StencilField, StencilValue, Value,
 };
+use crate::shaderlab::pragma::KeywordKind;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
@@ -82,6 +84,43 @@ pub struct ShaderManifest {
 
 fn default_queue() -> i64 {
     2000
+}
+
+impl ShaderManifest {
+    /// The shader as the material resolver sees it, so that a `.mat` read at run time resolves as
+    /// the build resolved it (`None` when a property's type does not read).
+    pub fn material_entry(&self) -> Option<ShaderEntry> {
+        let properties = self
+            .properties
+            .iter()
+            .map(|p| {
+                Some(EntryProperty {
+                    name: p.name.clone(),
+                    ty: PropertyType::from_manifest(&p.ty)?,
+                    default: MaterialValue::from_json(&p.default)?,
+                    drawer: p.drawer.clone(),
+                    enum_names: p.enum_names.clone(),
+                })
+            })
+            .collect::<Option<_>>()?;
+        let keyword_sets = self
+            .passes
+            .iter()
+            .flat_map(|pass| &pass.keyword_sets)
+            .map(|set| EntrySet {
+                shader_feature: set.kind == KeywordKind::ShaderFeature.name(),
+                keywords: set.keywords.iter().filter(|k| *k != "_").cloned().collect(),
+                off_option: set.keywords.iter().any(|k| k == "_"),
+                span: None,
+            })
+            .collect();
+        Some(ShaderEntry {
+            name: self.name.clone(),
+            properties,
+            render_queue: self.render_queue,
+            keyword_sets,
+        })
+    }
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

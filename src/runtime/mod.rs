@@ -15,7 +15,7 @@ pub use state::{
     MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state,
 };
 
-use crate::material::{ShaderEntries, ShaderEntry};
+use crate::material::ShaderEntries;
 use crate::reflect::manifest::{
     FILE_NAME, MATERIALS_FILE, Manifest, MaterialManifest, ModuleFile, PassManifest, ShaderManifest,
     VariantManifest,
@@ -196,7 +196,9 @@ impl Library {
     /// a build renders them: `name:line:col`.
     pub fn load_material(&self, name: &str, text: &str) -> Result<MaterialManifest, RuntimeError> {
         let shaders = self.material_shaders.get_or_init(|| {
-            ShaderEntries::new(self.manifest.shaders.iter().filter_map(ShaderEntry::from_manifest).collect())
+            ShaderEntries::new(
+                self.manifest.shaders.iter().filter_map(ShaderManifest::material_entry).collect(),
+            )
         });
         let mut store = crate::source::SourceStore::new();
         let file = store.add(name, text.to_string());
