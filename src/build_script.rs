@@ -165,11 +165,7 @@ impl Build {
         };
         let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
         problems.extend(result.diagnostics);
-        // The folders searched: kiln.toml was read by the build, so this cannot fail now.
-        let searched = crate::project::open_workspace(&mut SourceStore::new(), &self.paths)
-            .map(|(workspace, _)| workspace.searched)
-            .unwrap_or_default();
-        let mut cargo_lines: Vec<String> = watched(store.files_read(), &searched, &out_dir)
+        let mut cargo_lines: Vec<String> = watched(store.files_read(), store.searched(), &out_dir)
             .iter()
             .map(|path| format!("cargo:rerun-if-changed={}", path.display()))
             .collect();

@@ -239,9 +239,6 @@ pub struct Workspace {
     pub variant_logs: Vec<PathBuf>,
     /// The first project folder's `cache_dir`.
     pub cache_dir: Option<PathBuf>,
-    /// The folders searched for shaders, materials and includes: a new file there can change a
-    /// build (a build script asks cargo to watch them).
-    pub searched: Vec<PathBuf>,
 }
 
 impl Workspace {
@@ -309,9 +306,13 @@ pub fn open_workspace(
         };
         workspace.shaders.extend(find_files(&under(&config.shaders), "shader")?);
         workspace.materials.extend(find_files(&under(&config.materials), "mat")?);
-        workspace.searched.extend(under(&config.shaders));
-        workspace.searched.extend(under(&config.materials));
-        workspace.searched.extend(under(&config.include_paths));
+        for folder in under(&config.shaders)
+            .into_iter()
+            .chain(under(&config.materials))
+            .chain(under(&config.include_paths))
+        {
+            store.record_searched(folder);
+        }
         shader_sources += config.shaders.len();
         material_sources += config.materials.len();
         include_paths.extend(under(&config.include_paths));

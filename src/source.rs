@@ -188,6 +188,8 @@ pub struct SourceStore {
     by_canonical_path: HashMap<PathBuf, FileId>,
     /// Paths looked for and not found: a file appearing there could change what is read.
     absent: Vec<PathBuf>,
+    /// Folders searched for files (shaders, materials, includes): a new file there could too.
+    searched: Vec<PathBuf>,
 }
 
 impl SourceStore {
@@ -228,6 +230,16 @@ impl SourceStore {
     /// Every path [`SourceStore::canonical_file`] found no file at, in the order asked.
     pub fn absent(&self) -> &[PathBuf] {
         &self.absent
+    }
+
+    /// Records a folder searched for files (a project's shader, material and include folders).
+    pub fn record_searched(&mut self, folder: PathBuf) {
+        self.searched.push(folder);
+    }
+
+    /// Every folder recorded as searched, in the order recorded.
+    pub fn searched(&self) -> &[PathBuf] {
+        &self.searched
     }
 
     /// Loads a file once: a second call with the same canonical path returns the first id.
