@@ -11,7 +11,7 @@
 
 use super::Mapper;
 use crate::diagnostics::Diagnostic;
-use crate::preprocess::comment_len;
+use crate::preprocess::{Kind, lex};
 use naga::{AddressSpace, ArraySize, Handle, Module, Type, TypeInner};
 use std::collections::HashMap;
 use std::ops::Range;
@@ -66,8 +66,6 @@ impl HostLayout {
 #[derive(Debug, Clone, PartialEq)]
 pub struct DeclaredStruct {
     pub name: String,
-    /// The struct's name in the text.
-    pub name_range: Range<usize>,
     pub members: Vec<DeclaredMember>,
 }
 
@@ -83,59 +81,22 @@ pub struct DeclaredMember {
 /// constant (naga evaluated it too; kiln needs it because naga's IR keeps only its effect).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LayoutAttribute {
-    /// The attribute as written (`@align(2 * 16)`).
-    pub written: String,
     /// Its argument (`2 * 16`).
     pub expression: String,
+    /// The whole attribute (`@align(2 * 16)`) in the text.
     pub range: Range<usize>,
-}
-
-/// Tokens of WGSL text with their byte offsets, comments and whitespace left out.
-fn tokens(text: &str) -> Vec<(&str, usize)> {
-    let bytes = text.as_bytes();
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < bytes.len() {
-        let c = bytes[i];
-        if c.is_ascii_whitespace() {
-            i += 1;
-        } else if let Some(len) = comment_len(&bytes[i..]) {
-            i += len;
-        } else if c == b'_' || c.is_ascii_alphanumeric() || c >= 0x80 {
-            let start = i;
-            while i < bytes.len()
-                && (bytes[i] == b'_' || bytes[i].is_ascii_alphanumeric() || bytes[i] >= 0x80)
-            {
-                i += 1;
-            }
-            // Numbers keep their fraction (`1.5`), which no layout attribute has, as one token.
-            if c.is_ascii_digit() {
-                while i < bytes.len() && (bytes[i] == b'.' || bytes[i].is_ascii_alphanumeric()) {
-                    i += 1;
-                }
-            }
-            out.push((&text[start..i], start));
-        } else {
-            let len = text[i..].chars().next().map_or(1, char::len_utf8);
-            out.push((&text[i..i + len], i));
-            i += len;
-        }
-    }
-    out
-}
-
-fn is_identifier(token: &str) -> bool {
-    token.chars().next().is_some_and(|c| c == '_' || c.is_alphabetic() || !c.is_ascii())
 }
 
 /// Every `struct` declaration of a text, with its members' `@align` and `@size`.
 pub fn scan_structs(text: &str) -> Vec<DeclaredStruct> {
-    let tokens = tokens(text);
+    // The preprocessor's lexer: WGSL's comments, identifiers and numbers are C's.
+    let lexed = lex(text);
+    let tokens: Vec<(&str, usize)> = lexed.iter().map(|t| (t.text.as_ref(), t.at)).collect();
     let mut structs = Vec::new();
     let mut i = 0;
     while i + 2 < tokens.len() {
-        let (name, at) = tokens[i + 1];
-        if tokens[i].0 != "struct" || !is_identifier(name) || tokens[i + 2].0 != "{" {
+        let name = tokens[i + 1].0;
+        if tokens[i].0 != "struct" || lexed[i + 1].kind != Kind::Ident || tokens[i + 2].0 != "{" {
             i += 1;
             continue;
         }
@@ -167,8 +128,7 @@ pub fn scan_structs(text: &str) -> Vec<DeclaredStruct> {
                 }
                 let end = tokens.get(i - 1).map_or(text.len(), |t| t.1 + t.0.len());
                 let expression = text[inside].trim().to_string();
-                let written = text[start..end].to_string();
-                let value = Some(LayoutAttribute { written, expression, range: start..end });
+                let value = Some(LayoutAttribute { expression, range: start..end });
                 match attribute {
                     "align" => member.align = value,
                     "size" => member.size = value,
@@ -184,6 +144,8 @@ pub fn scan_structs(text: &str) -> Vec<DeclaredStruct> {
                 match token {
                     "<" | "(" | "[" => depth += 1,
                     ">" | ")" | "]" => depth -= 1,
+                    // `array<vec4<f32>>` closes two templates with one C token.
+                    ">>" => depth -= 2,
                     "," if depth <= 0 => {
                         i += 1;
                         break;
@@ -195,7 +157,7 @@ pub fn scan_structs(text: &str) -> Vec<DeclaredStruct> {
             }
             members.push(member);
         }
-        structs.push(DeclaredStruct { name: name.to_string(), name_range: at..at + name.len(), members });
+        structs.push(DeclaredStruct { name: name.to_string(), members });
     }
     structs
 }
@@ -277,7 +239,7 @@ pub(crate) fn correct(module: &mut Module, text: &str, mapper: &Mapper) -> Resul
                             .zip(members)
                             .all(|(d, m)| m.name.as_deref() == Some(d.name.as_str()))
                 });
-                let Some(placed) = place_members(module, members, written, &layouts, mapper)? else {
+                let Some(placed) = place_members(module, text, members, written, &layouts, mapper)? else {
                     continue;
                 };
                 let StructPlacement { offsets, members: member_layouts, alignment, size } = placed;
@@ -344,6 +306,7 @@ struct StructPlacement {
 /// is not host-shareable (the struct's layout then does not matter).
 fn place_members(
     module: &Module,
+    text: &str,
     members: &[naga::StructMember],
     written: Option<&DeclaredStruct>,
     layouts: &[Option<TypeLayout>],
@@ -364,7 +327,7 @@ fn place_members(
                     "K0414",
                     format!(
                         "kiln cannot read the value of `{}` on `{struct_name}.{}`",
-                        attribute.written,
+                        &text[attribute.range.clone()],
                         member.name.as_deref().unwrap_or_default()
                     ),
                     attribute.range.clone(),

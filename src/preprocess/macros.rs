@@ -66,7 +66,7 @@ fn punctuator_len(rest: &[u8]) -> usize {
 
 /// The length of the comment `rest` starts with: a `//` comment up to its line's end, or a
 /// `/* */` comment, which nest in WGSL (an unclosed one runs to the end).
-pub(crate) fn comment_len(rest: &[u8]) -> Option<usize> {
+fn comment_len(rest: &[u8]) -> Option<usize> {
     if rest.starts_with(b"//") {
         return Some(rest.iter().position(|&b| b == b'\n').unwrap_or(rest.len()));
     }

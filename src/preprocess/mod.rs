@@ -18,7 +18,7 @@ mod source_map;
 
 pub use error::PreprocessError;
 pub use include::{IncludeConfig, Includes, LIBRARY_PREFIX, Program};
-pub(crate) use macros::comment_len;
+pub(crate) use macros::{Kind, lex};
 pub use pass::{PassProgram, load_pass, load_pass_text};
 pub use run::MAX_INCLUDE_DEPTH;
 pub use scan::MAX_CONDITIONAL_DEPTH;
