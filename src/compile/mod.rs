@@ -6,6 +6,7 @@
 //! - `layout.rs`: host-shareable layouts by the WGSL spec (naga's offsets corrected, `@align`/`@size`
 //!   written back into emitted WGSL, constructs naga's SPIR-V writer gets wrong refused).
 //! - `stage.rs`: one stage module from parsed text to WGSL, SPIR-V and reflection.
+//! - `panics.rs`: a panic while compiling one module caught as a value (K0416).
 //! - `spirv.rs`: corrections to naga's SPIR-V where it breaks a Vulkan rule (`SampleMask`).
 //! - `cache.rs`: the content-addressed cache and output files.
 //! - `build.rs`: the whole project: jobs, deduplication, parallelism, the manifest.
@@ -15,6 +16,7 @@ pub mod build;
 mod cache;
 mod layout;
 pub mod objects;
+mod panics;
 pub mod shard;
 mod spirv;
 mod stage;
