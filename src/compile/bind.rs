@@ -69,16 +69,13 @@ fn reached(module: &Module, entry: &naga::EntryPoint) -> HashSet<Handle<GlobalVa
     let mut called = HashSet::new();
     let mut pending = vec![&entry.function];
     while let Some(function) = pending.pop() {
-        let mut calls = Vec::new();
         for (_, expression) in function.expressions.iter() {
-            match expression {
-                Expression::GlobalVariable(global) => {
-                    globals.insert(*global);
-                }
-                Expression::CallResult(callee) => calls.push(*callee),
-                _ => {}
+            if let Expression::GlobalVariable(global) = expression {
+                globals.insert(*global);
             }
         }
+        // Every call is a statement (a call's result is an expression only besides).
+        let mut calls = Vec::new();
         statement_calls(&function.body, &mut calls);
         for callee in calls {
             if called.insert(callee) {
