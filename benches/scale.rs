@@ -8,8 +8,8 @@
 //! `-- generate N DIR` only writes the project of N variants. Results and how to read them:
 //! docs/performance.md.
 
+use kiln::build::stage_texts;
 use kiln::catalog::catalog;
-use kiln::compile::stage_texts;
 use kiln::preprocess::{Includes, Stage};
 use kiln::project::{BuildMode, build_project, load_files, open_workspace};
 use kiln::source::SourceStore;
@@ -113,7 +113,7 @@ fn median(mut times: Vec<Duration>) -> Duration {
 }
 
 /// `kiln build` (or, without `write`, `kiln check`: the same work, nothing written).
-fn kiln_build(project: &Path, output: &Path, write: bool) -> (kiln::compile::BuildSummary, Duration) {
+fn kiln_build(project: &Path, output: &Path, write: bool) -> (kiln::build::BuildSummary, Duration) {
     let started = Instant::now();
     let mut store = SourceStore::new();
     let mode = BuildMode { write, output: Some(output.to_path_buf()), ..BuildMode::default() };
@@ -228,7 +228,7 @@ fn main() {
         assert_eq!(cold.modules, modules, "kiln compiles the texts naga was given");
         assert_eq!(cold.shared, 0, "each shader's stage texts are its own");
         reset_peak();
-        let noops: Vec<(kiln::compile::BuildSummary, Duration)> =
+        let noops: Vec<(kiln::build::BuildSummary, Duration)> =
             (0..3).map(|_| kiln_build(&project, &output, true)).collect();
         let noop_memory = peak_mib();
         let manifest_bytes = std::fs::metadata(output.join("manifest.json")).expect("manifest").len();

@@ -4,7 +4,7 @@
 //!
 //! [`Build::run`] is the one place in the library that prints: to stdout, for cargo.
 
-use crate::compile::BuildSummary;
+use crate::build::BuildSummary;
 use crate::diagnostics::{self, Severity, render_plain};
 use crate::project::{BuildMode, ProjectError, build_project};
 use crate::reflect::manifest::{FILE_NAME, Manifest};
@@ -200,7 +200,7 @@ impl Build {
         let text = crate::codegen::generate(&manifest, &relative_to(&output, &out_dir));
         // Unchanged, it is not rewritten, so cargo has nothing to recompile.
         if std::fs::read(&module).ok().as_deref() != Some(text.as_bytes()) {
-            crate::compile::write_atomically(&module, text.as_bytes())
+            crate::store::write_atomically(&module, text.as_bytes())
                 .map_err(|source| BuildError::Write { path: module.clone(), source })?;
         }
         Ok(BuildOutput { module, manifest, summary: result.summary, cargo_lines })

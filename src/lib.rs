@@ -18,6 +18,7 @@
 #![allow(clippy::result_large_err)]
 
 pub mod accuracy;
+pub mod build;
 mod build_script;
 pub mod catalog;
 pub mod codegen;
@@ -36,5 +37,6 @@ pub mod runtime;
 pub mod shaderlab;
 pub mod shaderlib;
 pub mod source;
+pub mod store;
 
 pub use build_script::{Build, BuildError, BuildOutput};

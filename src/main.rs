@@ -2,7 +2,7 @@
 //! Exit codes: 0 success, 1 diagnostics with errors, 2 usage or I/O failure.
 
 use clap::{Parser, Subcommand, ValueEnum};
-use kiln::compile::VariantSelection;
+use kiln::build::VariantSelection;
 use kiln::diagnostics::{self, Diagnostic};
 use kiln::preprocess::{Includes, Stage};
 use kiln::project::{BuildMode, Part, VariantRequest, include_config};
@@ -206,7 +206,7 @@ fn main() -> ExitCode {
                 cache_dir,
                 ..BuildMode::default()
             };
-            let part = match shard.as_deref().map(kiln::compile::shard::Shard::parse) {
+            let part = match shard.as_deref().map(kiln::build::shard::Shard::parse) {
                 None => Part::Whole,
                 Some(Ok(shard)) => Part::Shard(shard),
                 Some(Err(message)) => return usage_failure(&message),
@@ -364,7 +364,7 @@ fn cache(command: CacheCommand) -> ExitCode {
         ));
     };
     let outcome = match command {
-        CacheCommand::Stats { .. } => kiln::compile::objects::cache_stats(&dir)
+        CacheCommand::Stats { .. } => kiln::store::shared::cache_stats(&dir)
             .map_err(|e| format!("cannot read `{}`: {e}", dir.display()))
             .map(|stats| {
                 let damaged = if stats.damaged > 0 {
@@ -380,14 +380,12 @@ fn cache(command: CacheCommand) -> ExitCode {
                     stats.bytes
                 );
             }),
-        CacheCommand::Gc { max_size, .. } => {
-            kiln::compile::objects::parse_size(&max_size).and_then(|limit| {
-                let (removed, left) = kiln::compile::objects::cache_gc(&dir, limit)
-                    .map_err(|e| format!("cannot clean `{}`: {e}", dir.display()))?;
-                println!("{}: removed {removed} entries, {left} bytes left (limit {limit})", dir.display());
-                Ok(())
-            })
-        }
+        CacheCommand::Gc { max_size, .. } => kiln::store::shared::parse_size(&max_size).and_then(|limit| {
+            let (removed, left) = kiln::store::shared::cache_gc(&dir, limit)
+                .map_err(|e| format!("cannot clean `{}`: {e}", dir.display()))?;
+            println!("{}: removed {removed} entries, {left} bytes left (limit {limit})", dir.display());
+            Ok(())
+        }),
     };
     match outcome {
         Ok(()) => ExitCode::SUCCESS,
@@ -396,7 +394,7 @@ fn cache(command: CacheCommand) -> ExitCode {
 }
 
 /// The closing line of a build (and the note about skipped shaders).
-fn print_summary(s: &kiln::compile::BuildSummary, write: bool, errors: bool) {
+fn print_summary(s: &kiln::build::BuildSummary, write: bool, errors: bool) {
     let verb = if write { "built" } else { "checked" };
     let mut line = format!(
         "{verb} {} shaders, {} passes, {} variants: {} stage modules ({} compiled, {} reused from cache",

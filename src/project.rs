@@ -2,9 +2,9 @@
 //! build scripts. This is the only place besides [`SourceStore`] that touches the file system:
 //! stages get file ids, never paths.
 
+pub use crate::build::Part;
+use crate::build::{BuildOptions, BuildResult, VariantSelection, build};
 use crate::catalog::{Catalog, CatalogInput, CatalogProgram, catalog};
-pub use crate::compile::Part;
-use crate::compile::{BuildOptions, BuildResult, VariantSelection, build};
 use crate::config::ProjectConfig;
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{Variant, VariantError, select_variant};
@@ -124,7 +124,7 @@ pub fn apply_preset(path: &Path, preset: &str, project: &Path) -> Result<(), Pro
 }
 
 fn write_atomically(path: &Path, text: &str) -> Result<(), ProjectError> {
-    crate::compile::write_atomically(path, text.as_bytes())
+    crate::store::write_atomically(path, text.as_bytes())
         .map_err(|source| ProjectError::Write { path: path.to_path_buf(), source })
 }
 
@@ -516,7 +516,7 @@ pub fn build_part(
     };
     if diagnostics.is_empty()
         && !matches!(options.part, Part::Shard(_))
-        && let Some(result) = crate::compile::unchanged(store, &options)
+        && let Some(result) = crate::build::unchanged(store, &options)
     {
         return Ok((result, diagnostics));
     }
@@ -540,9 +540,9 @@ pub fn merge_shards(
     project: Option<PathBuf>,
     mode: &BuildMode,
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
-    let (records, inputs) = crate::compile::shard::check_shards(shards).map_err(ProjectError::Shards)?;
+    let (records, inputs) = crate::build::shard::check_shards(shards).map_err(ProjectError::Shards)?;
     let project = project.unwrap_or_else(|| PathBuf::from(&records[0].project));
-    let merge = crate::compile::Merge { folders: shards.to_vec(), inputs };
+    let merge = crate::build::Merge { shards: shards.iter().cloned().zip(records).collect(), inputs };
     build_part(store, &[project], mode, &|_, _| {}, Part::Merge(merge))
 }
 
@@ -560,7 +560,7 @@ pub fn watch_build(
     let all: Vec<Diagnostic> = diagnostics.iter().chain(&result.diagnostics).cloned().collect();
     let written = if diagnostics::has_errors(&all) {
         std::fs::create_dir_all(&result.output).and_then(|()| {
-            crate::compile::write_atomically(&errors_file, diagnostics::render_plain(store, &all).as_bytes())
+            crate::store::write_atomically(&errors_file, diagnostics::render_plain(store, &all).as_bytes())
         })
     } else {
         match std::fs::remove_file(&errors_file) {

@@ -7,7 +7,7 @@
 #![no_main]
 
 use kiln::catalog::CatalogInput;
-use kiln::compile::{BuildOptions, Part, VariantSelection};
+use kiln::build::{BuildOptions, Part, VariantSelection};
 use kiln::config::Backend;
 use kiln::preprocess::{IncludeConfig, Includes};
 use kiln::source::SourceStore;
@@ -132,7 +132,7 @@ fuzz_target!(|data: &[u8]| {
         cache_dir: None,
         given_files: 0,
     };
-    let result = kiln::compile::build(&store, &includes, &catalog, &options, &|_, _| {});
+    let result = kiln::build::build(&store, &includes, &catalog, &options, &|_, _| {});
     if let Some(found) = result.diagnostics.iter().find(|d| d.code == "K0416" || d.code == "K0409") {
         panic!("{}\n{text}", kiln::diagnostics::render_plain(&store, std::slice::from_ref(found)));
     }

@@ -8,24 +8,16 @@
 //! - `stage.rs`: one stage module from parsed text to WGSL, SPIR-V and reflection.
 //! - `panics.rs`: a panic while compiling one module caught as a value (K0416).
 //! - `spirv.rs`: corrections to naga's SPIR-V where it breaks a Vulkan rule (`SampleMask`).
-//! - `cache.rs`: the content-addressed cache and output files.
-//! - `build.rs`: the whole project: jobs, deduplication, parallelism, the manifest.
+//!
+//! What to compile, and where modules are kept, is the build layer's (`crate::build`,
+//! `crate::store`).
 
 pub mod bind;
-pub mod build;
-mod cache;
 mod layout;
-pub mod objects;
 mod panics;
-pub mod shard;
 mod spirv;
-mod stage;
+pub(crate) mod stage;
 pub mod target;
-
-pub use build::{
-    BuildOptions, BuildResult, BuildSummary, Merge, Part, VariantSelection, build, stage_texts, unchanged,
-};
-pub use cache::write_atomically;
 
 use crate::diagnostics::Diagnostic;
 use crate::preprocess::{Preprocessed, SourceMap};

@@ -32,7 +32,7 @@ pub struct StageRequest<'a> {
     pub backends: &'a [Backend],
 }
 
-pub(super) fn naga_stage(stage: Stage) -> naga::ShaderStage {
+pub(crate) fn naga_stage(stage: Stage) -> naga::ShaderStage {
     match stage {
         Stage::Vertex => naga::ShaderStage::Vertex,
         Stage::Fragment => naga::ShaderStage::Fragment,

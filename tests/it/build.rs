@@ -4,7 +4,7 @@
 
 use crate::support::{fixture_files, kiln, root, verified_manifest};
 use expect_test::expect_file;
-use kiln::compile::{BuildResult, VariantSelection};
+use kiln::build::{BuildResult, VariantSelection};
 use kiln::diagnostics::{Diagnostic, has_errors, render_plain};
 use kiln::project::{BuildMode, build_project};
 use kiln::reflect::manifest::Manifest;

@@ -11,7 +11,7 @@
 //! scalar back through kiln's WGSL.
 
 use crate::support::{gpu, tool};
-use kiln::compile::VariantSelection;
+use kiln::build::VariantSelection;
 use kiln::project::{BuildMode, build_project};
 use kiln::reflect::manifest::Manifest;
 use kiln::source::SourceStore;

@@ -5,7 +5,7 @@
 //! for token. Files with compute entry points only cannot be a pass yet, and are counted.
 
 use crate::support::{kiln, root, tool};
-use kiln::compile::VariantSelection;
+use kiln::build::VariantSelection;
 use kiln::project::{BuildMode, build_project};
 use kiln::source::SourceStore;
 use naga::valid::{Capabilities, ValidationFlags, Validator};

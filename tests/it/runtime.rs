@@ -4,7 +4,7 @@
 
 use crate::support::{build_without_errors, gpu, kiln, root};
 use kiln::accuracy::gpu::Gpu;
-use kiln::compile::VariantSelection;
+use kiln::build::VariantSelection;
 use kiln::reflect::manifest::MaterialManifest;
 use kiln::runtime::{Library, PipelineRequest, Reload, Runtime, RuntimeError, Targets, UsageLog};
 use kiln::source::SourceStore;

@@ -1,10 +1,10 @@
 //! Sharded builds: shards built by concurrent processes merge into the bytes one build writes,
-//! a second round compiles nothing, a new shader moves only the shards that hold its modules,
-//! and merge refuses shards that do not belong together.
+//! a second round compiles nothing, a new shader costs the shards only its own modules, a shard
+//! preprocesses nothing of passes that are not its own, and merge refuses shards that do not
+//! belong together.
 
 use crate::support::{compiled, kiln, synthetic_project, tree};
 use expect_test::expect_file;
-use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -40,14 +40,6 @@ fn build_shards(project: &Path, shards: &[PathBuf], cache: Option<&Path>) -> Vec
             assert_eq!(output.status.code(), Some(0), "{}", text(&output));
             text(&output)
         })
-        .collect()
-}
-
-/// The object keys each shard holds.
-fn objects(shards: &[PathBuf]) -> Vec<BTreeSet<String>> {
-    shards
-        .iter()
-        .map(|s| tree(&s.join("objects")).keys().map(|k| k.to_string_lossy().into_owned()).collect())
         .collect()
 }
 
@@ -147,29 +139,54 @@ fn four_concurrent_shards_merge_into_the_bytes_of_one_build() {
 }
 
 #[test]
-fn a_new_shader_moves_only_the_shards_that_hold_its_modules() {
+fn a_new_shader_costs_the_shards_only_its_own_modules() {
     let dir = tempfile::tempdir().expect("temp dir");
     let project = dir.path().join("project");
     synthetic_project(&project, 64);
-    let before: Vec<PathBuf> = (1..=4).map(|i| dir.path().join(format!("before{i}"))).collect();
-    build_shards(&project, &before, None);
+    let shards: Vec<PathBuf> = (1..=4).map(|i| dir.path().join(format!("shard{i}"))).collect();
+    let first = build_shards(&project, &shards, None);
+    assert!(first.iter().map(|s| compiled(s)).sum::<usize>() > 2);
     // A second shader, used by a material.
     let root = crate::support::root().join("fixtures/project/shaders");
     for name in ["Unlit.shader", "UnlitPass.wgsl"] {
         std::fs::copy(root.join(name), project.join(name)).expect("copy");
     }
     std::fs::write(project.join("materials/Unlit.mat"), "shader = \"Custom RP/Unlit\"\n").expect("write");
-    let after: Vec<PathBuf> = (1..=4).map(|i| dir.path().join(format!("after{i}"))).collect();
-    build_shards(&project, &after, None);
-    let (old, new) = (objects(&before), objects(&after));
-    let mut changed = 0;
-    for (old, new) in old.iter().zip(&new) {
-        assert!(old.is_subset(new), "a shard lost modules it held");
-        changed += usize::from(old != new);
-    }
-    let added: usize = old.iter().zip(&new).map(|(o, n)| n.len() - o.len()).sum();
-    assert_eq!(added, 2, "the Unlit pass adds a vertex and a fragment module");
-    assert!(changed <= 2, "only the shards that hold the new modules change");
+    // A pass lighter than every other one moves none of them: each shard folder still holds its
+    // passes, and only the new one is compiled, by one shard.
+    let again: Vec<usize> = build_shards(&project, &shards, None).iter().map(|s| compiled(s)).collect();
+    assert_eq!(again.iter().sum::<usize>(), 2, "the Unlit pass's vertex and fragment modules: {again:?}");
+    assert_eq!(again.iter().filter(|&&n| n > 0).count(), 1, "{again:?}");
+}
+
+#[test]
+fn a_shard_preprocesses_only_its_own_passes() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    project_of_1024_variants(&project);
+    // A mistake in one shader's program that only preprocessing finds: the shard that owns its
+    // pass reports it; the others never preprocess that pass and build cleanly.
+    let shader = project.join("Synth3.shader");
+    let text = std::fs::read_to_string(&shader).expect("shader");
+    std::fs::write(
+        &shader,
+        text.replacen("WGSLPROGRAM\n", "WGSLPROGRAM\n            #error only its owner sees this\n", 1),
+    )
+    .expect("write");
+    let outcomes: Vec<Option<i32>> = (1..=4)
+        .map(|i| {
+            let out = dir.path().join(format!("shard{i}"));
+            let run =
+                kiln(&["build", text_of(&project), "--output", text_of(&out), "--shard", &format!("{i}/4")]);
+            run.status.code()
+        })
+        .collect();
+    assert_eq!(outcomes.iter().filter(|c| **c == Some(1)).count(), 1, "{outcomes:?}");
+    assert_eq!(outcomes.iter().filter(|c| **c == Some(0)).count(), 3, "{outcomes:?}");
+}
+
+fn text_of(path: &Path) -> &str {
+    path.to_str().expect("utf-8")
 }
 
 #[test]
@@ -235,12 +252,11 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     std::fs::write(&shader, &text_before).expect("restore");
 
     // A shard's module damaged or gone: the merge names what is missing, and writes nothing.
-    let objects = shards[1].join("objects");
-    let victim = walkdir::WalkDir::new(&objects)
-        .into_iter()
-        .map(|e| e.expect("walk"))
+    let victim = shards
+        .iter()
+        .flat_map(|shard| walkdir::WalkDir::new(shard.join("modules")).into_iter().flatten())
         .find(|e| e.file_type().is_file())
-        .expect("an object");
+        .expect("a pack");
     std::fs::write(victim.path(), b"damaged").expect("damage");
     let run = merge(&dir.path().join("merged"), &shards);
     assert_eq!(run.status.code(), Some(1), "{}", text(&run));

@@ -1,6 +1,6 @@
 //! Shared helpers: paths into the repository, loading fixtures, running the `kiln` binary.
 
-use kiln::compile::VariantSelection;
+use kiln::build::VariantSelection;
 use kiln::diagnostics::Diagnostic;
 use kiln::project::{BuildMode, build_project};
 use kiln::source::{FileId, SourceStore};
@@ -121,7 +121,7 @@ pub fn synthetic_project(dir: &Path, materials: usize) {
 }
 
 /// Builds a project that must build without a diagnostic, into `output` or its own output folder.
-pub fn build_clean(project: &Path, output: Option<&Path>) -> kiln::compile::BuildSummary {
+pub fn build_clean(project: &Path, output: Option<&Path>) -> kiln::build::BuildSummary {
     let (summary, diagnostics) = build_without_errors(project, output, VariantSelection::Used);
     assert!(diagnostics.is_empty(), "{diagnostics}");
     summary
@@ -132,7 +132,7 @@ pub fn build_without_errors(
     project: &Path,
     output: Option<&Path>,
     unused_shaders: VariantSelection,
-) -> (kiln::compile::BuildSummary, String) {
+) -> (kiln::build::BuildSummary, String) {
     let mut store = SourceStore::new();
     let mode = BuildMode { output: output.map(Path::to_path_buf), unused_shaders, ..BuildMode::default() };
     let (result, mut diagnostics) =

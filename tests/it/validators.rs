@@ -4,7 +4,7 @@
 //! hundreds of variants, each built with every variant its shaders declare.
 
 use crate::support::{build_without_errors, root, synthetic_project, tool};
-use kiln::compile::VariantSelection;
+use kiln::build::VariantSelection;
 use kiln::reflect::manifest::Manifest;
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -1,7 +1,7 @@
 //! The build's files: content-addressed packs of stage modules, the cache that lets an unchanged
 //! variant skip naga entirely, and atomic writes (a temporary file and a rename) for all of them.
 
-use super::bind::Declared;
+use crate::compile::bind::Declared;
 use crate::reflect::StageReflection;
 use crate::reflect::manifest::FileRef;
 use rayon::prelude::*;
@@ -71,7 +71,7 @@ impl Cache {
     }
 
     fn entry(&self, kind: &str, key: &str) -> PathBuf {
-        self.output.join(".cache").join(kind).join(format!("{key}.json"))
+        self.output.join(entry_path(kind, key))
     }
 
     /// Entries are `HASH\nJSON`: an unreadable, truncated or altered entry (the hash of its JSON
@@ -190,11 +190,25 @@ impl Cache {
     }
 }
 
+/// Where the cache keeps an entry, relative to the output folder.
+fn entry_path(kind: &str, key: &str) -> String {
+    format!(".cache/{kind}/{key}.json")
+}
+
+/// Where the cache keeps a pass's index, relative to the output folder.
+pub fn pass_index_path(pass: &str) -> String {
+    entry_path("pass", pass)
+}
+
 /// A compiled module's bytes and their [`hash`].
 pub struct ModuleBytes {
     pub bytes: Vec<u8>,
     pub hash: String,
 }
+
+/// Makes temporary names unique per write: two jobs may store the same content-addressed file
+/// at once.
+static WRITES: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
 
 /// Writes through a temporary file in the same folder and a rename, so a reader never sees half a
 /// file and a failed or interrupted write leaves the old one.
@@ -213,8 +227,6 @@ pub fn write_atomically_with(
     let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     std::fs::create_dir_all(folder)?;
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    // Unique per write: two jobs may store the same content-addressed module at once.
-    static WRITES: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let unique = WRITES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let temporary = folder.join(format!(".{name}.{}.{unique}.tmp", std::process::id()));
     let written = std::fs::File::create(&temporary).and_then(|file| {
@@ -280,4 +292,29 @@ impl Write for Digest {
     fn flush(&mut self) -> std::io::Result<()> {
         Ok(())
     }
+}
+
+/// Puts the file at `from` at `to` too, as a hard link where the file system allows one (no byte
+/// rewritten) and a copy elsewhere; through a temporary name and a rename, like every write.
+/// Returns the bytes copied (0 for a link, or when `to` already has the same length and bytes).
+pub fn link_or_copy(from: &Path, to: &Path) -> std::io::Result<u64> {
+    let length = std::fs::metadata(from)?.len();
+    if std::fs::metadata(to).is_ok_and(|m| m.len() == length)
+        && Digest::of_file(to)?.finish() == Digest::of_file(from)?.finish()
+    {
+        return Ok(0);
+    }
+    let folder = to.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    std::fs::create_dir_all(folder)?;
+    let name = to.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let unique = WRITES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let temporary = folder.join(format!(".{name}.{}.{unique}.tmp", std::process::id()));
+    let copied = match std::fs::hard_link(from, &temporary) {
+        Ok(()) => 0,
+        Err(_) => std::fs::copy(from, &temporary)?,
+    };
+    std::fs::rename(&temporary, to).inspect_err(|_| {
+        let _ = std::fs::remove_file(&temporary);
+    })?;
+    Ok(copied)
 }

@@ -1,12 +1,11 @@
-//! Stage modules as objects: one file per content key (a JSON line with the reflection and each
-//! backend's size and hash, then the bytes), written whole or not at all and verified on every
-//! read. Shards store their modules as objects, `kiln merge` reads them, and the shared cache
-//! (`cache_dir`) keeps objects and each pass's parsed resources in a folder that builds,
-//! processes and machines use at once: entries are published by a rename (never seen half
-//! written), a damaged one is a miss, and an entry's modification time is its last use, for
-//! `kiln cache gc`.
+//! The module cache builds share (`cache_dir`): stage modules as objects, one file per content
+//! key (a JSON line with the reflection and each backend's size and hash, then the bytes), and
+//! each pass's parsed resources, in a folder that builds, processes and machines use at once.
+//! Entries are published by a rename (never seen half written), verified on every read (a damaged
+//! one is a miss), and an entry's modification time is its last use, for `kiln cache gc`.
 
 use super::cache::{ModuleBytes, hash, write_atomically};
+use crate::compile::bind::Declared;
 use crate::reflect::StageReflection;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -27,7 +26,7 @@ fn object_path(folder: &Path, key: &str) -> PathBuf {
     folder.join(OBJECTS).join(&key[..2.min(key.len())]).join(key)
 }
 
-pub(super) fn write_object(
+fn write_object(
     folder: &Path,
     key: &str,
     modules: &[Option<ModuleBytes>; 2],
@@ -47,7 +46,7 @@ pub(super) fn write_object(
 }
 
 /// A stored module, or `None` when there is none or it is damaged.
-pub(super) fn read_object(folder: &Path, key: &str) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
+fn read_object(folder: &Path, key: &str) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
     let bytes = std::fs::read(object_path(folder, key)).ok()?;
     let split = bytes.iter().position(|&b| b == b'\n')?;
     let header: ObjectHeader = serde_json::from_slice(&bytes[..split]).ok()?;
@@ -66,14 +65,14 @@ pub(super) fn read_object(folder: &Path, key: &str) -> Option<([Option<ModuleByt
 }
 
 /// A module from the shared cache, marked as used now (for `kiln cache gc`), or `None`.
-pub(super) fn fetch_object(folder: &Path, key: &str) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
+pub fn fetch_object(folder: &Path, key: &str) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
     let found = read_object(folder, key)?;
     touch(&object_path(folder, key));
     Some(found)
 }
 
 /// Publishes a module to the shared cache, unless it is there (same key, same bytes).
-pub(super) fn publish_object(
+pub fn publish_object(
     folder: &Path,
     key: &str,
     modules: &[Option<ModuleBytes>; 2],
@@ -98,10 +97,7 @@ fn layouts_path(folder: &Path, pass: &str) -> PathBuf {
 
 /// A pass's parsed resources from the shared cache (empty when there are none or they are
 /// damaged).
-pub(super) fn read_layouts(
-    folder: &Path,
-    pass: &str,
-) -> std::collections::BTreeMap<String, Vec<super::bind::Declared>> {
+pub fn read_layouts(folder: &Path, pass: &str) -> std::collections::BTreeMap<String, Vec<Declared>> {
     let path = layouts_path(folder, pass);
     let read = || {
         let bytes = std::fs::read(&path).ok()?;
@@ -117,10 +113,10 @@ pub(super) fn read_layouts(
 /// Publishes a pass's parsed resources, joined with what the cache already has for the pass (the
 /// same file in another project, another variant set): entries are by text hash, so joining is
 /// always right; two builds publishing at once may lose each other's additions, a miss later.
-pub(super) fn publish_layouts(
+pub fn publish_layouts(
     folder: &Path,
     pass: &str,
-    layouts: &std::collections::BTreeMap<String, Vec<super::bind::Declared>>,
+    layouts: &std::collections::BTreeMap<String, Vec<Declared>>,
 ) {
     let mut all = read_layouts(folder, pass);
     let before = all.len();
@@ -231,107 +227,6 @@ pub fn parse_size(text: &str) -> Result<u64, String> {
     Ok(n.saturating_mul(scale))
 }
 
-/// What a build's passes compiled or parsed lately, by key, for the other passes of the same
-/// build: shaders copied under other names and stages several passes share are compiled once.
-/// Bounded by `budget` bytes: past it the oldest entries go, so memory stays bounded and a miss
-/// only costs the work again. Split in shards by key so that threads seldom wait on each other,
-/// and what an eviction frees is freed after the shard's lock is let go.
-pub(super) struct Recent<V> {
-    shard_budget: usize,
-    shards: Vec<std::sync::Mutex<RecentEntries<V>>>,
-}
-
-struct RecentEntries<V> {
-    map: std::collections::HashMap<String, std::sync::Arc<V>>,
-    order: std::collections::VecDeque<(String, usize)>,
-    bytes: usize,
-}
-
-impl<V> Recent<V> {
-    pub(super) fn new(budget: usize, shards: usize) -> Recent<V> {
-        let shards = shards.max(1);
-        let empty = || RecentEntries { map: Default::default(), order: Default::default(), bytes: 0 };
-        Recent {
-            shard_budget: budget / shards,
-            shards: (0..shards).map(|_| std::sync::Mutex::new(empty())).collect(),
-        }
-    }
-
-    fn shard(&self, key: &str) -> &std::sync::Mutex<RecentEntries<V>> {
-        let spread = key.bytes().fold(0usize, |h, b| h.wrapping_mul(31).wrapping_add(usize::from(b)));
-        &self.shards[spread % self.shards.len()]
-    }
-
-    pub(super) fn get(&self, key: &str) -> Option<std::sync::Arc<V>> {
-        if self.shard_budget == 0 {
-            return None;
-        }
-        self.shard(key).lock().ok()?.map.get(key).cloned()
-    }
-
-    /// Keeps `value` (about `size` bytes) under `key`, dropping the oldest entries past the budget.
-    pub(super) fn insert(&self, key: &str, value: std::sync::Arc<V>, size: usize) {
-        if size > self.shard_budget {
-            return;
-        }
-        let mut evicted = Vec::new();
-        {
-            // A poisoned lock means another pass panicked; sharing is only an optimisation.
-            let Ok(mut entries) = self.shard(key).lock() else { return };
-            if entries.map.contains_key(key) {
-                return;
-            }
-            entries.map.insert(key.to_string(), value);
-            entries.order.push_back((key.to_string(), size));
-            entries.bytes += size;
-            while entries.bytes > self.shard_budget {
-                let Some((old, old_size)) = entries.order.pop_front() else { break };
-                evicted.extend(entries.map.remove(&old));
-                entries.bytes -= old_size;
-            }
-        }
-        drop(evicted);
-    }
-}
-
-/// How many passes of a build have each stage text (by its hash), so that [`Recent`] keeps only
-/// what another pass may want: a library whose texts are all distinct keeps nothing.
-pub(super) struct TextCounts {
-    shards: Vec<std::sync::Mutex<std::collections::HashMap<u64, u32>>>,
-}
-
-impl TextCounts {
-    /// `shards == 0` counts nothing: no text is ever shared.
-    pub(super) fn new(shards: usize) -> TextCounts {
-        TextCounts { shards: (0..shards).map(|_| Default::default()).collect() }
-    }
-
-    /// The first 16 hex digits of a hash: which shard, and the key in it.
-    fn id(text_hash: &str) -> u64 {
-        text_hash.get(..16).and_then(|h| u64::from_str_radix(h, 16).ok()).unwrap_or(0)
-    }
-
-    fn shard(&self, id: u64) -> Option<&std::sync::Mutex<std::collections::HashMap<u64, u32>>> {
-        (!self.shards.is_empty()).then(|| &self.shards[(id % self.shards.len() as u64) as usize])
-    }
-
-    /// A pass has this text (once per pass: a pass's texts are distinct).
-    pub(super) fn add(&self, text_hash: &str) {
-        let id = Self::id(text_hash);
-        if let Some(mut counts) = self.shard(id).and_then(|s| s.lock().ok()) {
-            *counts.entry(id).or_default() += 1;
-        }
-    }
-
-    /// Whether more than one pass has this text (so far).
-    pub(super) fn shared(&self, text_hash: &str) -> bool {
-        let id = Self::id(text_hash);
-        self.shard(id)
-            .and_then(|s| s.lock().ok())
-            .is_some_and(|counts| counts.get(&id).is_some_and(|&n| n > 1))
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -343,33 +238,5 @@ mod tests {
         assert_eq!(parse_size("64KiB"), Ok(64 << 10));
         assert_eq!(parse_size("1000"), Ok(1000));
         assert!(parse_size("lots").is_err() && parse_size("5X").is_err());
-    }
-
-    #[test]
-    fn recent_entries_stay_within_their_budget_oldest_out_first() {
-        let recent = Recent::new(10, 1);
-        recent.insert("a", std::sync::Arc::new(1), 4);
-        recent.insert("b", std::sync::Arc::new(2), 4);
-        assert_eq!(recent.get("a").as_deref(), Some(&1));
-        recent.insert("c", std::sync::Arc::new(3), 4);
-        assert_eq!(
-            (recent.get("a"), recent.get("b").as_deref(), recent.get("c").as_deref()),
-            (None, Some(&2), Some(&3))
-        );
-        recent.insert("huge", std::sync::Arc::new(4), 11);
-        assert_eq!(recent.get("huge"), None);
-    }
-
-    #[test]
-    fn a_text_is_shared_once_a_second_pass_has_it() {
-        let counts = TextCounts::new(4);
-        counts.add("00000000000000ff");
-        assert!(!counts.shared("00000000000000ff"));
-        counts.add("00000000000000ff");
-        assert!(counts.shared("00000000000000ff") && !counts.shared("0000000000000001"));
-        let off = TextCounts::new(0);
-        off.add("00000000000000ff");
-        off.add("00000000000000ff");
-        assert!(!off.shared("00000000000000ff"));
     }
 }

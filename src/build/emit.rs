@@ -1,0 +1,336 @@
+//! What a build leaves: the manifest (its passes' parts in catalogue order), the materials, and
+//! the record of a clean build for the next no-op check; JSON streamed and written atomically.
+
+use super::jobs::Job;
+use super::noop::{disk_files, inputs_key, recorded_name};
+use super::plan::PassWork;
+use super::{BuildOptions, BuildResult, BuildSummary};
+use crate::catalog::{Catalog, CatalogShader, property_references};
+use crate::diagnostics::{self, Diagnostic};
+use crate::material::MaterialValue;
+use crate::reflect::manifest::*;
+use crate::reflect::{Resource, UniformBlock};
+use crate::shaderlab::ast::Shader;
+use crate::shaderlab::pragma::KeywordScope;
+use crate::source::{SourceStore, relative_to};
+use crate::store::{Cache, CachedStage, Digest, Hashed, Recorded};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
+
+/// Writes what a whole build (or a merge) leaves once its passes are built: the manifest from
+/// their parts, the materials, and the record of a clean build.
+pub(super) fn finish(
+    store: &SourceStore,
+    catalog: &Catalog,
+    options: &BuildOptions,
+    work: &[PassWork],
+    parts: Vec<PassManifest>,
+    mut summary: BuildSummary,
+    mut diagnostics: Vec<Diagnostic>,
+) -> BuildResult {
+    let manifest = manifest(store, options, work, parts);
+    let mut files = Vec::new();
+    if options.write && !diagnostics::has_errors(&diagnostics) {
+        files = manifest.packs().into_iter().collect();
+        let written = [
+            (
+                MATERIALS_FILE,
+                write_json(
+                    &options.output.join(MATERIALS_FILE),
+                    &materials(catalog),
+                    options.pretty_manifest,
+                ),
+            ),
+            (FILE_NAME, write_json(&options.output.join(FILE_NAME), &manifest, options.pretty_manifest)),
+        ];
+        for (name, result) in written {
+            match result {
+                Ok((len, written)) => {
+                    summary.bytes_written += if written { len } else { 0 };
+                    files.push((name.to_string(), len));
+                }
+                Err(error) => diagnostics.push(write_failure(&options.output, &error)),
+            }
+        }
+    }
+    diagnostics::dedup(&mut diagnostics);
+    if options.write && options.record && diagnostics.is_empty() {
+        let read = disk_files(store).map(|f| recorded_name(store, f, options)).collect();
+        // Each path once, however many includes looked there.
+        let absent: BTreeSet<String> = store.absent().iter().map(|p| relative_to(p, &options.root)).collect();
+        // Only costs a full build next time if it cannot be written.
+        let _ = Cache::new(&options.output, true).record_inputs(&Recorded {
+            key: inputs_key(store, options),
+            given: options.given_files,
+            shaders: summary.shaders,
+            passes: summary.passes,
+            variants: summary.variants,
+            modules: summary.modules,
+            files,
+            read,
+            absent: absent.into_iter().collect(),
+        });
+    }
+    BuildResult { manifest: Some(manifest), summary, diagnostics, output: options.output.clone() }
+}
+
+/// Writes JSON (the manifest, the materials) streamed, so that a million variants' manifest is
+/// never a string in memory, and hashed as it goes; a file that already holds exactly these bytes
+/// is left as it is, so that a rebuild that compiles nothing touches nothing. Returns its length
+/// and whether it was written.
+pub(super) fn write_json(
+    path: &std::path::Path,
+    value: &impl serde::Serialize,
+    pretty: bool,
+) -> std::io::Result<(u64, bool)> {
+    use std::io::Write as _;
+    // What was written, for the comparison with the old file once it is all written.
+    let digest = std::cell::RefCell::new(Digest::default());
+    let serialize = |out: &mut dyn std::io::Write| {
+        let mut out = Hashed { out, digest: Digest::default() };
+        if pretty {
+            serde_json::to_writer_pretty(&mut out, value)
+        } else {
+            serde_json::to_writer(&mut out, value)
+        }
+        .map_err(std::io::Error::other)?;
+        out.write_all(b"\n")?;
+        digest.replace(out.digest);
+        Ok(())
+    };
+    let changed = |old: &std::path::Path| {
+        let new = digest.borrow();
+        let same = std::fs::metadata(old).is_ok_and(|m| m.len() == new.len)
+            && Digest::of_file(old).is_ok_and(|old| old.finish() == new.finish());
+        !same
+    };
+    let written = crate::store::write_atomically_with(path, serialize, changed)?;
+    let len = digest.borrow().len;
+    Ok((len, written))
+}
+
+pub(super) fn write_failure(output: &std::path::Path, error: &std::io::Error) -> Diagnostic {
+    Diagnostic::error("K0410", format!("cannot write to `{}`: {error}", output.display()))
+}
+
+/// The manifest: the built passes grouped by shader, in catalogue order.
+fn manifest(
+    store: &SourceStore,
+    options: &BuildOptions,
+    work: &[PassWork],
+    passes: Vec<PassManifest>,
+) -> Manifest {
+    let mut grouped: Vec<(&CatalogShader, Vec<PassManifest>)> = Vec::new();
+    for (w, pass) in work.iter().zip(passes) {
+        match grouped.last_mut() {
+            Some((shader, passes)) if std::ptr::eq(*shader, w.shader) => passes.push(pass),
+            _ => grouped.push((w.shader, vec![pass])),
+        }
+    }
+    let shaders = grouped
+        .into_iter()
+        .map(|(shader, passes)| ShaderManifest {
+            name: shader.shader.name.value.clone(),
+            file: recorded_name(store, shader.file, options),
+            render_queue: crate::material::shader_queue(&shader.shader),
+            properties: properties(&shader.shader, &passes),
+            passes,
+        })
+        .collect();
+    Manifest { schema_version: SCHEMA_VERSION, kiln_version: env!("CARGO_PKG_VERSION").to_string(), shaders }
+}
+
+/// A pass's part of the manifest: each module once, each distinct interface, uniform block and
+/// pack once, and its variants as module indices.
+pub(super) fn pass_manifest(
+    store: &SourceStore,
+    catalog: &Catalog,
+    work: &PassWork,
+    jobs: &[Job],
+    stages: &[[Option<usize>; 2]],
+    built: &[Option<CachedStage>],
+) -> PassManifest {
+    let shader = &work.shader.shader;
+    let mut entries: BTreeMap<(u32, u32), LayoutEntry> = BTreeMap::new();
+    let mut uniform_blocks: Vec<UniformBlock> = Vec::new();
+    let mut packs: Vec<String> = Vec::new();
+    let mut pack_of: HashMap<String, usize> = HashMap::new();
+    let mut interfaces: Vec<StageInterface> = Vec::new();
+    let mut interface_of: HashMap<StageInterface, usize> = HashMap::new();
+    let mut modules: Vec<ModuleManifest> = Vec::new();
+    // A module is its interface, its files' hashes and the features it was validated with.
+    type ModuleIdentity = (usize, [Option<String>; 2], Vec<String>);
+    let mut module_of: HashMap<ModuleIdentity, usize> = HashMap::new();
+    // For each job, its module (`None` when it failed).
+    let mut module_of_job: Vec<Option<usize>> = Vec::with_capacity(jobs.len());
+    for (job, stage) in jobs.iter().zip(built) {
+        let Some(stage) = stage else {
+            module_of_job.push(None);
+            continue;
+        };
+        let reflection = &stage.reflection;
+        let name = job.stage.name();
+        for b in &reflection.bindings {
+            let entry = entries.entry((b.group, b.binding)).or_insert_with(|| LayoutEntry {
+                binding: b.binding,
+                name: b.name.clone(),
+                visibility: Vec::new(),
+                resource: b.resource.clone(),
+            });
+            if !entry.visibility.iter().any(|v| v == name) {
+                entry.visibility.push(name.to_string());
+            }
+        }
+        let mut blocks: Vec<usize> = reflection
+            .uniform_blocks
+            .iter()
+            .map(|block| {
+                uniform_blocks.iter().position(|b| b == block).unwrap_or_else(|| {
+                    uniform_blocks.push(block.clone());
+                    uniform_blocks.len() - 1
+                })
+            })
+            .collect();
+        blocks.sort_by(|&a, &b| uniform_blocks[a].name.cmp(&uniform_blocks[b].name));
+        let interface = StageInterface {
+            stage: name.to_string(),
+            entry_point: reflection.entry_point.clone(),
+            inputs: reflection.inputs.clone(),
+            outputs: reflection.outputs.clone(),
+            bindings: reflection.bindings.iter().map(|b| [b.group, b.binding]).collect(),
+            uniform_blocks: blocks,
+        };
+        let interface = *interface_of.entry(interface).or_insert_with_key(|interface| {
+            interfaces.push(interface.clone());
+            interfaces.len() - 1
+        });
+        let mut file = |file: &Option<FileRef>| {
+            file.as_ref().map(|f| {
+                let pack = *pack_of.entry(f.path.clone()).or_insert_with(|| {
+                    packs.push(f.path.clone());
+                    packs.len() - 1
+                });
+                ModuleFile { pack, offset: f.offset, size: f.size, hash: f.hash.clone() }
+            })
+        };
+        // Texts that differ only where compaction removes code give the same module.
+        let hashes = [&stage.wgsl, &stage.spirv].map(|f| f.as_ref().map(|f| f.hash.clone()));
+        let module =
+            *module_of.entry((interface, hashes, job.allowed.features())).or_insert_with_key(|key| {
+                let (wgsl, spirv) = (file(&stage.wgsl), file(&stage.spirv));
+                modules.push(ModuleManifest { interface, features: key.2.clone(), wgsl, spirv });
+                modules.len() - 1
+            });
+        module_of_job.push(Some(module));
+    }
+    let variants = work
+        .variants
+        .iter()
+        .zip(stages)
+        .map(|(variant, [vertex, fragment])| VariantManifest {
+            key: variant.bits.key(),
+            keywords: work.program.keywords.keywords(&variant.bits).map(str::to_string).collect(),
+            materials: variant.materials.iter().map(|&m| catalog.materials[m].name.clone()).collect(),
+            vertex: vertex.and_then(|j| module_of_job[j]),
+            fragment: fragment.and_then(|j| module_of_job[j]),
+        })
+        .collect();
+    let mut groups: BTreeMap<u32, Vec<LayoutEntry>> = BTreeMap::new();
+    for ((group, _), mut entry) in entries {
+        entry.visibility.sort();
+        groups.entry(group).or_default().push(entry);
+    }
+    let render_state = work
+        .shader
+        .shader
+        .subshaders
+        .get(work.pass.subshader)
+        .map(|sub| &sub.state.render_state)
+        .into_iter()
+        .flatten()
+        .chain(work.shader.pass_ast(work.pass).map(|p| &p.state.render_state).into_iter().flatten())
+        .map(|command| {
+            let text = store.slice(command.span).trim().to_string();
+            let properties = property_references(&text)
+                .into_iter()
+                .map(|name| PropertyReference {
+                    default: shader
+                        .property(name)
+                        .map_or(serde_json::Value::Null, |p| MaterialValue::from(&p.default.value).to_json()),
+                    name: name.to_string(),
+                })
+                .collect();
+            RenderState { command: text, state: StateCommand::from_ast(&command.kind), properties }
+        })
+        .collect();
+    PassManifest {
+        subshader: work.pass.subshader,
+        index: work.pass.index,
+        name: work.pass.name.clone(),
+        tags: work.pass.tags.clone(),
+        render_state,
+        keyword_sets: work
+            .program
+            .keywords
+            .sets()
+            .iter()
+            .map(|set| KeywordSetManifest {
+                kind: set.kind.name().to_string(),
+                scope: if set.scope == KeywordScope::Local { "local" } else { "global" }.to_string(),
+                stage: set.stage.name().to_string(),
+                keywords: set
+                    .options
+                    .iter()
+                    .map(|o| o.keyword.clone().unwrap_or_else(|| "_".into()))
+                    .collect(),
+            })
+            .collect(),
+        keywords: work.program.keywords.names().to_vec(),
+        layout: groups.into_iter().map(|(group, entries)| BindGroup { group, entries }).collect(),
+        uniform_blocks,
+        packs,
+        interfaces,
+        modules,
+        variants,
+    }
+}
+
+/// Every resolved material, for the run time (`materials.json`).
+fn materials(catalog: &Catalog) -> Vec<MaterialManifest> {
+    catalog
+        .materials
+        .iter()
+        .filter_map(|m| Some(MaterialManifest::new(m, &catalog.shaders.get(m.shader)?.shader.name.value)))
+        .collect()
+}
+
+/// The shader's properties, with their place in the material block (from the first variant that
+/// has one) and their texture bindings.
+fn properties(shader: &Shader, passes: &[PassManifest]) -> Vec<PropertyManifest> {
+    let material_block = passes.iter().flat_map(|p| &p.uniform_blocks).find(|b| b.name == "UnityPerMaterial");
+    let mut bindings: HashMap<&str, [u32; 2]> = HashMap::new();
+    for pass in passes {
+        for group in &pass.layout {
+            for entry in &group.entries {
+                if matches!(entry.resource, Resource::Texture { .. } | Resource::StorageTexture { .. }) {
+                    bindings.entry(entry.name.as_str()).or_insert([group.group, entry.binding]);
+                }
+            }
+        }
+    }
+    shader
+        .properties
+        .iter()
+        .map(|p| PropertyManifest {
+            name: p.name.value.clone(),
+            display_name: p.display_name.value.clone(),
+            ty: p.ty.value.manifest_text(),
+            default: MaterialValue::from(&p.default.value).to_json(),
+            offset: material_block
+                .and_then(|b| b.members.iter().find(|m| m.name == p.name.value))
+                .map(|m| m.offset),
+            binding: bindings.get(p.name.value.as_str()).copied(),
+            drawer: crate::material::KeywordDrawer::of(p),
+            enum_names: crate::material::enum_names(p),
+        })
+        .collect()
+}

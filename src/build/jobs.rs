@@ -1,0 +1,136 @@
+//! A pass's stage texts: each distinct (stage, stage keywords, target) of its variants
+//! preprocessed once, in parallel, and identical texts made one job.
+
+use super::plan::PassWork;
+use crate::compile::target::Allowed;
+use crate::diagnostics;
+use crate::diagnostics::Diagnostic;
+use crate::keywords::KeywordBits;
+use crate::preprocess::{Includes, SourceMap, Stage, preprocess};
+use crate::source::{SourceStore, Span};
+use crate::store::hash;
+use rayon::prelude::*;
+use std::collections::HashMap;
+
+/// One distinct stage module of a pass.
+pub(super) struct Job<'a> {
+    pub stage: Stage,
+    pub entry: &'a str,
+    pub entry_pragma: Span,
+    pub text: String,
+    pub map: SourceMap,
+    pub text_hash: String,
+    pub allowed: Allowed,
+    /// Which variant asked for it first, for diagnostics.
+    pub context: String,
+    /// How many stage requests of the pass's variants it serves (for progress).
+    pub requests: usize,
+}
+
+impl Job<'_> {
+    /// What the resources a job's module reaches depend on: its text, stage and entry point.
+    pub(super) fn front_key(&self) -> String {
+        format!("{} {} {}", self.text_hash, self.stage.name(), self.entry)
+    }
+}
+
+/// A pass's distinct stage modules, and each variant's vertex and fragment job (`None` when that
+/// stage failed or is absent).
+pub(super) struct PassJobs<'a> {
+    pub jobs: Vec<Job<'a>>,
+    pub stages: Vec<[Option<usize>; 2]>,
+}
+
+/// One stage of one variant, to preprocess.
+struct Request<'a> {
+    stage: Stage,
+    entry: &'a crate::source::Spanned<String>,
+    keywords: Vec<String>,
+    allowed: Allowed,
+    context: String,
+}
+
+/// The distinct stage texts of a pass's variants: each (stage, stage keywords, target) is
+/// preprocessed once, in parallel, and identical texts become one job.
+pub(super) fn pass_jobs<'a>(
+    store: &SourceStore,
+    includes: &Includes,
+    work: &PassWork<'a>,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> PassJobs<'a> {
+    let (shader, pass, program) = (work.shader, work.pass, work.program);
+    let mut jobs: Vec<Job<'a>> = Vec::new();
+    let Some(wgsl) = program.wgsl.as_ref() else {
+        return PassJobs { jobs, stages: vec![[None, None]; work.variants.len()] };
+    };
+    let mut requests: Vec<Request> = Vec::new();
+    let mut request_of: HashMap<(Stage, &KeywordBits, String), usize> = HashMap::new();
+    let mut per_variant: Vec<[Option<usize>; 2]> = Vec::with_capacity(work.variants.len());
+    for variant in work.variants.iter() {
+        let all: Vec<&str> = program.keywords.keywords(&variant.bits).collect();
+        let allowed = Allowed::for_variant(&program.pragmas, &all);
+        per_variant.push([Stage::Vertex, Stage::Fragment].map(|stage| {
+            let entry = match stage {
+                Stage::Vertex => program.pragmas.vertex.as_ref()?,
+                Stage::Fragment => program.pragmas.fragment.as_ref()?,
+            };
+            let bits = program.keywords_for(variant, stage);
+            Some(*request_of.entry((stage, bits, allowed.key())).or_insert_with(|| {
+                let shown = if all.is_empty() { "(no keywords)".to_string() } else { all.join(" ") };
+                requests.push(Request {
+                    stage,
+                    entry,
+                    keywords: program.keywords.keywords(bits).map(str::to_string).collect(),
+                    allowed: allowed.clone(),
+                    context: format!(
+                        "in variant `{shown}` of `{}` pass {}, {} stage",
+                        shader.shader.name.value,
+                        pass.index,
+                        stage.name()
+                    ),
+                });
+                requests.len() - 1
+            }))
+        }));
+    }
+    let outputs: Vec<_> = requests
+        .par_iter()
+        .map(|r| {
+            let keywords: Vec<&str> = r.keywords.iter().map(String::as_str).collect();
+            let out = preprocess(includes, store, wgsl, &keywords, r.stage);
+            let text_hash = hash(out.text.as_bytes());
+            (out, text_hash)
+        })
+        .collect();
+    // Different keywords can still give the same text (a keyword no `#if` of this stage tests).
+    let mut job_of_text: HashMap<(Stage, String, String), usize> = HashMap::new();
+    let mut job_of_request: Vec<Option<usize>> = Vec::with_capacity(requests.len());
+    for (request, (out, text_hash)) in requests.into_iter().zip(outputs) {
+        let failed = diagnostics::has_errors(&out.diagnostics);
+        diagnostics.extend(out.diagnostics.into_iter().map(|d| d.note(request.context.clone())));
+        if failed {
+            job_of_request.push(None);
+            continue;
+        }
+        let key = (request.stage, text_hash.clone(), request.allowed.key());
+        let job = *job_of_text.entry(key).or_insert_with(|| {
+            jobs.push(Job {
+                stage: request.stage,
+                entry: &request.entry.value,
+                entry_pragma: request.entry.span,
+                text: out.text,
+                map: out.source_map,
+                text_hash,
+                allowed: request.allowed,
+                context: request.context,
+                requests: 0,
+            });
+            jobs.len() - 1
+        });
+        jobs[job].requests += 1;
+        job_of_request.push(Some(job));
+    }
+    let stages =
+        per_variant.into_iter().map(|stages| stages.map(|r| r.and_then(|r| job_of_request[r]))).collect();
+    PassJobs { jobs, stages }
+}

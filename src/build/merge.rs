@@ -1,0 +1,118 @@
+//! `kiln merge`: the manifest of a whole build from the shards' parts, with naga run nowhere and
+//! nothing preprocessed. Each pass's part comes from the shard that built it; its packs and its
+//! cache entry are linked into the output (copied where a link cannot be made), after every
+//! module in them is checked against its hash, so the output is one build's, byte for byte.
+
+use super::emit::{finish, write_failure};
+use super::noop::inputs_key;
+use super::plan::{pass_key, plan};
+use super::shard::ShardPass;
+use super::{BuildOptions, BuildResult, BuildSummary, Merge};
+use crate::catalog::Catalog;
+use crate::diagnostics::Diagnostic;
+use crate::source::SourceStore;
+use crate::store::{hash, link_or_copy, pass_index_path};
+use rayon::prelude::*;
+use std::collections::HashMap;
+use std::path::Path;
+
+/// Joins the shards' parts into the output folder (see the module's comment).
+pub(super) fn merge(
+    store: &SourceStore,
+    catalog: &Catalog,
+    options: &BuildOptions,
+    merge: &Merge,
+) -> BuildResult {
+    let mut summary = BuildSummary::default();
+    if inputs_key(store, options) != merge.inputs {
+        let error = Diagnostic::error("K0413", "the shards were built from another state of the project")
+            .note("a file the build reads, the project's settings or the build's options changed since")
+            .help("build the shards again from this state of the project, then merge them");
+        return BuildResult::failed(options, summary, vec![error]);
+    }
+    let mut diagnostics = Vec::new();
+    let work = plan(catalog, options.unused_shaders, &mut summary, &mut diagnostics);
+    let built: HashMap<&str, (&Path, &ShardPass)> = merge
+        .shards
+        .iter()
+        .flat_map(|(folder, record)| {
+            record.passes.iter().map(move |pass| (pass.key.as_str(), (folder.as_path(), pass)))
+        })
+        .collect();
+    let mut found = Vec::with_capacity(work.len());
+    for pass in &work {
+        let key = pass_key(store, options, pass);
+        match built.get(key.as_str()) {
+            Some(&(folder, part)) => found.push((folder, part)),
+            None => diagnostics.push(
+                Diagnostic::error(
+                    "K0412",
+                    format!("no shard holds pass {} of `{}`", pass.pass.index, pass.shader.shader.name.value),
+                )
+                .note("its shard's output is damaged, or was built from another state of the project"),
+            ),
+        }
+    }
+    // Every module checked before anything is linked: a damaged shard writes nothing.
+    diagnostics
+        .extend(found.par_iter().filter_map(|(folder, part)| damaged(folder, part)).collect::<Vec<_>>());
+    if !diagnostics.is_empty() {
+        return BuildResult::failed(options, summary, diagnostics);
+    }
+    if options.write {
+        let linked: std::io::Result<Vec<u64>> = found
+            .par_iter()
+            .map(|(folder, part)| {
+                let mut copied = 0;
+                let cache_entry = pass_index_path(&part.key);
+                for path in part.manifest.packs.iter().chain([&cache_entry]) {
+                    copied += link_or_copy(&folder.join(path), &options.output.join(path))?;
+                }
+                Ok(copied)
+            })
+            .collect();
+        match linked {
+            Ok(copied) => summary.bytes_written += copied.iter().sum::<u64>(),
+            Err(error) => {
+                return BuildResult::failed(options, summary, vec![write_failure(&options.output, &error)]);
+            }
+        }
+    }
+    summary.modules = found.iter().map(|(_, part)| part.modules).sum();
+    summary.reused = summary.modules;
+    let parts = found.into_iter().map(|(_, part)| part.manifest.clone()).collect();
+    finish(store, catalog, options, &work, parts, summary, diagnostics)
+}
+
+/// The first module of a shard's pass whose bytes are missing or not what its hash says.
+fn damaged(folder: &Path, part: &ShardPass) -> Option<Diagnostic> {
+    let manifest = &part.manifest;
+    let packs: Vec<Option<Vec<u8>>> =
+        manifest.packs.iter().map(|p| std::fs::read(folder.join(p)).ok()).collect();
+    for module in &manifest.modules {
+        for file in [&module.wgsl, &module.spirv].into_iter().flatten() {
+            let bytes = packs
+                .get(file.pack)
+                .and_then(|pack| pack.as_ref())
+                .and_then(|pack| pack.get(file.offset as usize..(file.offset + file.size) as usize));
+            if bytes.is_none_or(|bytes| hash(bytes) != file.hash) {
+                let interface = &manifest.interfaces[module.interface];
+                return Some(
+                    Diagnostic::error(
+                        "K0412",
+                        format!(
+                            "no shard holds the {} module of `{}` intact",
+                            interface.stage, interface.entry_point
+                        ),
+                    )
+                    .note(format!(
+                        "`{}` is damaged or missing",
+                        folder.join(&manifest.packs[file.pack]).display()
+                    ))
+                    .help("build that shard again"),
+                );
+            }
+        }
+    }
+    None
+}

@@ -1,0 +1,229 @@
+//! The build layer: everything that orchestrates the stages for a whole project. A build plans
+//! its passes from the catalogue ([`plan`]), builds each as a parallel task ([`pass`]: its stage
+//! texts from [`jobs`], each front and stage module from the first of an ordered list of
+//! [`sources`] that has it, one pack per backend), and emits the manifest or, for a shard, its
+//! passes' parts ([`emit`], [`shard`]); a merge joins shards' parts without compiling
+//! ([`merge`]). Before any of it, [`unchanged`] tells from the last clean build's record that
+//! nothing needs doing ([`noop`]). The manifest keeps catalogue order, so output never depends on
+//! the thread count or on how the work was split.
+
+mod emit;
+mod jobs;
+mod merge;
+mod noop;
+mod pass;
+mod plan;
+mod session;
+pub mod shard;
+mod sources;
+
+pub use noop::unchanged;
+pub use plan::stage_texts;
+
+use crate::catalog::Catalog;
+use crate::config::Backend;
+use crate::diagnostics::Diagnostic;
+use crate::preprocess::Includes;
+use crate::reflect::manifest::Manifest;
+use crate::source::SourceStore;
+use rayon::prelude::*;
+use shard::Shard;
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+/// Part of every cache key: a new naga may compile differently.
+const NAGA_VERSION: &str = "naga 30";
+
+/// Part of every cache key, raised when kiln compiles the same text differently (revision 2:
+/// layouts by the WGSL spec, a wider capability baseline), so that a cache an earlier kiln of the
+/// same version filled is not taken for current.
+const COMPILER_REVISION: u32 = 2;
+
+/// Which variants of a shader no material uses are compiled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum VariantSelection {
+    /// None: only what materials (and `always_include`) need. `kiln build`.
+    Used,
+    /// The default variant and each keyword on its own. `kiln check`.
+    DefaultsAndEachKeyword,
+    /// The full product, refused above `limit` variants per pass. `kiln check --all-variants`.
+    All {
+        /// The most variants a pass may have.
+        limit: u128,
+    },
+}
+
+/// How a build runs and where it writes.
+#[derive(Debug, Clone)]
+pub struct BuildOptions {
+    /// The output folder.
+    pub output: PathBuf,
+    /// The project folder: the manifest's shader paths and the cache's keys are relative to it,
+    /// so that a project builds the same bytes wherever it sits.
+    pub root: PathBuf,
+    /// `false` for `kiln check`: nothing is written.
+    pub write: bool,
+    /// Worker threads (default: all cores).
+    pub threads: Option<usize>,
+    /// The back ends each stage module is written for.
+    pub backends: Vec<Backend>,
+    /// What is built of shaders no material uses.
+    pub unused_shaders: VariantSelection,
+    /// Write `manifest.json` indented (default: compact).
+    pub pretty_manifest: bool,
+    /// Record the inputs for the next build's no-op check ([`unchanged`]). Only when the
+    /// catalogue reported nothing: a no-op build reports nothing either.
+    pub record: bool,
+    /// The whole build, one shard of it, or a merge of shards.
+    pub part: Part,
+    /// A module cache shared with other builds: modules are taken from it before naga runs,
+    /// and every module compiled is published to it.
+    pub cache_dir: Option<PathBuf>,
+    /// How many files the store held from disk before the catalogue was built (the project
+    /// file, shaders, materials, variant logs): the rest were read through includes. A no-op
+    /// needs the same files given, not merely the same files read.
+    pub given_files: usize,
+}
+
+/// How much of a build one process does.
+#[derive(Debug, Clone, Default)]
+pub enum Part {
+    /// Every pass, and the manifest.
+    #[default]
+    Whole,
+    /// `kiln build --shard I/N`: the passes that fall to this shard, built as a whole build
+    /// builds them, and their parts of the manifest (`shard.json`) for `kiln merge`.
+    Shard(Shard),
+    /// `kiln merge`: the manifest from the shards' parts, their packs linked into the output.
+    Merge(Merge),
+}
+
+/// Shard outputs a merge joins ([`shard::check_shards`] checked them against each other).
+#[derive(Debug, Clone)]
+pub struct Merge {
+    /// Each shard's output folder and its record.
+    pub shards: Vec<(PathBuf, shard::ShardRecord)>,
+    /// The inputs hash the shards share, which the project must still have.
+    pub inputs: String,
+}
+
+/// What a build did, in numbers.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct BuildSummary {
+    /// Shaders with at least one pass built.
+    pub shaders: usize,
+    /// Passes built (in a shard: in the whole project).
+    pub passes: usize,
+    /// Variants built (in a shard: in the whole project).
+    pub variants: usize,
+    /// Distinct stage modules.
+    pub modules: usize,
+    /// Modules naga compiled.
+    pub compiled: usize,
+    /// Modules taken from the output's cache, the shared cache or shards.
+    pub reused: usize,
+    /// Modules another pass of the build compiled (identical stage texts, laid out alike).
+    pub shared: usize,
+    /// Bytes of files written.
+    pub bytes_written: u64,
+    /// Wall-clock time of the build.
+    pub elapsed: Duration,
+    /// Shaders with WGSL programs that no material uses, so nothing of them was built.
+    pub unused: Vec<String>,
+}
+
+/// A build's outcome.
+pub struct BuildResult {
+    /// `None` when nothing changed since the last clean build ([`unchanged`], which does not
+    /// read the manifest: it is in the output folder, as that build wrote it), and for a shard.
+    pub manifest: Option<Manifest>,
+    /// The counts.
+    pub summary: BuildSummary,
+    /// What the build found wrong (the catalogue's are the caller's).
+    pub diagnostics: Vec<Diagnostic>,
+    /// The output folder (written or not).
+    pub output: PathBuf,
+}
+
+impl BuildResult {
+    fn failed(options: &BuildOptions, summary: BuildSummary, diagnostics: Vec<Diagnostic>) -> BuildResult {
+        BuildResult { manifest: None, summary, diagnostics, output: options.output.clone() }
+    }
+}
+
+/// Builds (or, without `write`, checks) every WGSL pass of the catalogue, or the part of it
+/// `options.part` names. `progress` is told (variants done, variants in all).
+pub fn build(
+    store: &SourceStore,
+    includes: &Includes,
+    catalog: &Catalog,
+    options: &BuildOptions,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> BuildResult {
+    let started = Instant::now();
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(options.threads.unwrap_or(0)).build();
+    let run = || match &options.part {
+        Part::Merge(merge) => merge::merge(store, catalog, options, merge),
+        Part::Whole | Part::Shard(_) => build_passes(store, includes, catalog, options, progress),
+    };
+    let mut result = match pool {
+        Ok(pool) => pool.install(run),
+        Err(_) => run(),
+    };
+    result.summary.elapsed = started.elapsed();
+    result
+}
+
+/// A whole build, or a shard: every pass it owns is a task (its stage texts, their resources,
+/// one layout, its stage modules, its packs and its part of the manifest). Threads take passes as
+/// they free up (no barrier between passes), so one pass's serial steps overlap other passes'
+/// naga work, and only the passes in flight hold texts and modules.
+fn build_passes(
+    store: &SourceStore,
+    includes: &Includes,
+    catalog: &Catalog,
+    options: &BuildOptions,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> BuildResult {
+    let mut diagnostics = Vec::new();
+    let mut summary = BuildSummary::default();
+    let work = plan::plan(catalog, options.unused_shaders, &mut summary, &mut diagnostics);
+    // A shard decides what it owns before preprocessing anything.
+    let owned: Vec<bool> = match &options.part {
+        Part::Shard(shard) => shard.owned(&plan::weights(&work)),
+        _ => vec![true; work.len()],
+    };
+    let mine: Vec<&plan::PassWork> = work.iter().zip(&owned).filter(|(_, o)| **o).map(|(w, _)| w).collect();
+    let total = mine.iter().map(|w| w.variants.len()).sum();
+    let session = session::Session::new(options, progress, total);
+    let built: Vec<pass::PassBuilt> = mine
+        .par_iter()
+        .with_max_len(1)
+        .map(|work| pass::build_pass(work, store, includes, catalog, options, &session))
+        .collect();
+    let mut parts = Vec::with_capacity(built.len());
+    let mut modules = Vec::with_capacity(built.len());
+    for pass in built {
+        modules.push(pass.modules);
+        summary.modules += pass.modules;
+        summary.compiled += pass.compiled;
+        summary.reused += pass.reused;
+        summary.shared += pass.shared;
+        summary.bytes_written += pass.bytes_written;
+        diagnostics.extend(pass.diagnostics);
+        parts.push(pass.part);
+    }
+    match &options.part {
+        Part::Shard(shard) => {
+            let passes = (mine.iter().zip(modules).zip(parts))
+                .map(|((work, modules), manifest)| shard::ShardPass {
+                    key: plan::pass_key(store, options, work),
+                    modules,
+                    manifest,
+                })
+                .collect();
+            shard::finish(store, options, *shard, passes, summary, diagnostics)
+        }
+        _ => emit::finish(store, catalog, options, &work, parts, summary, diagnostics),
+    }
+}

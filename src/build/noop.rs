@@ -1,0 +1,97 @@
+//! The no-op check: what a build's outcome depends on (its inputs key), and the record of the last
+//! clean build, compared before anything is parsed.
+
+use super::{BuildOptions, BuildResult, BuildSummary, COMPILER_REVISION, NAGA_VERSION};
+use crate::preprocess::LIBRARY_PREFIX;
+use crate::reflect::manifest::SCHEMA_VERSION;
+use crate::source::{FileId, SourceStore, relative_to};
+use crate::store::Cache;
+use rayon::prelude::*;
+use std::time::Instant;
+
+/// A file's name as the build records it: relative to the project folder for files read from
+/// disk, so that nothing recorded depends on where the project sits.
+pub(super) fn recorded_name(store: &SourceStore, file: FileId, options: &BuildOptions) -> String {
+    match store.path(file) {
+        Some(path) => relative_to(path, &options.root),
+        None => store.name(file).to_string(),
+    }
+}
+
+/// The files of the store read from disk, in the order read.
+pub(super) fn disk_files(store: &SourceStore) -> impl Iterator<Item = FileId> + '_ {
+    store.ids().filter(|&f| store.path(f).is_some())
+}
+
+/// Raised when what a build writes changes shape (files added), so that an earlier build's
+/// record no longer passes for a no-op. (A new manifest schema does the same.)
+const OUTPUT_FORMAT: u32 = 2;
+
+/// Everything a build's outcome depends on: the options, the texts given in memory (global
+/// keywords from a build script; the bundled library is part of kiln's version), and every file
+/// read from disk (shaders, includes, materials, variant logs, the project file) by its name
+/// relative to the project, in the order read.
+pub(super) fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String {
+    let mut hasher = blake3::Hasher::new();
+    let mut file = |name: &str, bytes: &[u8]| {
+        hasher.update(&(name.len() as u64).to_le_bytes());
+        hasher.update(name.as_bytes());
+        hasher.update(&(bytes.len() as u64).to_le_bytes());
+        hasher.update(bytes);
+    };
+    for f in store.ids().filter(|&f| store.path(f).is_none() && !store.name(f).starts_with(LIBRARY_PREFIX)) {
+        file(store.name(f), store.text(f).as_bytes());
+    }
+    file("<read from disk>", &[]);
+    for f in disk_files(store) {
+        file(&recorded_name(store, f, options), store.text(f).as_bytes());
+    }
+    let options = format!(
+        "{:?}{:?}{}{} revision {COMPILER_REVISION} {NAGA_VERSION} output {OUTPUT_FORMAT} manifest {SCHEMA_VERSION}",
+        options.backends,
+        options.unused_shaders,
+        options.pretty_manifest,
+        env!("CARGO_PKG_VERSION")
+    );
+    hasher.update(options.as_bytes());
+    hasher.finalize().to_hex()[..32].to_string()
+}
+
+/// The no-op check, made before the catalogue is built: `store` holds the files found so far
+/// (the project file, shaders, materials, variant logs). When they are exactly the files the last
+/// clean build was given, the rest it read (includes, read again here into `store`) are
+/// unchanged, nothing appeared where it looked in vain,
+/// and every file it wrote is in place, nothing needs doing: no parsing, no preprocessing, no
+/// naga, and the manifest is not read.
+pub fn unchanged(store: &mut SourceStore, options: &BuildOptions) -> Option<BuildResult> {
+    let started = Instant::now();
+    let cache = Cache::new(&options.output, false);
+    let recorded = cache.recorded()?;
+    let found: Vec<String> = disk_files(store).map(|f| recorded_name(store, f, options)).collect();
+    if found.len() != recorded.given || recorded.read.get(..found.len()) != Some(&found[..]) {
+        return None;
+    }
+    if recorded.absent.par_iter().any(|path| std::fs::symlink_metadata(options.root.join(path)).is_ok()) {
+        return None;
+    }
+    // The includes are read through the store, as a build reads them, so that what it reports
+    // as read (a build script's `rerun-if-changed`) is the same whether it compiled or not.
+    for name in &recorded.read[found.len()..] {
+        let path = options.root.join(name);
+        let canonical = store.canonical_file(&path)?;
+        store.load_once(&path, canonical).ok()?;
+    }
+    if !cache.unchanged(&recorded, &inputs_key(store, options)) {
+        return None;
+    }
+    let summary = BuildSummary {
+        shaders: recorded.shaders,
+        passes: recorded.passes,
+        variants: recorded.variants,
+        modules: recorded.modules,
+        reused: recorded.modules,
+        elapsed: started.elapsed(),
+        ..BuildSummary::default()
+    };
+    Some(BuildResult { summary, manifest: None, diagnostics: Vec::new(), output: options.output.clone() })
+}

@@ -1,0 +1,286 @@
+//! One pass: its stage texts, the resources each declares, one layout, then its stage modules,
+//! each step in parallel over the pass's jobs; then its packs, its entry in the output's cache
+//! and its part of the manifest. Its texts and modules are dropped when it returns.
+
+use super::emit::{pass_manifest, write_failure};
+use super::jobs::{Job, PassJobs, pass_jobs};
+use super::plan::{PassWork, pass_key};
+use super::session::Session;
+use super::sources::{self, Front, ModuleAsk, PassSources};
+use super::{BuildOptions, COMPILER_REVISION, NAGA_VERSION};
+use crate::catalog::Catalog;
+use crate::compile::Mapper;
+use crate::compile::bind::{self, Declared, PassLayout};
+use crate::config::Backend;
+use crate::diagnostics::Diagnostic;
+use crate::preprocess::Includes;
+use crate::reflect::StageReflection;
+use crate::reflect::manifest::{FileRef, PassManifest};
+use crate::source::SourceStore;
+use crate::store::{Cache, CachedStage, ModuleBytes, PassIndex, hash, shared};
+use rayon::prelude::*;
+use std::collections::BTreeMap;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Arc, OnceLock};
+
+/// A stage module of a pass: reused from the output's cache, or made now and not yet stored (the
+/// pass's new modules are packed together once all are done).
+pub(super) enum Built {
+    /// In the output's packs already.
+    Reused(Box<CachedStage>),
+    /// Compiled by naga now.
+    Compiled(Arc<Compiled>),
+    /// From the shared cache: packed as if compiled now, but not compiled.
+    Fetched(Arc<Compiled>),
+    /// Compiled by another pass of this build: packed as if compiled now.
+    Shared(Arc<Compiled>),
+}
+
+impl Built {
+    /// The module's bytes to pack: `None` for modules packed already.
+    fn output(&self) -> Option<&Arc<Compiled>> {
+        match self {
+            Built::Compiled(output) | Built::Fetched(output) | Built::Shared(output) => Some(output),
+            Built::Reused(_) => None,
+        }
+    }
+}
+
+/// A stage module made in this build: its bytes per backend (`[wgsl, spirv]`), hashed where it
+/// was made so that packing, which is serial, only concatenates.
+pub(super) struct Compiled {
+    pub modules: [Option<ModuleBytes>; 2],
+    pub reflection: StageReflection,
+}
+
+impl Compiled {
+    /// About what it holds in memory.
+    pub(super) fn size(&self) -> usize {
+        self.modules.iter().flatten().map(|m| m.bytes.len() + m.hash.len()).sum::<usize>() + 1024
+    }
+}
+
+/// `None` when the stage's pass could not be laid out.
+type StageOutcome = Option<Result<(Built, String), Diagnostic>>;
+
+/// What building one pass gives: its part of the manifest, its diagnostics and its share of the
+/// summary.
+pub(super) struct PassBuilt {
+    pub part: PassManifest,
+    pub diagnostics: Vec<Diagnostic>,
+    pub modules: usize,
+    pub compiled: usize,
+    pub reused: usize,
+    pub shared: usize,
+    pub bytes_written: u64,
+}
+
+/// Builds one pass (see the module's comment).
+pub(super) fn build_pass(
+    work: &PassWork,
+    store: &SourceStore,
+    includes: &Includes,
+    catalog: &Catalog,
+    options: &BuildOptions,
+    session: &Session,
+) -> PassBuilt {
+    let (cache, progress) = (&session.cache, &session.progress);
+    let mut diagnostics = Vec::new();
+    let PassJobs { jobs, stages } = pass_jobs(store, includes, work, &mut diagnostics);
+    for job in &jobs {
+        session.texts.add(&job.text_hash);
+    }
+    let key = pass_key(store, options, work);
+    let index = cache.pass_index(&key);
+    let sources = PassSources {
+        store,
+        options,
+        session,
+        pass_key: &key,
+        index: &index,
+        shared_fronts: OnceLock::new(),
+    };
+    let mut fronts: Vec<Front> = jobs.par_iter().map(|job| sources::front(&sources, job)).collect();
+    // What was parsed now is published for every other build of the pass.
+    if let Some(dir) = &options.cache_dir
+        && fronts.iter().any(|f| matches!(f, Ok((_, Some(_)))))
+    {
+        shared::publish_layouts(dir, &key, &declared_by_text(&jobs, &fronts));
+    }
+    let layout = lay_out(&jobs, &fronts, store, &mut diagnostics);
+    let requests: usize = jobs.iter().map(|j| j.requests).sum();
+    let served = AtomicUsize::new(0);
+    let outcomes: Vec<StageOutcome> = jobs
+        .par_iter()
+        .zip(fronts.par_iter_mut())
+        .map(|(job, front)| {
+            let outcome = match front {
+                Ok((declared, parsed)) => layout.as_ref().map(|layout| {
+                    let key = stage_key(job, declared, layout, options);
+                    let mut ask = ModuleAsk { job, key: &key, layout, parsed: parsed.take() };
+                    sources::module(&sources, &mut ask).map(|built| (built, key))
+                }),
+                Err(_) => None,
+            };
+            let before = served.fetch_add(job.requests, Ordering::Relaxed);
+            progress.advance(work.variants.len(), requests, before, job.requests);
+            outcome
+        })
+        .collect();
+    let compiled: Vec<&Compiled> =
+        outcomes.iter().filter_map(|o| Some(&**o.as_ref()?.as_ref().ok()?.0.output()?)).collect();
+    let mut bytes_written = 0;
+    let mut files = match pack_pass(cache, &compiled) {
+        Ok((files, written)) => {
+            bytes_written += written;
+            files.into_iter()
+        }
+        Err(error) => {
+            diagnostics.push(write_failure(&options.output, &error));
+            Vec::new().into_iter()
+        }
+    };
+    let (mut compiled_count, mut reused, mut shared) = (0, 0, 0);
+    let mut fresh = PassIndex { front: declared_by_text(&jobs, &fronts), stage: BTreeMap::new() };
+    let mut modules: Vec<Option<CachedStage>> = Vec::with_capacity(jobs.len());
+    for (outcome, job) in outcomes.into_iter().zip(&jobs) {
+        let stage = match outcome {
+            Some(Ok((Built::Reused(stage), key))) => {
+                reused += 1;
+                Some((*stage, key))
+            }
+            Some(Ok((built, key))) => built.output().map(|module| {
+                match built {
+                    Built::Compiled(_) => {
+                        compiled_count += 1;
+                        if let Some(dir) = &options.cache_dir {
+                            shared::publish_object(dir, &key, &module.modules, &module.reflection);
+                        }
+                    }
+                    Built::Shared(_) => shared += 1,
+                    _ => reused += 1,
+                }
+                // Packing failed: the error is reported, the stage has no files.
+                let [wgsl, spirv] = files.next().unwrap_or_default();
+                (CachedStage { wgsl, spirv, reflection: module.reflection.clone() }, key)
+            }),
+            Some(Err(mut error)) => {
+                error.notes.push(job.context.clone());
+                diagnostics.push(error);
+                None
+            }
+            None => None,
+        };
+        modules.push(stage.map(|(stage, key)| {
+            fresh.stage.insert(key, stage.clone());
+            stage
+        }));
+    }
+    if fresh != index {
+        // A cache that cannot be written only costs speed next time.
+        let _ = cache.put_pass_index(&key, &fresh);
+    }
+    PassBuilt {
+        part: pass_manifest(store, catalog, work, &jobs, &stages, &modules),
+        diagnostics,
+        modules: jobs.len(),
+        compiled: compiled_count,
+        reused,
+        shared,
+        bytes_written,
+    }
+}
+
+/// A stage module's content key: everything its bytes depend on (text, stage, entry point,
+/// target, the slots of the resources it declares, backends, kiln and naga).
+fn stage_key(job: &Job, declared: &[Declared], layout: &PassLayout, options: &BuildOptions) -> String {
+    let slots: Vec<String> = declared
+        .iter()
+        .filter_map(|d| layout.slots.get(&d.name).map(|(g, b)| format!("{}@{g}/{b}", d.name)))
+        .collect();
+    let backends: Vec<&str> =
+        options.backends.iter().map(|b| if *b == Backend::Wgsl { "wgsl" } else { "spirv" }).collect();
+    hash(
+        format!(
+            "{}\n{}\n{}\n{}\n{}\n{}\nkiln {} revision {COMPILER_REVISION}\n{NAGA_VERSION}",
+            job.text_hash,
+            job.stage.name(),
+            job.entry,
+            job.allowed.key(),
+            slots.join(","),
+            backends.join(","),
+            env!("CARGO_PKG_VERSION")
+        )
+        .as_bytes(),
+    )
+}
+
+/// The resources each stage text of a pass declares, by text hash (texts that did not parse
+/// left out).
+fn declared_by_text(jobs: &[Job], fronts: &[Front]) -> BTreeMap<String, Vec<Declared>> {
+    jobs.iter()
+        .zip(fronts)
+        .filter_map(|(job, front)| Some((job.front_key(), front.as_ref().ok()?.0.clone())))
+        .collect()
+}
+
+/// One layout for a pass from the resources of all its modules, or the reasons there is none
+/// (reported).
+fn lay_out(
+    members: &[Job],
+    fronts: &[Front],
+    store: &SourceStore,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Option<PassLayout> {
+    let mut failed = false;
+    let mut declared: Vec<&[Declared]> = Vec::new();
+    let mut owners = Vec::new();
+    for (j, front) in fronts.iter().enumerate() {
+        match front {
+            Ok((d, _)) => {
+                declared.push(d);
+                owners.push(j);
+            }
+            Err(error) => {
+                diagnostics.push(error.clone());
+                failed = true;
+            }
+        }
+    }
+    let (layout, clashes) = bind::layout(&declared);
+    for (m, d, message) in clashes {
+        let job = &members[owners[m]];
+        let range = declared[m][d].range;
+        let mapper = Mapper { map: &job.map, store };
+        let diagnostic = Diagnostic::error("K0406", message).help(
+            "give each resource its own slot, or leave out `@group`/`@binding` and let kiln assign them",
+        );
+        let mut diagnostic = mapper
+            .diagnostic_at(diagnostic, vec![(range.0 as usize..range.1 as usize, "declared here".into())]);
+        diagnostic.notes.push(job.context.clone());
+        diagnostics.push(diagnostic);
+        failed = true;
+    }
+    (!failed).then_some(layout)
+}
+
+/// Packs a pass's newly compiled modules, one pack per backend; returns each module's
+/// `[wgsl, spirv]` files, in order, and the bytes written.
+fn pack_pass(cache: &Cache, compiled: &[&Compiled]) -> std::io::Result<(Vec<[Option<FileRef>; 2]>, u64)> {
+    let mut files: Vec<[Option<FileRef>; 2]> = vec![[None, None]; compiled.len()];
+    let mut written = 0;
+    for (slot, extension) in [(0, "wgsl.pack"), (1, "spv.pack")] {
+        let present: Vec<(usize, &ModuleBytes)> =
+            compiled.iter().enumerate().filter_map(|(i, c)| Some((i, c.modules[slot].as_ref()?))).collect();
+        if present.is_empty() {
+            continue;
+        }
+        let modules: Vec<&ModuleBytes> = present.iter().map(|(_, m)| *m).collect();
+        let (refs, count) = cache.pack(&modules, extension)?;
+        written += count;
+        for ((i, _), file) in present.iter().zip(refs) {
+            files[*i][slot] = Some(file);
+        }
+    }
+    Ok((files, written))
+}

@@ -1,0 +1,125 @@
+//! What a build does, decided from the catalogue before any text is preprocessed: the passes to
+//! build with their variants, what each weighs (for shards), and how a pass is known across
+//! builds.
+
+use super::{BuildOptions, BuildSummary, VariantSelection};
+use crate::catalog::{Catalog, CatalogPass, CatalogProgram, CatalogShader};
+use crate::diagnostics::Diagnostic;
+use crate::keywords::Variant;
+use crate::preprocess::{Includes, Stage};
+use crate::source::SourceStore;
+use crate::store::hash;
+use std::borrow::Cow;
+use std::collections::HashSet;
+
+/// A pass to build. Its jobs are made when it is built, and dropped with it.
+pub(super) struct PassWork<'a> {
+    pub shader: &'a CatalogShader,
+    pub pass: &'a CatalogPass,
+    pub program: &'a CatalogProgram,
+    pub variants: Cow<'a, [Variant]>,
+}
+
+/// The passes to build, with their variants, in catalogue order.
+pub(super) fn plan<'a>(
+    catalog: &'a Catalog,
+    selection: VariantSelection,
+    summary: &mut BuildSummary,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Vec<PassWork<'a>> {
+    let mut work: Vec<PassWork> = Vec::new();
+    for shader in &catalog.shaders {
+        let (mut built_any, mut has_wgsl) = (false, false);
+        for pass in &shader.passes {
+            let Some(program) = pass.program.as_ref().filter(|p| p.wgsl.is_some()) else { continue };
+            has_wgsl = true;
+            let variants = select_variants(shader, pass, program, selection, diagnostics);
+            if variants.is_empty() {
+                continue;
+            }
+            built_any = true;
+            summary.variants += variants.len();
+            summary.passes += 1;
+            work.push(PassWork { shader, pass, program, variants });
+        }
+        summary.shaders += usize::from(built_any);
+        if has_wgsl && !built_any && selection == VariantSelection::Used {
+            summary.unused.push(shader.shader.name.value.clone());
+        }
+    }
+    work
+}
+
+/// What each pass costs to build, known before preprocessing: its distinct stage requests (a
+/// variant's vertex and fragment keywords; variants that differ only in the other stage's
+/// keywords share a module).
+pub(super) fn weights(work: &[PassWork]) -> Vec<u64> {
+    work.iter()
+        .map(|pass| {
+            let mut requests = HashSet::new();
+            for variant in pass.variants.iter() {
+                for stage in [Stage::Vertex, Stage::Fragment] {
+                    requests.insert((stage, pass.program.keywords_for(variant, stage)));
+                }
+            }
+            requests.len() as u64
+        })
+        .collect()
+}
+
+/// Identifies a pass across builds: its shader file (relative to the project) and place.
+pub(super) fn pass_key(store: &SourceStore, options: &BuildOptions, work: &PassWork) -> String {
+    let file = super::noop::recorded_name(store, work.shader.file, options);
+    hash(format!("{file}#{}.{}", work.pass.subshader, work.pass.index).as_bytes())
+}
+
+/// The distinct preprocessed stage texts a build of the catalogue compiles, with their stage and
+/// entry point: what naga alone would have to parse, validate and emit for the same output (used
+/// by the benchmarks to compare kiln with naga).
+pub fn stage_texts(
+    store: &SourceStore,
+    includes: &Includes,
+    catalog: &Catalog,
+) -> Vec<(Stage, String, String)> {
+    let work = plan(catalog, VariantSelection::Used, &mut BuildSummary::default(), &mut Vec::new());
+    work.iter()
+        .flat_map(|pass| super::jobs::pass_jobs(store, includes, pass, &mut Vec::new()).jobs)
+        .map(|j| (j.stage, j.entry.to_string(), j.text))
+        .collect()
+}
+
+fn select_variants<'a>(
+    shader: &CatalogShader,
+    pass: &CatalogPass,
+    program: &'a CatalogProgram,
+    selection: VariantSelection,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Cow<'a, [Variant]> {
+    if !program.variants.is_empty() {
+        return Cow::Borrowed(&program.variants);
+    }
+    Cow::Owned(match selection {
+        VariantSelection::Used => Vec::new(),
+        VariantSelection::DefaultsAndEachKeyword => program.keywords.defaults_and_each_keyword(),
+        VariantSelection::All { limit } => match program.keywords.possible() {
+            Some(n) if n <= limit => program.keywords.enumerate(&[], true, None).unwrap_or_default(),
+            count => {
+                let count = count.map_or("more than 2^128".to_string(), |n| n.to_string());
+                let span =
+                    program.pragmas.keyword_sets.first().map(|s| s.span).unwrap_or(shader.shader.name.span);
+                diagnostics.push(
+                    Diagnostic::error(
+                        "K0408",
+                        format!(
+                            "pass {} of `{}` has {count} variants, over the limit of {limit}",
+                            pass.index, shader.shader.name.value
+                        ),
+                    )
+                    .at(span, "its keyword sets multiply to that many")
+                    .help("check the variants materials use with `kiln check` (without `--all-variants`)"),
+                );
+                Vec::new()
+            }
+        },
+    })
+}

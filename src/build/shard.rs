@@ -1,0 +1,210 @@
+//! Sharded builds: `kiln build --shard I/N` builds the passes that fall to shard I, exactly as a
+//! whole build builds them (packs and cache in its output folder), and leaves their parts of the
+//! manifest in `shard.json`; `kiln merge` joins the parts ([`super::merge`]). A shard decides what
+//! it owns from the catalogue alone, before preprocessing anything: passes are dealt out by their
+//! weight (distinct stage requests, [`super::plan::weights`]), heaviest first, each to the shard
+//! with the least so far, so no shard reads, preprocesses or parses another shard's texts.
+
+use super::emit::{write_failure, write_json};
+use super::noop::inputs_key;
+use super::{BuildOptions, BuildResult, BuildSummary};
+use crate::diagnostics::{self, Diagnostic};
+use crate::reflect::manifest::PassManifest;
+use crate::source::SourceStore;
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+/// Which part of the work a build does: shard `index` (0-based) of `count`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Shard {
+    /// 0-based.
+    pub index: u32,
+    /// How many shards the build is split into.
+    pub count: u32,
+}
+
+impl Shard {
+    /// `I/N` with 1 ≤ I ≤ N, as the command line takes it.
+    pub fn parse(text: &str) -> Result<Shard, String> {
+        let bad = || format!("`{text}` is not a shard: write I/N with 1 <= I <= N, like 2/4");
+        let (i, n) = text.split_once('/').ok_or_else(bad)?;
+        let (i, n): (u32, u32) = (i.trim().parse().map_err(|_| bad())?, n.trim().parse().map_err(|_| bad())?);
+        if i == 0 || i > n {
+            return Err(bad());
+        }
+        Ok(Shard { index: i - 1, count: n })
+    }
+
+    /// Which of the passes (by their weights, in catalogue order) are this shard's. Every shard
+    /// computes the same deal: heaviest first (ties in catalogue order), each to the shard with
+    /// the least weight so far (ties to the lowest index).
+    pub fn owned(&self, weights: &[u64]) -> Vec<bool> {
+        let mut order: Vec<usize> = (0..weights.len()).collect();
+        order.sort_by_key(|&p| std::cmp::Reverse(weights[p]));
+        let mut load = vec![0u64; self.count as usize];
+        let mut owned = vec![false; weights.len()];
+        for pass in order {
+            let (least, _) = load.iter().enumerate().min_by_key(|(i, l)| (**l, *i)).unwrap_or((0, &0));
+            load[least] += weights[pass].max(1);
+            owned[pass] = least == self.index as usize;
+        }
+        owned
+    }
+}
+
+/// `shard.json`, at the top of a shard's output folder.
+pub const SHARD_FILE: &str = "shard.json";
+
+/// What a shard leaves for `kiln merge`: what it checks before trusting the shard, and the
+/// shard's passes' parts of the manifest.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ShardRecord {
+    /// The kiln that built it.
+    pub kiln_version: String,
+    /// The hash of everything the build read and its options: shards of one merge share it.
+    pub inputs: String,
+    /// 1-based, as given.
+    pub shard: u32,
+    /// How many shards the build was split into.
+    pub count: u32,
+    /// The project folder as the shard build was given it.
+    pub project: String,
+    /// Stage modules this shard holds.
+    pub modules: usize,
+    /// The passes it built.
+    pub passes: Vec<ShardPass>,
+}
+
+/// One pass a shard built.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ShardPass {
+    /// Identifies the pass across builds (its shader file and place).
+    pub key: String,
+    /// Its distinct stage modules.
+    pub modules: usize,
+    /// Its part of the manifest; its packs are in the shard's folder.
+    pub manifest: PassManifest,
+}
+
+impl ShardRecord {
+    /// The record in a shard's output folder.
+    pub fn read(folder: &Path) -> Result<ShardRecord, String> {
+        let path = folder.join(SHARD_FILE);
+        let bytes = std::fs::read(&path)
+            .map_err(|e| format!("`{}` is not a shard's output: {e}", folder.display()))?;
+        serde_json::from_slice(&bytes).map_err(|e| format!("`{}` is damaged: {e}", path.display()))
+    }
+}
+
+/// What a shard leaves once its passes are built: `shard.json`, with their parts of the manifest.
+pub(super) fn finish(
+    store: &SourceStore,
+    options: &BuildOptions,
+    shard: Shard,
+    passes: Vec<ShardPass>,
+    summary: BuildSummary,
+    mut diagnostics: Vec<Diagnostic>,
+) -> BuildResult {
+    diagnostics::dedup(&mut diagnostics);
+    if options.write && !diagnostics::has_errors(&diagnostics) {
+        let record = ShardRecord {
+            kiln_version: env!("CARGO_PKG_VERSION").to_string(),
+            inputs: inputs_key(store, options),
+            shard: shard.index + 1,
+            count: shard.count,
+            project: options.root.to_string_lossy().replace('\\', "/"),
+            modules: summary.compiled + summary.reused + summary.shared,
+            passes,
+        };
+        if let Err(error) = write_json(&options.output.join(SHARD_FILE), &record, false) {
+            diagnostics.push(write_failure(&options.output, &error));
+        }
+    }
+    BuildResult::failed(options, summary, diagnostics)
+}
+
+/// Shard outputs to merge, checked against each other: one kiln version, one count, every shard
+/// once. Returns the inputs hash they share (checked against the project by the build).
+pub fn check_shards(folders: &[PathBuf]) -> Result<(Vec<ShardRecord>, String), String> {
+    let records = folders.iter().map(|f| ShardRecord::read(f)).collect::<Result<Vec<_>, _>>()?;
+    let Some(first) = records.first() else { return Err("no shard outputs to merge".into()) };
+    for (record, folder) in records.iter().zip(folders) {
+        let differs = |what: &str| {
+            Err(format!(
+                "`{}` is shard {}/{} of {what} than `{}`; shards of one merge come from one build",
+                folder.display(),
+                record.shard,
+                record.count,
+                folders[0].display()
+            ))
+        };
+        if record.kiln_version != first.kiln_version {
+            return differs(&format!("kiln {} rather", record.kiln_version));
+        }
+        if record.count != first.count {
+            return differs("a different number of shards");
+        }
+        if record.inputs != first.inputs {
+            return differs("another project, another state of it, or other options");
+        }
+    }
+    if first.kiln_version != env!("CARGO_PKG_VERSION") {
+        return Err(format!(
+            "the shards were built by kiln {}, this is kiln {}",
+            first.kiln_version,
+            env!("CARGO_PKG_VERSION")
+        ));
+    }
+    let mut seen = vec![Vec::new(); first.count as usize];
+    for (record, folder) in records.iter().zip(folders) {
+        if let Some(slot) = seen.get_mut(record.shard as usize - 1) {
+            slot.push(folder.display().to_string());
+        }
+    }
+    for (i, holders) in seen.iter().enumerate() {
+        match holders.len() {
+            0 => return Err(format!("shard {}/{} is missing", i + 1, first.count)),
+            1 => {}
+            _ => {
+                return Err(format!(
+                    "shard {}/{} is given twice: {}",
+                    i + 1,
+                    first.count,
+                    holders.join(", ")
+                ));
+            }
+        }
+    }
+    let inputs = first.inputs.clone();
+    Ok((records, inputs))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shards_parse() {
+        assert_eq!(Shard::parse("2/4"), Ok(Shard { index: 1, count: 4 }));
+        for bad in ["0/4", "5/4", "4", "a/b", "1/0"] {
+            assert!(Shard::parse(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn passes_are_dealt_out_once_each_and_balanced_by_weight() {
+        // One heavy pass, many light ones of uneven weight.
+        let weights: Vec<u64> = std::iter::once(400).chain((0..200).map(|i| 1 + (i * 7919) % 13)).collect();
+        let total: u64 = weights.iter().sum();
+        let shards: Vec<Shard> = (1..=4).map(|i| Shard::parse(&format!("{i}/4")).expect("shard")).collect();
+        let owned: Vec<Vec<bool>> = shards.iter().map(|s| s.owned(&weights)).collect();
+        for pass in 0..weights.len() {
+            assert_eq!(owned.iter().filter(|o| o[pass]).count(), 1, "pass {pass} has one owner");
+        }
+        let loads: Vec<u64> =
+            owned.iter().map(|o| weights.iter().zip(o).filter(|(_, o)| **o).map(|(w, _)| w).sum()).collect();
+        let heaviest = *loads.iter().max().expect("loads");
+        // No shard carries more than the heavy pass or a fair share plus one light pass.
+        assert!(heaviest <= (total / 4 + 13).max(400), "{loads:?}");
+    }
+}

@@ -1,0 +1,185 @@
+//! Where a pass's fronts (the resources a stage text declares) and stage modules come from. Each
+//! is asked of an ordered list of sources until one has it; naga, last, always answers. Whole
+//! builds and shards compile alike (a shard is a whole build of the passes it owns), so there is
+//! one list of each; a merge compiles nothing and has none.
+//!
+//! A new source is a type implementing [`FrontSource`] or [`ModuleSource`] and its place in
+//! [`FRONTS`] or [`MODULES`].
+
+use super::BuildOptions;
+use super::jobs::Job;
+use super::pass::{Built, Compiled};
+use super::session::Session;
+use crate::compile::bind::{self, Declared, PassLayout};
+use crate::compile::stage::{self, StageRequest};
+use crate::compile::{Mapper, parse};
+use crate::diagnostics::Diagnostic;
+use crate::source::SourceStore;
+use crate::store::{ModuleBytes, PassIndex, hash, shared};
+use std::collections::BTreeMap;
+use std::sync::{Arc, OnceLock};
+
+/// Outcome of a job's front end: its declared resources, and the parsed module when it had to be
+/// parsed (kept so that naga does not parse it again for the module).
+pub(super) type Front = Result<(Vec<Declared>, Option<naga::Module>), Diagnostic>;
+
+/// What the sources of one pass read: the build's session, the pass's entry in the output's
+/// cache, and (read once, when first asked) its entry in the shared cache.
+pub(super) struct PassSources<'a> {
+    pub store: &'a SourceStore,
+    pub options: &'a BuildOptions,
+    pub session: &'a Session<'a>,
+    pub pass_key: &'a str,
+    pub index: &'a PassIndex,
+    pub shared_fronts: OnceLock<BTreeMap<String, Vec<Declared>>>,
+}
+
+/// A source of fronts.
+pub(super) trait FrontSource: Sync {
+    /// The resources `job`'s text declares, if this source knows them.
+    fn front(&self, pass: &PassSources, job: &Job) -> Option<Front>;
+}
+
+/// A stage module wanted: its job, its content key, its pass's layout, and the module its front
+/// parsed, if it did.
+pub(super) struct ModuleAsk<'a> {
+    pub job: &'a Job<'a>,
+    pub key: &'a str,
+    pub layout: &'a PassLayout,
+    pub parsed: Option<naga::Module>,
+}
+
+/// A source of stage modules.
+pub(super) trait ModuleSource: Sync {
+    /// The module asked for, if this source has it (or an error when making it failed).
+    fn module(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>>;
+}
+
+/// Fronts, in the order asked.
+pub(super) const FRONTS: &[&dyn FrontSource] = &[&OutputCache, &SharedCache, &OtherPasses, &Naga];
+
+/// Stage modules, in the order asked.
+pub(super) const MODULES: &[&dyn ModuleSource] = &[&OutputCache, &SharedCache, &OtherPasses, &Naga];
+
+/// The first front a source has.
+pub(super) fn front(pass: &PassSources, job: &Job) -> Front {
+    FRONTS.iter().find_map(|source| source.front(pass, job)).unwrap_or_else(|| Naga.parse(pass, job))
+}
+
+/// The first module a source has.
+pub(super) fn module(pass: &PassSources, ask: &mut ModuleAsk) -> Result<Built, Diagnostic> {
+    MODULES.iter().find_map(|source| source.module(pass, ask)).unwrap_or_else(|| Naga.compile(pass, ask))
+}
+
+/// What the last build into the output folder left for the pass (`.cache/pass`).
+struct OutputCache;
+
+impl FrontSource for OutputCache {
+    fn front(&self, pass: &PassSources, job: &Job) -> Option<Front> {
+        pass.index.front.get(&job.front_key()).map(|declared| Ok((declared.clone(), None)))
+    }
+}
+
+impl ModuleSource for OutputCache {
+    fn module(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>> {
+        let cached = pass.index.stage.get(ask.key)?;
+        Some(Ok(Built::Reused(Box::new(cached.clone()))))
+    }
+}
+
+/// The module cache builds share (`cache_dir`).
+struct SharedCache;
+
+impl FrontSource for SharedCache {
+    fn front(&self, pass: &PassSources, job: &Job) -> Option<Front> {
+        let dir = pass.options.cache_dir.as_ref()?;
+        let fronts = pass.shared_fronts.get_or_init(|| shared::read_layouts(dir, pass.pass_key));
+        fronts.get(&job.front_key()).map(|declared| Ok((declared.clone(), None)))
+    }
+}
+
+impl ModuleSource for SharedCache {
+    fn module(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>> {
+        let dir = pass.options.cache_dir.as_ref()?;
+        let (modules, reflection) = shared::fetch_object(dir, ask.key)?;
+        Some(Ok(Built::Fetched(Arc::new(Compiled { modules, reflection }))))
+    }
+}
+
+/// What another pass of this build parsed or compiled lately (texts more than one pass has).
+struct OtherPasses;
+
+impl FrontSource for OtherPasses {
+    fn front(&self, pass: &PassSources, job: &Job) -> Option<Front> {
+        if !pass.session.texts.shared(&job.text_hash) {
+            return None;
+        }
+        let declared = pass.session.parsed.get(&job.front_key())?;
+        Some(Ok(((*declared).clone(), None)))
+    }
+}
+
+impl ModuleSource for OtherPasses {
+    fn module(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>> {
+        if !pass.session.texts.shared(&ask.job.text_hash) {
+            return None;
+        }
+        pass.session.compiled.get(ask.key).map(|compiled| Ok(Built::Shared(compiled)))
+    }
+}
+
+/// naga: parses and compiles; what it made is offered to the build's other passes.
+struct Naga;
+
+impl Naga {
+    fn parse(&self, pass: &PassSources, job: &Job) -> Front {
+        let mapper = Mapper { map: &job.map, store: pass.store };
+        let module = parse(&job.text, &mapper).map_err(|d| d.note(job.context.clone()))?;
+        let declared = bind::declared(&module, job.entry, stage::naga_stage(job.stage));
+        if pass.session.texts.shared(&job.text_hash) {
+            let size = declared.iter().map(|d| d.name.len() + 64).sum();
+            pass.session.parsed.insert(&job.front_key(), Arc::new(declared.clone()), size);
+        }
+        Ok((declared, Some(module)))
+    }
+
+    fn compile(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Result<Built, Diagnostic> {
+        let job = ask.job;
+        let mapper = Mapper { map: &job.map, store: pass.store };
+        let module = match ask.parsed.take() {
+            Some(module) => module,
+            None => parse(&job.text, &mapper)?,
+        };
+        let request = StageRequest {
+            text: &job.text,
+            stage: job.stage,
+            entry: job.entry,
+            entry_pragma: job.entry_pragma,
+            allowed: &job.allowed,
+            layout: ask.layout,
+            backends: &pass.options.backends,
+        };
+        let output = stage::compile(module, &request, &mapper)?;
+        let module = |bytes: Vec<u8>| ModuleBytes { hash: hash(&bytes), bytes };
+        let spirv = output.spirv.map(|words| module(words.iter().flat_map(|w| w.to_le_bytes()).collect()));
+        let modules = [output.wgsl.map(|text| module(text.into_bytes())), spirv];
+        let compiled = Arc::new(Compiled { modules, reflection: output.reflection });
+        // Asked again now: another pass may have found the text meanwhile.
+        if pass.session.texts.shared(&job.text_hash) {
+            pass.session.compiled.insert(ask.key, compiled.clone(), compiled.size());
+        }
+        Ok(Built::Compiled(compiled))
+    }
+}
+
+impl FrontSource for Naga {
+    fn front(&self, pass: &PassSources, job: &Job) -> Option<Front> {
+        Some(self.parse(pass, job))
+    }
+}
+
+impl ModuleSource for Naga {
+    fn module(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>> {
+        Some(self.compile(pass, ask))
+    }
+}

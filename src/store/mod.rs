@@ -1,0 +1,11 @@
+//! What builds keep on disk: an output folder's packs and cache ([`cache`]), and the module cache
+//! builds, processes and machines share ([`shared`]). Every file is written whole or not at all
+//! and verified on read, so damage costs a recompile, never a wrong module.
+
+mod cache;
+pub mod shared;
+
+pub use cache::{
+    Cache, CachedStage, Digest, Hashed, ModuleBytes, PassIndex, Recorded, hash, link_or_copy,
+    pass_index_path, write_atomically, write_atomically_with,
+};
