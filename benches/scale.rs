@@ -232,7 +232,7 @@ fn main() {
             (0..3).map(|_| kiln_build(&project, &output, true)).collect();
         let noop_memory = peak_mib();
         let manifest_bytes = std::fs::metadata(output.join("manifest.json")).expect("manifest").len();
-        let manifest = kiln::reflect::manifest::Manifest::read(&output).expect("manifest");
+        let manifest = kiln::manifest::Manifest::read(&output).expect("manifest");
         let rust_bytes = kiln::codegen::generate(&manifest, "kiln").len();
         drop(manifest);
         assert!(noops.iter().all(|(noop, _)| noop.compiled == 0));

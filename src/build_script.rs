@@ -6,8 +6,8 @@
 
 use crate::build::BuildSummary;
 use crate::diagnostics::{self, Severity, render_plain};
+use crate::manifest::{FILE_NAME, Manifest};
 use crate::project::{BuildMode, ProjectError, build_project};
-use crate::reflect::manifest::{FILE_NAME, Manifest};
 use crate::source::SourceStore;
 use crate::source::relative_to;
 use std::path::{Path, PathBuf};

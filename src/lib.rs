@@ -27,6 +27,7 @@ pub mod config;
 pub mod diagnostics;
 pub mod keywords;
 pub mod listing;
+pub mod manifest;
 pub mod material;
 pub mod preprocess;
 pub mod project;

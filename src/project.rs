@@ -8,10 +8,10 @@ use crate::catalog::{Catalog, CatalogInput, CatalogProgram, catalog};
 use crate::config::ProjectConfig;
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{Variant, VariantError, select_variant};
+use crate::manifest::StageView;
 use crate::material::Preset;
 use crate::preprocess::{IncludeConfig, Includes, Preprocessed, Stage, preprocess};
 use crate::reflect::UniformBlock;
-use crate::reflect::manifest::StageView;
 use crate::shaderlab::ast::ProgramLanguage;
 use crate::shaderlab::parse_shader;
 use crate::source::{FileId, LoadError, SourceStore, Span, Spanned};
@@ -547,7 +547,7 @@ pub fn merge_shards(
 }
 
 /// One build of `kiln watch`: [`build_project`], and then, in the output folder, the rendered
-/// diagnostics of a build with errors ([`ERRORS_FILE`](crate::reflect::manifest::ERRORS_FILE)),
+/// diagnostics of a build with errors ([`ERRORS_FILE`](crate::manifest::ERRORS_FILE)),
 /// removed again by a build without. A failed build writes nothing else, so a program running
 /// on the folder keeps the last good build and can say why the new one is not there.
 pub fn watch_build(
@@ -556,7 +556,7 @@ pub fn watch_build(
     mode: &BuildMode,
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
     let (result, diagnostics) = build_project(store, paths, mode, &|_, _| {})?;
-    let errors_file = result.output.join(crate::reflect::manifest::ERRORS_FILE);
+    let errors_file = result.output.join(crate::manifest::ERRORS_FILE);
     let all: Vec<Diagnostic> = diagnostics.iter().chain(&result.diagnostics).cloned().collect();
     let written = if diagnostics::has_errors(&all) {
         std::fs::create_dir_all(&result.output).and_then(|()| {

@@ -7,8 +7,8 @@ use super::plan::PassWork;
 use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::catalog::{Catalog, CatalogShader, property_references};
 use crate::diagnostics::{self, Diagnostic};
+use crate::manifest::*;
 use crate::material::MaterialValue;
-use crate::reflect::manifest::*;
 use crate::reflect::{Resource, UniformBlock};
 use crate::shaderlab::ast::Shader;
 use crate::shaderlab::pragma::KeywordScope;
@@ -259,7 +259,7 @@ pub(super) fn pass_manifest(
                     name: name.to_string(),
                 })
                 .collect();
-            RenderState { command: text, state: StateCommand::from_ast(&command.kind), properties }
+            RenderState { command: text, state: command.kind.to_manifest(), properties }
         })
         .collect();
     PassManifest {
@@ -299,7 +299,7 @@ fn materials(catalog: &Catalog) -> Vec<MaterialManifest> {
     catalog
         .materials
         .iter()
-        .filter_map(|m| Some(MaterialManifest::new(m, &catalog.shaders.get(m.shader)?.shader.name.value)))
+        .filter_map(|m| Some(m.to_manifest(&catalog.shaders.get(m.shader)?.shader.name.value)))
         .collect()
 }
 
@@ -329,7 +329,7 @@ fn properties(shader: &Shader, passes: &[PassManifest]) -> Vec<PropertyManifest>
                 .and_then(|b| b.members.iter().find(|m| m.name == p.name.value))
                 .map(|m| m.offset),
             binding: bindings.get(p.name.value.as_str()).copied(),
-            drawer: crate::material::KeywordDrawer::of(p),
+            drawer: crate::material::keyword_drawer(p),
             enum_names: crate::material::enum_names(p),
         })
         .collect()

@@ -2,8 +2,8 @@
 //! clean build, compared before anything is parsed.
 
 use super::{BuildOptions, BuildResult, BuildSummary, COMPILER_REVISION, NAGA_VERSION};
+use crate::manifest::SCHEMA_VERSION;
 use crate::preprocess::LIBRARY_PREFIX;
-use crate::reflect::manifest::SCHEMA_VERSION;
 use crate::source::{FileId, SourceStore, relative_to};
 use crate::store::Cache;
 use rayon::prelude::*;

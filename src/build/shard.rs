@@ -9,7 +9,7 @@ use super::emit::{write_failure, write_json};
 use super::noop::inputs_key;
 use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::diagnostics::{self, Diagnostic};
-use crate::reflect::manifest::PassManifest;
+use crate::manifest::PassManifest;
 use crate::source::SourceStore;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};

@@ -2,8 +2,8 @@
 //! them, and `const` assertions that their size and every member offset match naga's layout: if
 //! they ever disagree, the renderer does not compile.
 
+use crate::manifest::ShaderManifest;
 use crate::reflect::Member;
-use crate::reflect::manifest::ShaderManifest;
 use std::fmt::Write as _;
 
 /// A WGSL type as a Rust type of the same size, when there is one with no hidden padding.

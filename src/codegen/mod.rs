@@ -9,8 +9,8 @@
 
 mod layout;
 
+use crate::manifest::{Manifest, ModuleFile, PassManifest, ShaderManifest};
 use crate::reflect::Resource;
-use crate::reflect::manifest::{Manifest, ModuleFile, PassManifest, ShaderManifest};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -297,8 +297,8 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> String {
         out,
         "\n/// The build's manifest and materials, for `kiln::runtime::Library::embedded`.\n\
          pub static MANIFEST_JSON: &str = include_str!({:?});\npub static MATERIALS_JSON: &str = include_str!({:?});",
-        include(crate::reflect::manifest::FILE_NAME),
-        include(crate::reflect::manifest::MATERIALS_FILE)
+        include(crate::manifest::FILE_NAME),
+        include(crate::manifest::MATERIALS_FILE)
     );
     let _ = writeln!(out, "\n/// Every pack by its path in the manifest.");
     let _ = writeln!(out, "pub static PACKS: [(&str, &[u8]); {}] = [", packs[0].len() + packs[1].len());

@@ -3,59 +3,23 @@
 
 use crate::shaderlab::ast::{AttributeKind, Property};
 
-/// A number counts as "on" above this, as in Unity's toggle drawers.
-pub const TOGGLE_EPSILON: f64 = 0.001;
+pub use crate::manifest::KeywordDrawer;
 
-/// The keywords a drawer can enable, with which value enables each.
-#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum KeywordDrawer {
-    /// `[Toggle(KW)]` (or `UPPER(prop)_ON`): on when |value| > 0.001.
-    Toggle(String),
-    /// `[ToggleOff(KW)]` (or `UPPER(prop)_OFF`): on when the value is off.
-    ToggleOff(String),
-    /// `[KeywordEnum(A, B)]`: value i enables `UPPER(prop)_UPPER(entry i)`.
-    KeywordEnum(Vec<String>),
-}
-
-impl KeywordDrawer {
-    /// The drawer of a property, if it sets keywords.
-    pub fn of(property: &Property) -> Option<KeywordDrawer> {
-        let upper = property.name.value.to_uppercase();
-        property.attributes.iter().find_map(|attribute| match &attribute.kind {
-            AttributeKind::Toggle(keyword) => {
-                Some(KeywordDrawer::Toggle(keyword.clone().unwrap_or_else(|| format!("{upper}_ON"))))
-            }
-            AttributeKind::ToggleOff(keyword) => {
-                Some(KeywordDrawer::ToggleOff(keyword.clone().unwrap_or_else(|| format!("{upper}_OFF"))))
-            }
-            AttributeKind::KeywordEnum(entries) => Some(KeywordDrawer::KeywordEnum(
-                entries.iter().map(|e| format!("{upper}_{}", e.to_uppercase().replace(' ', "_"))).collect(),
-            )),
-            _ => None,
-        })
-    }
-
-    /// Every keyword this drawer may enable.
-    pub fn keywords(&self) -> Vec<&str> {
-        match self {
-            KeywordDrawer::Toggle(k) | KeywordDrawer::ToggleOff(k) => vec![k.as_str()],
-            KeywordDrawer::KeywordEnum(keywords) => keywords.iter().map(String::as_str).collect(),
+/// The drawer of a property, if it sets keywords.
+pub fn keyword_drawer(property: &Property) -> Option<KeywordDrawer> {
+    let upper = property.name.value.to_uppercase();
+    property.attributes.iter().find_map(|attribute| match &attribute.kind {
+        AttributeKind::Toggle(keyword) => {
+            Some(KeywordDrawer::Toggle(keyword.clone().unwrap_or_else(|| format!("{upper}_ON"))))
         }
-    }
-
-    /// The keyword enabled by `value`, if any.
-    pub fn keyword_for(&self, value: f64) -> Option<&str> {
-        let on = value.abs() > TOGGLE_EPSILON;
-        match self {
-            KeywordDrawer::Toggle(k) => on.then_some(k.as_str()),
-            KeywordDrawer::ToggleOff(k) => (!on).then_some(k.as_str()),
-            KeywordDrawer::KeywordEnum(keywords) => {
-                let index = value.round();
-                (index >= 0.0).then(|| keywords.get(index as usize).map(String::as_str)).flatten()
-            }
+        AttributeKind::ToggleOff(keyword) => {
+            Some(KeywordDrawer::ToggleOff(keyword.clone().unwrap_or_else(|| format!("{upper}_OFF"))))
         }
-    }
+        AttributeKind::KeywordEnum(entries) => Some(KeywordDrawer::KeywordEnum(
+            entries.iter().map(|e| format!("{upper}_{}", e.to_uppercase().replace(' ', "_"))).collect(),
+        )),
+        _ => None,
+    })
 }
 
 /// Names Unity's `[Enum(Type)]` drawers know, with their values: what a `[_Property]` in render

@@ -5,11 +5,12 @@ mod drawer;
 mod error;
 pub mod preset;
 
-pub use drawer::{KeywordDrawer, enum_name, enum_names, unity_enum_name};
+pub use drawer::{KeywordDrawer, enum_name, enum_names, keyword_drawer, unity_enum_name};
 pub use error::MaterialError;
 pub use preset::Preset;
 
 use crate::diagnostics::Diagnostic;
+use crate::manifest::{MaterialManifest, ShaderManifest};
 use crate::shaderlab::ast::{PropertyDefault, PropertyType, Shader};
 use crate::shaderlab::pragma::{KeywordKind, KeywordSet};
 use crate::source::{FileId, SourceStore, Span};
@@ -74,7 +75,7 @@ impl From<&PropertyDefault> for MaterialValue {
 
 /// What resolving a material needs of its shader. A build takes it from the parsed shader
 /// ([`ShaderEntry::from_shader`]) and the run time from the manifest
-/// ([`ShaderManifest::material_entry`](crate::reflect::manifest::ShaderManifest::material_entry)), so a `.mat` file resolves alike in both.
+/// ([`ShaderEntry::from_manifest`]), so a `.mat` file resolves alike in both.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShaderEntry {
     pub name: String,
@@ -117,7 +118,7 @@ impl ShaderEntry {
                     name: p.name.value.clone(),
                     ty: p.ty.value,
                     default: MaterialValue::from(&p.default.value),
-                    drawer: KeywordDrawer::of(p),
+                    drawer: drawer::keyword_drawer(p),
                     enum_names: enum_names(p),
                 })
                 .collect(),
@@ -490,4 +491,55 @@ pub(crate) fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>)
         .filter(|&(distance, _)| distance <= 2)
         .min()
         .map(|(_, c)| c.to_string())
+}
+
+impl ShaderEntry {
+    /// The shader as the material resolver sees it, so that a `.mat` read at run time resolves as
+    /// the build resolved it (`None` when a property's type does not read).
+    pub fn from_manifest(shader: &ShaderManifest) -> Option<ShaderEntry> {
+        let properties = shader
+            .properties
+            .iter()
+            .map(|p| {
+                Some(EntryProperty {
+                    name: p.name.clone(),
+                    ty: PropertyType::from_manifest(&p.ty)?,
+                    default: MaterialValue::from_json(&p.default)?,
+                    drawer: p.drawer.clone(),
+                    enum_names: p.enum_names.clone(),
+                })
+            })
+            .collect::<Option<_>>()?;
+        let keyword_sets = shader
+            .passes
+            .iter()
+            .flat_map(|pass| &pass.keyword_sets)
+            .map(|set| EntrySet {
+                shader_feature: set.kind == crate::shaderlab::pragma::KeywordKind::ShaderFeature.name(),
+                keywords: set.keywords.iter().filter(|k| *k != "_").cloned().collect(),
+                off_option: set.keywords.iter().any(|k| k == "_"),
+                span: None,
+            })
+            .collect();
+        Some(ShaderEntry {
+            name: shader.name.clone(),
+            properties,
+            render_queue: shader.render_queue,
+            keyword_sets,
+        })
+    }
+}
+
+impl Material {
+    /// The material as `materials.json` has it, for the shader named `shader`.
+    pub fn to_manifest(&self, shader: &str) -> MaterialManifest {
+        MaterialManifest {
+            name: self.name.clone(),
+            shader: shader.to_string(),
+            preset: self.preset.map(|p| p.name().to_string()),
+            render_queue: self.render_queue,
+            keywords: self.keywords.iter().map(|(k, _)| k.clone()).collect(),
+            values: self.values.iter().map(|(name, value)| (name.clone(), value.to_json())).collect(),
+        }
+    }
 }

@@ -1,7 +1,7 @@
 //! The seed's four presets, exactly as its shader GUI sets them, and their application to a
 //! material document (keeping its other values and comments).
 
-use super::drawer::{KeywordDrawer, enum_name};
+use super::drawer::enum_name;
 use crate::shaderlab::ast::Shader;
 use toml_edit::{DocumentMut, Item, Value};
 
@@ -94,7 +94,7 @@ pub fn apply(document: &mut DocumentMut, shader: &Shader, preset: Preset) {
                     properties.insert(name, Item::Value(value_for(shader, name, value)));
                 }
             }
-            if let Some(drawer) = KeywordDrawer::of(property) {
+            if let Some(drawer) = super::drawer::keyword_drawer(property) {
                 let on = drawer.keyword_for(value);
                 decided.extend(drawer.keywords().into_iter().map(|k| (k.to_string(), Some(k) == on)));
             }

@@ -1,8 +1,8 @@
 //! wgpu layouts from reflection: bind group and pipeline layouts from a pass's layout entries,
 //! vertex buffer layouts from a vertex stage's inputs.
 
+use crate::manifest::{BindGroup, LayoutEntry};
 use crate::reflect::Resource;
-use crate::reflect::manifest::{BindGroup, LayoutEntry};
 
 /// A pass's bind group layouts (groups 0 to the highest it uses, empty ones included) and its
 /// pipeline layout. Every variant of a pass shares it.

@@ -15,11 +15,11 @@ pub use state::{
     MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state,
 };
 
-use crate::material::ShaderEntries;
-use crate::reflect::manifest::{
+use crate::manifest::{
     FILE_NAME, MATERIALS_FILE, Manifest, MaterialManifest, ModuleFile, PassManifest, ShaderManifest,
     VariantManifest,
 };
+use crate::material::ShaderEntries;
 use std::borrow::Cow;
 use std::collections::{BTreeSet, HashMap};
 use std::path::{Path, PathBuf};
@@ -197,7 +197,11 @@ impl Library {
     pub fn load_material(&self, name: &str, text: &str) -> Result<MaterialManifest, RuntimeError> {
         let shaders = self.material_shaders.get_or_init(|| {
             ShaderEntries::new(
-                self.manifest.shaders.iter().filter_map(ShaderManifest::material_entry).collect(),
+                self.manifest
+                    .shaders
+                    .iter()
+                    .filter_map(crate::material::ShaderEntry::from_manifest)
+                    .collect(),
             )
         });
         let mut store = crate::source::SourceStore::new();
@@ -205,7 +209,7 @@ impl Library {
         let (material, problems) = crate::material::load_material(&store, file, shaders);
         match material {
             Some(material) if problems.is_empty() => {
-                Ok(MaterialManifest::new(&material, &shaders.entry(material.shader).name))
+                Ok(material.to_manifest(&shaders.entry(material.shader).name))
             }
             _ => Err(RuntimeError::Material(crate::diagnostics::render_plain(&store, &problems))),
         }

@@ -4,7 +4,7 @@
 
 use super::layout::{PassLayout, VertexLayout};
 use super::{Library, RuntimeError};
-use crate::reflect::manifest::{ERRORS_FILE, FILE_NAME, MaterialManifest};
+use crate::manifest::{ERRORS_FILE, FILE_NAME, MaterialManifest};
 use std::collections::{HashMap, HashSet};
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -104,7 +104,7 @@ fn logged_variant<'l>(
     shader: &str,
     pass: usize,
     keywords: &[&str],
-) -> Result<&'l crate::reflect::manifest::VariantManifest, RuntimeError> {
+) -> Result<&'l crate::manifest::VariantManifest, RuntimeError> {
     let found = library.variant(shader, pass, keywords);
     if let Some(log) = usage {
         log.record(shader, pass, keywords, found.is_err());
@@ -209,7 +209,7 @@ impl Runtime {
         shader: &str,
         pass: usize,
         keywords: &[&str],
-    ) -> Result<&crate::reflect::manifest::VariantManifest, RuntimeError> {
+    ) -> Result<&crate::manifest::VariantManifest, RuntimeError> {
         logged_variant(&self.library, &mut self.usage, shader, pass, keywords)
     }
 
@@ -287,20 +287,27 @@ impl Runtime {
                 "the variant needs `{feature}`, which the device was not created with"
             )));
         }
-        let mut module = |stage: &crate::reflect::manifest::StageView| -> Result<(wgpu::ShaderModule, String), RuntimeError> {
-            let file = stage.module.wgsl.as_ref().ok_or_else(|| layout_error("the build has no WGSL for it".into()))?;
-            if let Some(module) = self.modules.get(&file.hash) {
-                return Ok((module.clone(), stage.interface.entry_point.clone()));
-            }
-            let bytes = library.bytes(pass, file).ok_or_else(|| layout_error("its module is missing from its pack".into()))?;
-            let text = std::str::from_utf8(bytes).map_err(|e| layout_error(e.to_string()))?;
-            let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
-                label: Some(&format!("{shader} {}", stage.interface.entry_point)),
-                source: wgpu::ShaderSource::Wgsl(text.into()),
-            });
-            self.modules.insert(file.hash.clone(), module.clone());
-            Ok((module, stage.interface.entry_point.clone()))
-        };
+        let mut module =
+            |stage: &crate::manifest::StageView| -> Result<(wgpu::ShaderModule, String), RuntimeError> {
+                let file = stage
+                    .module
+                    .wgsl
+                    .as_ref()
+                    .ok_or_else(|| layout_error("the build has no WGSL for it".into()))?;
+                if let Some(module) = self.modules.get(&file.hash) {
+                    return Ok((module.clone(), stage.interface.entry_point.clone()));
+                }
+                let bytes = library
+                    .bytes(pass, file)
+                    .ok_or_else(|| layout_error("its module is missing from its pack".into()))?;
+                let text = std::str::from_utf8(bytes).map_err(|e| layout_error(e.to_string()))?;
+                let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                    label: Some(&format!("{shader} {}", stage.interface.entry_point)),
+                    source: wgpu::ShaderSource::Wgsl(text.into()),
+                });
+                self.modules.insert(file.hash.clone(), module.clone());
+                Ok((module, stage.interface.entry_point.clone()))
+            };
         let (vertex_module, vertex_entry) = module(&vertex)?;
         let fragment_module = fragment.as_ref().map(&mut module).transpose()?;
         let targets: Vec<Option<wgpu::ColorTargetState>> = key

@@ -4,12 +4,11 @@
 //! The manifest holds each command parsed (and as written, for messages). `[_Property]` values
 //! are numbers in Unity's enums (`UnityEngine.Rendering.BlendMode` and its siblings).
 
-use crate::material::unity_enum_name;
-use crate::reflect::manifest::{PassManifest, StateCommand, StencilSetting};
-use crate::shaderlab::ast::{
-    BlendFactor, BlendOperation, CompareFunction, CullMode, StencilField, StencilOperation, StencilValue,
-    Value,
+use crate::manifest::{
+    BlendFactor, BlendOperation, CompareFunction, CullMode, PassManifest, StateCommand, StencilField,
+    StencilOperation, StencilSetting, StencilValue, Value,
 };
+use crate::material::unity_enum_name;
 
 /// Colour targets wgpu allows a pipeline.
 pub const MAX_TARGETS: usize = 8;
@@ -480,7 +479,7 @@ impl Resolver<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::reflect::manifest::{PropertyReference, RenderState as Command};
+    use crate::manifest::{PropertyReference, RenderState as Command};
 
     /// A pass with these commands, parsed by kiln's ShaderLab parser as a build would.
     fn pass(commands: &[&str]) -> PassManifest {
@@ -497,7 +496,7 @@ mod tests {
             .iter()
             .map(|c| Command {
                 command: store.slice(c.span).trim().to_string(),
-                state: StateCommand::from_ast(&c.kind),
+                state: c.kind.to_manifest(),
                 properties: vec![PropertyReference {
                     name: "_ZTest".into(),
                     default: serde_json::json!(4.0),

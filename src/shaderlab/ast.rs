@@ -1,5 +1,10 @@
 //! The typed syntax tree of a `.shader` file. Every node carries the span it was read from.
 
+use crate::manifest::state::{self as manifest, StateCommand};
+pub use crate::manifest::state::{
+    BlendFactor, BlendOperation, ColorMask, CompareFunction, CullMode, StencilField, StencilOperation,
+    StencilValue, Value,
+};
 use crate::source::{Span, Spanned};
 
 /// One `Shader "name" { ... }` file.
@@ -232,15 +237,6 @@ pub struct Dependency {
     pub shader: Spanned<String>,
 }
 
-/// A render-state value: a literal, or `[_Property]` taken from the material. In the manifest:
-/// `{"literal": ...}` or `{"property": "_Name"}`.
-#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Value<T> {
-    Literal(T),
-    Property(String),
-}
-
 #[derive(Debug, Clone, PartialEq)]
 pub struct RenderCommand {
     pub kind: RenderCommandKind,
@@ -306,29 +302,11 @@ pub struct BlendFactors {
     pub alpha: Option<(FactorValue, FactorValue)>,
 }
 
-/// Channels written by `ColorMask`: `0` is none.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-pub struct ColorMask {
-    pub r: bool,
-    pub g: bool,
-    pub b: bool,
-    pub a: bool,
-}
-
 #[derive(Debug, Clone, PartialEq)]
 pub struct StencilEntry {
     pub op: StencilField,
     pub value: Spanned<StencilValue>,
     pub span: Span,
-}
-
-#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum StencilValue {
-    /// `Ref`, `ReadMask`, `WriteMask`: 0 to 255.
-    Byte(Value<u8>),
-    Compare(Value<CompareFunction>),
-    Operation(Value<StencilOperation>),
 }
 
 /// A fixed-function command from before programmable shaders, kept verbatim.
@@ -396,88 +374,6 @@ impl ProgramLanguage {
         [ProgramLanguage::Wgsl, ProgramLanguage::Hlsl, ProgramLanguage::Cg, ProgramLanguage::Glsl];
 }
 
-/// Declares a closed set of ShaderLab words, matched case-insensitively.
-macro_rules! shaderlab_words {
-    ($(#[$meta:meta])* $name:ident { $($variant:ident = $text:literal),+ $(,)? }) => {
-        $(#[$meta])*
-        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-        pub enum $name { $($variant),+ }
-
-        impl $name {
-            /// Every accepted spelling, in canonical case.
-            pub const NAMES: &'static [&'static str] = &[$($text),+];
-
-            /// Parses a word, ignoring case.
-            pub fn from_word(word: &str) -> Option<$name> {
-                $(if word.eq_ignore_ascii_case($text) { return Some($name::$variant); })+
-                None
-            }
-
-            pub fn name(self) -> &'static str {
-                match self { $($name::$variant => $text),+ }
-            }
-        }
-
-        /// Written as its ShaderLab word (the manifest's structured render state).
-        impl serde::Serialize for $name {
-            fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-                serializer.serialize_str(self.name())
-            }
-        }
-
-        impl<'de> serde::Deserialize<'de> for $name {
-            fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<$name, D::Error> {
-                let word = String::deserialize(deserializer)?;
-                $name::from_word(&word).ok_or_else(|| serde::de::Error::unknown_variant(&word, $name::NAMES))
-            }
-        }
-    };
-}
-
-shaderlab_words!(BlendFactor {
-    One = "One", Zero = "Zero", SrcColor = "SrcColor", SrcAlpha = "SrcAlpha",
-    SrcAlphaSaturate = "SrcAlphaSaturate", DstColor = "DstColor", DstAlpha = "DstAlpha",
-    OneMinusSrcColor = "OneMinusSrcColor", OneMinusSrcAlpha = "OneMinusSrcAlpha",
-    OneMinusDstColor = "OneMinusDstColor", OneMinusDstAlpha = "OneMinusDstAlpha",
-});
-
-shaderlab_words!(BlendOperation {
-    Add = "Add", Sub = "Sub", RevSub = "RevSub", Min = "Min", Max = "Max",
-    LogicalClear = "LogicalClear", LogicalSet = "LogicalSet", LogicalCopy = "LogicalCopy",
-    LogicalCopyInverted = "LogicalCopyInverted", LogicalNoop = "LogicalNoop",
-    LogicalInvert = "LogicalInvert", LogicalAnd = "LogicalAnd", LogicalNand = "LogicalNand",
-    LogicalOr = "LogicalOr", LogicalNor = "LogicalNor", LogicalXor = "LogicalXor",
-    LogicalEquiv = "LogicalEquiv", LogicalAndReverse = "LogicalAndReverse",
-    LogicalAndInverted = "LogicalAndInverted", LogicalOrReverse = "LogicalOrReverse",
-    LogicalOrInverted = "LogicalOrInverted", Multiply = "Multiply", Screen = "Screen",
-    Overlay = "Overlay", Darken = "Darken", Lighten = "Lighten", ColorDodge = "ColorDodge",
-    ColorBurn = "ColorBurn", HardLight = "HardLight", SoftLight = "SoftLight",
-    Difference = "Difference", Exclusion = "Exclusion", HslHue = "HSLHue",
-    HslSaturation = "HSLSaturation", HslColor = "HSLColor", HslLuminosity = "HSLLuminosity",
-});
-
-shaderlab_words!(CompareFunction {
-    Never = "Never", Less = "Less", Equal = "Equal", LEqual = "LEqual", Greater = "Greater",
-    NotEqual = "NotEqual", GEqual = "GEqual", Always = "Always", Disabled = "Disabled",
-});
-
-shaderlab_words!(CullMode { Off = "Off", Front = "Front", Back = "Back" });
-
-shaderlab_words!(StencilOperation {
-    Keep = "Keep", Zero = "Zero", Replace = "Replace", IncrSat = "IncrSat", DecrSat = "DecrSat",
-    Invert = "Invert", IncrWrap = "IncrWrap", DecrWrap = "DecrWrap",
-});
-
-shaderlab_words!(
-    /// The commands allowed inside `Stencil { }`.
-    StencilField {
-        Ref = "Ref", ReadMask = "ReadMask", WriteMask = "WriteMask", Comp = "Comp", Pass = "Pass",
-        Fail = "Fail", ZFail = "ZFail", CompBack = "CompBack", PassBack = "PassBack",
-        FailBack = "FailBack", ZFailBack = "ZFailBack", CompFront = "CompFront",
-        PassFront = "PassFront", FailFront = "FailFront", ZFailFront = "ZFailFront",
-    }
-);
-
 impl Shader {
     /// Every program-bearing pass, with the SubShader it belongs to.
     pub fn passes(&self) -> impl Iterator<Item = (usize, &SubShader, usize, &Pass)> {
@@ -508,5 +404,44 @@ impl Shader {
     /// The property with this name.
     pub fn property(&self, name: &str) -> Option<&Property> {
         self.properties.iter().find(|p| p.name.value == name)
+    }
+}
+
+impl RenderCommandKind {
+    /// The command as the manifest writes it, without its spans.
+    pub fn to_manifest(&self) -> StateCommand {
+        match self {
+            RenderCommandKind::Blend { target, factors } => StateCommand::Blend {
+                target: *target,
+                factors: factors.as_ref().map(|f| manifest::BlendFactors {
+                    src: f.src.value.clone(),
+                    dst: f.dst.value.clone(),
+                    alpha: f.alpha.as_ref().map(|(s, d)| [s.value.clone(), d.value.clone()]),
+                }),
+            },
+            RenderCommandKind::BlendOp { target, color, alpha } => StateCommand::BlendOp {
+                target: *target,
+                color: color.value.clone(),
+                alpha: alpha.as_ref().map(|a| a.value.clone()),
+            },
+            RenderCommandKind::ZWrite(on) => StateCommand::ZWrite { on: on.value.clone() },
+            RenderCommandKind::ZTest(function) => StateCommand::ZTest { function: function.value.clone() },
+            RenderCommandKind::ZClip(on) => StateCommand::ZClip { on: on.value.clone() },
+            RenderCommandKind::Cull(mode) => StateCommand::Cull { mode: mode.value.clone() },
+            RenderCommandKind::ColorMask { mask, target } => {
+                StateCommand::ColorMask { target: *target, mask: mask.value.clone() }
+            }
+            RenderCommandKind::Offset { factor, units } => {
+                StateCommand::Offset { factor: factor.value.clone(), units: units.value.clone() }
+            }
+            RenderCommandKind::AlphaToMask(on) => StateCommand::AlphaToMask { on: on.value.clone() },
+            RenderCommandKind::Conservative(on) => StateCommand::Conservative { on: on.value.clone() },
+            RenderCommandKind::Stencil(entries) => StateCommand::Stencil {
+                settings: entries
+                    .iter()
+                    .map(|e| manifest::StencilSetting { field: e.op, value: e.value.value.clone() })
+                    .collect(),
+            },
+        }
     }
 }

@@ -2,8 +2,8 @@
 //! variant skip naga entirely, and atomic writes (a temporary file and a rename) for all of them.
 
 use crate::compile::bind::Declared;
+use crate::manifest::FileRef;
 use crate::reflect::StageReflection;
-use crate::reflect::manifest::FileRef;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, BTreeSet, HashMap};

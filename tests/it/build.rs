@@ -6,8 +6,8 @@ use crate::support::{fixture_files, kiln, root, verified_manifest};
 use expect_test::expect_file;
 use kiln::build::{BuildResult, VariantSelection};
 use kiln::diagnostics::{Diagnostic, has_errors, render_plain};
+use kiln::manifest::Manifest;
 use kiln::project::{BuildMode, build_project};
-use kiln::reflect::manifest::Manifest;
 use kiln::source::SourceStore;
 use naga::valid::{Capabilities, ValidationFlags};
 use std::collections::BTreeMap;
@@ -486,7 +486,7 @@ fn a_shader_copied_under_another_name_is_compiled_once() {
     };
     assert_eq!((count(" compiled,"), count(" shared between passes")), (19, count(" stage modules") - 19));
     assert!(count(" stage modules") > 19, "{summary}");
-    let hashes = |pass: &kiln::reflect::manifest::PassManifest| -> Vec<Vec<String>> {
+    let hashes = |pass: &kiln::manifest::PassManifest| -> Vec<Vec<String>> {
         pass.variants
             .iter()
             .map(|v| {

@@ -2,9 +2,9 @@
 //! pipeline with the manifest's layout (lavapipe in CI). Without an adapter the test says why and
 //! passes, unless `KILN_REQUIRE_GPU=1` (set by CI) makes that a failure.
 
+use kiln::manifest::{Manifest, PassManifest, StageView};
 use kiln::project::{BuildMode, build_project};
 use kiln::reflect::Resource;
-use kiln::reflect::manifest::{Manifest, PassManifest, StageView};
 use kiln::source::SourceStore;
 use std::path::{Path, PathBuf};
 

@@ -3,7 +3,7 @@
 //! hashes and rebuilt, never used.
 
 use crate::support::{build_clean as build, root, synthetic_project, verified_manifest};
-use kiln::reflect::manifest::Manifest;
+use kiln::manifest::Manifest;
 use std::time::Duration;
 
 #[test]

@@ -12,8 +12,8 @@
 
 use crate::support::{gpu, tool};
 use kiln::build::VariantSelection;
+use kiln::manifest::Manifest;
 use kiln::project::{BuildMode, build_project};
-use kiln::reflect::manifest::Manifest;
 use kiln::source::SourceStore;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;

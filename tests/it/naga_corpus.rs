@@ -215,7 +215,7 @@ fn naga_s_wgsl_tests_build_through_kiln_as_naga_judges_them() {
             .expect("kiln.toml");
         let output = dir.path().join("accepted-out");
         crate::support::build_without_errors(&accepted, Some(&output), VariantSelection::All { limit: 16 });
-        let manifest = kiln::reflect::manifest::Manifest::read(&output).expect("manifest");
+        let manifest = kiln::manifest::Manifest::read(&output).expect("manifest");
         for stage in manifest.stages() {
             let Some(file) = stage.spirv() else { continue };
             let bytes = file.read(&output).expect("module");

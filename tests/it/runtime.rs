@@ -5,7 +5,7 @@
 use crate::support::{build_without_errors, gpu, kiln, root};
 use kiln::accuracy::gpu::Gpu;
 use kiln::build::VariantSelection;
-use kiln::reflect::manifest::MaterialManifest;
+use kiln::manifest::MaterialManifest;
 use kiln::runtime::{Library, PipelineRequest, Reload, Runtime, RuntimeError, Targets, UsageLog};
 use kiln::source::SourceStore;
 use std::path::Path;

@@ -72,8 +72,8 @@ pub fn gpu(test: &str) -> Option<kiln::accuracy::gpu::Gpu> {
 
 /// The manifest in `output`, after checking that every module it names is in its pack, whole,
 /// with its hash.
-pub fn verified_manifest(output: &Path) -> kiln::reflect::manifest::Manifest {
-    let manifest: kiln::reflect::manifest::Manifest =
+pub fn verified_manifest(output: &Path) -> kiln::manifest::Manifest {
+    let manifest: kiln::manifest::Manifest =
         serde_json::from_slice(&std::fs::read(output.join("manifest.json")).expect("manifest"))
             .expect("manifest parses");
     for file in manifest.files() {

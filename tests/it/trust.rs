@@ -69,7 +69,7 @@ fn the_issue_s_nested_two_row_matrix_is_refused_not_a_crash() {
 
 /// The variant count of a build's manifest.
 fn variants(output: &Path) -> usize {
-    let manifest = kiln::reflect::manifest::Manifest::read(output).expect("manifest");
+    let manifest = kiln::manifest::Manifest::read(output).expect("manifest");
     manifest.passes().map(|p| p.variants.len()).sum()
 }
 
@@ -202,7 +202,7 @@ fn built_wgsl(out_dir: &Path) -> String {
 
 /// The keywords of every variant built into `OUT_DIR`.
 fn built_keywords(out_dir: &Path) -> Vec<String> {
-    let manifest = kiln::reflect::manifest::Manifest::read(&out_dir.join("kiln")).expect("manifest");
+    let manifest = kiln::manifest::Manifest::read(&out_dir.join("kiln")).expect("manifest");
     manifest.passes().flat_map(|p| p.variants.iter().flat_map(|v| v.keywords.clone())).collect()
 }
 

@@ -5,7 +5,7 @@
 
 use crate::support::{build_without_errors, root, synthetic_project, tool};
 use kiln::build::VariantSelection;
-use kiln::reflect::manifest::Manifest;
+use kiln::manifest::Manifest;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

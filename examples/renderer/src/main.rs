@@ -51,7 +51,7 @@ fn watch(
     )?;
     let output = project.join("build");
     println!("in another terminal:  kiln watch {}", project.display());
-    while !output.join(kiln::reflect::manifest::FILE_NAME).exists() {
+    while !output.join(kiln::manifest::FILE_NAME).exists() {
         std::thread::sleep(std::time::Duration::from_millis(200));
     }
     let mut runtime = Runtime::open(device, &output)?;

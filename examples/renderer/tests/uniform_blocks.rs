@@ -5,8 +5,8 @@
 //! GPU's agree.
 
 use bytemuck::Zeroable;
+use kiln::manifest::Manifest;
 use kiln::reflect::Member;
-use kiln::reflect::manifest::Manifest;
 use kiln_renderer::blocks::test_halfblocks::{HalfPair, Halves};
 use kiln_renderer::blocks::test_uniformblocks::{Block, Cascade, Inner, Light, Shadow};
 use kiln_renderer::device;

@@ -5,13 +5,12 @@
 //! distinct stage interface (entry point, inputs, outputs, bindings) once, and its variants are
 //! keywords and module indices.
 
-use super::{Attribute, Resource, UniformBlock};
-use crate::material::{EntryProperty, EntrySet, MaterialValue, ShaderEntry};
-use crate::shaderlab::ast::{
-    BlendFactor, BlendOperation, ColorMask, CompareFunction, CullMode, PropertyType, RenderCommandKind,
-    StencilField, StencilValue, Value,
-};
-use crate::shaderlab::pragma::KeywordKind;
+mod reflection;
+pub mod state;
+
+pub use reflection::{Attribute, Member, Resource, UniformBlock};
+pub use state::*;
+
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
@@ -86,43 +85,6 @@ fn default_queue() -> i64 {
     2000
 }
 
-impl ShaderManifest {
-    /// The shader as the material resolver sees it, so that a `.mat` read at run time resolves as
-    /// the build resolved it (`None` when a property's type does not read).
-    pub fn material_entry(&self) -> Option<ShaderEntry> {
-        let properties = self
-            .properties
-            .iter()
-            .map(|p| {
-                Some(EntryProperty {
-                    name: p.name.clone(),
-                    ty: PropertyType::from_manifest(&p.ty)?,
-                    default: MaterialValue::from_json(&p.default)?,
-                    drawer: p.drawer.clone(),
-                    enum_names: p.enum_names.clone(),
-                })
-            })
-            .collect::<Option<_>>()?;
-        let keyword_sets = self
-            .passes
-            .iter()
-            .flat_map(|pass| &pass.keyword_sets)
-            .map(|set| EntrySet {
-                shader_feature: set.kind == KeywordKind::ShaderFeature.name(),
-                keywords: set.keywords.iter().filter(|k| *k != "_").cloned().collect(),
-                off_option: set.keywords.iter().any(|k| k == "_"),
-                span: None,
-            })
-            .collect();
-        Some(ShaderEntry {
-            name: self.name.clone(),
-            properties,
-            render_queue: self.render_queue,
-            keyword_sets,
-        })
-    }
-}
-
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PropertyManifest {
     pub name: String,
@@ -137,7 +99,7 @@ pub struct PropertyManifest {
     /// The keywords its drawer enables (`[Toggle(_CLIPPING)]` is `{"toggle": "_CLIPPING"}`), so
     /// that a material read at run time gets the same keywords the build gave it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub drawer: Option<crate::material::KeywordDrawer>,
+    pub drawer: Option<KeywordDrawer>,
     /// An `[Enum]` drawer's names and values (`[["Off", 0], ["Front", 1], ["Back", 2]]`): a
     /// material may write the name.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -164,18 +126,6 @@ pub struct MaterialManifest {
 }
 
 impl MaterialManifest {
-    /// A resolved material of the shader named `shader`.
-    pub fn new(material: &crate::material::Material, shader: &str) -> MaterialManifest {
-        MaterialManifest {
-            name: material.name.clone(),
-            shader: shader.to_string(),
-            preset: material.preset.map(|p| p.name().to_string()),
-            render_queue: material.render_queue,
-            keywords: material.keywords.iter().map(|(k, _)| k.clone()).collect(),
-            values: material.values.iter().map(|(name, value)| (name.clone(), value.to_json())).collect(),
-        }
-    }
-
     /// A number property's value (`None` for other kinds and unknown names).
     pub fn number(&self, property: &str) -> Option<f64> {
         self.values.get(property).and_then(serde_json::Value::as_f64)
@@ -247,120 +197,6 @@ impl PassManifest {
 
 /// A render-state command: as written (for messages), structured, and with the properties it
 /// refers to and their defaults.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct RenderState {
-    pub command: String,
-    pub state: StateCommand,
-    pub properties: Vec<PropertyReference>,
-}
-
-/// One ShaderLab render-state command (`kind` is its keyword), its values literal or
-/// `[_Property]` (a material's value, read at draw time as Unity's enums number them).
-/// `target: null` is every colour target.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind")]
-pub enum StateCommand {
-    /// `factors: null` is `Blend Off`.
-    Blend {
-        target: Option<u32>,
-        factors: Option<BlendFactors>,
-    },
-    BlendOp {
-        target: Option<u32>,
-        color: Value<BlendOperation>,
-        alpha: Option<Value<BlendOperation>>,
-    },
-    ZWrite {
-        on: Value<bool>,
-    },
-    ZTest {
-        function: Value<CompareFunction>,
-    },
-    ZClip {
-        on: Value<bool>,
-    },
-    Cull {
-        mode: Value<CullMode>,
-    },
-    ColorMask {
-        target: Option<u32>,
-        mask: Value<ColorMask>,
-    },
-    Offset {
-        factor: Value<f64>,
-        units: Value<f64>,
-    },
-    AlphaToMask {
-        on: Value<bool>,
-    },
-    Conservative {
-        on: Value<bool>,
-    },
-    /// In the order written: a later setting of one field wins.
-    Stencil {
-        settings: Vec<StencilSetting>,
-    },
-}
-
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct BlendFactors {
-    pub src: Value<BlendFactor>,
-    pub dst: Value<BlendFactor>,
-    /// Separate alpha factors (`Blend A B, C D`); `null`: the colour factors.
-    pub alpha: Option<[Value<BlendFactor>; 2]>,
-}
-
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct StencilSetting {
-    pub field: StencilField,
-    pub value: StencilValue,
-}
-
-impl StateCommand {
-    /// The command as parsed, without its spans.
-    pub fn from_ast(command: &RenderCommandKind) -> StateCommand {
-        match command {
-            RenderCommandKind::Blend { target, factors } => StateCommand::Blend {
-                target: *target,
-                factors: factors.as_ref().map(|f| BlendFactors {
-                    src: f.src.value.clone(),
-                    dst: f.dst.value.clone(),
-                    alpha: f.alpha.as_ref().map(|(s, d)| [s.value.clone(), d.value.clone()]),
-                }),
-            },
-            RenderCommandKind::BlendOp { target, color, alpha } => StateCommand::BlendOp {
-                target: *target,
-                color: color.value.clone(),
-                alpha: alpha.as_ref().map(|a| a.value.clone()),
-            },
-            RenderCommandKind::ZWrite(on) => StateCommand::ZWrite { on: on.value.clone() },
-            RenderCommandKind::ZTest(function) => StateCommand::ZTest { function: function.value.clone() },
-            RenderCommandKind::ZClip(on) => StateCommand::ZClip { on: on.value.clone() },
-            RenderCommandKind::Cull(mode) => StateCommand::Cull { mode: mode.value.clone() },
-            RenderCommandKind::ColorMask { mask, target } => {
-                StateCommand::ColorMask { target: *target, mask: mask.value.clone() }
-            }
-            RenderCommandKind::Offset { factor, units } => {
-                StateCommand::Offset { factor: factor.value.clone(), units: units.value.clone() }
-            }
-            RenderCommandKind::AlphaToMask(on) => StateCommand::AlphaToMask { on: on.value.clone() },
-            RenderCommandKind::Conservative(on) => StateCommand::Conservative { on: on.value.clone() },
-            RenderCommandKind::Stencil(entries) => StateCommand::Stencil {
-                settings: entries
-                    .iter()
-                    .map(|e| StencilSetting { field: e.op, value: e.value.value.clone() })
-                    .collect(),
-            },
-        }
-    }
-}
-
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct PropertyReference {
-    pub name: String,
-    pub default: serde_json::Value,
-}
-
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct KeywordSetManifest {
     pub kind: String,
@@ -498,5 +334,43 @@ impl FileRef {
                 format!("`{}` is shorter than its modules", self.path),
             )
         })
+    }
+}
+
+/// A number counts as "on" above this, as in Unity's toggle drawers.
+pub const TOGGLE_EPSILON: f64 = 0.001;
+
+/// The keywords a drawer can enable, with which value enables each.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum KeywordDrawer {
+    /// `[Toggle(KW)]` (or `UPPER(prop)_ON`): on when |value| > 0.001.
+    Toggle(String),
+    /// `[ToggleOff(KW)]` (or `UPPER(prop)_OFF`): on when the value is off.
+    ToggleOff(String),
+    /// `[KeywordEnum(A, B)]`: value i enables `UPPER(prop)_UPPER(entry i)`.
+    KeywordEnum(Vec<String>),
+}
+
+impl KeywordDrawer {
+    /// Every keyword this drawer may enable.
+    pub fn keywords(&self) -> Vec<&str> {
+        match self {
+            KeywordDrawer::Toggle(k) | KeywordDrawer::ToggleOff(k) => vec![k.as_str()],
+            KeywordDrawer::KeywordEnum(keywords) => keywords.iter().map(String::as_str).collect(),
+        }
+    }
+
+    /// The keyword enabled by `value`, if any.
+    pub fn keyword_for(&self, value: f64) -> Option<&str> {
+        let on = value.abs() > TOGGLE_EPSILON;
+        match self {
+            KeywordDrawer::Toggle(k) => on.then_some(k.as_str()),
+            KeywordDrawer::ToggleOff(k) => (!on).then_some(k.as_str()),
+            KeywordDrawer::KeywordEnum(keywords) => {
+                let index = value.round();
+                (index >= 0.0).then(|| keywords.get(index as usize).map(String::as_str)).flatten()
+            }
+        }
     }
 }

@@ -1,0 +1,189 @@
+//! The structured render state of a pass, as the manifest writes it: ShaderLab's words and
+//! values, owned by the schema (the parser reads into these types; the run time maps them to
+//! wgpu), so that nothing the parser renames changes the file.
+
+use serde::{Deserialize, Serialize};
+
+/// Declares a closed set of ShaderLab words, matched case-insensitively.
+macro_rules! shaderlab_words {
+    ($(#[$meta:meta])* $name:ident { $($variant:ident = $text:literal),+ $(,)? }) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub enum $name { $($variant),+ }
+
+        impl $name {
+            /// Every accepted spelling, in canonical case.
+            pub const NAMES: &'static [&'static str] = &[$($text),+];
+
+            /// Parses a word, ignoring case.
+            pub fn from_word(word: &str) -> Option<$name> {
+                $(if word.eq_ignore_ascii_case($text) { return Some($name::$variant); })+
+                None
+            }
+
+            pub fn name(self) -> &'static str {
+                match self { $($name::$variant => $text),+ }
+            }
+        }
+
+        /// Written as its ShaderLab word.
+        impl serde::Serialize for $name {
+            fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+                serializer.serialize_str(self.name())
+            }
+        }
+
+        impl<'de> serde::Deserialize<'de> for $name {
+            fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<$name, D::Error> {
+                let word = String::deserialize(deserializer)?;
+                $name::from_word(&word).ok_or_else(|| serde::de::Error::unknown_variant(&word, $name::NAMES))
+            }
+        }
+    };
+}
+
+shaderlab_words!(BlendFactor {
+    One = "One", Zero = "Zero", SrcColor = "SrcColor", SrcAlpha = "SrcAlpha",
+    SrcAlphaSaturate = "SrcAlphaSaturate", DstColor = "DstColor", DstAlpha = "DstAlpha",
+    OneMinusSrcColor = "OneMinusSrcColor", OneMinusSrcAlpha = "OneMinusSrcAlpha",
+    OneMinusDstColor = "OneMinusDstColor", OneMinusDstAlpha = "OneMinusDstAlpha",
+});
+
+shaderlab_words!(BlendOperation {
+    Add = "Add", Sub = "Sub", RevSub = "RevSub", Min = "Min", Max = "Max",
+    LogicalClear = "LogicalClear", LogicalSet = "LogicalSet", LogicalCopy = "LogicalCopy",
+    LogicalCopyInverted = "LogicalCopyInverted", LogicalNoop = "LogicalNoop",
+    LogicalInvert = "LogicalInvert", LogicalAnd = "LogicalAnd", LogicalNand = "LogicalNand",
+    LogicalOr = "LogicalOr", LogicalNor = "LogicalNor", LogicalXor = "LogicalXor",
+    LogicalEquiv = "LogicalEquiv", LogicalAndReverse = "LogicalAndReverse",
+    LogicalAndInverted = "LogicalAndInverted", LogicalOrReverse = "LogicalOrReverse",
+    LogicalOrInverted = "LogicalOrInverted", Multiply = "Multiply", Screen = "Screen",
+    Overlay = "Overlay", Darken = "Darken", Lighten = "Lighten", ColorDodge = "ColorDodge",
+    ColorBurn = "ColorBurn", HardLight = "HardLight", SoftLight = "SoftLight",
+    Difference = "Difference", Exclusion = "Exclusion", HslHue = "HSLHue",
+    HslSaturation = "HSLSaturation", HslColor = "HSLColor", HslLuminosity = "HSLLuminosity",
+});
+
+shaderlab_words!(CompareFunction {
+    Never = "Never", Less = "Less", Equal = "Equal", LEqual = "LEqual", Greater = "Greater",
+    NotEqual = "NotEqual", GEqual = "GEqual", Always = "Always", Disabled = "Disabled",
+});
+
+shaderlab_words!(CullMode { Off = "Off", Front = "Front", Back = "Back" });
+
+shaderlab_words!(StencilOperation {
+    Keep = "Keep", Zero = "Zero", Replace = "Replace", IncrSat = "IncrSat", DecrSat = "DecrSat",
+    Invert = "Invert", IncrWrap = "IncrWrap", DecrWrap = "DecrWrap",
+});
+
+shaderlab_words!(
+    /// The commands allowed inside `Stencil { }`.
+    StencilField {
+        Ref = "Ref", ReadMask = "ReadMask", WriteMask = "WriteMask", Comp = "Comp", Pass = "Pass",
+        Fail = "Fail", ZFail = "ZFail", CompBack = "CompBack", PassBack = "PassBack",
+        FailBack = "FailBack", ZFailBack = "ZFailBack", CompFront = "CompFront",
+        PassFront = "PassFront", FailFront = "FailFront", ZFailFront = "ZFailFront",
+    }
+);
+
+/// A render-state value: a literal, or `[_Property]` taken from the material. In the manifest:
+/// `{"literal": ...}` or `{"property": "_Name"}`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Value<T> {
+    Literal(T),
+    Property(String),
+}
+
+/// Channels written by `ColorMask`: `0` is none.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+pub struct ColorMask {
+    pub r: bool,
+    pub g: bool,
+    pub b: bool,
+    pub a: bool,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StencilValue {
+    /// `Ref`, `ReadMask`, `WriteMask`: 0 to 255.
+    Byte(Value<u8>),
+    Compare(Value<CompareFunction>),
+    Operation(Value<StencilOperation>),
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RenderState {
+    pub command: String,
+    pub state: StateCommand,
+    pub properties: Vec<PropertyReference>,
+}
+
+/// One ShaderLab render-state command (`kind` is its keyword), its values literal or
+/// `[_Property]` (a material's value, read at draw time as Unity's enums number them).
+/// `target: null` is every colour target.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind")]
+pub enum StateCommand {
+    /// `factors: null` is `Blend Off`.
+    Blend {
+        target: Option<u32>,
+        factors: Option<BlendFactors>,
+    },
+    BlendOp {
+        target: Option<u32>,
+        color: Value<BlendOperation>,
+        alpha: Option<Value<BlendOperation>>,
+    },
+    ZWrite {
+        on: Value<bool>,
+    },
+    ZTest {
+        function: Value<CompareFunction>,
+    },
+    ZClip {
+        on: Value<bool>,
+    },
+    Cull {
+        mode: Value<CullMode>,
+    },
+    ColorMask {
+        target: Option<u32>,
+        mask: Value<ColorMask>,
+    },
+    Offset {
+        factor: Value<f64>,
+        units: Value<f64>,
+    },
+    AlphaToMask {
+        on: Value<bool>,
+    },
+    Conservative {
+        on: Value<bool>,
+    },
+    /// In the order written: a later setting of one field wins.
+    Stencil {
+        settings: Vec<StencilSetting>,
+    },
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct BlendFactors {
+    pub src: Value<BlendFactor>,
+    pub dst: Value<BlendFactor>,
+    /// Separate alpha factors (`Blend A B, C D`); `null`: the colour factors.
+    pub alpha: Option<[Value<BlendFactor>; 2]>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct StencilSetting {
+    pub field: StencilField,
+    pub value: StencilValue,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct PropertyReference {
+    pub name: String,
+    pub default: serde_json::Value,
+}
