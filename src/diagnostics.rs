@@ -46,6 +46,7 @@ impl Diagnostic {
     }
 
     fn new(severity: Severity, code: &'static str, message: impl Into<String>) -> Diagnostic {
+        debug_assert!(crate::codes::is_registered(code), "{code} is not in the registry (src/codes.rs)");
         Diagnostic {
             severity,
             code,

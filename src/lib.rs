@@ -22,6 +22,7 @@ pub mod build;
 mod build_script;
 pub mod catalog;
 pub mod codegen;
+pub mod codes;
 pub mod compile;
 pub mod config;
 pub mod diagnostics;

@@ -11,6 +11,7 @@ use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::diagnostics::{self, Diagnostic};
 use crate::manifest::PassManifest;
 use crate::source::SourceStore;
+use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -126,7 +127,8 @@ pub(super) fn finish(
 /// Shard outputs to merge, checked against each other: one kiln version, one count, every shard
 /// once. Returns the inputs hash they share (checked against the project by the build).
 pub fn check_shards(folders: &[PathBuf]) -> Result<(Vec<ShardRecord>, String), String> {
-    let records = folders.iter().map(|f| ShardRecord::read(f)).collect::<Result<Vec<_>, _>>()?;
+    // Each record holds its shard's parts of the manifest: read at once.
+    let records = folders.par_iter().map(|f| ShardRecord::read(f)).collect::<Result<Vec<_>, _>>()?;
     let Some(first) = records.first() else { return Err("no shard outputs to merge".into()) };
     for (record, folder) in records.iter().zip(folders) {
         let differs = |what: &str| {

@@ -60,12 +60,11 @@ pub fn compile(
     })
 }
 
-/// A fault for the tests of [`contain_panics`]: debug builds panic while compiling an entry
-/// point named by `KILN_INJECT_PANIC`.
-fn injected_fault(entry: &str) {
-    if cfg!(debug_assertions) && std::env::var("KILN_INJECT_PANIC").is_ok_and(|name| name == entry) {
-        panic!("fault injected by KILN_INJECT_PANIC");
-    }
+/// Faults for the tests of what no valid input reaches: debug builds fail while compiling the
+/// entry point an environment variable names (`KILN_INJECT_PANIC` panics, for
+/// [`contain_panics`]; `KILN_INJECT_BACKEND_ERROR` makes the WGSL writer fail, K0409).
+fn injected(variable: &str, entry: &str) -> bool {
+    cfg!(debug_assertions) && std::env::var(variable).is_ok_and(|name| name == entry)
 }
 
 fn compile_unguarded(
@@ -73,7 +72,9 @@ fn compile_unguarded(
     request: &StageRequest,
     mapper: &Mapper,
 ) -> Result<StageOutput, Diagnostic> {
-    injected_fault(request.entry);
+    if injected("KILN_INJECT_PANIC", request.entry) {
+        panic!("fault injected by KILN_INJECT_PANIC");
+    }
     let host = layout::correct(&mut module, request.text, mapper)?;
     let stage = naga_stage(request.stage);
     if !module.entry_points.iter().any(|e| e.name == request.entry && e.stage == stage) {
@@ -103,6 +104,9 @@ fn compile_unguarded(
     check_limits(&module, request, mapper)?;
     layout::check_uniform_constructs(&module, request.text, mapper)?;
 
+    if injected("KILN_INJECT_BACKEND_ERROR", request.entry) {
+        return Err(backend_error("WGSL", "fault injected by KILN_INJECT_BACKEND_ERROR".into()));
+    }
     let wgsl = if request.backends.contains(&Backend::Wgsl) {
         Some(write_wgsl(&module, &info, request.allowed.capabilities(), &host)?)
     } else {

@@ -97,3 +97,15 @@ fn watch_rebuilds_on_an_edit_and_reports_a_broken_one() {
     assert!(errors.contains("Blend.shader:40:"), "{errors}");
     assert!(output.join("manifest.json").exists(), "the last good build stays");
 }
+
+#[test]
+fn a_file_that_exists_but_cannot_be_read_is_named_with_the_system_s_reason() {
+    // A folder given where a file is read: it exists, and reading it fails (K0002).
+    let out = tempfile::tempdir().expect("temp dir");
+    let output = out.path().to_str().expect("utf-8");
+    let run = kiln(&["build", "fixtures/project", "--output", output, "--variants-from", "fixtures"]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(stderr.starts_with("error[K0002]: cannot read `fixtures`: "), "{stderr}");
+    assert!(!out.path().join("manifest.json").exists(), "nothing is written");
+}

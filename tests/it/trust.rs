@@ -59,6 +59,22 @@ fn a_panic_while_compiling_one_module_is_a_diagnostic_and_the_last_output_stays_
 }
 
 #[test]
+fn a_back_end_failing_on_a_validated_module_is_reported_at_its_entry_point() {
+    // No valid input makes naga's writers fail today; debug builds can be made to (K0409).
+    let run = Command::new(env!("CARGO_BIN_EXE_kiln"))
+        .args(["check", "fixtures/project"])
+        .current_dir(root())
+        .env("KILN_INJECT_BACKEND_ERROR", "LitPassFragment")
+        .output()
+        .expect("kiln runs");
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("error[K0409]: the WGSL writer failed: fault injected"), "{stderr}");
+    assert!(stderr.contains("naga validated the module"), "{stderr}");
+    assert!(stderr.contains("in variant `") && stderr.contains("fragment stage"), "{stderr}");
+}
+
+#[test]
 fn the_issue_s_nested_two_row_matrix_is_refused_not_a_crash() {
     let run = kiln(&["check", "fixtures/bad/build/nested_two_row_matrix.shader"]);
     let stderr = String::from_utf8_lossy(&run.stderr);
