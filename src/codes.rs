@@ -14,6 +14,8 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0004", "file too large"),
     ("K0005", "file is not text"),
     ("K0006", "NUL byte in a text file"),
+    ("K0007", "the command cannot run"),
+    ("K0008", "shader no material uses"),
     ("K0101", "unterminated string"),
     ("K0102", "unterminated block comment"),
     ("K0103", "program block never closed"),

@@ -45,6 +45,17 @@ impl Diagnostic {
         Diagnostic::new(Severity::Warning, code, message)
     }
 
+    /// A remark that is neither an error nor a warning (a hint about what was left out).
+    pub fn remark(code: &'static str, message: impl Into<String>) -> Diagnostic {
+        Diagnostic::new(Severity::Note, code, message)
+    }
+
+    /// The run could not be made at all (a path that does not exist, an output that cannot be
+    /// written, arguments that do not fit): `kiln` exits with 2.
+    pub fn host_failure(message: impl Into<String>) -> Diagnostic {
+        Diagnostic::new(Severity::Error, "K0007", message)
+    }
+
     fn new(severity: Severity, code: &'static str, message: impl Into<String>) -> Diagnostic {
         debug_assert!(crate::codes::is_registered(code), "{code} is not in the registry (src/codes.rs)");
         Diagnostic {

@@ -397,6 +397,27 @@ pub fn find_files(paths: &[PathBuf], extension: &str) -> Result<Vec<PathBuf>, Pr
     Ok(files)
 }
 
+/// `kiln list`: the listing of the projects and files at `paths` (strict projects' warnings
+/// promoted), with what was found wrong.
+pub fn list_project(
+    store: &mut SourceStore,
+    paths: &[PathBuf],
+) -> Result<(crate::listing::Listing, Vec<Diagnostic>), ProjectError> {
+    let (workspace, mut problems) = open_workspace(store, paths)?;
+    let mut includes = Includes::new(workspace.include.clone().unwrap_or_else(|| include_config(paths)));
+    let (shaders, found) = load_files(store, &workspace.shaders);
+    problems.extend(found);
+    let (materials, found) = load_files(store, &workspace.materials);
+    problems.extend(found);
+    let input = workspace.catalog_input(shaders, materials);
+    let (listing, found) = crate::listing::list_shaders(store, &mut includes, &input);
+    problems.extend(found);
+    if workspace.strict {
+        diagnostics::promote_warnings(&mut problems);
+    }
+    Ok((listing, problems))
+}
+
 /// Loads files into the store. Unreadable files and files that are not text become diagnostics,
 /// not failures, so the rest of the project is still checked; a file read with problems (bytes
 /// that are not UTF-8, NULs) comes with its warnings.

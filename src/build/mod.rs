@@ -132,6 +132,28 @@ pub struct BuildSummary {
     pub unused: Vec<String>,
 }
 
+impl BuildSummary {
+    /// The note after a build that left shaders out because no material uses them (`verb`:
+    /// "built" or "checked").
+    pub fn unused_note(&self, verb: &str) -> Option<Diagnostic> {
+        const SHOWN: usize = 5;
+        let unused = &self.unused;
+        let mut names: Vec<String> = unused.iter().take(SHOWN).map(|n| format!("`{n}`")).collect();
+        if unused.len() > SHOWN {
+            names.push(format!("and {} more", unused.len() - SHOWN));
+        }
+        let what = match &unused[..] {
+            [] => return None,
+            [one] => format!("`{one}`, so it was not {verb}"),
+            _ => format!("{} shaders, so they were not {verb}: {}", unused.len(), names.join(", ")),
+        };
+        Some(Diagnostic::remark("K0008", format!("no material uses {what}")).help(
+            "add a `.mat` that names it, list it in `always_include` in kiln.toml, or check every \
+             variant with `kiln check --all-variants`",
+        ))
+    }
+}
+
 /// A build's outcome.
 pub struct BuildResult {
     /// `None` when nothing changed since the last clean build ([`unchanged`], which does not

@@ -419,7 +419,13 @@ fn a_build_that_skips_every_shader_says_which_and_how_to_build_them() {
     };
     let stderr = build();
     assert!(stderr.contains("built 0 shaders"), "{stderr}");
-    assert!(stderr.contains("note: no material uses `Custom RP/Unlit`, so it was not built"), "{stderr}");
+    assert!(
+        stderr.contains("note[K0008]: no material uses `Custom RP/Unlit`, so it was not built"),
+        "{stderr}"
+    );
+    let note: String =
+        stderr.lines().skip_while(|l| !l.starts_with("note[")).map(|l| format!("{l}\n")).collect();
+    expect_file![root().join("tests/golden/build/unused_shader.stderr")].assert_eq(&note);
     assert!(stderr.contains("always_include") && stderr.contains("kiln check --all-variants"), "{stderr}");
     // With a material, nothing is skipped and nothing is said about it.
     std::fs::write(project.path().join("U.mat"), "shader = \"Custom RP/Unlit\"\n").expect("write");

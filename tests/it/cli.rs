@@ -15,6 +15,8 @@ fn exit_codes() {
 fn a_missing_path_is_named() {
     let output = kiln(&["list", "no/such/folder"]);
     assert!(String::from_utf8_lossy(&output.stderr).contains("`no/such/folder` does not exist"));
+    expect_test::expect_file![crate::support::root().join("tests/golden/cli/missing_path.stderr")]
+        .assert_eq(&String::from_utf8_lossy(&output.stderr));
     assert!(output.stdout.is_empty());
 }
 

@@ -1,0 +1,179 @@
+//! The command line's shape: every command, argument and flag, as clap reads them.
+
+use clap::{Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+
+#[derive(Parser)]
+#[command(name = "kiln", version, about = "Shader-variant compiler and keyword system for WGSL")]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand)]
+pub enum Command {
+    /// List each shader's passes, keyword sets, and the variants its materials use.
+    List {
+        /// Project folders (with their kiln.toml, if any), `.shader` or `.mat` files
+        /// (default: the bundled example project).
+        paths: Vec<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+        /// Also list each material's resolved keywords and render state.
+        #[arg(long)]
+        materials: bool,
+    },
+    /// Print the WGSL the compiler sees for one variant of one pass: includes spliced,
+    /// conditionals resolved, macros substituted.
+    Preprocess {
+        /// The `.shader` file.
+        shader: PathBuf,
+        /// Pass name (case-insensitive) or 0-based index; default: the first pass with a program.
+        #[arg(long)]
+        pass: Option<String>,
+        /// The variant's keywords, comma-separated. Sets without `_` default to their first keyword.
+        #[arg(long, value_delimiter = ',')]
+        keywords: Vec<String>,
+        #[arg(long, value_enum, default_value_t = StageArg::Fragment)]
+        stage: StageArg,
+    },
+    /// Compile every variant the materials use to WGSL and SPIR-V, with a manifest.
+    Build {
+        /// The project folder (default: the bundled example project).
+        project: Option<PathBuf>,
+        /// Worker threads (default: all cores).
+        #[arg(long)]
+        threads: Option<usize>,
+        /// Write here instead of the project's `output` folder.
+        #[arg(long)]
+        output: Option<PathBuf>,
+        /// Write `manifest.json` indented, for reading (default: compact).
+        #[arg(long)]
+        pretty: bool,
+        /// Also build the variants a usage log names (JSON Lines, as `kiln::runtime::UsageLog`
+        /// writes them). Repeatable.
+        #[arg(long = "variants-from", value_name = "FILE")]
+        variants_from: Vec<PathBuf>,
+        /// Build only shard I of N (1 <= I <= N) of the stage modules, into the output folder,
+        /// for `kiln merge` (docs/scaling.md).
+        #[arg(long, value_name = "I/N")]
+        shard: Option<String>,
+        /// A module cache shared by builds, processes and machines (also `KILN_CACHE_DIR`,
+        /// `cache_dir` in kiln.toml).
+        #[arg(long, value_name = "DIR")]
+        cache_dir: Option<PathBuf>,
+    },
+    /// Join the outputs of `kiln build --shard` into the output one `kiln build` would write,
+    /// byte for byte, compiling nothing.
+    Merge {
+        /// The output folder to write.
+        output: PathBuf,
+        /// Every shard's output folder, once each.
+        #[arg(required = true)]
+        shards: Vec<PathBuf>,
+        /// The project (default: the folder the shards were built from).
+        #[arg(long)]
+        project: Option<PathBuf>,
+        #[arg(long)]
+        pretty: bool,
+    },
+    /// The shared module cache: its size, or shrink it.
+    #[command(subcommand)]
+    Cache(CacheCommand),
+    /// Build, then rebuild on every change to a file the build read (or a new file where it
+    /// looks), printing diagnostics and a summary line per build. A failed build leaves its
+    /// diagnostics in the output folder for a running program (`kiln::runtime`) to report.
+    Watch {
+        /// The project folder (default: the bundled example project).
+        project: Option<PathBuf>,
+        #[arg(long)]
+        output: Option<PathBuf>,
+        #[arg(long = "variants-from", value_name = "FILE")]
+        variants_from: Vec<PathBuf>,
+        #[arg(long, value_name = "DIR")]
+        cache_dir: Option<PathBuf>,
+    },
+    /// Validate without writing anything: used variants, and for shaders no material uses, the
+    /// default variant and each keyword on its own. Exit 1 on any error.
+    Check {
+        project: Option<PathBuf>,
+        #[arg(long, value_enum, default_value_t = Format::Text)]
+        format: Format,
+        /// Check every variant of shaders no material uses (refused above 4096 per pass).
+        #[arg(long)]
+        all_variants: bool,
+    },
+    /// Print one variant's reflection as JSON: the pass's bind group layout, the stage modules'
+    /// inputs, outputs and bindings, and the uniform block layouts.
+    Reflect {
+        shader: PathBuf,
+        #[arg(long)]
+        pass: Option<String>,
+        #[arg(long, value_delimiter = ',')]
+        keywords: Vec<String>,
+    },
+    /// Measure the shader library's formulations against the f64 reference on hard cases, on
+    /// the GPU (the speed-against-error table of docs/accuracy.md).
+    Accuracy,
+    /// Create materials and apply presets to them.
+    #[command(subcommand)]
+    Material(MaterialCommand),
+}
+
+#[derive(Subcommand)]
+pub enum CacheCommand {
+    /// How many modules the cache holds and their size (and any that no longer verify).
+    Stats {
+        /// The project whose kiln.toml names the cache (default: the bundled example project).
+        project: Option<PathBuf>,
+        #[arg(long, value_name = "DIR")]
+        cache_dir: Option<PathBuf>,
+    },
+    /// Removes the least recently used entries until the cache is at most SIZE (`500M`, `2G`).
+    /// Safe while builds run: an entry gone is a miss.
+    Gc {
+        /// The project whose kiln.toml names the cache (default: the bundled example project).
+        project: Option<PathBuf>,
+        #[arg(long, value_name = "SIZE")]
+        max_size: String,
+        #[arg(long, value_name = "DIR")]
+        cache_dir: Option<PathBuf>,
+    },
+}
+
+#[derive(Subcommand)]
+pub enum MaterialCommand {
+    /// Write a new material with the shader's defaults.
+    New {
+        /// The `.mat` file to create (never overwritten).
+        path: PathBuf,
+        /// The shader's name, as in `Shader "name"`.
+        #[arg(long)]
+        shader: String,
+        /// Opaque, Clip, Fade or Transparent.
+        #[arg(long)]
+        preset: Option<String>,
+        /// The project to find the shader in (default: the nearest folder with a kiln.toml).
+        #[arg(long)]
+        project: Option<PathBuf>,
+    },
+    /// Apply a preset to a material, keeping its other values and comments.
+    Preset {
+        path: PathBuf,
+        preset: String,
+        #[arg(long)]
+        project: Option<PathBuf>,
+    },
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum StageArg {
+    Vertex,
+    Fragment,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    Text,
+    Json,
+}

@@ -1,0 +1,60 @@
+//! `kiln cache stats` and `kiln cache gc`: the shared module cache a project's builds use.
+
+use crate::args::CacheCommand;
+use crate::output::{host_failure, report};
+use kiln::diagnostics;
+use kiln::source::SourceStore;
+use std::process::ExitCode;
+
+/// `kiln cache stats` and `kiln cache gc`.
+pub fn run(command: CacheCommand) -> ExitCode {
+    let (project, given) = match &command {
+        CacheCommand::Stats { project, cache_dir } | CacheCommand::Gc { project, cache_dir, .. } => {
+            (project.clone().unwrap_or_else(kiln::project::bundled_example), cache_dir.clone())
+        }
+    };
+    let mut store = SourceStore::new();
+    let (workspace, problems) =
+        match kiln::project::open_workspace(&mut store, std::slice::from_ref(&project)) {
+            Ok(opened) => opened,
+            Err(error) => return host_failure(&error.to_string()),
+        };
+    report(&store, &problems);
+    if diagnostics::has_errors(&problems) {
+        return ExitCode::from(1);
+    }
+    let Some(dir) = workspace.shared_cache_dir(given) else {
+        return host_failure(&format!(
+            "no cache folder: give --cache-dir, set KILN_CACHE_DIR, or set `cache_dir` in {}",
+            project.join(kiln::config::FILE_NAME).display()
+        ));
+    };
+    let outcome = match command {
+        CacheCommand::Stats { .. } => kiln::store::shared::cache_stats(&dir)
+            .map_err(|e| format!("cannot read `{}`: {e}", dir.display()))
+            .map(|stats| {
+                let damaged = if stats.damaged > 0 {
+                    format!(", {} damaged (misses; gc removes them)", stats.damaged)
+                } else {
+                    String::new()
+                };
+                println!(
+                    "{}: {} modules, {} pass layouts, {} bytes{damaged}",
+                    dir.display(),
+                    stats.modules,
+                    stats.layouts,
+                    stats.bytes
+                );
+            }),
+        CacheCommand::Gc { max_size, .. } => kiln::store::shared::parse_size(&max_size).and_then(|limit| {
+            let (removed, left) = kiln::store::shared::cache_gc(&dir, limit)
+                .map_err(|e| format!("cannot clean `{}`: {e}", dir.display()))?;
+            println!("{}: removed {removed} entries, {left} bytes left (limit {limit})", dir.display());
+            Ok(())
+        }),
+    };
+    match outcome {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => host_failure(&message),
+    }
+}

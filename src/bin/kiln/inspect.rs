@@ -1,0 +1,96 @@
+//! `kiln list`, `kiln preprocess`, `kiln reflect` and `kiln accuracy`: looking at a project
+//! without building it.
+
+use crate::args::{Format, StageArg};
+use crate::output::{exit_code, host_failure, print_out, report};
+use kiln::diagnostics;
+use kiln::preprocess::Stage;
+use kiln::project::VariantRequest;
+use kiln::source::SourceStore;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// `kiln list`.
+pub fn list(paths: Vec<PathBuf>, format: Format, show_materials: bool) -> ExitCode {
+    let paths = if paths.is_empty() { vec![kiln::project::bundled_example()] } else { paths };
+    let mut store = SourceStore::new();
+    let (listing, problems) = match kiln::project::list_project(&mut store, &paths) {
+        Ok(listed) => listed,
+        Err(error) => return host_failure(&error.to_string()),
+    };
+    match format {
+        Format::Text => {
+            let mut text = kiln::listing::render_text(&listing);
+            if show_materials {
+                text.push_str(&kiln::listing::render_materials(&listing));
+            }
+            print_out(&text);
+            report(&store, &problems);
+        }
+        Format::Json => {
+            let mut document = serde_json::json!({
+                "shaders": listing.shaders,
+                "diagnostics": diagnostics::to_json(&store, &problems),
+            });
+            if show_materials {
+                document["materials"] = serde_json::json!(listing.materials);
+            }
+            print_out(&format!("{document:#}\n"));
+        }
+    }
+    exit_code(&problems)
+}
+
+/// `kiln preprocess`.
+pub fn preprocess(shader: PathBuf, pass: Option<String>, keywords: Vec<String>, stage: StageArg) -> ExitCode {
+    let stage = match stage {
+        StageArg::Vertex => Stage::Vertex,
+        StageArg::Fragment => Stage::Fragment,
+    };
+    let request = VariantRequest { shader, pass, keywords, stage };
+    let mut store = SourceStore::new();
+    match kiln::project::preprocess_variant(&mut store, &request) {
+        Ok((output, problems)) => {
+            if let Some(output) = output {
+                print_out(&output.text);
+            }
+            report(&store, &problems);
+            exit_code(&problems)
+        }
+        Err(error) => host_failure(&error.to_string()),
+    }
+}
+
+/// `kiln reflect`.
+pub fn reflect(shader: PathBuf, pass: Option<String>, keywords: Vec<String>) -> ExitCode {
+    let mut store = SourceStore::new();
+    let request = VariantRequest { shader, pass, keywords, stage: Stage::Fragment };
+    match kiln::project::reflect_variant(&mut store, &request) {
+        Ok((json, problems)) => {
+            if let Some(json) = json {
+                print_out(&format!("{json:#}\n"));
+            }
+            report(&store, &problems);
+            exit_code(&problems)
+        }
+        Err(error) => host_failure(&error.to_string()),
+    }
+}
+
+/// `kiln accuracy`.
+pub fn accuracy() -> ExitCode {
+    let gpu = match kiln::accuracy::gpu::device() {
+        Ok(found) => found,
+        Err(reason) => return host_failure(&reason),
+    };
+    match kiln::accuracy::gpu::run(&gpu) {
+        Ok((rows, timings, method)) => {
+            print_out(&kiln::accuracy::render(&gpu.adapter, &rows, &timings, &method));
+            ExitCode::SUCCESS
+        }
+        Err(error) => {
+            report(&SourceStore::new(), &[kiln::diagnostics::Diagnostic::host_failure(error.to_string())]);
+            ExitCode::from(1)
+        }
+    }
+}

@@ -1,0 +1,37 @@
+//! The `kiln` command: arguments in, library calls, rendered results out, exit code.
+//! Exit codes: 0 success, 1 diagnostics with errors, 2 the run could not be made (K0007).
+//!
+//! One file per command group: `build.rs` (build, check, merge, watch), `inspect.rs` (list,
+//! preprocess, reflect, accuracy), `cache.rs`, `material.rs`; `output.rs` renders.
+
+mod args;
+mod build;
+mod cache;
+mod inspect;
+mod material;
+mod output;
+
+use args::{Cli, Command};
+use clap::Parser;
+use std::process::ExitCode;
+
+fn main() -> ExitCode {
+    match Cli::parse().command {
+        Command::List { paths, format, materials } => inspect::list(paths, format, materials),
+        Command::Preprocess { shader, pass, keywords, stage } => {
+            inspect::preprocess(shader, pass, keywords, stage)
+        }
+        Command::Reflect { shader, pass, keywords } => inspect::reflect(shader, pass, keywords),
+        Command::Accuracy => inspect::accuracy(),
+        Command::Build { project, threads, output, pretty, variants_from, shard, cache_dir } => {
+            build::build(project, threads, output, pretty, variants_from, shard, cache_dir)
+        }
+        Command::Check { project, format, all_variants } => build::check(project, format, all_variants),
+        Command::Merge { output, shards, project, pretty } => build::merge(output, shards, project, pretty),
+        Command::Watch { project, output, variants_from, cache_dir } => {
+            build::watch(project, output, variants_from, cache_dir)
+        }
+        Command::Cache(command) => cache::run(command),
+        Command::Material(command) => material::run(command),
+    }
+}
