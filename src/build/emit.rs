@@ -86,15 +86,21 @@ pub(super) fn write_json(
     // What was written, for the comparison with the old file once it is all written.
     let digest = std::cell::RefCell::new(Digest::default());
     let serialize = |out: &mut dyn std::io::Write| {
-        let mut out = Hashed { out, digest: Digest::default() };
-        if pretty {
-            serde_json::to_writer_pretty(&mut out, value)
-        } else {
-            serde_json::to_writer(&mut out, value)
+        let mut hashed = Hashed { out, digest: Digest::default() };
+        {
+            // serde writes a token at a time: buffered before hashing, so the hasher (and the
+            // file's own buffer) see large pieces (a 50 MB manifest took 0.8 s unbuffered).
+            let mut out = std::io::BufWriter::with_capacity(1 << 16, &mut hashed);
+            if pretty {
+                serde_json::to_writer_pretty(&mut out, value)
+            } else {
+                serde_json::to_writer(&mut out, value)
+            }
+            .map_err(std::io::Error::other)?;
+            out.write_all(b"\n")?;
+            out.flush()?;
         }
-        .map_err(std::io::Error::other)?;
-        out.write_all(b"\n")?;
-        digest.replace(out.digest);
+        digest.replace(hashed.digest);
         Ok(())
     };
     let changed = |old: &std::path::Path| {
