@@ -16,6 +16,7 @@
 // Diagnostics travel as plain values on the error path, where their size costs nothing that
 // matters; boxing each one would only add noise.
 #![allow(clippy::result_large_err)]
+#![warn(unreachable_pub, clippy::print_stdout, clippy::print_stderr)]
 
 pub mod accuracy;
 pub mod build;
