@@ -137,6 +137,8 @@ impl Build {
             Err(BuildError::Diagnostics { cargo_lines, .. }) => cargo_lines,
             Err(_) => return result,
         };
+        // A build script's protocol with cargo is its stdout: the one place the library prints.
+        #[allow(clippy::print_stdout)]
         for line in lines {
             println!("{line}");
         }

@@ -9,6 +9,7 @@ use std::path::PathBuf;
 /// The project file's name, looked for in the project folder.
 pub const FILE_NAME: &str = "kiln.toml";
 
+/// `kiln.toml`: a project's settings (docs/project.md), every field defaulted.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct ProjectConfig {
@@ -20,6 +21,7 @@ pub struct ProjectConfig {
     pub include_paths: Vec<PathBuf>,
     /// Where builds write their output.
     pub output: PathBuf,
+    /// The back ends each stage module is written for (default: both).
     pub backends: Vec<Backend>,
     /// Shaders built with every variant, whether or not a material uses them (by shader name).
     pub always_include: Vec<String>,
@@ -36,10 +38,13 @@ pub struct ProjectConfig {
     pub cache_dir: Option<PathBuf>,
 }
 
+/// A back end kiln writes stage modules for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Backend {
+    /// WGSL text, as naga's writer prints it (with `@align`/`@size` restored).
     Wgsl,
+    /// SPIR-V binary, for Vulkan.
     Spirv,
 }
 

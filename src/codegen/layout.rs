@@ -64,7 +64,7 @@ struct Structs<'a> {
 
 /// Emits one `#[repr(C)]` struct per distinct WGSL struct type the shader's uniform and storage
 /// blocks use (nested structs and array elements first), deduplicated by name and layout.
-pub fn uniform_structs(out: &mut String, shader: &ShaderManifest) {
+pub(super) fn uniform_structs(out: &mut String, shader: &ShaderManifest) {
     let mut structs = Structs::default();
     for block in shader.passes.iter().flat_map(|p| &p.uniform_blocks) {
         if let ([only], 0) = (block.members.as_slice(), block.size) {

@@ -9,8 +9,11 @@ use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::collections::HashSet;
 
+/// Group of resources the renderer binds once per frame (camera, lights).
 pub const PER_FRAME: u32 = 0;
+/// Group of a material's resources (its uniform block and textures).
 pub const PER_MATERIAL: u32 = 1;
+/// Group of resources bound per draw (the object's transform).
 pub const PER_OBJECT: u32 = 2;
 
 /// Resources the renderer updates once per frame, and once per object; everything else is the
@@ -32,8 +35,11 @@ pub fn group_for(name: &str) -> u32 {
 /// A resource a module declares, with where (in the preprocessed text) it is declared.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Declared {
+    /// The resource's global variable name.
     pub name: String,
+    /// `@group`/`@binding` written in the source, if any.
     pub explicit: Option<(u32, u32)>,
+    /// Where it is declared in the preprocessed text (byte range).
     pub range: (u32, u32),
 }
 
@@ -109,6 +115,7 @@ fn statement_calls(block: &naga::Block, out: &mut Vec<Handle<naga::Function>>) {
 /// Where each resource of a pass is bound.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct PassLayout {
+    /// Each resource's `(group, binding)`, by name.
     pub slots: BTreeMap<String, (u32, u32)>,
 }
 

@@ -19,7 +19,7 @@ use std::ops::Range;
 /// The spec's layout of each struct of a module, by name: what naga's IR cannot hold (a
 /// struct's alignment, each member's `@align`/`@size`), for reflection and the WGSL writer.
 #[derive(Debug, Clone, Default, PartialEq)]
-pub struct HostLayout {
+pub(super) struct HostLayout {
     structs: HashMap<String, StructLayout>,
 }
 
@@ -47,7 +47,7 @@ impl TypeLayout {
 impl HostLayout {
     /// The spec's alignment of a type (naga's `Layouter` gives a struct the largest alignment of
     /// its members' types, ignoring `@align`).
-    pub fn alignment(&self, module: &Module, ty: Handle<Type>) -> u32 {
+    pub(super) fn alignment(&self, module: &Module, ty: Handle<Type>) -> u32 {
         match &module.types[ty].inner {
             TypeInner::Struct { members, .. } => {
                 let name = module.types[ty].name.as_deref().unwrap_or_default();
@@ -64,13 +64,13 @@ impl HostLayout {
 
 /// A struct declaration as written.
 #[derive(Debug, Clone, PartialEq)]
-pub struct DeclaredStruct {
+pub(super) struct DeclaredStruct {
     pub name: String,
     pub members: Vec<DeclaredMember>,
 }
 
 #[derive(Debug, Clone, PartialEq)]
-pub struct DeclaredMember {
+pub(super) struct DeclaredMember {
     pub name: String,
     pub range: Range<usize>,
     pub align: Option<LayoutAttribute>,
@@ -80,7 +80,7 @@ pub struct DeclaredMember {
 /// An `@align(...)` or `@size(...)`, with its value when it is an integer literal or a named
 /// constant (naga evaluated it too; kiln needs it because naga's IR keeps only its effect).
 #[derive(Debug, Clone, PartialEq)]
-pub struct LayoutAttribute {
+pub(super) struct LayoutAttribute {
     /// Its argument (`2 * 16`).
     pub expression: String,
     /// The whole attribute (`@align(2 * 16)`) in the text.
@@ -88,7 +88,7 @@ pub struct LayoutAttribute {
 }
 
 /// Every `struct` declaration of a text, with its members' `@align` and `@size`.
-pub fn scan_structs(text: &str) -> Vec<DeclaredStruct> {
+pub(super) fn scan_structs(text: &str) -> Vec<DeclaredStruct> {
     // The preprocessor's lexer: WGSL's comments, identifiers and numbers are C's.
     let lexed = lex(text);
     let tokens: Vec<(&str, usize)> = lexed.iter().map(|t| (t.text.as_ref(), t.at)).collect();
@@ -386,7 +386,7 @@ fn refusal(
 /// The WGSL naga wrote for a module, with `@align`/`@size` written back on every struct member
 /// whose layout is not its type's own, so that the text gives the layout the source did (to naga
 /// and to a reader that follows the spec).
-pub fn annotate_wgsl(wgsl: String, module: &Module, host: &HostLayout) -> Result<String, Diagnostic> {
+pub(super) fn annotate_wgsl(wgsl: String, module: &Module, host: &HostLayout) -> Result<String, Diagnostic> {
     if host.structs.is_empty() {
         return Ok(wgsl);
     }

@@ -27,7 +27,9 @@ use std::error::Error as _;
 
 /// A parsed and validated module.
 pub struct Checked {
+    /// The parsed module, layouts corrected.
     pub module: naga::Module,
+    /// naga's validation results.
     pub info: ModuleInfo,
 }
 
@@ -81,7 +83,7 @@ pub(crate) struct Mapper<'a> {
 
 impl Mapper<'_> {
     /// The first label that maps is primary; its include chain becomes notes.
-    pub fn diagnostic(
+    pub(crate) fn diagnostic(
         &self,
         code: &'static str,
         message: String,
@@ -91,7 +93,7 @@ impl Mapper<'_> {
         self.diagnostic_at(Diagnostic::error(code, lowercase_first(&message)), ranges)
     }
 
-    pub fn diagnostic_at(
+    pub(crate) fn diagnostic_at(
         &self,
         mut diagnostic: Diagnostic,
         labels: Vec<(std::ops::Range<usize>, String)>,

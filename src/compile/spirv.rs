@@ -30,7 +30,7 @@ impl Instruction {
 
 /// `words` with every scalar `SampleMask` variable made an array of one. A module that does not
 /// parse as SPIR-V, or has no such variable, is returned as it is.
-pub fn sample_mask_as_array(words: Vec<u32>) -> Vec<u32> {
+pub(super) fn sample_mask_as_array(words: Vec<u32>) -> Vec<u32> {
     // Most modules have none: found without building the instruction list.
     if !decorates_sample_mask(&words) {
         return words;

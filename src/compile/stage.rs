@@ -14,13 +14,13 @@ use crate::source::Span;
 use naga::valid::ValidationFlags;
 
 /// What a stage module compiles to.
-pub struct StageOutput {
+pub(crate) struct StageOutput {
     pub wgsl: Option<String>,
     pub spirv: Option<Vec<u32>>,
     pub reflection: StageReflection,
 }
 
-pub struct StageRequest<'a> {
+pub(crate) struct StageRequest<'a> {
     /// The preprocessed text, for locating declarations naga gives no span for.
     pub text: &'a str,
     pub stage: Stage,
@@ -41,7 +41,7 @@ pub(crate) fn naga_stage(stage: Stage) -> naga::ShaderStage {
 
 /// Compiles one stage module. A panic inside naga (or kiln) becomes a diagnostic for this module
 /// (K0416), so one bad module never takes the build down.
-pub fn compile(
+pub(crate) fn compile(
     module: naga::Module,
     request: &StageRequest,
     mapper: &Mapper,

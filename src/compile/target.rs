@@ -36,6 +36,7 @@ pub fn webgpu_baseline() -> Capabilities {
 pub struct Allowed {
     /// The effective `#pragma target` level (`"3.5"`), for messages.
     pub level: String,
+    /// The wgpu features the variant needs (`shader-f16`, ...).
     pub features: Vec<String>,
 }
 
@@ -109,6 +110,7 @@ impl Allowed {
         }
     }
 
+    /// How many colour targets a fragment stage may write at this target.
     pub fn max_color_targets(&self) -> u32 {
         if self.has("mrt8") {
             8

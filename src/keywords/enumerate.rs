@@ -22,6 +22,7 @@ impl KeywordBits {
         self.0[bit / 64] |= 1 << (bit % 64);
     }
 
+    /// Whether bit `bit` is set.
     pub fn contains(&self, bit: usize) -> bool {
         self.0.get(bit / 64).is_some_and(|w| w & (1 << (bit % 64)) != 0)
     }
@@ -55,6 +56,7 @@ pub struct PassKeywords {
 /// One variant of a pass.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Variant {
+    /// One bit per keyword of the pass.
     pub bits: KeywordBits,
     /// Option chosen in each set, in set order.
     pub choices: Vec<usize>,
@@ -63,6 +65,7 @@ pub struct Variant {
     /// The keywords each stage's text is preprocessed with: two variants with equal vertex bits
     /// share a vertex module.
     pub vertex: KeywordBits,
+    /// The bits the fragment stage sees.
     pub fragment: KeywordBits,
 }
 
@@ -102,6 +105,7 @@ impl PassKeywords {
         PassKeywords { sets, option_bits, names, vertex_mask, fragment_mask }
     }
 
+    /// The pass's keyword sets, in declaration order.
     pub fn sets(&self) -> &[KeywordSet] {
         &self.sets
     }

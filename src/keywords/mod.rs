@@ -9,9 +9,13 @@ use crate::shaderlab::pragma::KeywordSet;
 
 /// Why a requested keyword combination is not a variant of the pass.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+// Variant fields are named in each variant's message.
+#[allow(missing_docs)]
 pub enum VariantError {
+    /// The keyword is declared by no set of the pass.
     #[error("`{keyword}` is not a keyword of this pass{}", suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default())]
     Undeclared { keyword: String, suggestion: Option<String> },
+    /// Two keywords of one set: only one may be on.
     #[error("`{first}` and `{second}` belong to the same keyword set: a variant has at most one of them")]
     SameSet { first: String, second: String },
 }

@@ -24,7 +24,7 @@ pub fn keyword_drawer(property: &Property) -> Option<KeywordDrawer> {
 
 /// Names Unity's `[Enum(Type)]` drawers know, with their values: what a `[_Property]` in render
 /// state holds.
-pub const UNITY_ENUMS: &[(&str, &[(&str, f64)])] = &[
+pub(super) const UNITY_ENUMS: &[(&str, &[(&str, f64)])] = &[
     (
         "UnityEngine.Rendering.BlendMode",
         &[

@@ -9,10 +9,10 @@ use std::borrow::Cow;
 
 /// Parentheses and unary operators nested deeper than this are refused rather than recursed into
 /// (C guarantees 63 levels of parentheses; each level counts once).
-pub const MAX_NESTING: usize = 64;
+pub(super) const MAX_NESTING: usize = 64;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
-pub enum ExprError {
+pub(super) enum ExprError {
     /// Parentheses or unary operators nested past [`MAX_NESTING`].
     NestedTooDeep {
         offset: usize,
@@ -34,7 +34,7 @@ pub enum ExprError {
 
 /// A value of `intmax_t` or `uintmax_t`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Value {
+pub(super) struct Value {
     pub bits: u64,
     pub unsigned: bool,
 }
@@ -58,7 +58,7 @@ impl Value {
 }
 
 /// Evaluates an `#if` expression, expanding its macros with `expander` (whose errors stay in it).
-pub fn evaluate<'a>(text: &'a str, expander: &mut Expander<'_, 'a>) -> Result<bool, ExprError> {
+pub(super) fn evaluate<'a>(text: &'a str, expander: &mut Expander<'_, 'a>) -> Result<bool, ExprError> {
     let tokens = defined(lex(text), expander)?;
     // `defined` written by a macro's expansion counts too, as gcc has it.
     let tokens = defined(expander.all(tokens), expander)?;

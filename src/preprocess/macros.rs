@@ -11,7 +11,7 @@ use std::collections::{HashMap, VecDeque};
 use std::ops::Range;
 
 /// A macro nested in its own expansion chain deeper than this is a runaway: an error.
-pub const MAX_EXPANSION_DEPTH: usize = 64;
+pub(super) const MAX_EXPANSION_DEPTH: usize = 64;
 
 /// More tokens than this from one invocation is a runaway (exponential growth): an error.
 const MAX_EXPANSION_TOKENS: usize = 1 << 20;
@@ -110,11 +110,11 @@ pub(crate) struct Lexer<'a> {
 }
 
 impl<'a> Lexer<'a> {
-    pub fn new(text: &'a str, range: Range<usize>) -> Lexer<'a> {
+    pub(super) fn new(text: &'a str, range: Range<usize>) -> Lexer<'a> {
         Lexer { text, pos: range.start, end: range.end }
     }
 
-    pub fn position(&self) -> usize {
+    pub(super) fn position(&self) -> usize {
         self.pos
     }
 
@@ -135,7 +135,7 @@ impl<'a> Lexer<'a> {
         self.pos > start
     }
 
-    pub fn next_token(&mut self) -> Option<Token<'a>> {
+    pub(super) fn next_token(&mut self) -> Option<Token<'a>> {
         let space = self.skip_space();
         if self.pos >= self.end {
             return None;
@@ -205,11 +205,11 @@ pub(crate) struct BodyToken {
 
 impl BodyToken {
     /// Its byte range in the body's text.
-    pub fn range(&self) -> Range<usize> {
+    pub(crate) fn range(&self) -> Range<usize> {
         self.range.start as usize..self.range.end as usize
     }
 
-    pub fn text<'v>(&self, value: &'v str) -> &'v str {
+    pub(crate) fn text<'v>(&self, value: &'v str) -> &'v str {
         &value[self.range()]
     }
 }
@@ -240,7 +240,7 @@ pub(crate) struct MacroDef<'a> {
 }
 
 impl<'a> MacroDef<'a> {
-    pub fn new(
+    pub(super) fn new(
         params: Option<&'a [String]>,
         variadic: bool,
         value: &'a str,
@@ -251,7 +251,7 @@ impl<'a> MacroDef<'a> {
     }
 
     /// An object-like macro not from a `#define` (a keyword: `1`).
-    pub fn object(value: &'a str) -> MacroDef<'a> {
+    pub(super) fn object(value: &'a str) -> MacroDef<'a> {
         MacroDef { params: None, variadic: false, value, body: Cow::Owned(lex_body(value)), defined_at: None }
     }
 
@@ -271,7 +271,7 @@ impl<'a> MacroDef<'a> {
     }
 
     /// The same definition, as C compares them: parameters and tokens (spacing aside).
-    pub fn same_as(&self, other: &MacroDef<'_>) -> bool {
+    pub(super) fn same_as(&self, other: &MacroDef<'_>) -> bool {
         self.params == other.params
             && self.variadic == other.variadic
             && self.body.len() == other.body.len()
@@ -345,7 +345,7 @@ impl Default for HideSets<'_> {
 }
 
 impl<'a> HideSets<'a> {
-    pub fn new() -> HideSets<'a> {
+    pub(super) fn new() -> HideSets<'a> {
         let mut ids = HashMap::default();
         ids.insert(Vec::new(), 0);
         HideSets { sets: vec![Vec::new()], ids, added: HashMap::default() }
@@ -414,14 +414,14 @@ pub(crate) struct Expander<'m, 'a> {
 }
 
 impl<'m, 'a> Expander<'m, 'a> {
-    pub fn new(macros: &'m Macros<'a>, hides: &'m mut HideSets<'a>) -> Expander<'m, 'a> {
+    pub(super) fn new(macros: &'m Macros<'a>, hides: &'m mut HideSets<'a>) -> Expander<'m, 'a> {
         Expander { macros, errors: Vec::new(), hides, produced: 0, outer: (0..0, String::new()) }
     }
 
     /// Expands the invocation that starts at the lexer's position (a macro name), reading as
     /// much of the text after it as the expansion needs (arguments, and the arguments of a
     /// function-like macro its expansion ends with). The lexer is left after what was used.
-    pub fn invocation(&mut self, lexer: &mut Lexer<'a>) -> Vec<Token<'a>> {
+    pub(super) fn invocation(&mut self, lexer: &mut Lexer<'a>) -> Vec<Token<'a>> {
         self.produced = 0;
         let Some(first) = lexer.next_token() else { return Vec::new() };
         let mut input = Input { pending: VecDeque::from([first]), source: Some(lexer) };
@@ -431,7 +431,7 @@ impl<'m, 'a> Expander<'m, 'a> {
     }
 
     /// Expands every macro of a token list (an argument, an `#if` expression).
-    pub fn all(&mut self, tokens: Vec<Token<'a>>) -> Vec<Token<'a>> {
+    pub(super) fn all(&mut self, tokens: Vec<Token<'a>>) -> Vec<Token<'a>> {
         // Most arguments name no macro at all.
         if !tokens.iter().any(|t| t.kind == Kind::Ident && self.macros.contains_key(&*t.text)) {
             return tokens;

@@ -13,6 +13,7 @@ use serde::{Deserialize, Serialize};
 /// What one stage module exposes. Stored in the build cache, so a rebuild needs no naga.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct StageReflection {
+    /// The entry point's name.
     pub entry_point: String,
     /// Vertex stage: the vertex attributes it reads.
     pub inputs: Vec<Attribute>,
@@ -20,14 +21,20 @@ pub struct StageReflection {
     pub outputs: Vec<Attribute>,
     /// The resources the module uses (after compaction to its entry point), by group and binding.
     pub bindings: Vec<BindingInfo>,
+    /// The uniform and storage blocks the module uses.
     pub uniform_blocks: Vec<UniformBlock>,
 }
 
+/// One resource the module uses, where it is bound.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BindingInfo {
+    /// Its bind group.
     pub group: u32,
+    /// Its binding in the group.
     pub binding: u32,
+    /// Its global variable's name.
     pub name: String,
+    /// What kind of resource it is.
     pub resource: Resource,
 }
 

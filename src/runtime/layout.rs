@@ -8,11 +8,14 @@ use crate::reflect::Resource;
 /// pipeline layout. Every variant of a pass shares it.
 #[derive(Debug)]
 pub struct PassLayout {
+    /// One layout per bind group, in group order.
     pub groups: Vec<wgpu::BindGroupLayout>,
+    /// The pipeline layout over them.
     pub pipeline: wgpu::PipelineLayout,
 }
 
 impl PassLayout {
+    /// Creates the layouts of a pass's bind groups.
     pub fn new(device: &wgpu::Device, layout: &[BindGroup]) -> Result<PassLayout, String> {
         let count = layout.iter().map(|g| g.group + 1).max().unwrap_or(0);
         let groups = (0..count)
@@ -134,13 +137,18 @@ fn texture_format(name: &str) -> Option<wgpu::TextureFormat> {
 /// at 24: stride 32). A renderer with its own layout passes it instead.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct VertexLayout {
+    /// The vertex buffers, in slot order.
     pub buffers: Vec<VertexBuffer>,
 }
 
+/// One vertex buffer's layout.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct VertexBuffer {
+    /// Bytes between vertices.
     pub stride: u64,
+    /// Per vertex or per instance.
     pub step_mode: wgpu::VertexStepMode,
+    /// The attributes it feeds.
     pub attributes: Vec<wgpu::VertexAttribute>,
 }
 

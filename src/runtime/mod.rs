@@ -26,26 +26,37 @@ use std::path::{Path, PathBuf};
 
 /// Why the runtime could not do what was asked.
 #[derive(Debug, thiserror::Error)]
+// Variant fields are named in each variant's message.
+#[allow(missing_docs)]
 pub enum RuntimeError {
+    /// The output folder or a file in it cannot be read.
     #[error("cannot read the build at `{path}`: {message}")]
     Read { path: PathBuf, message: String },
+    /// No shader of this name was built.
     #[error("no shader `{0}` in the build")]
     NoShader(String),
+    /// The shader has no built pass of this index.
     #[error("`{shader}` has no pass {pass} in the build")]
     NoPass { shader: String, pass: usize },
     #[error(
         "`{shader}` pass {pass} has no variant with keywords [{}] in the build (add a material that uses it, or log usage and build with `--variants-from`)",
         keywords.join(", ")
     )]
+    /// The keywords name a variant that was not built.
     MissingVariant { shader: String, pass: usize, keywords: Vec<String> },
+    /// No material of this name was built.
     #[error("no material `{0}` in the build")]
     NoMaterial(String),
+    /// A material file read at run time has errors.
     #[error("material: {0}")]
     Material(String),
+    /// The pass's render state cannot be made with the material's values.
     #[error("render state of `{shader}` pass {pass}: {error}")]
     State { shader: String, pass: usize, error: StateError },
+    /// The pass's layout cannot be made on this device.
     #[error("`{shader}` pass {pass}: {message}")]
     Layout { shader: String, pass: usize, message: String },
+    /// The last build failed (its diagnostics, from `errors.txt`).
     #[error("the build failed; the last good pipelines stay in use:\n{0}")]
     BuildFailed(String),
 }
@@ -129,6 +140,7 @@ impl Library {
         }
     }
 
+    /// The build's manifest.
     pub fn manifest(&self) -> &Manifest {
         &self.manifest
     }
@@ -138,6 +150,7 @@ impl Library {
         &self.materials
     }
 
+    /// A built material, by name.
     pub fn material(&self, name: &str) -> Result<&MaterialManifest, RuntimeError> {
         self.materials
             .iter()
@@ -149,6 +162,7 @@ impl Library {
         self.shader_indices.get(name).copied().ok_or_else(|| RuntimeError::NoShader(name.to_string()))
     }
 
+    /// A built shader, by name.
     pub fn shader(&self, name: &str) -> Result<&ShaderManifest, RuntimeError> {
         Ok(&self.manifest.shaders[self.shader_index(name)?])
     }

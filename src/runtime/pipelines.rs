@@ -13,13 +13,17 @@ use std::sync::Arc;
 /// The attachments a pipeline renders to.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Targets {
+    /// The colour target formats.
     pub colors: Vec<wgpu::TextureFormat>,
+    /// The depth-stencil format, if any.
     pub depth: Option<wgpu::TextureFormat>,
+    /// Samples per pixel.
     pub samples: u32,
 }
 
 /// What a draw needs a pipeline for.
 pub struct PipelineRequest<'a> {
+    /// The shader's name.
     pub shader: &'a str,
     /// The pass's index (`PASS_0` in the generated module is 0).
     pub pass: usize,
@@ -27,6 +31,7 @@ pub struct PipelineRequest<'a> {
     pub keywords: &'a [&'a str],
     /// Whose property values decide the render state (`Blend [_SrcBlend] [_DstBlend]`).
     pub material: &'a MaterialManifest,
+    /// The render targets the pipeline draws into.
     pub targets: &'a Targets,
     /// `None`: [`VertexLayout::packed`] from the vertex stage's inputs.
     pub vertex_layout: Option<&'a VertexLayout>,
@@ -50,7 +55,10 @@ pub enum Reload {
     Unchanged,
     /// A new build is in use; this many cached pipelines used modules it no longer has (they are
     /// created again, from the new modules, when next asked for).
-    Swapped { dropped_pipelines: usize },
+    Swapped {
+        /// Cached pipelines dropped.
+        dropped_pipelines: usize,
+    },
 }
 
 /// Every (shader, pass, keywords) asked for, and separately those the build did not have, as JSON
@@ -163,6 +171,7 @@ impl Runtime {
         Ok(runtime)
     }
 
+    /// The loaded build.
     pub fn library(&self) -> &Library {
         &self.library
     }

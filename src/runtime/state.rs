@@ -16,22 +16,30 @@ pub const MAX_TARGETS: usize = 8;
 /// One colour target's blending and write mask.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct TargetState {
+    /// Blending, `None` when off.
     pub blend: Option<wgpu::BlendState>,
+    /// The channels written.
     pub write_mask: wgpu::ColorWrites,
 }
 
 /// Everything in a pipeline that the pass's render state and a material decide.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RenderState {
+    /// Each colour target's blending and mask.
     pub targets: [TargetState; MAX_TARGETS],
+    /// Whether depth is written.
     pub depth_write: bool,
     /// `None` is `ZTest Disabled`: no depth test, and no depth write either (as in Unity).
     pub depth_compare: Option<wgpu::CompareFunction>,
+    /// The faces culled.
     pub cull_mode: Option<wgpu::Face>,
+    /// The depth bias.
     pub depth_bias: wgpu::DepthBiasState,
+    /// The stencil test and operations.
     pub stencil: wgpu::StencilState,
     /// `Stencil { Ref n }`: wgpu sets it on the render pass (`set_stencil_reference`).
     pub stencil_reference: u32,
+    /// Whether alpha drives coverage.
     pub alpha_to_coverage: bool,
     /// `ZClip Off`: needs `wgpu::Features::DEPTH_CLIP_CONTROL`.
     pub unclipped_depth: bool,
@@ -83,6 +91,7 @@ impl RenderState {
         }
     }
 
+    /// The primitive state (culling, conservative rasterisation).
     pub fn primitive(&self) -> wgpu::PrimitiveState {
         wgpu::PrimitiveState {
             cull_mode: self.cull_mode,
@@ -95,9 +104,13 @@ impl RenderState {
 
 /// Render state wgpu cannot express, or a property value that names nothing.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
+// Variant fields are named in each variant's message.
+#[allow(missing_docs)]
 pub enum StateError {
+    /// A command wgpu cannot express.
     #[error("`{command}`: wgpu has no {what}")]
     Unsupported { command: String, what: String },
+    /// A `[_Property]` value that is not one of its enum's numbers.
     #[error("`{command}`: property `{property}` is {value}, which is not a {kind}")]
     BadValue { command: String, property: String, value: String, kind: &'static str },
 }
@@ -117,6 +130,7 @@ pub struct PassState {
 }
 
 impl PassState {
+    /// The state the pass's commands give with the shader's default values.
     pub fn new(pass: &PassManifest) -> PassState {
         let defaults = pass
             .render_state

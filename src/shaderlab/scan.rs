@@ -11,7 +11,7 @@ use crate::source::{FileId, Span};
 
 /// Deeper nesting than any real shader needs; the limit keeps the recursive grammar off the end
 /// of the stack.
-pub const MAX_NESTING: usize = 64;
+pub(super) const MAX_NESTING: usize = 64;
 
 pub(crate) fn scan(file: FileId, text: &str) -> (Vec<ShaderLabError>, Vec<ShaderLabError>) {
     let bytes = text.as_bytes();

@@ -20,7 +20,9 @@ pub fn hash(bytes: &[u8]) -> String {
 /// module (by its full key).
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct PassIndex {
+    /// The resources each stage text declares, by text hash, stage and entry point.
     pub front: BTreeMap<String, Vec<Declared>>,
+    /// Each compiled stage module, by its content key.
     pub stage: BTreeMap<String, CachedStage>,
 }
 
@@ -30,23 +32,34 @@ pub struct PassIndex {
 /// the next build can tell that nothing changed before parsing anything.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Recorded {
+    /// The inputs hash ([`Recorded`] is valid only while it matches).
     pub key: String,
     /// How many of `read` were given to the build (the rest came through includes).
     pub given: usize,
+    /// Shaders built.
     pub shaders: usize,
+    /// Passes built.
     pub passes: usize,
+    /// Variants built.
     pub variants: usize,
+    /// Distinct stage modules.
     pub modules: usize,
+    /// Files written (relative to the output folder), with their lengths.
     pub files: Vec<(String, u64)>,
+    /// Files read, relative to the project, in the order read.
     pub read: Vec<String>,
+    /// Paths looked for in vain.
     pub absent: Vec<String>,
 }
 
 /// What the cache remembers of a compiled stage module.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct CachedStage {
+    /// Its WGSL, in a pack.
     pub wgsl: Option<FileRef>,
+    /// Its SPIR-V, in a pack.
     pub spirv: Option<FileRef>,
+    /// Its reflection.
     pub reflection: StageReflection,
 }
 
@@ -57,6 +70,7 @@ impl CachedStage {
     }
 }
 
+/// An output folder's cache and packs.
 pub struct Cache {
     output: PathBuf,
     /// `kiln check` reads the cache but writes nothing.
@@ -66,6 +80,7 @@ pub struct Cache {
 }
 
 impl Cache {
+    /// The cache of the output folder `output` (read-only unless `write`).
     pub fn new(output: &Path, write: bool) -> Cache {
         Cache { output: output.to_path_buf(), write, stored: Default::default() }
     }
@@ -127,6 +142,7 @@ impl Cache {
         index
     }
 
+    /// Stores a pass's index.
     pub fn put_pass_index(&self, pass: &str, index: &PassIndex) -> std::io::Result<()> {
         self.put("pass", pass, index)
     }
@@ -202,7 +218,9 @@ pub fn pass_index_path(pass: &str) -> String {
 
 /// A compiled module's bytes and their [`hash`].
 pub struct ModuleBytes {
+    /// The module.
     pub bytes: Vec<u8>,
+    /// Its [`hash`].
     pub hash: String,
 }
 
@@ -248,10 +266,12 @@ pub fn write_atomically_with(
 #[derive(Default)]
 pub struct Digest {
     hasher: blake3::Hasher,
+    /// Bytes seen.
     pub len: u64,
 }
 
 impl Digest {
+    /// The hash of the bytes seen.
     pub fn finish(&self) -> blake3::Hash {
         self.hasher.finalize()
     }
@@ -266,7 +286,9 @@ impl Digest {
 
 /// Writes to `out` and hashes what it writes.
 pub struct Hashed<'a> {
+    /// Where the bytes go.
     pub out: &'a mut dyn Write,
+    /// What has gone through.
     pub digest: Digest,
 }
 

@@ -136,8 +136,11 @@ pub fn publish_layouts(
 /// What `kiln cache stats` prints.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct CacheStats {
+    /// Stage modules in the cache.
     pub modules: usize,
+    /// Passes with parsed resources in the cache.
     pub layouts: usize,
+    /// Bytes in all.
     pub bytes: u64,
     /// Modules whose bytes no longer match their hashes (misses until gc removes them).
     pub damaged: usize,
@@ -165,6 +168,7 @@ fn entries(folder: &Path) -> std::io::Result<Vec<(PathBuf, u64, std::time::Syste
     Ok(found)
 }
 
+/// Counts the entries of the cache in `folder`, and the damaged ones.
 pub fn cache_stats(folder: &Path) -> std::io::Result<CacheStats> {
     let mut stats = CacheStats::default();
     for (path, size, _) in entries(folder)? {
