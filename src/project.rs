@@ -1,6 +1,9 @@
 //! A project: finding and loading its files, and running the stages over them for the CLI and
-//! build scripts. This is the only place besides [`SourceStore`] that touches the file system:
-//! stages get file ids, never paths.
+//! build scripts. Files are read here and through [`SourceStore`] only (stages get file ids,
+//! never paths); the build's outputs are written by `crate::store` and `crate::build`.
+//!
+//! Long because it holds every job the CLI and build scripts run (build, merge, list, preprocess,
+//! reflect, material files), each a short sequence of library calls over the workspace.
 
 pub use crate::build::Part;
 use crate::build::{BuildOptions, BuildResult, VariantSelection, build};

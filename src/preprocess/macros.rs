@@ -5,6 +5,9 @@
 //!
 //! Expansion works on C preprocessing tokens lexed from the text only where a macro name
 //! occurs; the rest of the text is copied as it is by the caller.
+//!
+//! Long because C's expansion algorithm is one piece: lexing, argument collection, `##`,
+//! `__VA_OPT__` and rescanning share the hide-set state and the token type.
 
 use std::borrow::Cow;
 use std::collections::{HashMap, VecDeque};

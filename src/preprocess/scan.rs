@@ -1,6 +1,9 @@
 //! Splits a file (or a program block of a `.shader` file) into runs of text and directives, once
 //! per file. Every variant then walks this list instead of re-reading the text, and structural
 //! mistakes (unbalanced conditionals, malformed directives) are reported once, not per variant.
+//!
+//! Long because it is one scanner: every directive's syntax is read here, in one pass, and the
+//! conditional links need them all; split, the pieces would share the scanner's state.
 
 use super::error::PreprocessError;
 use super::macros::{BodyToken, is_ident_char, is_ident_start, lex_body};

@@ -1,5 +1,8 @@
 //! From text to the typed AST: the structural scan, then pest, then a walk over pest's pairs that
 //! checks every value and keeps going, so one run reports every bad value in a file.
+//!
+//! Long because it is the AST walk for the whole grammar: one function per construct, each
+//! short; they share the walker's diagnostics and the value checks.
 
 use crate::diagnostics::Diagnostic;
 use crate::shaderlab::ast::*;

@@ -1,6 +1,9 @@
 //! `#pragma` lines of program blocks: entry points, targets, requirements and keyword sets,
 //! normalised as Unity does (`_`/`__` mean "no keyword"; a one-keyword `shader_feature K` means
 //! `_ K`; Unity's shorthand pragmas expand to their keyword sets).
+//!
+//! Long because Unity's pragma vocabulary is: each kind of pragma (entry points, targets,
+//! requirements, keyword sets and their shorthands) is a table and a short reader.
 
 use crate::diagnostics::Diagnostic;
 use crate::shaderlab::ast::ProgramBlock;
