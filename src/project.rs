@@ -509,35 +509,9 @@ pub fn build_part(
     progress: &(dyn Fn(usize, usize) + Sync),
     part: Part,
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
-    let (workspace, mut diagnostics) = open_workspace(store, paths)?;
-    let mut includes = Includes::new(workspace.include.clone().unwrap_or_else(|| include_config(paths)));
-    let (shaders, found) = load_files(store, &workspace.shaders);
-    diagnostics.extend(found);
-    let (materials, found) = load_files(store, &workspace.materials);
-    diagnostics.extend(found);
-    let mut input = workspace.catalog_input(shaders, materials);
-    for path in workspace.variant_logs.iter().chain(&mode.variant_logs) {
-        match store.load(path) {
-            Ok(file) => input.variant_logs.push(file),
-            Err(error) => diagnostics.push(load_error(&error)),
-        }
-    }
-    if let Some(global) = &mode.global_keywords {
-        input.global_keywords = Some(given_global_keywords(store, global));
-    }
-    let mut options = BuildOptions {
-        output: mode.output.clone().unwrap_or_else(|| workspace.output.clone()),
-        root: workspace.root.clone(),
-        write: mode.write,
-        threads: mode.threads,
-        backends: workspace.backends.clone(),
-        unused_shaders: mode.unused_shaders,
-        pretty_manifest: mode.pretty_manifest,
-        record: false,
-        part,
-        cache_dir: workspace.shared_cache_dir(mode.cache_dir.clone()),
-        given_files: store.files_read().count(),
-    };
+    let Given { workspace, mut includes, input, mut diagnostics, mut options } =
+        load_given(store, paths, mode)?;
+    options.part = part;
     if diagnostics.is_empty()
         && !matches!(options.part, Part::Shard(_))
         && let Some(result) = crate::build::unchanged(store, &options)
@@ -555,9 +529,52 @@ pub fn build_part(
     Ok((result, diagnostics))
 }
 
-/// `kiln merge`: checks the shard outputs against each other, then builds the project into
-/// `mode.output` with their modules, which gives the bytes one build of the project gives. The
-/// project is `project`, or the one the shards were built from.
+/// What a project is given before anything is parsed: its settings, the shaders, materials and
+/// variant logs it names (loaded), and the options of a build of it.
+struct Given {
+    workspace: Workspace,
+    includes: Includes,
+    input: CatalogInput,
+    diagnostics: Vec<Diagnostic>,
+    options: BuildOptions,
+}
+
+fn load_given(store: &mut SourceStore, paths: &[PathBuf], mode: &BuildMode) -> Result<Given, ProjectError> {
+    let (workspace, mut diagnostics) = open_workspace(store, paths)?;
+    let includes = Includes::new(workspace.include.clone().unwrap_or_else(|| include_config(paths)));
+    let (shaders, found) = load_files(store, &workspace.shaders);
+    diagnostics.extend(found);
+    let (materials, found) = load_files(store, &workspace.materials);
+    diagnostics.extend(found);
+    let mut input = workspace.catalog_input(shaders, materials);
+    for path in workspace.variant_logs.iter().chain(&mode.variant_logs) {
+        match store.load(path) {
+            Ok(file) => input.variant_logs.push(file),
+            Err(error) => diagnostics.push(load_error(&error)),
+        }
+    }
+    if let Some(global) = &mode.global_keywords {
+        input.global_keywords = Some(given_global_keywords(store, global));
+    }
+    let options = BuildOptions {
+        output: mode.output.clone().unwrap_or_else(|| workspace.output.clone()),
+        root: workspace.root.clone(),
+        write: mode.write && !diagnostics::has_errors(&diagnostics),
+        threads: mode.threads,
+        backends: workspace.backends.clone(),
+        unused_shaders: mode.unused_shaders,
+        pretty_manifest: mode.pretty_manifest,
+        record: diagnostics.is_empty(),
+        part: Part::Whole,
+        cache_dir: workspace.shared_cache_dir(mode.cache_dir.clone()),
+        given_files: store.files_read().count(),
+    };
+    Ok(Given { workspace, includes, input, diagnostics, options })
+}
+
+/// `kiln merge`: checks the shard outputs against each other, then writes into `mode.output` the
+/// bytes one build of the project gives, from their parts (no catalogue, no naga). The project is
+/// `project`, or the one the shards were built from.
 pub fn merge_shards(
     store: &mut SourceStore,
     shards: &[PathBuf],
@@ -567,7 +584,12 @@ pub fn merge_shards(
     let (records, inputs) = crate::build::shard::check_shards(shards).map_err(ProjectError::Shards)?;
     let project = project.unwrap_or_else(|| PathBuf::from(&records[0].project));
     let merge = crate::build::Merge { shards: shards.iter().cloned().zip(records).collect(), inputs };
-    build_part(store, &[project], mode, &|_, _| {}, Part::Merge(merge))
+    let Given { workspace, mut diagnostics, options, .. } = load_given(store, &[project], mode)?;
+    let result = crate::build::merge(store, &options, &merge);
+    if workspace.strict {
+        diagnostics::promote_warnings(&mut diagnostics);
+    }
+    Ok((result, diagnostics))
 }
 
 /// One build of `kiln watch`: [`build_project`], and then, in the output folder, the rendered

@@ -3,31 +3,116 @@
 
 use super::jobs::Job;
 use super::noop::{disk_files, inputs_key, recorded_name};
-use super::plan::PassWork;
+use super::plan::{PassWork, pass_key};
 use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::catalog::{Catalog, CatalogShader, property_references};
 use crate::diagnostics::{self, Diagnostic};
 use crate::manifest::*;
 use crate::material::MaterialValue;
 use crate::reflect::{Resource, UniformBlock};
-use crate::shaderlab::ast::Shader;
+use crate::shaderlab::ast::Property;
 use crate::shaderlab::pragma::KeywordScope;
 use crate::source::{SourceStore, relative_to};
 use crate::store::{Cache, CachedStage, Digest, Hashed, Recorded};
+use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
-/// Writes what a whole build (or a merge) leaves once its passes are built: the manifest from
-/// their parts, the materials, and the record of a clean build.
-pub(super) fn finish(
+/// What the manifest takes from the catalogue besides the passes' parts, so that a merge needs
+/// no catalogue: each built shader (its passes left out, its properties' places not yet known)
+/// with its passes' keys, the materials, the counts, and what the build read.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CataloguePart {
+    /// The built shaders, in catalogue order.
+    pub shaders: Vec<ShaderHead>,
+    /// Every resolved material (`materials.json`).
+    pub materials: Vec<MaterialManifest>,
+    /// Shaders, passes and variants built.
+    pub counts: [usize; 3],
+    /// Shaders no material uses.
+    pub unused: Vec<String>,
+    /// How many of `read` the build was given (the rest came through includes).
+    pub given: usize,
+    /// Every file the build read, relative to the project, in order.
+    pub read: Vec<String>,
+    /// Every path it looked for in vain.
+    pub absent: Vec<String>,
+}
+
+/// A built shader without its passes, and its passes' keys in order.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ShaderHead {
+    /// The shader's manifest entry, `passes` empty.
+    pub shader: ShaderManifest,
+    /// Its passes' keys ([`super::plan::pass_key`]).
+    pub passes: Vec<String>,
+}
+
+/// The catalogue's part of a build's output.
+pub(super) fn catalogue_part(
     store: &SourceStore,
     catalog: &Catalog,
     options: &BuildOptions,
     work: &[PassWork],
+    summary: &BuildSummary,
+) -> CataloguePart {
+    let mut shaders: Vec<(&CatalogShader, ShaderHead)> = Vec::new();
+    for pass in work {
+        let key = pass_key(store, options, pass);
+        match shaders.last_mut() {
+            Some((shader, head)) if std::ptr::eq(*shader, pass.shader) => head.passes.push(key),
+            _ => {
+                let shader = &pass.shader.shader;
+                let head = ShaderManifest {
+                    name: shader.name.value.clone(),
+                    file: recorded_name(store, pass.shader.file, options),
+                    render_queue: crate::material::shader_queue(shader),
+                    properties: shader.properties.iter().map(property).collect(),
+                    passes: Vec::new(),
+                };
+                shaders.push((pass.shader, ShaderHead { shader: head, passes: vec![key] }));
+            }
+        }
+    }
+    // Each path once, however many includes looked there.
+    let absent: BTreeSet<String> = store.absent().iter().map(|p| relative_to(p, &options.root)).collect();
+    CataloguePart {
+        shaders: shaders.into_iter().map(|(_, head)| head).collect(),
+        materials: materials(catalog),
+        counts: [summary.shaders, summary.passes, summary.variants],
+        unused: summary.unused.clone(),
+        given: options.given_files,
+        read: disk_files(store).map(|f| recorded_name(store, f, options)).collect(),
+        absent: absent.into_iter().collect(),
+    }
+}
+
+/// Writes what a whole build (or a merge) leaves once its passes are built: the manifest from
+/// the catalogue's part and the passes' parts (in plan order), the materials, and the record of a
+/// clean build.
+pub(super) fn finish(
+    store: &SourceStore,
+    options: &BuildOptions,
+    catalogue: CataloguePart,
     parts: Vec<PassManifest>,
     mut summary: BuildSummary,
     mut diagnostics: Vec<Diagnostic>,
 ) -> BuildResult {
-    let manifest = manifest(store, options, work, parts);
+    let mut parts = parts.into_iter();
+    let shaders = catalogue
+        .shaders
+        .into_iter()
+        .map(|head| {
+            let mut shader = head.shader;
+            shader.passes = parts.by_ref().take(head.passes.len()).collect();
+            place_properties(&mut shader);
+            shader
+        })
+        .collect();
+    let manifest = Manifest {
+        schema_version: SCHEMA_VERSION,
+        kiln_version: env!("CARGO_PKG_VERSION").to_string(),
+        shaders,
+    };
     let mut files = Vec::new();
     if options.write && !diagnostics::has_errors(&diagnostics) {
         files = manifest.packs().into_iter().collect();
@@ -36,7 +121,7 @@ pub(super) fn finish(
                 MATERIALS_FILE,
                 write_json(
                     &options.output.join(MATERIALS_FILE),
-                    &materials(catalog),
+                    &catalogue.materials,
                     options.pretty_manifest,
                 ),
             ),
@@ -54,20 +139,17 @@ pub(super) fn finish(
     }
     diagnostics::dedup(&mut diagnostics);
     if options.write && options.record && diagnostics.is_empty() {
-        let read = disk_files(store).map(|f| recorded_name(store, f, options)).collect();
-        // Each path once, however many includes looked there.
-        let absent: BTreeSet<String> = store.absent().iter().map(|p| relative_to(p, &options.root)).collect();
         // Only costs a full build next time if it cannot be written.
         let _ = Cache::new(&options.output, true).record_inputs(&Recorded {
             key: inputs_key(store, options),
-            given: options.given_files,
+            given: catalogue.given,
             shaders: summary.shaders,
             passes: summary.passes,
             variants: summary.variants,
             modules: summary.modules,
             files,
-            read,
-            absent: absent.into_iter().collect(),
+            read: catalogue.read,
+            absent: catalogue.absent,
         });
     }
     BuildResult { manifest: Some(manifest), summary, diagnostics, output: options.output.clone() }
@@ -116,33 +198,6 @@ pub(super) fn write_json(
 
 pub(super) fn write_failure(output: &std::path::Path, error: &std::io::Error) -> Diagnostic {
     Diagnostic::error("K0410", format!("cannot write to `{}`: {error}", output.display()))
-}
-
-/// The manifest: the built passes grouped by shader, in catalogue order.
-fn manifest(
-    store: &SourceStore,
-    options: &BuildOptions,
-    work: &[PassWork],
-    passes: Vec<PassManifest>,
-) -> Manifest {
-    let mut grouped: Vec<(&CatalogShader, Vec<PassManifest>)> = Vec::new();
-    for (w, pass) in work.iter().zip(passes) {
-        match grouped.last_mut() {
-            Some((shader, passes)) if std::ptr::eq(*shader, w.shader) => passes.push(pass),
-            _ => grouped.push((w.shader, vec![pass])),
-        }
-    }
-    let shaders = grouped
-        .into_iter()
-        .map(|(shader, passes)| ShaderManifest {
-            name: shader.shader.name.value.clone(),
-            file: recorded_name(store, shader.file, options),
-            render_queue: crate::material::shader_queue(&shader.shader),
-            properties: properties(&shader.shader, &passes),
-            passes,
-        })
-        .collect();
-    Manifest { schema_version: SCHEMA_VERSION, kiln_version: env!("CARGO_PKG_VERSION").to_string(), shaders }
 }
 
 /// A pass's part of the manifest: each module once, each distinct interface, uniform block and
@@ -309,9 +364,24 @@ fn materials(catalog: &Catalog) -> Vec<MaterialManifest> {
         .collect()
 }
 
-/// The shader's properties, with their place in the material block (from the first variant that
-/// has one) and their texture bindings.
-fn properties(shader: &Shader, passes: &[PassManifest]) -> Vec<PropertyManifest> {
+/// A property as the manifest has it, its places ([`place_properties`]) not yet known.
+fn property(p: &Property) -> PropertyManifest {
+    PropertyManifest {
+        name: p.name.value.clone(),
+        display_name: p.display_name.value.clone(),
+        ty: p.ty.value.manifest_text(),
+        default: MaterialValue::from(&p.default.value).to_json(),
+        offset: None,
+        binding: None,
+        drawer: crate::material::keyword_drawer(p),
+        enum_names: crate::material::enum_names(p),
+    }
+}
+
+/// Each property's place: its offset in the material block (from the first pass that has one)
+/// and its texture's binding.
+fn place_properties(shader: &mut ShaderManifest) {
+    let passes = &shader.passes;
     let material_block = passes.iter().flat_map(|p| &p.uniform_blocks).find(|b| b.name == "UnityPerMaterial");
     let mut bindings: HashMap<&str, [u32; 2]> = HashMap::new();
     for pass in passes {
@@ -323,20 +393,9 @@ fn properties(shader: &Shader, passes: &[PassManifest]) -> Vec<PropertyManifest>
             }
         }
     }
-    shader
-        .properties
-        .iter()
-        .map(|p| PropertyManifest {
-            name: p.name.value.clone(),
-            display_name: p.display_name.value.clone(),
-            ty: p.ty.value.manifest_text(),
-            default: MaterialValue::from(&p.default.value).to_json(),
-            offset: material_block
-                .and_then(|b| b.members.iter().find(|m| m.name == p.name.value))
-                .map(|m| m.offset),
-            binding: bindings.get(p.name.value.as_str()).copied(),
-            drawer: crate::material::keyword_drawer(p),
-            enum_names: crate::material::enum_names(p),
-        })
-        .collect()
+    for property in &mut shader.properties {
+        property.offset =
+            material_block.and_then(|b| b.members.iter().find(|m| m.name == property.name)).map(|m| m.offset);
+        property.binding = bindings.get(property.name.as_str()).copied();
+    }
 }

@@ -1,14 +1,14 @@
-//! `kiln merge`: the manifest of a whole build from the shards' parts, with naga run nowhere and
-//! nothing preprocessed. Each pass's part comes from the shard that built it; its packs and its
-//! cache entry are linked into the output (copied where a link cannot be made), after every
-//! module in them is checked against its hash, so the output is one build's, byte for byte.
+//! `kiln merge`: the output of one build from the shards' parts, with naga run nowhere, nothing
+//! preprocessed and no catalogue: the first shard's record carries what the manifest takes from
+//! the catalogue. The project must still be what the shards read (its files read again and
+//! hashed). Each pass's part comes from the shard that built it; its packs and its cache entry
+//! are linked into the output (copied where a link cannot be made), after every module in them
+//! is checked against its hash, so the output is one build's, byte for byte.
 
 use super::emit::{finish, write_failure};
-use super::noop::inputs_key;
-use super::plan::{pass_key, plan};
+use super::noop::{Inputs, same_inputs};
 use super::shard::ShardPass;
 use super::{BuildOptions, BuildResult, BuildSummary, Merge};
-use crate::catalog::Catalog;
 use crate::diagnostics::Diagnostic;
 use crate::source::SourceStore;
 use crate::store::{hash, link_or_copy, pass_index_path};
@@ -17,21 +17,23 @@ use std::collections::HashMap;
 use std::path::Path;
 
 /// Joins the shards' parts into the output folder (see the module's comment).
-pub(super) fn merge(
-    store: &SourceStore,
-    catalog: &Catalog,
-    options: &BuildOptions,
-    merge: &Merge,
-) -> BuildResult {
+pub(super) fn merge(store: &mut SourceStore, options: &BuildOptions, merge: &Merge) -> BuildResult {
     let mut summary = BuildSummary::default();
-    if inputs_key(store, options) != merge.inputs {
+    let Some(catalogue) = merge.shards.iter().find_map(|(_, record)| record.catalogue.as_ref()) else {
+        let error = Diagnostic::error("K0412", "no shard holds the project's catalogue")
+            .note("the first shard's `shard.json` carries it; that shard's output is damaged")
+            .help("build that shard again");
+        return BuildResult::failed(options, summary, vec![error]);
+    };
+    let inputs = Inputs { given: catalogue.given, read: &catalogue.read, absent: &catalogue.absent };
+    if !same_inputs(store, options, &inputs, &merge.inputs) {
         let error = Diagnostic::error("K0413", "the shards were built from another state of the project")
             .note("a file the build reads, the project's settings or the build's options changed since")
             .help("build the shards again from this state of the project, then merge them");
         return BuildResult::failed(options, summary, vec![error]);
     }
-    let mut diagnostics = Vec::new();
-    let work = plan(catalog, options.unused_shaders, &mut summary, &mut diagnostics);
+    [summary.shaders, summary.passes, summary.variants] = catalogue.counts;
+    summary.unused = catalogue.unused.clone();
     let built: HashMap<&str, (&Path, &ShardPass)> = merge
         .shards
         .iter()
@@ -39,18 +41,19 @@ pub(super) fn merge(
             record.passes.iter().map(move |pass| (pass.key.as_str(), (folder.as_path(), pass)))
         })
         .collect();
-    let mut found = Vec::with_capacity(work.len());
-    for pass in &work {
-        let key = pass_key(store, options, pass);
-        match built.get(key.as_str()) {
-            Some(&(folder, part)) => found.push((folder, part)),
-            None => diagnostics.push(
-                Diagnostic::error(
-                    "K0412",
-                    format!("no shard holds pass {} of `{}`", pass.pass.index, pass.shader.shader.name.value),
-                )
-                .note("its shard's output is damaged, or was built from another state of the project"),
-            ),
+    let mut diagnostics = Vec::new();
+    let mut found = Vec::with_capacity(catalogue.counts[1]);
+    for head in &catalogue.shaders {
+        for key in &head.passes {
+            match built.get(key.as_str()) {
+                Some(&(folder, part)) => found.push((folder, part)),
+                None => diagnostics.push(
+                    Diagnostic::error("K0412", format!("no shard holds a pass of `{}`", head.shader.name))
+                        .note(
+                            "its shard's output is damaged, or was built from another state of the project",
+                        ),
+                ),
+            }
         }
     }
     // Every module checked before anything is linked: a damaged shard writes nothing.
@@ -81,7 +84,7 @@ pub(super) fn merge(
     summary.modules = found.iter().map(|(_, part)| part.modules).sum();
     summary.reused = summary.modules;
     let parts = found.into_iter().map(|(_, part)| part.manifest.clone()).collect();
-    finish(store, catalog, options, &work, parts, summary, diagnostics)
+    finish(store, options, catalogue.clone(), parts, summary, diagnostics)
 }
 
 /// The first module of a shard's pass whose bytes are missing or not what its hash says.

@@ -17,6 +17,7 @@ mod session;
 pub mod shard;
 mod sources;
 
+pub use emit::{CataloguePart, ShaderHead};
 pub use noop::unchanged;
 pub use plan::stage_texts;
 
@@ -92,10 +93,8 @@ pub enum Part {
     #[default]
     Whole,
     /// `kiln build --shard I/N`: the passes that fall to this shard, built as a whole build
-    /// builds them, and their parts of the manifest (`shard.json`) for `kiln merge`.
+    /// builds them, and their parts of the manifest (`shard.json`) for `kiln merge` ([`merge`]).
     Shard(Shard),
-    /// `kiln merge`: the manifest from the shards' parts, their packs linked into the output.
-    Merge(Merge),
 }
 
 /// Shard outputs a merge joins ([`shard::check_shards`] checked them against each other).
@@ -184,13 +183,25 @@ pub fn build(
 ) -> BuildResult {
     let started = Instant::now();
     let pool = rayon::ThreadPoolBuilder::new().num_threads(options.threads.unwrap_or(0)).build();
-    let run = || match &options.part {
-        Part::Merge(merge) => merge::merge(store, catalog, options, merge),
-        Part::Whole | Part::Shard(_) => build_passes(store, includes, catalog, options, progress),
-    };
+    let run = || build_passes(store, includes, catalog, options, progress);
     let mut result = match pool {
         Ok(pool) => pool.install(run),
         Err(_) => run(),
+    };
+    result.summary.elapsed = started.elapsed();
+    result
+}
+
+/// `kiln merge`: the output of one build of the project from the shards' outputs, compiling
+/// nothing and reading no catalogue. `store` holds the files the project was given (its
+/// `kiln.toml`, shaders, materials, variant logs); the rest the shards read is read here, and
+/// all of it must still be what the shards read (K0413).
+pub fn merge(store: &mut SourceStore, options: &BuildOptions, shards: &Merge) -> BuildResult {
+    let started = Instant::now();
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(options.threads.unwrap_or(0)).build();
+    let mut result = match pool {
+        Ok(pool) => pool.install(|| merge::merge(store, options, shards)),
+        Err(_) => merge::merge(store, options, shards),
     };
     result.summary.elapsed = started.elapsed();
     result
@@ -235,6 +246,7 @@ fn build_passes(
         diagnostics.extend(pass.diagnostics);
         parts.push(pass.part);
     }
+    let catalogue = || emit::catalogue_part(store, catalog, options, &work, &summary);
     match &options.part {
         Part::Shard(shard) => {
             let passes = (mine.iter().zip(modules).zip(parts))
@@ -244,8 +256,10 @@ fn build_passes(
                     manifest,
                 })
                 .collect();
-            shard::finish(store, options, *shard, passes, summary, diagnostics)
+            // Every shard has the catalogue; the first writes its part for the merge.
+            let catalogue = (shard.index == 0).then(catalogue);
+            shard::finish(store, options, *shard, catalogue, passes, summary, diagnostics)
         }
-        _ => emit::finish(store, catalog, options, &work, parts, summary, diagnostics),
+        Part::Whole => emit::finish(store, options, catalogue(), parts, summary, diagnostics),
     }
 }

@@ -67,21 +67,8 @@ pub fn unchanged(store: &mut SourceStore, options: &BuildOptions) -> Option<Buil
     let started = Instant::now();
     let cache = Cache::new(&options.output, false);
     let recorded = cache.recorded()?;
-    let found: Vec<String> = disk_files(store).map(|f| recorded_name(store, f, options)).collect();
-    if found.len() != recorded.given || recorded.read.get(..found.len()) != Some(&found[..]) {
-        return None;
-    }
-    if recorded.absent.par_iter().any(|path| std::fs::symlink_metadata(options.root.join(path)).is_ok()) {
-        return None;
-    }
-    // The includes are read through the store, as a build reads them, so that what it reports
-    // as read (a build script's `rerun-if-changed`) is the same whether it compiled or not.
-    for name in &recorded.read[found.len()..] {
-        let path = options.root.join(name);
-        let canonical = store.canonical_file(&path)?;
-        store.load_once(&path, canonical).ok()?;
-    }
-    if !cache.unchanged(&recorded, &inputs_key(store, options)) {
+    let inputs = Inputs { given: recorded.given, read: &recorded.read, absent: &recorded.absent };
+    if !same_inputs(store, options, &inputs, &recorded.key) || !cache.files_in_place(&recorded) {
         return None;
     }
     let summary = BuildSummary {
@@ -94,4 +81,41 @@ pub fn unchanged(store: &mut SourceStore, options: &BuildOptions) -> Option<Buil
         ..BuildSummary::default()
     };
     Some(BuildResult { summary, manifest: None, diagnostics: Vec::new(), output: options.output.clone() })
+}
+
+/// What an earlier build read: how many files it was given, every file it read (relative to the
+/// project, in order) and every path it looked for in vain.
+pub(super) struct Inputs<'a> {
+    pub given: usize,
+    pub read: &'a [String],
+    pub absent: &'a [String],
+}
+
+/// Whether the project is still what an earlier build read (its inputs key `key`): `store` holds
+/// the files found so far (the project file, shaders, materials, variant logs), which must be
+/// exactly the files that build was given; nothing may have appeared where it looked in vain;
+/// and the rest it read (includes) are loaded into `store` here and must hash alike.
+pub(super) fn same_inputs(
+    store: &mut SourceStore,
+    options: &BuildOptions,
+    inputs: &Inputs,
+    key: &str,
+) -> bool {
+    let found: Vec<String> = disk_files(store).map(|f| recorded_name(store, f, options)).collect();
+    if found.len() != inputs.given || inputs.read.get(..found.len()) != Some(&found[..]) {
+        return false;
+    }
+    if inputs.absent.par_iter().any(|path| std::fs::symlink_metadata(options.root.join(path)).is_ok()) {
+        return false;
+    }
+    // The includes are read through the store, as a build reads them, so that what it reports
+    // as read (a build script's `rerun-if-changed`) is the same whether it compiled or not.
+    for name in &inputs.read[found.len()..] {
+        let path = options.root.join(name);
+        let Some(canonical) = store.canonical_file(&path) else { return false };
+        if store.load_once(&path, canonical).is_err() {
+            return false;
+        }
+    }
+    inputs_key(store, options) == key
 }

@@ -5,7 +5,7 @@
 //! weight (distinct stage requests, [`super::plan::weights`]), heaviest first, each to the shard
 //! with the least so far, so no shard reads, preprocesses or parses another shard's texts.
 
-use super::emit::{write_failure, write_json};
+use super::emit::{CataloguePart, write_failure, write_json};
 use super::noop::inputs_key;
 use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::diagnostics::{self, Diagnostic};
@@ -74,6 +74,8 @@ pub struct ShardRecord {
     pub modules: usize,
     /// The passes it built.
     pub passes: Vec<ShardPass>,
+    /// What the manifest takes from the catalogue (the first shard's record has it).
+    pub catalogue: Option<CataloguePart>,
 }
 
 /// One pass a shard built.
@@ -102,6 +104,7 @@ pub(super) fn finish(
     store: &SourceStore,
     options: &BuildOptions,
     shard: Shard,
+    catalogue: Option<CataloguePart>,
     passes: Vec<ShardPass>,
     summary: BuildSummary,
     mut diagnostics: Vec<Diagnostic>,
@@ -116,6 +119,7 @@ pub(super) fn finish(
             project: options.root.to_string_lossy().replace('\\', "/"),
             modules: summary.compiled + summary.reused + summary.shared,
             passes,
+            catalogue,
         };
         if let Err(error) = write_json(&options.output.join(SHARD_FILE), &record, false) {
             diagnostics.push(write_failure(&options.output, &error));

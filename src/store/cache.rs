@@ -147,11 +147,10 @@ impl Cache {
         self.put("pass", pass, index)
     }
 
-    /// Whether the recorded build had exactly these inputs (`key`) and all of its files are still
-    /// in place. The manifest is not read: each file's length is checked, in parallel.
-    pub fn unchanged(&self, recorded: &Recorded, key: &str) -> bool {
-        recorded.key == key
-            && !recorded.files.is_empty()
+    /// Whether every file the recorded build wrote is still in place (the manifest is not read:
+    /// each file's length is checked, in parallel).
+    pub fn files_in_place(&self, recorded: &Recorded) -> bool {
+        !recorded.files.is_empty()
             && recorded
                 .files
                 .par_iter()

@@ -250,6 +250,13 @@ fn merge_refuses_shards_that_do_not_belong_together() {
         .assert_eq(&diagnostics(&run));
     assert!(!dir.path().join("merged/manifest.json").exists());
     std::fs::write(&shader, &text_before).expect("restore");
+    // A file the shards never saw (a new material): the project is not what they read either.
+    let added = project.join("materials/New.mat");
+    std::fs::write(&added, "shader = \"Custom RP/Lit\"\n").expect("write");
+    let run = merge(&dir.path().join("merged"), &shards);
+    assert_eq!(run.status.code(), Some(1), "{}", text(&run));
+    assert!(text(&run).starts_with("error[K0413]"), "{}", text(&run));
+    std::fs::remove_file(&added).expect("remove");
 
     // A shard's module damaged or gone: the merge names what is missing, and writes nothing.
     let victim = shards
