@@ -20,12 +20,12 @@ use std::collections::{BTreeMap, BTreeSet, HashMap};
 /// What the manifest takes from the catalogue besides the passes' parts, so that a merge needs
 /// no catalogue: each built shader (its passes left out, its properties' places not yet known)
 /// with its passes' keys, the materials, the counts, and what the build read.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct CataloguePart {
     /// The built shaders, in catalogue order.
     pub shaders: Vec<ShaderHead>,
-    /// Every resolved material (`materials.json`).
-    pub materials: Vec<MaterialManifest>,
+    /// Every resolved material: `materials.json`'s content, compact, written as it is by a merge.
+    pub materials: Box<serde_json::value::RawValue>,
     /// Shaders, passes and variants built.
     pub counts: [usize; 3],
     /// Shaders no material uses.
@@ -77,7 +77,8 @@ pub(super) fn catalogue_part(
     let absent: BTreeSet<String> = store.absent().iter().map(|p| relative_to(p, &options.root)).collect();
     CataloguePart {
         shaders: shaders.into_iter().map(|(_, head)| head).collect(),
-        materials: materials(catalog),
+        materials: serde_json::value::to_raw_value(&materials(catalog))
+            .expect("materials are plain data and serialize"),
         counts: [summary.shaders, summary.passes, summary.variants],
         unused: summary.unused.clone(),
         given: options.given_files,
@@ -119,11 +120,7 @@ pub(super) fn finish(
         let written = [
             (
                 MATERIALS_FILE,
-                write_json(
-                    &options.output.join(MATERIALS_FILE),
-                    &catalogue.materials,
-                    options.pretty_manifest,
-                ),
+                write_materials(&options.output.join(MATERIALS_FILE), &catalogue.materials, options),
             ),
             (FILE_NAME, write_json(&options.output.join(FILE_NAME), &manifest, options.pretty_manifest)),
         ];
@@ -153,6 +150,21 @@ pub(super) fn finish(
         });
     }
     BuildResult { manifest: Some(manifest), summary, diagnostics, output: options.output.clone() }
+}
+
+/// `materials.json`: the compact text as it is, or indented as a whole build indents it.
+fn write_materials(
+    path: &std::path::Path,
+    materials: &serde_json::value::RawValue,
+    options: &BuildOptions,
+) -> std::io::Result<(u64, bool)> {
+    if options.pretty_manifest {
+        let materials: Vec<MaterialManifest> =
+            serde_json::from_str(materials.get()).map_err(std::io::Error::other)?;
+        write_json(path, &materials, true)
+    } else {
+        write_json(path, &materials, false)
+    }
 }
 
 /// Writes JSON (the manifest, the materials) streamed, so that a million variants' manifest is

@@ -58,7 +58,7 @@ pub const SHARD_FILE: &str = "shard.json";
 
 /// What a shard leaves for `kiln merge`: what it checks before trusting the shard, and the
 /// shard's passes' parts of the manifest.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ShardRecord {
     /// The kiln that built it.
     pub kiln_version: String,

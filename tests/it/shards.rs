@@ -276,3 +276,29 @@ fn merge_refuses_shards_that_do_not_belong_together() {
 fn diagnostics(run: &Output) -> String {
     text(run).lines().take_while(|l| !l.starts_with("built ")).map(|l| format!("{l}\n")).collect()
 }
+
+#[test]
+fn indented_shards_merge_into_the_bytes_of_one_indented_build() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    synthetic_project(&project, 16);
+    let run = |args: &[&str]| {
+        let run = kiln(args);
+        assert_eq!(run.status.code(), Some(0), "{}", text(&run));
+    };
+    let path = |name: &str| dir.path().join(name).to_string_lossy().into_owned();
+    run(&["build", text_of(&project), "--pretty", "--output", &path("single")]);
+    for shard in ["1/2", "2/2"] {
+        let out = path(&format!("shard{}", &shard[..1]));
+        run(&["build", text_of(&project), "--pretty", "--shard", shard, "--output", &out]);
+    }
+    run(&["merge", &path("merged"), &path("shard1"), &path("shard2"), "--pretty"]);
+    for file in ["manifest.json", "materials.json"] {
+        let read = |folder: &str| std::fs::read(dir.path().join(folder).join(file)).expect("written");
+        assert_eq!(read("merged"), read("single"), "{file}");
+        assert!(
+            read("merged").starts_with(b"{\n") || read("merged").starts_with(b"[\n"),
+            "{file} is indented"
+        );
+    }
+}

@@ -2,7 +2,7 @@
 //! bar, its diagnostics and a summary line.
 
 use crate::args::Format;
-use crate::output::{exit_code, host_failure, print_out, report};
+use crate::output::{exit_code, exit_leaving, host_failure, print_out, report};
 use kiln::build::VariantSelection;
 use kiln::diagnostics;
 use kiln::project::{BuildMode, Part};
@@ -59,7 +59,7 @@ pub fn merge(output: PathBuf, shards: Vec<PathBuf>, project: Option<PathBuf>, pr
             if !diagnostics::has_errors(&problems) {
                 eprintln!("merged {} shards: every module came from them, naga compiled none", shards.len());
             }
-            exit_code(&problems)
+            exit_leaving(exit_code(&problems), (result.manifest, store))
         }
         Err(error) => host_failure(&error.to_string()),
     }
@@ -112,7 +112,7 @@ fn run(project: Option<PathBuf>, mode: BuildMode, format: Format, part: Part) ->
     }
     report(&store, &problems);
     print_summary(&result.summary, mode.write, diagnostics::has_errors(&problems));
-    exit_code(&problems)
+    exit_leaving(exit_code(&problems), (result.manifest, store))
 }
 
 /// The closing line of a build (and the note about skipped shaders).
