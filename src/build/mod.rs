@@ -181,15 +181,7 @@ pub fn build(
     options: &BuildOptions,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> BuildResult {
-    let started = Instant::now();
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(options.threads.unwrap_or(0)).build();
-    let run = || build_passes(store, includes, catalog, options, progress);
-    let mut result = match pool {
-        Ok(pool) => pool.install(run),
-        Err(_) => run(),
-    };
-    result.summary.elapsed = started.elapsed();
-    result
+    timed_in_pool(options, || build_passes(store, includes, catalog, options, progress))
 }
 
 /// `kiln merge`: the output of one build of the project from the shards' outputs, compiling
@@ -197,11 +189,17 @@ pub fn build(
 /// `kiln.toml`, shaders, materials, variant logs); the rest the shards read is read here, and
 /// all of it must still be what the shards read (K0413).
 pub fn merge(store: &mut SourceStore, options: &BuildOptions, shards: &Merge) -> BuildResult {
+    timed_in_pool(options, || merge::merge(store, options, shards))
+}
+
+/// Runs `job` on a pool of `options.threads` (all cores by default; the global pool if one cannot
+/// be made), its summary timed.
+fn timed_in_pool(options: &BuildOptions, job: impl FnOnce() -> BuildResult + Send) -> BuildResult {
     let started = Instant::now();
     let pool = rayon::ThreadPoolBuilder::new().num_threads(options.threads.unwrap_or(0)).build();
     let mut result = match pool {
-        Ok(pool) => pool.install(|| merge::merge(store, options, shards)),
-        Err(_) => merge::merge(store, options, shards),
+        Ok(pool) => pool.install(job),
+        Err(_) => job(),
     };
     result.summary.elapsed = started.elapsed();
     result
