@@ -39,7 +39,9 @@ pub struct Build {
 pub struct BuildOutput {
     /// The generated module: `include!` it.
     pub module: PathBuf,
+    /// The manifest of the build.
     pub manifest: Manifest,
+    /// What was built.
     pub summary: BuildSummary,
     /// `cargo:...` lines: what [`Build::run`] printed (or would print).
     pub cargo_lines: Vec<String>,
@@ -48,6 +50,8 @@ pub struct BuildOutput {
 /// Why a build script fails. Its `Debug` is the rendered diagnostics, because that is what
 /// `fn main() -> Result<..>` shows.
 #[derive(thiserror::Error)]
+// Each variant's fields are named in its message.
+#[allow(missing_docs)]
 pub enum BuildError {
     #[error("kiln found errors in the shaders:\n{rendered}")]
     Diagnostics { rendered: String, cargo_lines: Vec<String> },
@@ -93,6 +97,7 @@ impl Build {
         self
     }
 
+    /// Worker threads (default: all cores).
     pub fn threads(mut self, threads: usize) -> Build {
         self.threads = Some(threads);
         self

@@ -27,7 +27,9 @@ pub const MAX_GLOBAL_KEYWORDS_PER_PROJECT: usize = 4096;
 /// The files a job looks at.
 #[derive(Debug, Clone, Default)]
 pub struct CatalogInput {
+    /// The shader files.
     pub shaders: Vec<FileId>,
+    /// The material files.
     pub materials: Vec<FileId>,
     /// Shaders built whole, whatever the materials (by name).
     pub always_include: Vec<String>,
@@ -38,28 +40,39 @@ pub struct CatalogInput {
     pub variant_logs: Vec<FileId>,
 }
 
+/// The analysis every job shares (see the module's comment).
 pub struct Catalog {
+    /// Every shader parsed, in the order given.
     pub shaders: Vec<CatalogShader>,
+    /// Every material resolved.
     pub materials: Vec<Material>,
 }
 
+/// A parsed shader and its passes.
 pub struct CatalogShader {
+    /// Its file.
     pub file: FileId,
+    /// Its AST.
     pub shader: Shader,
+    /// Its passes, in order.
     pub passes: Vec<CatalogPass>,
 }
 
 /// How a pass entry of a SubShader is written.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum PassKind {
+    /// `Pass { }`.
     Pass,
+    /// `UsePass "Shader/PASS"`.
     UsePass,
+    /// `GrabPass { }`.
     GrabPass,
     /// A program directly in a SubShader (Unity's surface shaders).
     SurfaceProgram,
 }
 
 impl PassKind {
+    /// The keyword as written.
     pub fn name(self) -> &'static str {
         match self {
             PassKind::Pass => "pass",
@@ -70,23 +83,33 @@ impl PassKind {
     }
 }
 
+/// One pass of a shader.
 pub struct CatalogPass {
+    /// Its SubShader's index.
     pub subshader: usize,
     /// Index among the SubShader's passes, surface programs first.
     pub index: usize,
+    /// What kind of pass it is.
     pub kind: PassKind,
+    /// Its `Name`, if any.
     pub name: Option<String>,
+    /// Its tags, in order.
     pub tags: Vec<(String, String)>,
     /// Where the pass sits in `shader.subshaders[subshader].passes` (`None` for surface programs).
     pub item: Option<usize>,
+    /// Its program, if it has one.
     pub program: Option<CatalogProgram>,
 }
 
+/// A pass's program, analysed.
 pub struct CatalogProgram {
+    /// The language of its blocks.
     pub language: ProgramLanguage,
+    /// Its pragmas.
     pub pragmas: ProgramPragmas,
     /// WGSL programs only: the blocks and their includes, ready to preprocess.
     pub wgsl: Option<Program>,
+    /// Its keywords and sets.
     pub keywords: PassKeywords,
     /// The variants the materials need (or all, for an always-included shader), in key order.
     pub variants: Vec<Variant>,

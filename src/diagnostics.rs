@@ -6,18 +6,24 @@ use codespan_reporting::diagnostic as cs;
 use codespan_reporting::term;
 use serde::Serialize;
 
+/// How serious a diagnostic is.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Severity {
+    /// A remark: nothing is wrong.
     Note,
+    /// Worth a look; the build goes on (an error under `strict`).
     Warning,
+    /// The input is wrong; nothing is written and `kiln` exits with 1.
     Error,
 }
 
 /// A span with a message attached.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Label {
+    /// Where.
     pub span: Span,
+    /// What is there.
     pub message: String,
 }
 
@@ -27,20 +33,29 @@ pub struct Label {
 /// trailing period, and make sense on their own.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Diagnostic {
+    /// How serious it is.
     pub severity: Severity,
+    /// Its stable code (`src/codes.rs`).
     pub code: &'static str,
+    /// What is wrong, in a line.
     pub message: String,
+    /// Where, with what is there.
     pub primary: Option<Label>,
+    /// Other places that explain it.
     pub secondary: Vec<Label>,
+    /// Further facts (`= note:`).
     pub notes: Vec<String>,
+    /// What to do about it (`= help:`).
     pub help: Option<String>,
 }
 
 impl Diagnostic {
+    /// An error with a registered code.
     pub fn error(code: &'static str, message: impl Into<String>) -> Diagnostic {
         Diagnostic::new(Severity::Error, code, message)
     }
 
+    /// A warning with a registered code.
     pub fn warning(code: &'static str, message: impl Into<String>) -> Diagnostic {
         Diagnostic::new(Severity::Warning, code, message)
     }
@@ -69,26 +84,31 @@ impl Diagnostic {
         }
     }
 
+    /// The primary place, with what is there.
     pub fn at(mut self, span: Span, message: impl Into<String>) -> Diagnostic {
         self.primary = Some(Label { span, message: message.into() });
         self
     }
 
+    /// Another place that explains it.
     pub fn label(mut self, span: Span, message: impl Into<String>) -> Diagnostic {
         self.secondary.push(Label { span, message: message.into() });
         self
     }
 
+    /// Adds a note.
     pub fn note(mut self, note: impl Into<String>) -> Diagnostic {
         self.notes.push(note.into());
         self
     }
 
+    /// Sets the help.
     pub fn help(mut self, help: impl Into<String>) -> Diagnostic {
         self.help = Some(help.into());
         self
     }
 
+    /// Whether it is an error.
     pub fn is_error(&self) -> bool {
         self.severity == Severity::Error
     }
@@ -200,18 +220,28 @@ pub fn render_to(
 /// A position for JSON output: file name, 1-based line and column, and byte offsets.
 #[derive(Serialize)]
 pub struct JsonLocation {
+    /// The file's name as shown.
     pub file: String,
+    /// 1-based line of the start.
     pub line: usize,
+    /// 1-based column of the start, in characters.
     pub column: usize,
+    /// 1-based line of the end.
     pub end_line: usize,
+    /// 1-based column of the end.
     pub end_column: usize,
+    /// Byte offset of the start.
     pub start: u32,
+    /// Byte offset of the end.
     pub end: u32,
 }
 
+/// A label in JSON.
 #[derive(Serialize)]
 pub struct JsonLabel {
+    /// What is there.
     pub message: String,
+    /// Where.
     #[serde(flatten)]
     pub location: JsonLocation,
 }
@@ -219,12 +249,19 @@ pub struct JsonLabel {
 /// A diagnostic as JSON: its own schema, stable across releases.
 #[derive(Serialize)]
 pub struct JsonDiagnostic {
+    /// How serious it is.
     pub severity: Severity,
+    /// Its stable code.
     pub code: &'static str,
+    /// What is wrong.
     pub message: String,
+    /// The primary place.
     pub location: Option<JsonLabel>,
+    /// Other places.
     pub labels: Vec<JsonLabel>,
+    /// Further facts.
     pub notes: Vec<String>,
+    /// What to do about it.
     pub help: Option<String>,
 }
 

@@ -16,23 +16,17 @@
 // Diagnostics travel as plain values on the error path, where their size costs nothing that
 // matters; boxing each one would only add noise.
 #![allow(clippy::result_large_err)]
-#![warn(unreachable_pub, clippy::print_stdout, clippy::print_stderr)]
+#![warn(missing_docs, unreachable_pub, clippy::print_stdout, clippy::print_stderr)]
 
 pub mod accuracy;
-#[warn(missing_docs)]
 pub mod build;
 mod build_script;
 pub mod catalog;
-#[warn(missing_docs)]
 pub mod codegen;
-#[warn(missing_docs)]
 pub mod codes;
-#[warn(missing_docs)]
 pub mod compile;
-#[warn(missing_docs)]
 pub mod config;
 pub mod diagnostics;
-#[warn(missing_docs)]
 pub mod keywords;
 pub mod listing;
 pub mod manifest;
@@ -40,15 +34,12 @@ pub mod material;
 pub mod preprocess;
 pub mod project;
 pub mod reference;
-#[warn(missing_docs)]
 pub mod reflect;
 #[cfg(feature = "wgpu")]
-#[warn(missing_docs)]
 pub mod runtime;
 pub mod shaderlab;
 pub mod shaderlib;
 pub mod source;
-#[warn(missing_docs)]
 pub mod store;
 
 pub use build_script::{Build, BuildError, BuildOutput};

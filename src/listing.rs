@@ -16,34 +16,52 @@ use std::fmt::Write as _;
 /// The listing of every shader that parsed, and of every material that resolved.
 #[derive(Debug, Serialize)]
 pub struct Listing {
+    /// Each shader, in the order found.
     pub shaders: Vec<ShaderListing>,
+    /// Each material, resolved.
     pub materials: Vec<MaterialListing>,
 }
 
+/// One shader in `kiln list`.
 #[derive(Debug, Serialize)]
 pub struct ShaderListing {
+    /// Its name (`Shader "name"`).
     pub name: String,
+    /// Its file, relative.
     pub file: String,
+    /// Its passes.
     pub passes: Vec<PassListing>,
 }
 
+/// One pass in `kiln list`.
 #[derive(Debug, Serialize)]
 pub struct PassListing {
+    /// Its SubShader's index.
     pub subshader: usize,
+    /// Its index in the SubShader.
     pub pass: usize,
     /// `pass`, `use_pass`, `grab_pass`, or `surface_program` (a CGPROGRAM in a SubShader).
     pub kind: &'static str,
+    /// Its `Name`, if any.
     pub name: Option<String>,
+    /// Its tags, in order.
     pub tags: Vec<(String, String)>,
+    /// Its program, if it has one.
     pub program: Option<ProgramListing>,
 }
 
+/// A pass's program in `kiln list`.
 #[derive(Debug, Serialize)]
 pub struct ProgramListing {
+    /// `WGSL`, `HLSL`, `CG` or `GLSL`.
     pub language: &'static str,
+    /// The vertex entry point.
     pub vertex: Option<String>,
+    /// The fragment entry point.
     pub fragment: Option<String>,
+    /// `#pragma target`, if given.
     pub target: Option<String>,
+    /// Its keyword sets.
     pub keyword_sets: Vec<KeywordSetListing>,
     /// The product of the variant-making sets' sizes; `null` when it exceeds 2^128.
     pub possible_variants: Option<u128>,
@@ -51,37 +69,53 @@ pub struct ProgramListing {
     pub used_variants: Vec<VariantListing>,
 }
 
+/// One variant materials use.
 #[derive(Debug, Serialize)]
 pub struct VariantListing {
     /// The variant key: the pass's keyword bits in hexadecimal.
     pub key: String,
+    /// Its keywords.
     pub keywords: Vec<String>,
     /// The keywords each stage is compiled with (stage-specific keywords only in their stage).
     pub vertex_keywords: Vec<String>,
+    /// The keywords its fragment stage sees.
     pub fragment_keywords: Vec<String>,
+    /// The materials that use it.
     pub materials: Vec<String>,
 }
 
+/// One material in `kiln list --materials`.
 #[derive(Debug, Serialize)]
 pub struct MaterialListing {
+    /// Its name (the file name without extension).
     pub name: String,
+    /// Its file, relative.
     pub file: String,
+    /// Its shader's name.
     pub shader: String,
+    /// Its preset, if any.
     pub preset: Option<&'static str>,
+    /// Its render queue.
     pub render_queue: i64,
+    /// Its enabled keywords.
     pub keywords: Vec<String>,
     /// The values of the properties the shader's render state refers to (`[_SrcBlend]`), by name
     /// where a drawer names them.
     pub render_state: Vec<(String, String)>,
 }
 
+/// One keyword set in `kiln list`.
 #[derive(Debug, Serialize)]
 pub struct KeywordSetListing {
+    /// `multi_compile`, `shader_feature` or `dynamic_branch`.
     pub kind: &'static str,
+    /// `global` or `local`.
     pub scope: &'static str,
+    /// `all`, `vertex` or `fragment`.
     pub stage: &'static str,
     /// `_` stands for the all-off choice.
     pub keywords: Vec<String>,
+    /// The shorthand pragma it came from, if any.
     pub shorthand: Option<&'static str>,
 }
 

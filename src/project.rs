@@ -22,6 +22,8 @@ use std::path::{Path, PathBuf};
 
 /// Host failures: what was asked for cannot be read at all.
 #[derive(Debug, thiserror::Error)]
+// Each variant's fields are named in its message.
+#[allow(missing_docs)]
 pub enum ProjectError {
     #[error("`{0}` does not exist")]
     NotFound(PathBuf),
@@ -134,10 +136,13 @@ fn write_atomically(path: &Path, text: &str) -> Result<(), ProjectError> {
 /// One variant of one pass, as `kiln preprocess` asks for it.
 #[derive(Debug, Clone)]
 pub struct VariantRequest {
+    /// The `.shader` file.
     pub shader: PathBuf,
     /// Pass name or index (see [`Shader::find_pass`](crate::shaderlab::ast::Shader::find_pass)).
     pub pass: Option<String>,
+    /// The variant's keywords (sets without `_` default to their first keyword).
     pub keywords: Vec<String>,
+    /// Which stage to preprocess.
     pub stage: Stage,
 }
 
@@ -230,13 +235,19 @@ pub struct Workspace {
     pub root: PathBuf,
     /// Where builds write: the first project folder's `output` (default `build/kiln` in it).
     pub output: PathBuf,
+    /// The back ends stage modules are written for.
     pub backends: Vec<crate::config::Backend>,
+    /// The shader files found.
     pub shaders: Vec<PathBuf>,
+    /// The material files found.
     pub materials: Vec<PathBuf>,
+    /// Include folders and roots, when `kiln.toml` sets them.
     pub include: Option<IncludeConfig>,
+    /// Shaders built in full though no material uses them.
     pub always_include: Vec<String>,
     /// `kiln.toml`'s `global_keywords`, gathered from every project folder that sets it.
     pub global_keywords: Option<Vec<Spanned<String>>>,
+    /// Warnings are errors.
     pub strict: bool,
     /// `kiln.toml`'s `variant_logs`, relative to the working folder.
     pub variant_logs: Vec<PathBuf>,
@@ -458,10 +469,13 @@ pub fn load_error(error: &LoadError) -> Diagnostic {
 /// How `kiln build` and `kiln check` run.
 #[derive(Debug, Clone)]
 pub struct BuildMode {
+    /// Write the output (`false` for `kiln check`).
     pub write: bool,
     /// Overrides the project's `output` folder.
     pub output: Option<PathBuf>,
+    /// What is built of shaders no material uses.
     pub unused_shaders: VariantSelection,
+    /// Worker threads (default: all cores).
     pub threads: Option<usize>,
     /// Overrides the projects' `global_keywords` (a build script that knows the scene).
     pub global_keywords: Option<Vec<String>>,

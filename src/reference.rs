@@ -9,20 +9,25 @@ pub fn saturate(x: f64) -> f64 {
     if x.is_nan() { f64::NAN } else { x.clamp(0.0, 1.0) }
 }
 
+/// A colour or direction, in f64.
 pub type Vec3 = [f64; 3];
 
+/// The dot product.
 pub fn dot(a: Vec3, b: Vec3) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
+/// The sum.
 pub fn add(a: Vec3, b: Vec3) -> Vec3 {
     [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }
 
+/// `a` times `s`.
 pub fn scale(a: Vec3, s: f64) -> Vec3 {
     [a[0] * s, a[1] * s, a[2] * s]
 }
 
+/// The component-wise product.
 pub fn mul(a: Vec3, b: Vec3) -> Vec3 {
     [a[0] * b[0], a[1] * b[1], a[2] * b[2]]
 }
@@ -30,6 +35,7 @@ pub fn mul(a: Vec3, b: Vec3) -> Vec3 {
 /// The smallest normal f32, which the library clamps squared lengths to.
 pub const FLT_MIN: f64 = 1.175_494_35e-38;
 
+/// `v` squared.
 pub fn square(v: f64) -> f64 {
     v * v
 }
@@ -39,38 +45,55 @@ pub fn safe_normalize(v: Vec3) -> Vec3 {
     scale(v, 1.0 / dot(v, v).max(FLT_MIN).sqrt())
 }
 
+/// What the library's `Surface` holds.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Surface {
+    /// Unit normal.
     pub normal: Vec3,
+    /// Unit direction to the viewer.
     pub view_direction: Vec3,
+    /// Base colour.
     pub color: Vec3,
+    /// Opacity.
     pub alpha: f64,
+    /// Metallic, 0 to 1.
     pub metallic: f64,
+    /// Smoothness, 0 to 1.
     pub smoothness: f64,
 }
 
+/// A directional light.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Light {
+    /// Its colour (and intensity).
     pub color: Vec3,
     /// Towards the light.
     pub direction: Vec3,
 }
 
+/// What the library's `BRDF` holds.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Brdf {
+    /// Diffuse colour.
     pub diffuse: Vec3,
+    /// Specular colour.
     pub specular: Vec3,
+    /// Perceptual roughness squared.
     pub roughness: f64,
 }
 
+/// The reflectivity of dielectrics (the library's `MIN_REFLECTIVITY`).
 pub const MIN_REFLECTIVITY: f64 = 0.04;
+/// The library's light count limit.
 pub const MAX_DIRECTIONAL_LIGHT_COUNT: usize = 4;
 
+/// The share of light not reflected specularly, for a metallic value.
 pub fn one_minus_reflectivity(metallic: f64) -> f64 {
     let range = 1.0 - MIN_REFLECTIVITY;
     range - metallic * range
 }
 
+/// The library's `GetBRDF`, with or without alpha applied to diffuse (premultiplied alpha).
 pub fn get_brdf(surface: &Surface, apply_alpha_to_diffuse: bool) -> Brdf {
     let mut diffuse = scale(surface.color, one_minus_reflectivity(surface.metallic));
     if apply_alpha_to_diffuse {
@@ -107,14 +130,17 @@ pub fn specular_strength_stable(surface: &Surface, brdf: &Brdf, light: &Light) -
     specular_strength(surface, &clamped, light)
 }
 
+/// The library's `DirectBRDF`: diffuse plus the specular term.
 pub fn direct_brdf(surface: &Surface, brdf: &Brdf, light: &Light) -> Vec3 {
     add(scale(brdf.specular, specular_strength(surface, brdf, light)), brdf.diffuse)
 }
 
+/// The light arriving at the surface (`saturate(dot(N, L))` times its colour).
 pub fn incoming_light(surface: &Surface, light: &Light) -> Vec3 {
     scale(light.color, saturate(dot(surface.normal, light.direction)))
 }
 
+/// One light's contribution.
 pub fn lighting_for_light(surface: &Surface, brdf: &Brdf, light: &Light) -> Vec3 {
     mul(incoming_light(surface, light), direct_brdf(surface, brdf, light))
 }

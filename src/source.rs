@@ -15,16 +15,21 @@ pub struct FileId(u32);
 /// A byte range inside one file.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub struct Span {
+    /// The file.
     pub file: FileId,
+    /// First byte.
     pub start: u32,
+    /// One past the last byte.
     pub end: u32,
 }
 
 impl Span {
+    /// The bytes `range` of `file`.
     pub fn new(file: FileId, range: Range<usize>) -> Span {
         Span { file, start: range.start as u32, end: range.end as u32 }
     }
 
+    /// Its bytes, as a range.
     pub fn range(self) -> Range<usize> {
         self.start as usize..self.end as usize
     }
@@ -39,11 +44,14 @@ impl Span {
 /// A value together with the span it was read from.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Spanned<T> {
+    /// The value.
     pub value: T,
+    /// Where it was written.
     pub span: Span,
 }
 
 impl<T> Spanned<T> {
+    /// A value written at `span`.
     pub fn new(value: T, span: Span) -> Spanned<T> {
         Spanned { value, span }
     }
@@ -74,12 +82,16 @@ pub fn normalize_lexically(path: &Path) -> PathBuf {
 /// 1-based line and column (in characters) of a byte offset.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct LineCol {
+    /// 1-based line.
     pub line: usize,
+    /// 1-based column, in characters.
     pub column: usize,
 }
 
 /// Why a file could not be loaded.
 #[derive(Debug, thiserror::Error)]
+// Each variant's fields are named in its message.
+#[allow(missing_docs)]
 pub enum LoadError {
     #[error("cannot read `{path}`: {source}")]
     Io { path: PathBuf, source: std::io::Error },
@@ -95,6 +107,8 @@ pub const MAX_FILE_SIZE: u64 = 16 * 1024 * 1024;
 
 /// Something about a file's bytes that its reader should hear about, though the file was read.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+// Each variant's fields are named in its comment.
+#[allow(missing_docs)]
 pub enum TextProblem {
     /// Byte sequences that are not UTF-8 (`count` of them), each read as U+FFFD; `at` is the
     /// first, as an offset into the decoded text.
@@ -193,6 +207,7 @@ pub struct SourceStore {
 }
 
 impl SourceStore {
+    /// An empty store.
     pub fn new() -> SourceStore {
         SourceStore::default()
     }
@@ -268,6 +283,7 @@ impl SourceStore {
         &self.files[file.0 as usize].problems
     }
 
+    /// A file's text.
     pub fn text(&self, file: FileId) -> &str {
         &self.files[file.0 as usize].text
     }

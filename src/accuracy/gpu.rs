@@ -337,10 +337,13 @@ impl Harness<'_> {
 
 /// A device for the harness, with what its adapter offers.
 pub struct Gpu {
+    /// The device.
     pub device: wgpu::Device,
+    /// Its queue.
     pub queue: wgpu::Queue,
     /// The adapter's name, type and backend.
     pub adapter: String,
+    /// Whether the device has timestamp queries.
     pub timestamps: bool,
     /// `shader-f16`: the f16 formulation runs.
     pub f16: bool,

@@ -20,8 +20,10 @@ pub enum Formulation {
 }
 
 impl Formulation {
+    /// Every formulation, in report order.
     pub const ALL: [Formulation; 3] = [Formulation::Seed, Formulation::Stable, Formulation::Half];
 
+    /// Its name in the report.
     pub fn name(self) -> &'static str {
         match self {
             Formulation::Seed => "seed",
@@ -48,15 +50,20 @@ impl Formulation {
 /// One evaluation: a surface lit by one light.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Case {
+    /// The surface.
     pub surface: Surface,
+    /// The light.
     pub light: Light,
+    /// Whether alpha is applied to diffuse.
     pub premultiply: bool,
 }
 
 /// A generated set of hard cases.
 #[derive(Debug, Clone)]
 pub struct CaseSet {
+    /// The set's name in the report.
     pub name: String,
+    /// Its cases.
     pub cases: Vec<Case>,
     /// For the light-count set: lights in `_CustomLight` and the count to upload per case.
     pub lights: Option<(Vec<Light>, Vec<i32>)>,
@@ -272,12 +279,15 @@ pub const ABSOLUTE_FLOOR: f64 = 1e-30;
 /// Error statistics of one formulation on one set.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Stats {
+    /// Cases measured.
     pub cases: usize,
     /// Normwise relative error: max over components of |gpu - ref| / max(|ref|, 1e-30), over cases.
     pub max_relative: f64,
+    /// Mean relative error.
     pub mean_relative: f64,
     /// Distance in units in the last place between the GPU's f32 and the reference rounded to f32.
     pub max_ulps: u64,
+    /// Results that were NaN or infinite.
     pub nan_or_inf: usize,
 }
 
@@ -317,15 +327,20 @@ pub fn stats(gpu: &[[f32; 3]], references: &[r::Vec3]) -> Stats {
 /// One line of the speed-against-error table.
 #[derive(Debug, Clone)]
 pub struct Row {
+    /// The formulation's name.
     pub formulation: &'static str,
+    /// The case set's name.
     pub set: String,
+    /// Its error statistics.
     pub stats: Stats,
 }
 
 /// A timing of one kernel.
 #[derive(Debug, Clone)]
 pub struct Timing {
+    /// What was timed.
     pub what: String,
+    /// GPU time per evaluation.
     pub nanoseconds_per_evaluation: f64,
 }
 

@@ -25,10 +25,14 @@ pub const FILE_NAME: &str = "manifest.json";
 /// and reports them.
 pub const ERRORS_FILE: &str = "errors.txt";
 
+/// `manifest.json`: every built shader, its passes, modules and variants.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Manifest {
+    /// [`SCHEMA_VERSION`] when written.
     pub schema_version: u32,
+    /// The kiln that wrote it.
     pub kiln_version: String,
+    /// The built shaders, in catalogue order.
     pub shaders: Vec<ShaderManifest>,
 }
 
@@ -69,15 +73,19 @@ impl Manifest {
     }
 }
 
+/// One built shader.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ShaderManifest {
+    /// Its name (`Shader "name"`).
     pub name: String,
     /// Relative to the project folder, with `/` separators.
     pub file: String,
     /// The render queue its first SubShader's `Queue` tag gives a material without one (2000).
     #[serde(default = "default_queue")]
     pub render_queue: i64,
+    /// Its properties, in declaration order.
     pub properties: Vec<PropertyManifest>,
+    /// Its built passes, in order.
     pub passes: Vec<PassManifest>,
 }
 
@@ -85,12 +93,17 @@ fn default_queue() -> i64 {
     2000
 }
 
+/// One property of a shader.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PropertyManifest {
+    /// Its name (`_BaseColor`).
     pub name: String,
+    /// The name shown in an inspector.
     pub display_name: String,
+    /// Its type as ShaderLab writes it (`Color`, `Range(0, 1)`, `2D`, ...).
     #[serde(rename = "type")]
     pub ty: String,
+    /// Its default: a number, a vector or a texture's name.
     pub default: serde_json::Value,
     /// Byte offset in the material uniform block (`UnityPerMaterial`), when the shader has it there.
     pub offset: Option<u32>,
@@ -111,13 +124,17 @@ pub struct PropertyManifest {
 /// `keywords` list), for the run time to draw with.
 pub const MATERIALS_FILE: &str = "materials.json";
 
+/// One resolved material.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct MaterialManifest {
     /// The file name without extension.
     pub name: String,
+    /// Its shader's name.
     pub shader: String,
+    /// Its preset, if it names one.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub preset: Option<String>,
+    /// Its render queue.
     pub render_queue: i64,
     /// Enabled keywords, sorted.
     pub keywords: Vec<String>,
@@ -132,13 +149,20 @@ impl MaterialManifest {
     }
 }
 
+/// One built pass.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PassManifest {
+    /// Its SubShader's index.
     pub subshader: usize,
+    /// Its index in the SubShader.
     pub index: usize,
+    /// Its `Name`, if any.
     pub name: Option<String>,
+    /// Its tags, in order.
     pub tags: Vec<(String, String)>,
+    /// Its render-state commands (the SubShader's, then its own), as written and structured.
     pub render_state: Vec<RenderState>,
+    /// Its keyword sets, in declaration order.
     pub keyword_sets: Vec<KeywordSetManifest>,
     /// The pass's keywords in bit order: bit i of a variant key is `keywords[i]`.
     pub keywords: Vec<String>,
@@ -152,6 +176,7 @@ pub struct PassManifest {
     pub interfaces: Vec<StageInterface>,
     /// Each distinct stage module of the pass once.
     pub modules: Vec<ModuleManifest>,
+    /// Its built variants.
     pub variants: Vec<VariantManifest>,
 }
 
@@ -199,37 +224,50 @@ impl PassManifest {
 /// refers to and their defaults.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct KeywordSetManifest {
+    /// `multi_compile`, `shader_feature` or `dynamic_branch`.
     pub kind: String,
+    /// `global` or `local`.
     pub scope: String,
+    /// `all`, `vertex` or `fragment`.
     pub stage: String,
     /// `_` is the all-off choice.
     pub keywords: Vec<String>,
 }
 
+/// One bind group of a pass's layout.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BindGroup {
+    /// Its index.
     pub group: u32,
+    /// Its entries, by binding.
     pub entries: Vec<LayoutEntry>,
 }
 
+/// One binding of a bind group.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct LayoutEntry {
+    /// Its binding number.
     pub binding: u32,
+    /// The global variable's name.
     pub name: String,
     /// The stages any variant uses it in: `vertex`, `fragment`.
     pub visibility: Vec<String>,
+    /// What it holds.
     pub resource: Resource,
 }
 
+/// One built variant.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct VariantManifest {
     /// The keyword bits in hexadecimal (see docs/project.md).
     pub key: String,
+    /// Its enabled keywords.
     pub keywords: Vec<String>,
     /// The materials that need it (empty for variants built without materials).
     pub materials: Vec<String>,
     /// Indices into the pass's `modules`; `None` when the pass has no such entry point.
     pub vertex: Option<usize>,
+    /// Index into the pass's `modules`, or `None`.
     pub fragment: Option<usize>,
 }
 
@@ -239,9 +277,12 @@ pub struct VariantManifest {
 pub struct StageInterface {
     /// `vertex` or `fragment`.
     pub stage: String,
+    /// The entry point's name.
     pub entry_point: String,
+    /// Vertex stage: the vertex attributes it reads.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub inputs: Vec<Attribute>,
+    /// Fragment stage: the colour targets it writes.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub outputs: Vec<Attribute>,
     /// `[group, binding]` of each resource the module uses.
@@ -261,15 +302,20 @@ pub struct ModuleManifest {
     /// must have them to load it.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub features: Vec<String>,
+    /// Its WGSL, if that back end was written.
     pub wgsl: Option<ModuleFile>,
+    /// Its SPIR-V, if that back end was written.
     pub spirv: Option<ModuleFile>,
 }
 
 /// A module's bytes: `size` bytes at `offset` of one of the pass's `packs`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ModuleFile {
+    /// Index into the pass's `packs`.
     pub pack: usize,
+    /// Byte offset in the pack.
     pub offset: u64,
+    /// Bytes.
     pub size: u64,
     /// BLAKE3 of the module's bytes, 128 bits in hexadecimal.
     pub hash: String,
@@ -278,18 +324,23 @@ pub struct ModuleFile {
 /// A stage module of a pass, with what it refers to.
 #[derive(Debug, Clone, Copy)]
 pub struct StageView<'a> {
+    /// The pass.
     pub pass: &'a PassManifest,
     /// Its index in the pass's `modules`: variants with the same index share the module.
     pub index: usize,
+    /// The module.
     pub module: &'a ModuleManifest,
+    /// Its interface.
     pub interface: &'a StageInterface,
 }
 
 impl<'a> StageView<'a> {
+    /// Its WGSL file, if written.
     pub fn wgsl(&self) -> Option<FileRef> {
         self.module.wgsl.as_ref().map(|f| self.pass.file(f))
     }
 
+    /// Its SPIR-V file, if written.
     pub fn spirv(&self) -> Option<FileRef> {
         self.module.spirv.as_ref().map(|f| self.pass.file(f))
     }
@@ -307,7 +358,9 @@ impl<'a> StageView<'a> {
 pub struct FileRef {
     /// Relative to the output folder, with `/` separators.
     pub path: String,
+    /// Byte offset in the file.
     pub offset: u64,
+    /// Bytes.
     pub size: u64,
     /// BLAKE3 of the module's bytes, 128 bits in hexadecimal.
     pub hash: String,

@@ -9,6 +9,8 @@ macro_rules! shaderlab_words {
     ($(#[$meta:meta])* $name:ident { $($variant:ident = $text:literal),+ $(,)? }) => {
         $(#[$meta])*
         #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        // Each variant is the ShaderLab word beside it.
+        #[allow(missing_docs)]
         pub enum $name { $($variant),+ }
 
         impl $name {
@@ -21,6 +23,7 @@ macro_rules! shaderlab_words {
                 None
             }
 
+            /// The word, in canonical case.
             pub fn name(self) -> &'static str {
                 match self { $($name::$variant => $text),+ }
             }
@@ -91,32 +94,45 @@ shaderlab_words!(
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Value<T> {
+    /// A value written in the shader.
     Literal(T),
+    /// A `[_Property]`, taken from the material.
     Property(String),
 }
 
 /// Channels written by `ColorMask`: `0` is none.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 pub struct ColorMask {
+    /// Red.
     pub r: bool,
+    /// Green.
     pub g: bool,
+    /// Blue.
     pub b: bool,
+    /// Alpha.
     pub a: bool,
 }
 
+/// A `Stencil { }` setting's value.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum StencilValue {
     /// `Ref`, `ReadMask`, `WriteMask`: 0 to 255.
     Byte(Value<u8>),
+    /// `Comp`: a comparison.
     Compare(Value<CompareFunction>),
+    /// `Pass`, `Fail`, `ZFail`: an operation.
     Operation(Value<StencilOperation>),
 }
 
+/// One render-state command of a pass.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RenderState {
+    /// As written.
     pub command: String,
+    /// As parsed.
     pub state: StateCommand,
+    /// The `[_Property]`s it reads, with their defaults.
     pub properties: Vec<PropertyReference>,
 }
 
@@ -125,6 +141,8 @@ pub struct RenderState {
 /// `target: null` is every colour target.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind")]
+// Each variant is the ShaderLab command of its name, its fields the command's arguments.
+#[allow(missing_docs)]
 pub enum StateCommand {
     /// `factors: null` is `Blend Off`.
     Blend {
@@ -168,22 +186,31 @@ pub enum StateCommand {
     },
 }
 
+/// `Blend` factors.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct BlendFactors {
+    /// Source factor.
     pub src: Value<BlendFactor>,
+    /// Destination factor.
     pub dst: Value<BlendFactor>,
     /// Separate alpha factors (`Blend A B, C D`); `null`: the colour factors.
     pub alpha: Option<[Value<BlendFactor>; 2]>,
 }
 
+/// One line of `Stencil { }`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct StencilSetting {
+    /// Which setting.
     pub field: StencilField,
+    /// Its value.
     pub value: StencilValue,
 }
 
+/// A `[_Property]` a command reads.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PropertyReference {
+    /// Its name.
     pub name: String,
+    /// The shader's default for it.
     pub default: serde_json::Value,
 }

@@ -20,12 +20,15 @@ use std::collections::BTreeMap;
 /// A material, resolved against its shader.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Material {
+    /// Its file.
     pub file: FileId,
     /// The file name without extension, as listings show it.
     pub name: String,
     /// Index of the shader in the list the material was resolved against.
     pub shader: usize,
+    /// Its preset, if it names one.
     pub preset: Option<Preset>,
+    /// Its render queue.
     pub render_queue: i64,
     /// Every property of the shader: the material's value, else the preset's, else the default.
     pub values: BTreeMap<String, MaterialValue>,
@@ -33,10 +36,14 @@ pub struct Material {
     pub keywords: Vec<(String, Span)>,
 }
 
+/// A property's value.
 #[derive(Debug, Clone, PartialEq)]
 pub enum MaterialValue {
+    /// A `Float` or `Range`.
     Number(f64),
+    /// A `Color` or `Vector`.
     Vector(Vec<f64>),
+    /// A texture's name.
     Texture(String),
 }
 
@@ -78,7 +85,9 @@ impl From<&PropertyDefault> for MaterialValue {
 /// ([`ShaderEntry::from_manifest`]), so a `.mat` file resolves alike in both.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ShaderEntry {
+    /// The shader's name.
     pub name: String,
+    /// Its properties.
     pub properties: Vec<EntryProperty>,
     /// The render queue of a material that sets none.
     pub render_queue: i64,
@@ -86,19 +95,27 @@ pub struct ShaderEntry {
     pub keyword_sets: Vec<EntrySet>,
 }
 
+/// A property as materials see it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EntryProperty {
+    /// Its name.
     pub name: String,
+    /// Its type.
     pub ty: PropertyType,
+    /// Its default value.
     pub default: MaterialValue,
+    /// The keywords its drawer sets, if any.
     pub drawer: Option<KeywordDrawer>,
     /// An `[Enum]` drawer's names and values (a material may write the name).
     pub enum_names: Option<Vec<(String, f64)>>,
 }
 
+/// A keyword set as materials see it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EntrySet {
+    /// A `shader_feature` set (a material chooses) rather than `multi_compile`.
     pub shader_feature: bool,
+    /// Its keywords, `_` left out.
     pub keywords: Vec<String>,
     /// The set has `_`: a material may enable none of its keywords.
     pub off_option: bool,
@@ -135,6 +152,7 @@ impl ShaderEntry {
         }
     }
 
+    /// A property by name.
     pub fn property(&self, name: &str) -> Option<&EntryProperty> {
         self.properties.iter().find(|p| p.name == name)
     }
@@ -157,6 +175,7 @@ impl ShaderEntries {
         &self.entries[index]
     }
 
+    /// The shaders, by name.
     pub fn new(entries: Vec<ShaderEntry>) -> ShaderEntries {
         let mut by_name = std::collections::HashMap::with_capacity(entries.len());
         for (index, entry) in entries.iter().enumerate() {

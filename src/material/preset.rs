@@ -5,20 +5,28 @@ use super::drawer::enum_name;
 use crate::shaderlab::ast::Shader;
 use toml_edit::{DocumentMut, Item, Value};
 
+/// Unity's four blend presets.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Preset {
+    /// Opaque: no blending, depth written.
     Opaque,
+    /// Alpha-clipped: opaque with `_CLIPPING`.
     Clip,
+    /// Faded: alpha blending of colour and specular.
     Fade,
+    /// Transparent: premultiplied alpha, specular kept.
     Transparent,
 }
 
+/// Render queue names and their numbers.
 pub const RENDER_QUEUES: [(&str, i64); 5] =
     [("Background", 1000), ("Geometry", 2000), ("AlphaTest", 2450), ("Transparent", 3000), ("Overlay", 4000)];
 
 impl Preset {
+    /// Every preset.
     pub const ALL: [Preset; 4] = [Preset::Opaque, Preset::Clip, Preset::Fade, Preset::Transparent];
 
+    /// Its name.
     pub fn name(self) -> &'static str {
         match self {
             Preset::Opaque => "Opaque",
@@ -51,6 +59,7 @@ impl Preset {
         ]
     }
 
+    /// Its render queue.
     pub fn render_queue(self) -> i64 {
         match self {
             Preset::Opaque => 2000,

@@ -4,6 +4,10 @@ use crate::diagnostics::Diagnostic;
 use crate::shaderlab::error::one_of;
 use crate::source::Span;
 
+/// A mistake found, with where it is. Each variant's meaning is the diagnostic it becomes (its
+/// code and message, in the `From` impl below, documented in docs/diagnostics.md), so variants
+/// and fields are not documented twice.
+#[allow(missing_docs)]
 #[derive(Debug, Clone, PartialEq)]
 pub enum PreprocessError {
     IncludeNotFound {

@@ -61,6 +61,7 @@ pub struct Program {
 }
 
 impl Includes {
+    /// Includes resolved with `config`, none scanned yet.
     pub fn new(config: IncludeConfig) -> Includes {
         let allowed = config
             .roots

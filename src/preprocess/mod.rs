@@ -31,11 +31,14 @@ use crate::source::SourceStore;
 /// `SHADER_STAGE_FRAGMENT`) is defined, as Unity does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Stage {
+    /// The vertex stage.
     Vertex,
+    /// The fragment stage.
     Fragment,
 }
 
 impl Stage {
+    /// The macro defined while preprocessing it (`SHADER_STAGE_VERTEX`, ...).
     pub fn macro_name(self) -> &'static str {
         match self {
             Stage::Vertex => "SHADER_STAGE_VERTEX",
@@ -43,6 +46,7 @@ impl Stage {
         }
     }
 
+    /// Its name: `vertex` or `fragment`.
     pub fn name(self) -> &'static str {
         match self {
             Stage::Vertex => "vertex",
@@ -57,7 +61,9 @@ pub const BUILTIN_MACROS: [&str; 2] = ["SHADER_STAGE_VERTEX", "SHADER_STAGE_FRAG
 /// One variant's spliced WGSL.
 #[derive(Debug, Clone)]
 pub struct Preprocessed {
+    /// The WGSL text.
     pub text: String,
+    /// Where each byte came from.
     pub source_map: SourceMap,
     /// `#error`, `#warning`, failed includes and expression errors met on this variant's path,
     /// each with its "included from" chain.

@@ -11,6 +11,7 @@ use crate::source::{SourceStore, Span};
 /// A pass's program, ready to be preprocessed once per variant and stage.
 #[derive(Debug, Clone)]
 pub struct PassProgram {
+    /// The pass's blocks as units.
     pub program: Program,
     /// Pragmas of the blocks and of `#include_with_pragmas` files.
     pub pragmas: ProgramPragmas,

@@ -43,6 +43,7 @@ pub struct SourceMap {
 /// Where an output range came from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Origin {
+    /// The expansion's place in its file.
     pub span: Span,
     /// Identifies the include chain that brought the text; see [`SourceMap::include_chain`].
     pub inclusion: u32,

@@ -10,31 +10,46 @@ use crate::source::{Span, Spanned};
 /// One `Shader "name" { ... }` file.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Shader {
+    /// Its name (`Shader "name"`).
     pub name: Spanned<String>,
+    /// Its `Properties { }`, in order.
     pub properties: Vec<Property>,
     /// SubShaders in source order, those inside `Category { }` blocks included.
     pub subshaders: Vec<SubShader>,
+    /// Its `Category { }` blocks.
     pub categories: Vec<Category>,
     /// Shader-level `*INCLUDE` blocks, prepended to every program of their language.
     pub includes: Vec<ProgramBlock>,
+    /// `Fallback "name"` or `Fallback Off`.
     pub fallback: Option<Fallback>,
+    /// `CustomEditor` lines.
     pub custom_editors: Vec<CustomEditor>,
+    /// `Dependency` lines.
     pub dependencies: Vec<Dependency>,
+    /// The whole shader.
     pub span: Span,
 }
 
 /// `[attributes] _Name ("Display name", Type) = default`
 #[derive(Debug, Clone, PartialEq)]
 pub struct Property {
+    /// Its `[Attributes]`, in order.
     pub attributes: Vec<Attribute>,
+    /// Its name (`_BaseColor`).
     pub name: Spanned<String>,
+    /// Its display name.
     pub display_name: Spanned<String>,
+    /// Its type.
     pub ty: Spanned<PropertyType>,
+    /// Its default value.
     pub default: Spanned<PropertyDefault>,
+    /// The whole declaration.
     pub span: Span,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]
+// Each variant is the ShaderLab construct of its name.
+#[allow(missing_docs)]
 pub enum PropertyType {
     Float,
     Int,
@@ -46,6 +61,8 @@ pub enum PropertyType {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+// Each variant is the ShaderLab construct of its name.
+#[allow(missing_docs)]
 pub enum TextureDimension {
     D2,
     D2Array,
@@ -106,14 +123,18 @@ impl PropertyType {
     }
 }
 
+/// A property's default value.
 #[derive(Debug, Clone, PartialEq)]
 pub enum PropertyDefault {
+    /// A number.
     Number(f64),
     /// Two to four components; colours may have three (alpha then defaults to 1).
     Vector(Vec<f64>),
     /// A texture name such as `"white"`, with the legacy `{ options }` text if present.
     Texture {
+        /// The texture's name.
         name: String,
+        /// The legacy `{ options }` text.
         options: Option<String>,
     },
 }
@@ -121,15 +142,20 @@ pub enum PropertyDefault {
 /// A property attribute such as `[Toggle(_CLIPPING)]`, kept verbatim and also interpreted.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Attribute {
+    /// Its name as written.
     pub name: Spanned<String>,
     /// Arguments split at commas and trimmed; empty when the attribute has no parentheses.
     pub args: Vec<Spanned<String>>,
+    /// What kiln understands of it.
     pub kind: AttributeKind,
+    /// The whole attribute.
     pub span: Span,
 }
 
 /// What kiln understands of an attribute. Unknown ones are [`AttributeKind::Other`].
 #[derive(Debug, Clone, PartialEq)]
+// Each variant is the ShaderLab construct of its name.
+#[allow(missing_docs)]
 pub enum AttributeKind {
     /// `[Toggle]`, `[Toggle(KW)]`, `[MaterialToggle]`: the keyword when given.
     Toggle(Option<String>),
@@ -158,92 +184,136 @@ pub enum AttributeKind {
 /// `Category { ... }`: render state and tags shared by the SubShaders inside it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Category {
+    /// Its tags and state.
     pub state: StateBlock,
+    /// The whole block.
     pub span: Span,
 }
 
 /// The settings that SubShaders, Passes and Categories all accept.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct StateBlock {
+    /// `Name`, if any.
     pub name: Option<Spanned<String>>,
+    /// `Tags { }`, in order.
     pub tags: Vec<Tag>,
+    /// `LOD`, if any.
     pub lod: Option<Spanned<u32>>,
+    /// Render-state commands, in order.
     pub render_state: Vec<RenderCommand>,
+    /// `PackageRequirements { }`.
     pub package_requirements: Vec<PackageRequirement>,
+    /// Fixed-function commands, kept verbatim.
     pub legacy: Vec<LegacyCommand>,
 }
 
+/// One `SubShader { }`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SubShader {
+    /// Its tags and state, which its passes inherit.
     pub state: StateBlock,
+    /// Its passes, in order.
     pub passes: Vec<PassItem>,
     /// `*INCLUDE` blocks, and surface-shader `CGPROGRAM` blocks written directly in the SubShader.
     pub programs: Vec<ProgramBlock>,
     /// Index into [`Shader::categories`] when the SubShader sits in a `Category`.
     pub category: Option<usize>,
+    /// The whole block.
     pub span: Span,
 }
 
+/// One pass of a SubShader.
 #[derive(Debug, Clone, PartialEq)]
 pub enum PassItem {
+    /// `Pass { }`.
     Pass(Pass),
+    /// `UsePass "Shader/PASS"`.
     UsePass(Spanned<String>),
+    /// `GrabPass { }`.
     GrabPass(GrabPass),
 }
 
+/// One `Pass { }`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Pass {
+    /// Its tags and state.
     pub state: StateBlock,
+    /// Its program blocks.
     pub programs: Vec<ProgramBlock>,
+    /// The whole block.
     pub span: Span,
 }
 
+/// One `GrabPass { }`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct GrabPass {
+    /// The texture it grabs into, if named.
     pub texture: Option<Spanned<String>>,
+    /// `Name`, if any.
     pub name: Option<Spanned<String>>,
+    /// `Tags { }`, in order.
     pub tags: Vec<Tag>,
+    /// The whole block.
     pub span: Span,
 }
 
+/// One `"Key" = "Value"` tag.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Tag {
+    /// The key.
     pub key: Spanned<String>,
+    /// The value.
     pub value: Spanned<String>,
 }
 
+/// One `"package" : "version"` requirement.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PackageRequirement {
+    /// The package.
     pub package: Spanned<String>,
+    /// The version range, if given.
     pub version: Option<Spanned<String>>,
 }
 
+/// `Fallback`.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Fallback {
+    /// `Fallback "name"`.
     Shader(Spanned<String>),
+    /// `Fallback Off`.
     Off(Span),
 }
 
+/// A `CustomEditor` line.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CustomEditor {
+    /// The editor's class.
     pub class: Spanned<String>,
     /// Set for `CustomEditorForRenderPipeline`.
     pub render_pipeline: Option<Spanned<String>>,
 }
 
+/// A `Dependency "name" = "shader"` line.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Dependency {
+    /// The dependency's name.
     pub name: Spanned<String>,
+    /// The shader it names.
     pub shader: Spanned<String>,
 }
 
+/// One render-state command.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RenderCommand {
+    /// What it sets.
     pub kind: RenderCommandKind,
+    /// The whole command.
     pub span: Span,
 }
 
 #[derive(Debug, Clone, PartialEq)]
+// Each variant is the ShaderLab construct of its name.
+#[allow(missing_docs)]
 pub enum RenderCommandKind {
     /// `Blend [target] Off` has `factors: None`.
     Blend {
@@ -294,41 +364,57 @@ impl RenderCommandKind {
 /// A blend factor as written: literal or `[_Property]`.
 pub type FactorValue = Spanned<Value<BlendFactor>>;
 
+/// `Blend` factors, as written.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BlendFactors {
+    /// Source factor.
     pub src: FactorValue,
+    /// Destination factor.
     pub dst: FactorValue,
     /// Separate alpha factors: `Blend A B, C D`.
     pub alpha: Option<(FactorValue, FactorValue)>,
 }
 
+/// One line of `Stencil { }`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StencilEntry {
+    /// Which setting.
     pub op: StencilField,
+    /// Its value.
     pub value: Spanned<StencilValue>,
+    /// The whole line.
     pub span: Span,
 }
 
 /// A fixed-function command from before programmable shaders, kept verbatim.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LegacyCommand {
+    /// Its keyword.
     pub keyword: Spanned<String>,
+    /// The whole command's text.
     pub text: String,
+    /// The whole command.
     pub span: Span,
 }
 
 /// A program block: `WGSLPROGRAM ... ENDWGSL` or one of its include or foreign-language forms.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ProgramBlock {
+    /// Its language.
     pub language: ProgramLanguage,
     /// `*INCLUDE` blocks are spliced before every program of their language instead of compiled.
     pub is_include: bool,
+    /// The text between the opening and closing keywords.
     pub body: String,
+    /// Where the body is.
     pub body_span: Span,
+    /// The whole block.
     pub span: Span,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+// Each variant is the ShaderLab construct of its name.
+#[allow(missing_docs)]
 pub enum ProgramLanguage {
     Wgsl,
     Hlsl,
@@ -361,6 +447,7 @@ impl ProgramLanguage {
         }
     }
 
+    /// The keyword that closes a block (`ENDWGSL`, ...).
     pub fn close_keyword(self) -> &'static str {
         match self {
             ProgramLanguage::Wgsl => "ENDWGSL",
@@ -370,6 +457,7 @@ impl ProgramLanguage {
         }
     }
 
+    /// Every language, in the order blocks are matched.
     pub const ALL: [ProgramLanguage; 4] =
         [ProgramLanguage::Wgsl, ProgramLanguage::Hlsl, ProgramLanguage::Cg, ProgramLanguage::Glsl];
 }

@@ -20,7 +20,9 @@ struct ShaderLabParser;
 /// everything found wrong.
 #[derive(Debug)]
 pub struct ParsedShader {
+    /// The AST, when the file parses.
     pub shader: Option<Shader>,
+    /// What was found wrong.
     pub diagnostics: Vec<Diagnostic>,
 }
 

@@ -22,6 +22,7 @@ pub enum KeywordKind {
 }
 
 impl KeywordKind {
+    /// The pragma's name (`multi_compile`, `shader_feature`, `dynamic_branch`).
     pub fn name(self) -> &'static str {
         match self {
             KeywordKind::MultiCompile => "multi_compile",
@@ -34,19 +35,28 @@ impl KeywordKind {
 /// Whether a keyword is global to the project or local to its shader (`_local`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum KeywordScope {
+    /// Counts toward the project's global keywords.
     Global,
+    /// `_local`: the shader's own.
     Local,
 }
 
 /// The stage a keyword affects (`_vertex`, `_fragment`, ...); `All` when no suffix is given.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum KeywordStage {
+    /// Both stages see it.
     All,
+    /// `_vertex`: only the vertex stage.
     Vertex,
+    /// `_fragment`: only the fragment stage.
     Fragment,
+    /// `_geometry` (no WGSL stage).
     Geometry,
+    /// `_hull` (no WGSL stage).
     Hull,
+    /// `_domain` (no WGSL stage).
     Domain,
+    /// `_raytracing` (no WGSL stage).
     RayTracing,
 }
 
@@ -60,6 +70,7 @@ impl KeywordStage {
         ("_raytracing", KeywordStage::RayTracing),
     ];
 
+    /// The suffix's stage name (`all` without one).
     pub fn name(self) -> &'static str {
         match self {
             KeywordStage::All => "all",
@@ -76,19 +87,26 @@ impl KeywordStage {
 /// One choice of a keyword set: a keyword, or `None` for the all-off choice (`_`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct KeywordOption {
+    /// The keyword; `None` for `_` (all off).
     pub keyword: Option<String>,
+    /// Where it is written.
     pub span: Span,
 }
 
 /// A declared keyword set, after normalisation.
 #[derive(Debug, Clone, PartialEq)]
 pub struct KeywordSet {
+    /// Which pragma declared it.
     pub kind: KeywordKind,
+    /// Global or `_local`.
     pub scope: KeywordScope,
+    /// The stages that see it.
     pub stage: KeywordStage,
+    /// Its choices, in order.
     pub options: Vec<KeywordOption>,
     /// The shorthand pragma this set came from (`multi_compile_fog`), if any.
     pub shorthand: Option<&'static str>,
+    /// The pragma line.
     pub span: Span,
 }
 
@@ -98,6 +116,7 @@ impl KeywordSet {
         self.options.iter().filter_map(|o| o.keyword.as_deref())
     }
 
+    /// Whether one choice is `_` (no keyword).
     pub fn has_off_option(&self) -> bool {
         self.options.iter().any(|o| o.keyword.is_none())
     }
@@ -106,26 +125,37 @@ impl KeywordSet {
 /// `#pragma target`: a level, optionally only for variants with all the given keywords.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Target {
+    /// The level (`4.5`, `webgpu`, ...).
     pub level: Spanned<String>,
+    /// The keywords a variant must have for it to apply.
     pub keywords: Vec<Spanned<String>>,
 }
 
 /// `#pragma require`: GPU features, optionally only for variants with the given keywords.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Require {
+    /// The features required.
     pub features: Vec<Spanned<String>>,
+    /// The keywords a variant must have for it to apply.
     pub keywords: Vec<Spanned<String>>,
 }
 
 /// What a pass's program says about itself through its pragmas.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ProgramPragmas {
+    /// `#pragma vertex NAME`.
     pub vertex: Option<Spanned<String>>,
+    /// `#pragma fragment NAME`.
     pub fragment: Option<Spanned<String>>,
+    /// `#pragma target` lines, in order.
     pub targets: Vec<Target>,
+    /// `#pragma require` lines, in order.
     pub requires: Vec<Require>,
+    /// Keyword sets, in declaration order.
     pub keyword_sets: Vec<KeywordSet>,
+    /// `#pragma skip_variants` keywords.
     pub skip_variants: Vec<Spanned<String>>,
+    /// `#pragma instancing_options` arguments (kept, not used).
     pub instancing_options: Vec<Spanned<String>>,
     /// Any other pragma: its name and the rest of the line.
     pub other: Vec<(Spanned<String>, String)>,
@@ -237,8 +267,9 @@ pub fn shorthand_names() -> impl Iterator<Item = &'static str> {
     SHORTHANDS.iter().map(|(name, _)| *name)
 }
 
-/// Mistakes in pragmas.
+/// Mistakes in pragmas. Each variant's meaning is the diagnostic it becomes (docs/diagnostics.md).
 #[derive(Debug, Clone, PartialEq)]
+#[allow(missing_docs)]
 pub enum PragmaError {
     UnknownTarget { span: Span, found: String },
     MissingArgument { span: Span, pragma: String, expected: &'static str },
@@ -322,6 +353,7 @@ struct PragmaLine {
 pub struct PragmaSource<'a> {
     /// The text's span in its file.
     pub span: Span,
+    /// The text.
     pub text: &'a str,
 }
 
