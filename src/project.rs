@@ -50,7 +50,7 @@ pub enum ProjectError {
     #[error("cannot write `{path}`: {source}")]
     Write { path: PathBuf, source: std::io::Error },
     #[error("cannot merge: {0}")]
-    Shards(String),
+    Shards(#[from] crate::build::shard::ShardError),
 }
 
 /// The project a material file belongs to: the nearest folder above it with a `kiln.toml`; without
@@ -595,7 +595,7 @@ pub fn merge_shards(
     project: Option<PathBuf>,
     mode: &BuildMode,
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
-    let (records, inputs) = crate::build::shard::check_shards(shards).map_err(ProjectError::Shards)?;
+    let (records, inputs) = crate::build::shard::check_shards(shards)?;
     let project = project.unwrap_or_else(|| PathBuf::from(&records[0].project));
     let merge = crate::build::Merge { shards: shards.iter().cloned().zip(records).collect(), inputs };
     let Given { workspace, mut diagnostics, options, .. } = load_given(store, &[project], mode)?;

@@ -26,8 +26,8 @@ pub struct Shard {
 
 impl Shard {
     /// `I/N` with 1 ≤ I ≤ N, as the command line takes it.
-    pub fn parse(text: &str) -> Result<Shard, String> {
-        let bad = || format!("`{text}` is not a shard: write I/N with 1 <= I <= N, like 2/4");
+    pub fn parse(text: &str) -> Result<Shard, ShardError> {
+        let bad = || ShardError::NotAShard(text.to_string());
         let (i, n) = text.split_once('/').ok_or_else(bad)?;
         let (i, n): (u32, u32) = (i.trim().parse().map_err(|_| bad())?, n.trim().parse().map_err(|_| bad())?);
         if i == 0 || i > n {
@@ -91,11 +91,11 @@ pub struct ShardPass {
 
 impl ShardRecord {
     /// The record in a shard's output folder.
-    pub fn read(folder: &Path) -> Result<ShardRecord, String> {
+    pub fn read(folder: &Path) -> Result<ShardRecord, ShardError> {
         let path = folder.join(SHARD_FILE);
         let bytes = std::fs::read(&path)
-            .map_err(|e| format!("`{}` is not a shard's output: {e}", folder.display()))?;
-        serde_json::from_slice(&bytes).map_err(|e| format!("`{}` is damaged: {e}", path.display()))
+            .map_err(|source| ShardError::NotShardOutput { folder: folder.to_path_buf(), source })?;
+        serde_json::from_slice(&bytes).map_err(|source| ShardError::Damaged { path, source })
     }
 }
 
@@ -128,56 +128,74 @@ pub(super) fn finish(
     BuildResult::failed(options, summary, diagnostics)
 }
 
+/// Why shard outputs cannot be merged (each message names the folders and what differs).
+#[derive(Debug, thiserror::Error)]
+// Each variant's fields are named in its message.
+#[allow(missing_docs)]
+pub enum ShardError {
+    #[error("`{0}` is not a shard: write I/N with 1 <= I <= N, like 2/4")]
+    NotAShard(String),
+    #[error("`{}` is not a shard's output: {source}", folder.display())]
+    NotShardOutput { folder: PathBuf, source: std::io::Error },
+    #[error("`{}` is damaged: {source}", path.display())]
+    Damaged { path: PathBuf, source: serde_json::Error },
+    #[error("no shard outputs to merge")]
+    NoShards,
+    #[error(
+        "`{}` is shard {shard}/{count} of {what} than `{}`; shards of one merge come from one build",
+        folder.display(),
+        first.display()
+    )]
+    NotOneBuild { folder: PathBuf, shard: u32, count: u32, what: String, first: PathBuf },
+    #[error("the shards were built by kiln {built_by}, this is kiln {}", env!("CARGO_PKG_VERSION"))]
+    OtherKiln { built_by: String },
+    #[error("shard {index}/{count} is missing")]
+    Missing { index: usize, count: u32 },
+    #[error("shard {index}/{count} is given twice: {holders}")]
+    GivenTwice { index: usize, count: u32, holders: String },
+}
+
 /// Shard outputs to merge, checked against each other: one kiln version, one count, every shard
-/// once. Returns the inputs hash they share (checked against the project by the build).
-pub fn check_shards(folders: &[PathBuf]) -> Result<(Vec<ShardRecord>, String), String> {
+/// once. Returns the inputs hash they share (checked against the project by the merge).
+pub fn check_shards(folders: &[PathBuf]) -> Result<(Vec<ShardRecord>, String), ShardError> {
     // Each record holds its shard's parts of the manifest: read at once.
     let records = folders.par_iter().map(|f| ShardRecord::read(f)).collect::<Result<Vec<_>, _>>()?;
-    let Some(first) = records.first() else { return Err("no shard outputs to merge".into()) };
+    let Some(first) = records.first() else { return Err(ShardError::NoShards) };
     for (record, folder) in records.iter().zip(folders) {
-        let differs = |what: &str| {
-            Err(format!(
-                "`{}` is shard {}/{} of {what} than `{}`; shards of one merge come from one build",
-                folder.display(),
-                record.shard,
-                record.count,
-                folders[0].display()
-            ))
+        let differs = |what: String| ShardError::NotOneBuild {
+            folder: folder.clone(),
+            shard: record.shard,
+            count: record.count,
+            what,
+            first: folders[0].clone(),
         };
         if record.kiln_version != first.kiln_version {
-            return differs(&format!("kiln {} rather", record.kiln_version));
+            return Err(differs(format!("kiln {} rather", record.kiln_version)));
         }
         if record.count != first.count {
-            return differs("a different number of shards");
+            return Err(differs("a different number of shards".into()));
         }
         if record.inputs != first.inputs {
-            return differs("another project, another state of it, or other options");
+            return Err(differs("another project, another state of it, or other options".into()));
         }
     }
     if first.kiln_version != env!("CARGO_PKG_VERSION") {
-        return Err(format!(
-            "the shards were built by kiln {}, this is kiln {}",
-            first.kiln_version,
-            env!("CARGO_PKG_VERSION")
-        ));
+        return Err(ShardError::OtherKiln { built_by: first.kiln_version.clone() });
     }
     let mut seen = vec![Vec::new(); first.count as usize];
     for (record, folder) in records.iter().zip(folders) {
-        if let Some(slot) = seen.get_mut(record.shard as usize - 1) {
+        // A record naming shard 0, or one past the count, holds no shard of this merge.
+        if let Some(slot) = (record.shard as usize).checked_sub(1).and_then(|i| seen.get_mut(i)) {
             slot.push(folder.display().to_string());
         }
     }
     for (i, holders) in seen.iter().enumerate() {
         match holders.len() {
-            0 => return Err(format!("shard {}/{} is missing", i + 1, first.count)),
+            0 => return Err(ShardError::Missing { index: i + 1, count: first.count }),
             1 => {}
             _ => {
-                return Err(format!(
-                    "shard {}/{} is given twice: {}",
-                    i + 1,
-                    first.count,
-                    holders.join(", ")
-                ));
+                let holders = holders.join(", ");
+                return Err(ShardError::GivenTwice { index: i + 1, count: first.count, holders });
             }
         }
     }
@@ -191,9 +209,10 @@ mod tests {
 
     #[test]
     fn shards_parse() {
-        assert_eq!(Shard::parse("2/4"), Ok(Shard { index: 1, count: 4 }));
+        assert_eq!(Shard::parse("2/4").ok(), Some(Shard { index: 1, count: 4 }));
         for bad in ["0/4", "5/4", "4", "a/b", "1/0"] {
-            assert!(Shard::parse(bad).is_err(), "{bad}");
+            let error = Shard::parse(bad).err().map(|e| e.to_string());
+            assert_eq!(error, Some(format!("`{bad}` is not a shard: write I/N with 1 <= I <= N, like 2/4")));
         }
     }
 

@@ -238,6 +238,10 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     let record = std::fs::read_to_string(&record_path).expect("record");
     std::fs::write(&record_path, record.replace(env!("CARGO_PKG_VERSION"), "0.0.1-other")).expect("write");
     refused(&shards, "kiln 0.0.1-other");
+    // A record edited to claim shard 0 holds no shard of the merge (not a crash).
+    assert!(record.contains("\"shard\":3,"), "{record}");
+    std::fs::write(&record_path, record.replace("\"shard\":3,", "\"shard\":0,")).expect("write");
+    refused(&shards, "shard 3/3 is missing");
     std::fs::write(&record_path, record).expect("write");
 
     // The project changed since the shards were built: an error, and nothing written.

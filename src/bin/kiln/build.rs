@@ -32,7 +32,7 @@ pub fn build(
     let part = match shard.as_deref().map(kiln::build::shard::Shard::parse) {
         None => Part::Whole,
         Some(Ok(shard)) => Part::Shard(shard),
-        Some(Err(message)) => return host_failure(&message),
+        Some(Err(error)) => return host_failure(&error.to_string()),
     };
     run(project, mode, Format::Text, part)
 }
