@@ -1,6 +1,7 @@
 //! What a build leaves: the manifest (its passes' parts in catalogue order), the materials, and
 //! the record of a clean build for the next no-op check; JSON streamed and written atomically.
 
+use super::error::BuildLayerError;
 use super::jobs::Job;
 use super::noop::{disk_files, inputs_key, recorded_name};
 use super::plan::{PassWork, pass_key};
@@ -130,7 +131,7 @@ pub(super) fn finish(
                     summary.bytes_written += if written { len } else { 0 };
                     files.push((name.to_string(), len));
                 }
-                Err(error) => diagnostics.push(write_failure(&options.output, &error)),
+                Err(error) => diagnostics.push(write_failure(&options.output, error)),
             }
         }
     }
@@ -208,8 +209,8 @@ pub(super) fn write_json(
     Ok((len, written))
 }
 
-pub(super) fn write_failure(output: &std::path::Path, error: &std::io::Error) -> Diagnostic {
-    Diagnostic::error("K0410", format!("cannot write to `{}`: {error}", output.display()))
+pub(super) fn write_failure(output: &std::path::Path, error: std::io::Error) -> Diagnostic {
+    BuildLayerError::Write { output: output.to_path_buf(), error }.into()
 }
 
 /// A pass's part of the manifest: each module once, each distinct interface, uniform block and

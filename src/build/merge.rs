@@ -6,6 +6,7 @@
 //! is checked against its hash, so the output is one build's, byte for byte.
 
 use super::emit::{finish, write_failure};
+use super::error::BuildLayerError;
 use super::noop::{Inputs, same_inputs};
 use super::shard::ShardPass;
 use super::{BuildOptions, BuildResult, BuildSummary, Merge};
@@ -20,17 +21,11 @@ use std::path::Path;
 pub(super) fn merge(store: &mut SourceStore, options: &BuildOptions, merge: &Merge) -> BuildResult {
     let mut summary = BuildSummary::default();
     let Some(catalogue) = merge.shards.iter().find_map(|(_, record)| record.catalogue.as_ref()) else {
-        let error = Diagnostic::error("K0412", "no shard holds the project's catalogue")
-            .note("the first shard's `shard.json` carries it; that shard's output is damaged")
-            .help("build that shard again");
-        return BuildResult::failed(options, summary, vec![error]);
+        return BuildResult::failed(options, summary, vec![BuildLayerError::CatalogueMissing.into()]);
     };
     let inputs = Inputs { given: catalogue.given, read: &catalogue.read, absent: &catalogue.absent };
     if !same_inputs(store, options, &inputs, &merge.inputs) {
-        let error = Diagnostic::error("K0413", "the shards were built from another state of the project")
-            .note("a file the build reads, the project's settings or the build's options changed since")
-            .help("build the shards again from this state of the project, then merge them");
-        return BuildResult::failed(options, summary, vec![error]);
+        return BuildResult::failed(options, summary, vec![BuildLayerError::ProjectChanged.into()]);
     }
     [summary.shaders, summary.passes, summary.variants] = catalogue.counts;
     summary.unused = catalogue.unused.clone();
@@ -77,7 +72,7 @@ pub(super) fn merge(store: &mut SourceStore, options: &BuildOptions, merge: &Mer
         match linked {
             Ok(copied) => summary.bytes_written += copied.iter().sum::<u64>(),
             Err(error) => {
-                return BuildResult::failed(options, summary, vec![write_failure(&options.output, &error)]);
+                return BuildResult::failed(options, summary, vec![write_failure(&options.output, error)]);
             }
         }
     }
@@ -100,20 +95,12 @@ fn damaged(folder: &Path, part: &ShardPass) -> Option<Diagnostic> {
                 .and_then(|pack| pack.get(file.offset as usize..(file.offset + file.size) as usize));
             if bytes.is_none_or(|bytes| hash(bytes) != file.hash) {
                 let interface = &manifest.interfaces[module.interface];
-                return Some(
-                    Diagnostic::error(
-                        "K0412",
-                        format!(
-                            "no shard holds the {} module of `{}` intact",
-                            interface.stage, interface.entry_point
-                        ),
-                    )
-                    .note(format!(
-                        "`{}` is damaged or missing",
-                        folder.join(&manifest.packs[file.pack]).display()
-                    ))
-                    .help("build that shard again"),
-                );
+                let error = BuildLayerError::ModuleDamaged {
+                    stage: interface.stage.clone(),
+                    entry: interface.entry_point.clone(),
+                    pack: folder.join(&manifest.packs[file.pack]),
+                };
+                return Some(error.into());
             }
         }
     }

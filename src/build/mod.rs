@@ -8,6 +8,7 @@
 //! the thread count or on how the work was split.
 
 mod emit;
+mod error;
 mod jobs;
 mod merge;
 mod noop;
@@ -18,6 +19,7 @@ pub mod shard;
 mod sources;
 
 pub use emit::{CataloguePart, ShaderHead};
+pub use error::BuildLayerError;
 pub use noop::unchanged;
 pub use plan::stage_texts;
 

@@ -136,7 +136,7 @@ pub(super) fn build_pass(
             files.into_iter()
         }
         Err(error) => {
-            diagnostics.push(write_failure(&options.output, &error));
+            diagnostics.push(write_failure(&options.output, error));
             Vec::new().into_iter()
         }
     };

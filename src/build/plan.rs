@@ -2,6 +2,7 @@
 //! build with their variants, what each weighs (for shards), and how a pass is known across
 //! builds.
 
+use super::error::BuildLayerError;
 use super::{BuildOptions, BuildSummary, VariantSelection};
 use crate::catalog::{Catalog, CatalogPass, CatalogProgram, CatalogShader};
 use crate::diagnostics::Diagnostic;
@@ -107,17 +108,14 @@ fn select_variants<'a>(
                 let count = count.map_or("more than 2^128".to_string(), |n| n.to_string());
                 let span =
                     program.pragmas.keyword_sets.first().map(|s| s.span).unwrap_or(shader.shader.name.span);
-                diagnostics.push(
-                    Diagnostic::error(
-                        "K0408",
-                        format!(
-                            "pass {} of `{}` has {count} variants, over the limit of {limit}",
-                            pass.index, shader.shader.name.value
-                        ),
-                    )
-                    .at(span, "its keyword sets multiply to that many")
-                    .help("check the variants materials use with `kiln check` (without `--all-variants`)"),
-                );
+                let error = BuildLayerError::TooManyVariants {
+                    pass: pass.index,
+                    shader: shader.shader.name.value.clone(),
+                    count,
+                    limit,
+                    span,
+                };
+                diagnostics.push(error.into());
                 Vec::new()
             }
         },

@@ -122,7 +122,7 @@ pub(super) fn finish(
             catalogue,
         };
         if let Err(error) = write_json(&options.output.join(SHARD_FILE), &record, false) {
-            diagnostics.push(write_failure(&options.output, &error));
+            diagnostics.push(write_failure(&options.output, error));
         }
     }
     BuildResult::failed(options, summary, diagnostics)

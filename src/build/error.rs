@@ -1,0 +1,86 @@
+//! What the build layer itself finds wrong (not the stages: their errors are their own), as a
+//! typed enum turned into diagnostics here.
+
+use crate::diagnostics::Diagnostic;
+use crate::source::Span;
+use std::path::PathBuf;
+
+/// A build-layer mistake, with what the diagnostic needs.
+#[derive(Debug)]
+pub enum BuildLayerError {
+    /// `kiln check --all-variants` on a pass whose keyword sets multiply past the limit (K0408).
+    TooManyVariants {
+        /// The pass's index in its SubShader.
+        pass: usize,
+        /// Its shader's name.
+        shader: String,
+        /// How many variants it has (a number, or "more than 2^128").
+        count: String,
+        /// The limit.
+        limit: u128,
+        /// Its first keyword set (or the shader's name).
+        span: Span,
+    },
+    /// The output folder cannot be written (K0410).
+    Write {
+        /// The output folder.
+        output: PathBuf,
+        /// The system's reason.
+        error: std::io::Error,
+    },
+    /// No shard built a pass of this shader (K0412).
+    PassMissing {
+        /// The shader's name.
+        shader: String,
+    },
+    /// A module's bytes in its shard's pack are missing or not what their hash says (K0412).
+    ModuleDamaged {
+        /// `vertex` or `fragment`.
+        stage: String,
+        /// The entry point.
+        entry: String,
+        /// The pack.
+        pack: PathBuf,
+    },
+    /// No shard's record carries the catalogue's part (K0412).
+    CatalogueMissing,
+    /// The project is not what the shards read (K0413).
+    ProjectChanged,
+}
+
+impl From<BuildLayerError> for Diagnostic {
+    fn from(error: BuildLayerError) -> Diagnostic {
+        match error {
+            BuildLayerError::TooManyVariants { pass, shader, count, limit, span } => Diagnostic::error(
+                "K0408",
+                format!("pass {pass} of `{shader}` has {count} variants, over the limit of {limit}"),
+            )
+            .at(span, "its keyword sets multiply to that many")
+            .help("check the variants materials use with `kiln check` (without `--all-variants`)"),
+            BuildLayerError::Write { output, error } => {
+                Diagnostic::error("K0410", format!("cannot write to `{}`: {error}", output.display()))
+            }
+            BuildLayerError::PassMissing { shader } => {
+                Diagnostic::error("K0412", format!("no shard holds a pass of `{shader}`"))
+                    .note("its shard's output is damaged, or was built from another state of the project")
+            }
+            BuildLayerError::ModuleDamaged { stage, entry, pack } => {
+                Diagnostic::error("K0412", format!("no shard holds the {stage} module of `{entry}` intact"))
+                    .note(format!("`{}` is damaged or missing", pack.display()))
+                    .help("build that shard again")
+            }
+            BuildLayerError::CatalogueMissing => {
+                Diagnostic::error("K0412", "no shard holds the project's catalogue")
+                    .note("the first shard's `shard.json` carries it; that shard's output is damaged")
+                    .help("build that shard again")
+            }
+            BuildLayerError::ProjectChanged => {
+                Diagnostic::error("K0413", "the shards were built from another state of the project")
+                    .note(
+                        "a file the build reads, the project's settings or the build's options changed since",
+                    )
+                    .help("build the shards again from this state of the project, then merge them")
+            }
+        }
+    }
+}
