@@ -16,6 +16,7 @@ use crate::shaderlab::pragma::KeywordScope;
 use crate::source::{SourceStore, relative_to};
 use crate::store::{Cache, CachedStage, Digest, Hashed, Recorded};
 use serde::{Deserialize, Serialize};
+use serde_json::value::RawValue;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 /// What the manifest takes from the catalogue besides the passes' parts, so that a merge needs
@@ -25,8 +26,8 @@ use std::collections::{BTreeMap, BTreeSet, HashMap};
 pub struct CataloguePart {
     /// The built shaders, in catalogue order.
     pub shaders: Vec<ShaderHead>,
-    /// Every resolved material: `materials.json`'s content, compact, written as it is by a merge.
-    pub materials: Box<serde_json::value::RawValue>,
+    /// How many materials `materials.json` lists (each shard keeps those of its shaders).
+    pub materials: usize,
     /// Shaders, passes and variants built.
     pub counts: [usize; 3],
     /// Shaders no material uses.
@@ -78,8 +79,7 @@ pub(super) fn catalogue_part(
     let absent: BTreeSet<String> = store.absent().iter().map(|p| relative_to(p, &options.root)).collect();
     CataloguePart {
         shaders: shaders.into_iter().map(|(_, head)| head).collect(),
-        materials: serde_json::value::to_raw_value(&materials(catalog))
-            .expect("materials are plain data and serialize"),
+        materials: materials(catalog).count(),
         counts: [summary.shaders, summary.passes, summary.variants],
         unused: summary.unused.clone(),
         given: options.given_files,
@@ -95,6 +95,7 @@ pub(super) fn finish(
     store: &SourceStore,
     options: &BuildOptions,
     catalogue: CataloguePart,
+    materials: &RawValue,
     parts: Vec<PassManifest>,
     mut summary: BuildSummary,
     mut diagnostics: Vec<Diagnostic>,
@@ -119,10 +120,7 @@ pub(super) fn finish(
     if options.write && !diagnostics::has_errors(&diagnostics) {
         files = manifest.packs().into_iter().collect();
         let written = [
-            (
-                MATERIALS_FILE,
-                write_materials(&options.output.join(MATERIALS_FILE), &catalogue.materials, options),
-            ),
+            (MATERIALS_FILE, write_materials(&options.output.join(MATERIALS_FILE), materials, options)),
             (FILE_NAME, write_json(&options.output.join(FILE_NAME), &manifest, options.pretty_manifest)),
         ];
         for (name, result) in written {
@@ -368,13 +366,25 @@ pub(super) fn pass_manifest(
     }
 }
 
-/// Every resolved material, for the run time (`materials.json`).
-fn materials(catalog: &Catalog) -> Vec<MaterialManifest> {
-    catalog
-        .materials
-        .iter()
-        .filter_map(|m| Some(m.to_manifest(&catalog.shaders.get(m.shader)?.shader.name.value)))
-        .collect()
+/// Every resolved material, for the run time (`materials.json`, in this order), with its shader's
+/// index in the catalogue.
+pub(super) fn materials(catalog: &Catalog) -> impl Iterator<Item = (usize, MaterialManifest)> + '_ {
+    catalog.materials.iter().filter_map(|m| {
+        let shader = catalog.shaders.get(m.shader)?;
+        Some((m.shader, m.to_manifest(&shader.shader.name.value)))
+    })
+}
+
+/// `materials.json`'s compact text, from a whole build's catalogue.
+pub(super) fn all_materials(catalog: &Catalog) -> Box<RawValue> {
+    let all: Vec<MaterialManifest> = materials(catalog).map(|(_, m)| m).collect();
+    json_text(&all)
+}
+
+/// The compact JSON text of plain data.
+pub(super) fn json_text(value: &impl Serialize) -> Box<RawValue> {
+    // Derived `Serialize` over strings, numbers and string-keyed maps cannot fail.
+    serde_json::value::to_raw_value(value).expect("plain data serializes")
 }
 
 /// A property as the manifest has it, its places ([`place_properties`]) not yet known.

@@ -14,6 +14,7 @@ use crate::diagnostics::Diagnostic;
 use crate::source::SourceStore;
 use crate::store::{hash, link_or_copy, pass_index_path};
 use rayon::prelude::*;
+use serde_json::value::RawValue;
 use std::collections::HashMap;
 use std::path::Path;
 
@@ -76,10 +77,34 @@ pub(super) fn merge(store: &mut SourceStore, options: &BuildOptions, merge: &Mer
             }
         }
     }
+    let Some(materials) = joined_materials(merge, catalogue.materials) else {
+        return BuildResult::failed(options, summary, vec![BuildLayerError::CatalogueMissing.into()]);
+    };
     summary.modules = found.iter().map(|(_, part)| part.modules).sum();
     summary.reused = summary.modules;
     let parts = found.into_iter().map(|(_, part)| part.manifest.clone()).collect();
-    finish(store, options, catalogue.clone(), parts, summary, diagnostics)
+    finish(store, options, catalogue.clone(), &materials, parts, summary, diagnostics)
+}
+
+/// `materials.json`'s compact text from the shards' materials, each in its place: `None` unless
+/// every place from 0 to `count` is filled exactly once.
+fn joined_materials(merge: &Merge, count: usize) -> Option<Box<RawValue>> {
+    let mut placed: Vec<Option<&RawValue>> = vec![None; count];
+    for (position, text) in merge.shards.iter().flat_map(|(_, record)| &record.materials) {
+        let slot = placed.get_mut(*position)?;
+        if slot.replace(text).is_some() {
+            return None;
+        }
+    }
+    let mut joined = String::from("[");
+    for (i, text) in placed.into_iter().enumerate() {
+        if i > 0 {
+            joined.push(',');
+        }
+        joined.push_str(text?.get());
+    }
+    joined.push(']');
+    RawValue::from_string(joined).ok()
 }
 
 /// The first module of a shard's pass whose bytes are missing or not what its hash says.

@@ -256,10 +256,25 @@ fn build_passes(
                     manifest,
                 })
                 .collect();
-            // Every shard has the catalogue; the first writes its part for the merge.
+            // Every shard has the catalogue; the first writes its part for the merge, and each
+            // the materials of the shaders whose first pass it owns (the first, those of shaders
+            // with none), so that no shard serializes them all.
             let catalogue = (shard.index == 0).then(catalogue);
-            shard::finish(store, options, *shard, catalogue, passes, summary, diagnostics)
+            let mut first_pass_owned: Vec<Option<bool>> = vec![None; catalog.shaders.len()];
+            for (work, owned) in work.iter().zip(&owned) {
+                first_pass_owned[work.shader_index].get_or_insert(*owned);
+            }
+            let materials = emit::materials(catalog)
+                .enumerate()
+                .filter(|(_, (shader, _))| first_pass_owned[*shader].unwrap_or(shard.index == 0))
+                .map(|(position, (_, material))| (position, emit::json_text(&material)))
+                .collect();
+            let parts = shard::ShardParts { catalogue, materials, passes };
+            shard::finish(store, options, *shard, parts, summary, diagnostics)
         }
-        Part::Whole => emit::finish(store, options, catalogue(), parts, summary, diagnostics),
+        Part::Whole => {
+            let materials = emit::all_materials(catalog);
+            emit::finish(store, options, catalogue(), &materials, parts, summary, diagnostics)
+        }
     }
 }

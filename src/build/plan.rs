@@ -16,6 +16,8 @@ use std::collections::HashSet;
 /// A pass to build. Its jobs are made when it is built, and dropped with it.
 pub(super) struct PassWork<'a> {
     pub shader: &'a CatalogShader,
+    /// The shader's index in the catalogue.
+    pub shader_index: usize,
     pub pass: &'a CatalogPass,
     pub program: &'a CatalogProgram,
     pub variants: Cow<'a, [Variant]>,
@@ -29,7 +31,7 @@ pub(super) fn plan<'a>(
     diagnostics: &mut Vec<Diagnostic>,
 ) -> Vec<PassWork<'a>> {
     let mut work: Vec<PassWork> = Vec::new();
-    for shader in &catalog.shaders {
+    for (shader_index, shader) in catalog.shaders.iter().enumerate() {
         let (mut built_any, mut has_wgsl) = (false, false);
         for pass in &shader.passes {
             let Some(program) = pass.program.as_ref().filter(|p| p.wgsl.is_some()) else { continue };
@@ -41,7 +43,7 @@ pub(super) fn plan<'a>(
             built_any = true;
             summary.variants += variants.len();
             summary.passes += 1;
-            work.push(PassWork { shader, pass, program, variants });
+            work.push(PassWork { shader, shader_index, pass, program, variants });
         }
         summary.shaders += usize::from(built_any);
         if has_wgsl && !built_any && selection == VariantSelection::Used {

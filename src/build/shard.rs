@@ -13,6 +13,7 @@ use crate::manifest::PassManifest;
 use crate::source::SourceStore;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
+use serde_json::value::RawValue;
 use std::path::{Path, PathBuf};
 
 /// Which part of the work a build does: shard `index` (0-based) of `count`.
@@ -76,6 +77,8 @@ pub struct ShardRecord {
     pub passes: Vec<ShardPass>,
     /// What the manifest takes from the catalogue (the first shard's record has it).
     pub catalogue: Option<CataloguePart>,
+    /// The materials of its shaders: each one's place in `materials.json`, and its JSON text.
+    pub materials: Vec<(usize, Box<RawValue>)>,
 }
 
 /// One pass a shard built.
@@ -99,13 +102,19 @@ impl ShardRecord {
     }
 }
 
+/// What a shard's record carries besides its identity.
+pub(super) struct ShardParts {
+    pub catalogue: Option<CataloguePart>,
+    pub materials: Vec<(usize, Box<RawValue>)>,
+    pub passes: Vec<ShardPass>,
+}
+
 /// What a shard leaves once its passes are built: `shard.json`, with their parts of the manifest.
 pub(super) fn finish(
     store: &SourceStore,
     options: &BuildOptions,
     shard: Shard,
-    catalogue: Option<CataloguePart>,
-    passes: Vec<ShardPass>,
+    parts: ShardParts,
     summary: BuildSummary,
     mut diagnostics: Vec<Diagnostic>,
 ) -> BuildResult {
@@ -118,8 +127,9 @@ pub(super) fn finish(
             count: shard.count,
             project: options.root.to_string_lossy().replace('\\', "/"),
             modules: summary.compiled + summary.reused + summary.shared,
-            passes,
-            catalogue,
+            passes: parts.passes,
+            catalogue: parts.catalogue,
+            materials: parts.materials,
         };
         if let Err(error) = write_json(&options.output.join(SHARD_FILE), &record, false) {
             diagnostics.push(write_failure(&options.output, error));
