@@ -43,8 +43,8 @@ pub struct CataloguePart {
 /// A built shader without its passes, and its passes' keys in order.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct ShaderHead {
-    /// The shader's manifest entry, `passes` empty.
-    pub shader: ShaderManifest,
+    /// The shader's manifest entry, without passes.
+    pub shader: ShaderManifest<()>,
     /// Its passes' keys ([`super::plan::pass_key`]).
     pub passes: Vec<String>,
 }
@@ -88,40 +88,45 @@ pub(super) fn catalogue_part(
     }
 }
 
-/// Writes what a whole build (or a merge) leaves once its passes are built: the manifest from
-/// the catalogue's part and the passes' parts (in plan order), the materials, and the record of a
-/// clean build.
-pub(super) fn finish(
-    store: &SourceStore,
-    options: &BuildOptions,
-    catalogue: CataloguePart,
-    materials: &RawValue,
-    parts: Vec<PassManifest>,
-    mut summary: BuildSummary,
-    mut diagnostics: Vec<Diagnostic>,
-) -> BuildResult {
+/// The manifest from the catalogue's shader heads and the passes' parts (in plan order), each
+/// shader's properties placed from its passes.
+pub(super) fn manifest<P: PassFiles>(heads: Vec<ShaderHead>, parts: Vec<P>) -> Manifest<P> {
     let mut parts = parts.into_iter();
-    let shaders = catalogue
-        .shaders
+    let shaders = heads
         .into_iter()
         .map(|head| {
-            let mut shader = head.shader;
-            shader.passes = parts.by_ref().take(head.passes.len()).collect();
+            let mut shader = ShaderManifest {
+                name: head.shader.name,
+                file: head.shader.file,
+                render_queue: head.shader.render_queue,
+                properties: head.shader.properties,
+                passes: parts.by_ref().take(head.passes.len()).collect(),
+            };
             place_properties(&mut shader);
             shader
         })
         .collect();
-    let manifest = Manifest {
-        schema_version: SCHEMA_VERSION,
-        kiln_version: env!("CARGO_PKG_VERSION").to_string(),
-        shaders,
-    };
+    Manifest { schema_version: SCHEMA_VERSION, kiln_version: env!("CARGO_PKG_VERSION").to_string(), shaders }
+}
+
+/// Writes what a whole build (or a merge) leaves once its passes are built: the manifest, the
+/// materials (`materials.json`'s compact text), and the record of a clean build.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn finish<P: PassFiles + Serialize>(
+    store: &SourceStore,
+    options: &BuildOptions,
+    catalogue: &CataloguePart,
+    materials: &RawValue,
+    manifest: &Manifest<P>,
+    mut summary: BuildSummary,
+    mut diagnostics: Vec<Diagnostic>,
+) -> BuildResult {
     let mut files = Vec::new();
     if options.write && !diagnostics::has_errors(&diagnostics) {
-        files = manifest.packs().into_iter().collect();
+        files = pack_ends(manifest.shaders.iter().flat_map(|s| &s.passes)).into_iter().collect();
         let written = [
             (MATERIALS_FILE, write_materials(&options.output.join(MATERIALS_FILE), materials, options)),
-            (FILE_NAME, write_json(&options.output.join(FILE_NAME), &manifest, options.pretty_manifest)),
+            (FILE_NAME, write_json(&options.output.join(FILE_NAME), manifest, options.pretty_manifest)),
         ];
         for (name, result) in written {
             match result {
@@ -144,11 +149,11 @@ pub(super) fn finish(
             variants: summary.variants,
             modules: summary.modules,
             files,
-            read: catalogue.read,
-            absent: catalogue.absent,
+            read: catalogue.read.clone(),
+            absent: catalogue.absent.clone(),
         });
     }
-    BuildResult { manifest: Some(manifest), summary, diagnostics, output: options.output.clone() }
+    BuildResult { manifest: None, summary, diagnostics, output: options.output.clone() }
 }
 
 /// `materials.json`: the compact text as it is, or indented as a whole build indents it.
@@ -403,12 +408,13 @@ fn property(p: &Property) -> PropertyManifest {
 
 /// Each property's place: its offset in the material block (from the first pass that has one)
 /// and its texture's binding.
-fn place_properties(shader: &mut ShaderManifest) {
+fn place_properties<P: PassFiles>(shader: &mut ShaderManifest<P>) {
     let passes = &shader.passes;
-    let material_block = passes.iter().flat_map(|p| &p.uniform_blocks).find(|b| b.name == "UnityPerMaterial");
+    let material_block =
+        passes.iter().flat_map(|p| p.uniform_blocks()).find(|b| b.name == "UnityPerMaterial");
     let mut bindings: HashMap<&str, [u32; 2]> = HashMap::new();
     for pass in passes {
-        for group in &pass.layout {
+        for group in pass.layout() {
             for entry in &group.entries {
                 if matches!(entry.resource, Resource::Texture { .. } | Resource::StorageTexture { .. }) {
                     bindings.entry(entry.name.as_str()).or_insert([group.group, entry.binding]);

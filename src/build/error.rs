@@ -42,8 +42,13 @@ pub enum BuildLayerError {
         /// The pack.
         pack: PathBuf,
     },
-    /// No shard's record carries the catalogue's part (K0412).
+    /// No shard's record carries the catalogue's part, or its materials are not all there (K0412).
     CatalogueMissing,
+    /// A pass's part in a shard's record does not read (K0412).
+    PartDamaged {
+        /// The shard's output folder.
+        folder: PathBuf,
+    },
     /// The project is not what the shards read (K0413).
     ProjectChanged,
 }
@@ -72,6 +77,10 @@ impl From<BuildLayerError> for Diagnostic {
             BuildLayerError::CatalogueMissing => {
                 Diagnostic::error("K0412", "no shard holds the project's catalogue")
                     .note("the first shard's `shard.json` carries it; that shard's output is damaged")
+                    .help("build that shard again")
+            }
+            BuildLayerError::PartDamaged { folder } => {
+                Diagnostic::error("K0412", format!("a pass's part in `{}` is damaged", folder.display()))
                     .help("build that shard again")
             }
             BuildLayerError::ProjectChanged => {

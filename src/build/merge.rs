@@ -5,15 +5,17 @@
 //! are linked into the output (copied where a link cannot be made), after every module in them
 //! is checked against its hash, so the output is one build's, byte for byte.
 
-use super::emit::{finish, write_failure};
+use super::emit::{finish, manifest, write_failure};
 use super::error::BuildLayerError;
 use super::noop::{Inputs, same_inputs};
 use super::shard::ShardPass;
 use super::{BuildOptions, BuildResult, BuildSummary, Merge};
 use crate::diagnostics::Diagnostic;
+use crate::manifest::{BindGroup, ModuleManifest, PassFiles, PassManifest, StageInterface, UniformBlock};
 use crate::source::SourceStore;
 use crate::store::{hash, link_or_copy, pass_index_path};
 use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
 use serde_json::value::RawValue;
 use std::collections::HashMap;
 use std::path::Path;
@@ -43,28 +45,45 @@ pub(super) fn merge(store: &mut SourceStore, options: &BuildOptions, merge: &Mer
         for key in &head.passes {
             match built.get(key.as_str()) {
                 Some(&(folder, part)) => found.push((folder, part)),
-                None => diagnostics.push(
-                    Diagnostic::error("K0412", format!("no shard holds a pass of `{}`", head.shader.name))
-                        .note(
-                            "its shard's output is damaged, or was built from another state of the project",
-                        ),
-                ),
+                None => {
+                    diagnostics.push(BuildLayerError::PassMissing { shader: head.shader.name.clone() }.into())
+                }
             }
         }
     }
-    // Every module checked before anything is linked: a damaged shard writes nothing.
-    diagnostics
-        .extend(found.par_iter().filter_map(|(folder, part)| damaged(folder, part)).collect::<Vec<_>>());
-    if !diagnostics.is_empty() {
-        return BuildResult::failed(options, summary, diagnostics);
+    // What the merge needs of each part is read from its text; the rest is written as it is.
+    let passes: Vec<Result<RawPass, Diagnostic>> =
+        found.par_iter().map(|(folder, part)| RawPass::read(folder, part)).collect();
+    let mut parts = Vec::with_capacity(passes.len());
+    for pass in passes {
+        match pass {
+            Ok(pass) => parts.push(pass),
+            Err(error) => diagnostics.push(error),
+        }
     }
+    // Every module checked before anything is linked: a damaged shard writes nothing.
+    diagnostics.extend(
+        found
+            .par_iter()
+            .zip(&parts)
+            .filter_map(|((folder, _), pass)| damaged(folder, &pass.view))
+            .collect::<Vec<_>>(),
+    );
+    let materials = joined_materials(merge, catalogue.materials);
+    if materials.is_none() {
+        diagnostics.push(BuildLayerError::CatalogueMissing.into());
+    }
+    let (Some(materials), true) = (materials, diagnostics.is_empty()) else {
+        return BuildResult::failed(options, summary, diagnostics);
+    };
     if options.write {
         let linked: std::io::Result<Vec<u64>> = found
             .par_iter()
-            .map(|(folder, part)| {
+            .zip(&parts)
+            .map(|((folder, part), pass)| {
                 let mut copied = 0;
                 let cache_entry = pass_index_path(&part.key);
-                for path in part.manifest.packs.iter().chain([&cache_entry]) {
+                for path in pass.view.packs.iter().chain([&cache_entry]) {
                     copied += link_or_copy(&folder.join(path), &options.output.join(path))?;
                 }
                 Ok(copied)
@@ -77,13 +96,75 @@ pub(super) fn merge(store: &mut SourceStore, options: &BuildOptions, merge: &Mer
             }
         }
     }
-    let Some(materials) = joined_materials(merge, catalogue.materials) else {
-        return BuildResult::failed(options, summary, vec![BuildLayerError::CatalogueMissing.into()]);
-    };
     summary.modules = found.iter().map(|(_, part)| part.modules).sum();
     summary.reused = summary.modules;
-    let parts = found.into_iter().map(|(_, part)| part.manifest.clone()).collect();
-    finish(store, options, catalogue.clone(), &materials, parts, summary, diagnostics)
+    let mut catalogue = catalogue.clone();
+    let heads = std::mem::take(&mut catalogue.shaders);
+    if options.pretty_manifest {
+        // Indented, the parts cannot be copied as they are: parsed, and written as a build does.
+        let parsed: Result<Vec<PassManifest>, BuildLayerError> = (parts.iter().zip(&found))
+            .map(|(pass, (folder, _))| {
+                serde_json::from_str(pass.text.get())
+                    .map_err(|_| BuildLayerError::PartDamaged { folder: folder.to_path_buf() })
+            })
+            .collect();
+        match parsed {
+            Ok(parsed) => {
+                let manifest = manifest(heads, parsed);
+                finish(store, options, &catalogue, &materials, &manifest, summary, diagnostics)
+            }
+            Err(error) => BuildResult::failed(options, summary, vec![error.into()]),
+        }
+    } else {
+        let manifest = manifest(heads, parts);
+        finish(store, options, &catalogue, &materials, &manifest, summary, diagnostics)
+    }
+}
+
+/// A shard's pass: its JSON text, written into the manifest as it is, and what the merge reads of
+/// it (packs and modules to verify and link, layout and blocks to place the shader's properties).
+struct RawPass {
+    text: Box<RawValue>,
+    view: PassView,
+}
+
+/// The fields of a pass's part the merge reads; serde skips the rest (its variants) unparsed.
+#[derive(Deserialize)]
+struct PassView {
+    packs: Vec<String>,
+    interfaces: Vec<StageInterface>,
+    modules: Vec<ModuleManifest>,
+    layout: Vec<BindGroup>,
+    uniform_blocks: Vec<UniformBlock>,
+}
+
+impl RawPass {
+    fn read(folder: &Path, part: &ShardPass) -> Result<RawPass, Diagnostic> {
+        let view: PassView = serde_json::from_str(part.manifest.get())
+            .map_err(|_| Diagnostic::from(BuildLayerError::PartDamaged { folder: folder.to_path_buf() }))?;
+        Ok(RawPass { text: part.manifest.clone(), view })
+    }
+}
+
+impl Serialize for RawPass {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        self.text.serialize(serializer)
+    }
+}
+
+impl PassFiles for RawPass {
+    fn packs(&self) -> &[String] {
+        &self.view.packs
+    }
+    fn modules(&self) -> &[ModuleManifest] {
+        &self.view.modules
+    }
+    fn layout(&self) -> &[BindGroup] {
+        &self.view.layout
+    }
+    fn uniform_blocks(&self) -> &[UniformBlock] {
+        &self.view.uniform_blocks
+    }
 }
 
 /// `materials.json`'s compact text from the shards' materials, each in its place: `None` unless
@@ -108,8 +189,7 @@ fn joined_materials(merge: &Merge, count: usize) -> Option<Box<RawValue>> {
 }
 
 /// The first module of a shard's pass whose bytes are missing or not what its hash says.
-fn damaged(folder: &Path, part: &ShardPass) -> Option<Diagnostic> {
-    let manifest = &part.manifest;
+fn damaged(folder: &Path, manifest: &PassView) -> Option<Diagnostic> {
     let packs: Vec<Option<Vec<u8>>> =
         manifest.packs.iter().map(|p| std::fs::read(folder.join(p)).ok()).collect();
     for module in &manifest.modules {

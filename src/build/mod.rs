@@ -253,7 +253,7 @@ fn build_passes(
                 .map(|((work, modules), manifest)| shard::ShardPass {
                     key: plan::pass_key(store, options, work),
                     modules,
-                    manifest,
+                    manifest: emit::json_text(&manifest),
                 })
                 .collect();
             // Every shard has the catalogue; the first writes its part for the merge, and each
@@ -274,7 +274,12 @@ fn build_passes(
         }
         Part::Whole => {
             let materials = emit::all_materials(catalog);
-            emit::finish(store, options, catalogue(), &materials, parts, summary, diagnostics)
+            let mut catalogue = catalogue();
+            let manifest = emit::manifest(std::mem::take(&mut catalogue.shaders), parts);
+            let mut result =
+                emit::finish(store, options, &catalogue, &materials, &manifest, summary, diagnostics);
+            result.manifest = Some(manifest);
+            result
         }
     }
 }

@@ -9,7 +9,6 @@ use super::emit::{CataloguePart, write_failure, write_json};
 use super::noop::inputs_key;
 use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::diagnostics::{self, Diagnostic};
-use crate::manifest::PassManifest;
 use crate::source::SourceStore;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -82,14 +81,15 @@ pub struct ShardRecord {
 }
 
 /// One pass a shard built.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ShardPass {
     /// Identifies the pass across builds (its shader file and place).
     pub key: String,
     /// Its distinct stage modules.
     pub modules: usize,
-    /// Its part of the manifest; its packs are in the shard's folder.
-    pub manifest: PassManifest,
+    /// Its part of the manifest, as JSON text (a merge writes it as it is); its packs are in the
+    /// shard's folder.
+    pub manifest: Box<RawValue>,
 }
 
 impl ShardRecord {

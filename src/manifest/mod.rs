@@ -25,15 +25,17 @@ pub const FILE_NAME: &str = "manifest.json";
 /// and reports them.
 pub const ERRORS_FILE: &str = "errors.txt";
 
-/// `manifest.json`: every built shader, its passes, modules and variants.
+/// `manifest.json`: every built shader, its passes, modules and variants. `P` is how a pass is
+/// held: parsed ([`PassManifest`]), or as the JSON text a shard wrote, which a merge writes as
+/// it is.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Manifest {
+pub struct Manifest<P = PassManifest> {
     /// [`SCHEMA_VERSION`] when written.
     pub schema_version: u32,
     /// The kiln that wrote it.
     pub kiln_version: String,
     /// The built shaders, in catalogue order.
-    pub shaders: Vec<ShaderManifest>,
+    pub shaders: Vec<ShaderManifest<P>>,
 }
 
 impl Manifest {
@@ -63,19 +65,56 @@ impl Manifest {
 
     /// Every pack the manifest points into, with the length it must have at least.
     pub fn packs(&self) -> std::collections::BTreeMap<String, u64> {
-        let mut packs = std::collections::BTreeMap::new();
-        for file in self.stages().flat_map(StageView::files) {
-            let end = file.end();
-            let longest = packs.entry(file.path).or_insert(0);
-            *longest = end.max(*longest);
+        pack_ends(self.passes())
+    }
+}
+
+/// Every pack the passes point into, with the length it must have at least.
+pub fn pack_ends<'a, P: PassFiles + 'a>(
+    passes: impl IntoIterator<Item = &'a P>,
+) -> std::collections::BTreeMap<String, u64> {
+    let mut packs = std::collections::BTreeMap::new();
+    for pass in passes {
+        for file in pass.modules().iter().flat_map(|m| [&m.wgsl, &m.spirv]).flatten() {
+            let Some(path) = pass.packs().get(file.pack) else { continue };
+            let longest = packs.entry(path.clone()).or_insert(0);
+            *longest = (file.offset + file.size).max(*longest);
         }
-        packs
+    }
+    packs
+}
+
+/// What the shader-level parts of a manifest (its properties' places, its packs) are computed
+/// from: a pass's packs, modules, layout and uniform blocks.
+pub trait PassFiles {
+    /// The pack files its modules are in.
+    fn packs(&self) -> &[String];
+    /// Its modules.
+    fn modules(&self) -> &[ModuleManifest];
+    /// Its bind groups.
+    fn layout(&self) -> &[BindGroup];
+    /// Its uniform blocks.
+    fn uniform_blocks(&self) -> &[UniformBlock];
+}
+
+impl PassFiles for PassManifest {
+    fn packs(&self) -> &[String] {
+        &self.packs
+    }
+    fn modules(&self) -> &[ModuleManifest] {
+        &self.modules
+    }
+    fn layout(&self) -> &[BindGroup] {
+        &self.layout
+    }
+    fn uniform_blocks(&self) -> &[UniformBlock] {
+        &self.uniform_blocks
     }
 }
 
 /// One built shader.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct ShaderManifest {
+pub struct ShaderManifest<P = PassManifest> {
     /// Its name (`Shader "name"`).
     pub name: String,
     /// Relative to the project folder, with `/` separators.
@@ -86,7 +125,7 @@ pub struct ShaderManifest {
     /// Its properties, in declaration order.
     pub properties: Vec<PropertyManifest>,
     /// Its built passes, in order.
-    pub passes: Vec<PassManifest>,
+    pub passes: Vec<P>,
 }
 
 fn default_queue() -> i64 {
