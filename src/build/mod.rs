@@ -256,19 +256,9 @@ fn build_passes(
                     manifest: emit::json_text(&manifest),
                 })
                 .collect();
-            // Every shard has the catalogue; the first writes its part for the merge, and each
-            // the materials of the shaders whose first pass it owns (the first, those of shaders
-            // with none), so that no shard serializes them all.
+            // Every shard has the catalogue; the first writes its part for the merge.
             let catalogue = (shard.index == 0).then(catalogue);
-            let mut first_pass_owned: Vec<Option<bool>> = vec![None; catalog.shaders.len()];
-            for (work, owned) in work.iter().zip(&owned) {
-                first_pass_owned[work.shader_index].get_or_insert(*owned);
-            }
-            let materials = emit::materials(catalog)
-                .enumerate()
-                .filter(|(_, (shader, _))| first_pass_owned[*shader].unwrap_or(shard.index == 0))
-                .map(|(position, (_, material))| (position, emit::json_text(&material)))
-                .collect();
+            let materials = shard.materials(catalog, &work, &owned);
             let parts = shard::ShardParts { catalogue, materials, passes };
             shard::finish(store, options, *shard, parts, summary, diagnostics)
         }

@@ -5,9 +5,11 @@
 //! weight (distinct stage requests, [`super::plan::weights`]), heaviest first, each to the shard
 //! with the least so far, so no shard reads, preprocesses or parses another shard's texts.
 
-use super::emit::{CataloguePart, write_failure, write_json};
+use super::emit::{CataloguePart, json_text, materials, write_failure, write_json};
 use super::noop::inputs_key;
+use super::plan::PassWork;
 use super::{BuildOptions, BuildResult, BuildSummary};
+use crate::catalog::Catalog;
 use crate::diagnostics::{self, Diagnostic};
 use crate::source::SourceStore;
 use rayon::prelude::*;
@@ -50,6 +52,28 @@ impl Shard {
             owned[pass] = least == self.index as usize;
         }
         owned
+    }
+}
+
+impl Shard {
+    /// The materials this shard writes: those of the shaders whose first pass it owns (the first
+    /// shard, those of shaders with none), so that no shard serializes them all; each with its
+    /// place in `materials.json`.
+    pub(super) fn materials(
+        &self,
+        catalog: &Catalog,
+        work: &[PassWork],
+        owned: &[bool],
+    ) -> Vec<(usize, Box<RawValue>)> {
+        let mut first_pass_owned: Vec<Option<bool>> = vec![None; catalog.shaders.len()];
+        for (work, owned) in work.iter().zip(owned) {
+            first_pass_owned[work.shader_index].get_or_insert(*owned);
+        }
+        materials(catalog)
+            .enumerate()
+            .filter(|(_, (shader, _))| first_pass_owned[*shader].unwrap_or(self.index == 0))
+            .map(|(position, (_, material))| (position, json_text(&material)))
+            .collect()
     }
 }
 
