@@ -49,6 +49,8 @@ pub enum ProjectError {
     NotAMaterial { path: PathBuf, message: String },
     #[error("cannot write `{path}`: {source}")]
     Write { path: PathBuf, source: std::io::Error },
+    #[error("`{}` is not a .shader file: give the shader that holds the pass", .0.display())]
+    NotAShader(PathBuf),
     #[error("cannot merge: {0}")]
     Shards(#[from] crate::build::shard::ShardError),
 }
@@ -169,6 +171,9 @@ fn requested_variant(
     store: &mut SourceStore,
     request: &VariantRequest,
 ) -> Result<(Option<Requested>, Vec<Diagnostic>), ProjectError> {
+    if request.shader.extension().is_none_or(|e| e != "shader") {
+        return Err(ProjectError::NotAShader(request.shader.clone()));
+    }
     let file = store.load(&request.shader)?;
     let mut includes = Includes::new(include_config(std::slice::from_ref(&request.shader)));
     let input = CatalogInput { shaders: vec![file], ..CatalogInput::default() };
@@ -561,6 +566,10 @@ fn load_given(store: &mut SourceStore, paths: &[PathBuf], mode: &BuildMode) -> R
     let (materials, found) = load_files(store, &workspace.materials);
     diagnostics.extend(found);
     let mut input = workspace.catalog_input(shaders, materials);
+    // A usage log named on the command line and not there is a mistake in the command.
+    if let Some(missing) = mode.variant_logs.iter().find(|path| !path.exists()) {
+        return Err(ProjectError::NotFound(missing.clone()));
+    }
     for path in workspace.variant_logs.iter().chain(&mode.variant_logs) {
         match store.load(path) {
             Ok(file) => input.variant_logs.push(file),

@@ -42,6 +42,9 @@ const NAGA_VERSION: &str = "naga 30";
 /// same version filled is not taken for current.
 const COMPILER_REVISION: u32 = 2;
 
+/// The most worker threads a build starts.
+pub const MAX_THREADS: usize = 1024;
+
 /// Which variants of a shader no material uses are compiled.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum VariantSelection {
@@ -198,7 +201,9 @@ pub fn merge(store: &mut SourceStore, options: &BuildOptions, shards: &Merge) ->
 /// be made), its summary timed.
 fn timed_in_pool(options: &BuildOptions, job: impl FnOnce() -> BuildResult + Send) -> BuildResult {
     let started = Instant::now();
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(options.threads.unwrap_or(0)).build();
+    // Far more threads than cores only costs memory; a mistyped count must not exhaust it.
+    let threads = options.threads.unwrap_or(0).min(MAX_THREADS);
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build();
     let mut result = match pool {
         Ok(pool) => pool.install(job),
         Err(_) => job(),

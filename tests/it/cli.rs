@@ -111,3 +111,59 @@ fn a_file_that_exists_but_cannot_be_read_is_named_with_the_system_s_reason() {
     assert!(stderr.starts_with("error[K0002]: cannot read `fixtures`: "), "{stderr}");
     assert!(!out.path().join("manifest.json").exists(), "nothing is written");
 }
+
+#[test]
+fn mistakes_in_the_command_exit_2_with_the_reason_and_never_hang() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("out");
+    let out = out.to_str().expect("utf-8");
+    let cases: [(&[&str], &str); 5] = [
+        (&["build", "fixtures/project", "--output", out, "--threads", "100000"], "100000"),
+        (&["watch", "no/such/project"], "`no/such/project` does not exist"),
+        (
+            &["cache", "stats", "fixtures/project", "--cache-dir", "no/such/cache"],
+            "no cache at `no/such/cache`",
+        ),
+        (
+            &["build", "fixtures/project", "--output", out, "--variants-from", "missing.jsonl"],
+            "`missing.jsonl` does not exist",
+        ),
+        (
+            &["reflect", "fixtures/project/materials/ComplexPlain.mat"],
+            "`fixtures/project/materials/ComplexPlain.mat` is not a .shader file",
+        ),
+    ];
+    for (args, expected) in cases {
+        // `kiln` waits for nothing here: a hang would fail the test by its timeout below.
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kiln"))
+            .args(args)
+            .current_dir(crate::support::root())
+            .stderr(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::null())
+            .spawn()
+            .expect("kiln runs");
+        let started = std::time::Instant::now();
+        while child.try_wait().expect("waits").is_none() {
+            if started.elapsed() > std::time::Duration::from_secs(60) {
+                let _ = child.kill();
+                panic!("`kiln {}` did not end", args.join(" "));
+            }
+            std::thread::sleep(std::time::Duration::from_millis(20));
+        }
+        let output = child.wait_with_output().expect("ends");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(2), "kiln {}: {stderr}", args.join(" "));
+        assert!(stderr.contains(expected), "kiln {}: {stderr}", args.join(" "));
+    }
+    assert!(!dir.path().join("out").exists(), "nothing written");
+}
+
+#[test]
+fn the_summary_says_where_the_output_went() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("out");
+    let run = kiln(&["build", "fixtures/project", "--output", out.to_str().expect("utf-8")]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains(&format!("bytes written to {} in ", out.display())), "{stderr}");
+}

@@ -41,9 +41,9 @@ pub enum Command {
     Build {
         /// The project folder (default: the bundled example project).
         project: Option<PathBuf>,
-        /// Worker threads (default: all cores).
-        #[arg(long)]
-        threads: Option<usize>,
+        /// Worker threads, 1 to 1024 (default: all cores).
+        #[arg(long, value_parser = clap::value_parser!(u16).range(1..=1024))]
+        threads: Option<u16>,
         /// Write here instead of the project's `output` folder.
         #[arg(long)]
         output: Option<PathBuf>,

@@ -14,7 +14,7 @@ use std::process::ExitCode;
 /// `kiln build`.
 pub fn build(
     project: Option<PathBuf>,
-    threads: Option<usize>,
+    threads: Option<u16>,
     output: Option<PathBuf>,
     pretty: bool,
     variants_from: Vec<PathBuf>,
@@ -23,7 +23,7 @@ pub fn build(
 ) -> ExitCode {
     let mode = BuildMode {
         output,
-        threads,
+        threads: threads.map(usize::from),
         pretty_manifest: pretty,
         variant_logs: variants_from,
         cache_dir,
@@ -55,7 +55,7 @@ pub fn merge(output: PathBuf, shards: Vec<PathBuf>, project: Option<PathBuf>, pr
         Ok((result, mut problems)) => {
             problems.extend(result.diagnostics);
             report(&store, &problems);
-            print_summary(&result.summary, true, diagnostics::has_errors(&problems));
+            print_summary(&result.summary, Some(&result.output), diagnostics::has_errors(&problems));
             if !diagnostics::has_errors(&problems) {
                 eprintln!("merged {} shards: every module came from them, naga compiled none", shards.len());
             }
@@ -111,12 +111,17 @@ fn run(project: Option<PathBuf>, mode: BuildMode, format: Format, part: Part) ->
         return exit_code(&problems);
     }
     report(&store, &problems);
-    print_summary(&result.summary, mode.write, diagnostics::has_errors(&problems));
+    print_summary(
+        &result.summary,
+        mode.write.then_some(result.output.as_path()),
+        diagnostics::has_errors(&problems),
+    );
     exit_leaving(exit_code(&problems), (result.manifest, store))
 }
 
 /// The closing line of a build (and the note about skipped shaders).
-fn print_summary(s: &kiln::build::BuildSummary, write: bool, errors: bool) {
+fn print_summary(s: &kiln::build::BuildSummary, written_to: Option<&std::path::Path>, errors: bool) {
+    let write = written_to.is_some();
     let verb = if write { "built" } else { "checked" };
     let mut line = format!(
         "{verb} {} shaders, {} passes, {} variants: {} stage modules ({} compiled, {} reused from cache",
@@ -126,8 +131,8 @@ fn print_summary(s: &kiln::build::BuildSummary, write: bool, errors: bool) {
         line.push_str(&format!(", {} shared between passes", s.shared));
     }
     line.push(')');
-    if write {
-        line.push_str(&format!(", {} bytes written", s.bytes_written));
+    if let Some(output) = written_to {
+        line.push_str(&format!(", {} bytes written to {}", s.bytes_written, output.display()));
     }
     line.push_str(&format!(" in {:.2} s", s.elapsed.as_secs_f64()));
     if errors {
@@ -155,9 +160,11 @@ fn watch_loop(project: PathBuf, mode: &BuildMode) -> ExitCode {
             Ok((result, mut problems)) => {
                 problems.extend(result.diagnostics);
                 report(&store, &problems);
-                print_summary(&result.summary, true, diagnostics::has_errors(&problems));
+                print_summary(&result.summary, Some(&result.output), diagnostics::has_errors(&problems));
                 result.output
             }
+            // The first build cannot run at all (no such project): nothing to watch.
+            Err(error) if watched.is_empty() => return host_failure(&error.to_string()),
             Err(error) => {
                 report(&store, &[kiln::diagnostics::Diagnostic::host_failure(error.to_string())]);
                 PathBuf::new()

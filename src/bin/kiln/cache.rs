@@ -29,6 +29,9 @@ pub fn run(command: CacheCommand) -> ExitCode {
             project.join(kiln::config::FILE_NAME).display()
         ));
     };
+    if !dir.is_dir() {
+        return host_failure(&format!("no cache at `{}`: the folder does not exist", dir.display()));
+    }
     let outcome = match command {
         CacheCommand::Stats { .. } => kiln::store::shared::cache_stats(&dir)
             .map_err(|e| format!("cannot read `{}`: {e}", dir.display()))
