@@ -3,9 +3,11 @@
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 
+/// The command line.
 #[derive(Parser)]
 #[command(name = "kiln", version, about = "Shader-variant compiler and keyword system for WGSL")]
 pub struct Cli {
+    /// What to do.
     #[command(subcommand)]
     pub command: Command,
 }
@@ -17,6 +19,7 @@ pub enum Command {
         /// Project folders (with their kiln.toml, if any), `.shader` or `.mat` files
         /// (default: the bundled example project).
         paths: Vec<PathBuf>,
+        /// `text` for people, `json` for tools (diagnostics included).
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
         /// Also list each material's resolved keywords and render state.
@@ -34,6 +37,7 @@ pub enum Command {
         /// The variant's keywords, comma-separated. Sets without `_` default to their first keyword.
         #[arg(long, value_delimiter = ',')]
         keywords: Vec<String>,
+        /// The stage whose text to print.
         #[arg(long, value_enum, default_value_t = StageArg::Fragment)]
         stage: StageArg,
     },
@@ -74,6 +78,7 @@ pub enum Command {
         /// The project (default: the folder the shards were built from).
         #[arg(long)]
         project: Option<PathBuf>,
+        /// Write `manifest.json` indented (the shards must have been built with `--pretty` too).
         #[arg(long)]
         pretty: bool,
     },
@@ -86,17 +91,22 @@ pub enum Command {
     Watch {
         /// The project folder (default: the bundled example project).
         project: Option<PathBuf>,
+        /// Write here instead of the project's `output` folder.
         #[arg(long)]
         output: Option<PathBuf>,
+        /// Also build the variants a usage log names. Repeatable.
         #[arg(long = "variants-from", value_name = "FILE")]
         variants_from: Vec<PathBuf>,
+        /// A module cache shared by builds, processes and machines.
         #[arg(long, value_name = "DIR")]
         cache_dir: Option<PathBuf>,
     },
     /// Validate without writing anything: used variants, and for shaders no material uses, the
     /// default variant and each keyword on its own. Exit 1 on any error.
     Check {
+        /// The project folder (default: the bundled example project).
         project: Option<PathBuf>,
+        /// `text` for people, `json` for tools.
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,
         /// Check every variant of shaders no material uses (refused above 4096 per pass).
@@ -106,9 +116,12 @@ pub enum Command {
     /// Print one variant's reflection as JSON: the pass's bind group layout, the stage modules'
     /// inputs, outputs and bindings, and the uniform block layouts.
     Reflect {
+        /// The `.shader` file.
         shader: PathBuf,
+        /// Pass name (case-insensitive) or 0-based index; default: the first pass with a program.
         #[arg(long)]
         pass: Option<String>,
+        /// The variant's keywords, comma-separated. Sets without `_` default to their first keyword.
         #[arg(long, value_delimiter = ',')]
         keywords: Vec<String>,
     },
@@ -126,6 +139,7 @@ pub enum CacheCommand {
     Stats {
         /// The project whose kiln.toml names the cache (default: the bundled example project).
         project: Option<PathBuf>,
+        /// The cache folder (default: `KILN_CACHE_DIR`, then the project's `cache_dir`).
         #[arg(long, value_name = "DIR")]
         cache_dir: Option<PathBuf>,
     },
@@ -134,8 +148,10 @@ pub enum CacheCommand {
     Gc {
         /// The project whose kiln.toml names the cache (default: the bundled example project).
         project: Option<PathBuf>,
+        /// The most the cache may hold: bytes, or a number and K, M, G or T.
         #[arg(long, value_name = "SIZE")]
         max_size: String,
+        /// The cache folder (default: `KILN_CACHE_DIR`, then the project's `cache_dir`).
         #[arg(long, value_name = "DIR")]
         cache_dir: Option<PathBuf>,
     },
@@ -159,8 +175,11 @@ pub enum MaterialCommand {
     },
     /// Apply a preset to a material, keeping its other values and comments.
     Preset {
+        /// The `.mat` file to change.
         path: PathBuf,
+        /// Opaque, Clip, Fade or Transparent.
         preset: String,
+        /// The project to find the shader in (default: the nearest folder with a kiln.toml).
         #[arg(long)]
         project: Option<PathBuf>,
     },
@@ -176,4 +195,32 @@ pub enum StageArg {
 pub enum Format {
     Text,
     Json,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    /// Every command and every argument says what it is in `--help`.
+    #[test]
+    fn every_command_and_argument_has_help() {
+        fn visit(command: &clap::Command, path: &str, missing: &mut Vec<String>) {
+            for argument in command.get_arguments() {
+                let builtin = ["help", "version"].contains(&argument.get_id().as_str());
+                if !builtin && argument.get_help().is_none() {
+                    missing.push(format!("{path} {}", argument.get_id()));
+                }
+            }
+            for sub in command.get_subcommands() {
+                if sub.get_name() != "help" && sub.get_about().is_none() {
+                    missing.push(format!("{path} {}", sub.get_name()));
+                }
+                visit(sub, &format!("{path} {}", sub.get_name()), missing);
+            }
+        }
+        let mut missing = Vec::new();
+        visit(&Cli::command(), "kiln", &mut missing);
+        assert!(missing.is_empty(), "no help for: {missing:?}");
+    }
 }
