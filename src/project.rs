@@ -560,6 +560,9 @@ struct Given {
 
 fn load_given(store: &mut SourceStore, paths: &[PathBuf], mode: &BuildMode) -> Result<Given, ProjectError> {
     let (workspace, mut diagnostics) = open_workspace(store, paths)?;
+    if workspace.shaders.is_empty() {
+        diagnostics.push(no_shaders(paths, mode.write));
+    }
     let includes = Includes::new(workspace.include.clone().unwrap_or_else(|| include_config(paths)));
     let (shaders, found) = load_files(store, &workspace.shaders);
     diagnostics.extend(found);
@@ -593,6 +596,19 @@ fn load_given(store: &mut SourceStore, paths: &[PathBuf], mode: &BuildMode) -> R
         given_files: store.files_read().count(),
     };
     Ok(Given { workspace, includes, input, diagnostics, options })
+}
+
+/// A project without shaders: a warning for a build, an error for a check, so that CI pointed at
+/// the wrong folder fails.
+fn no_shaders(paths: &[PathBuf], build: bool) -> Diagnostic {
+    let shown: Vec<String> = paths.iter().map(|p| format!("`{}`", p.display())).collect();
+    let message = format!("no shaders in {}", shown.join(", "));
+    let diagnostic =
+        if build { Diagnostic::warning("K0009", message) } else { Diagnostic::error("K0009", message) };
+    diagnostic.help(
+        "give the project folder (kiln looks for `.shader` files in it, or in the folders its kiln.toml's \
+         `shaders` names) or `.shader` files",
+    )
 }
 
 /// `kiln merge`: checks the shard outputs against each other, then writes into `mode.output` the

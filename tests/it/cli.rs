@@ -167,3 +167,19 @@ fn the_summary_says_where_the_output_went() {
     assert_eq!(run.status.code(), Some(0), "{stderr}");
     assert!(stderr.contains(&format!("bytes written to {} in ", out.display())), "{stderr}");
 }
+
+#[test]
+fn a_project_without_shaders_fails_a_check_and_warns_a_build() {
+    let check = kiln(&["check", "fixtures/empty"]);
+    let stderr = String::from_utf8_lossy(&check.stderr);
+    assert_eq!(check.status.code(), Some(1), "{stderr}");
+    let diagnostics: String =
+        stderr.lines().take_while(|l| !l.starts_with("checked ")).map(|l| format!("{l}\n")).collect();
+    expect_test::expect_file![crate::support::root().join("tests/golden/cli/no_shaders.stderr")]
+        .assert_eq(&diagnostics);
+    let dir = tempfile::tempdir().expect("temp dir");
+    let build = kiln(&["build", "fixtures/empty", "--output", dir.path().to_str().expect("utf-8")]);
+    let stderr = String::from_utf8_lossy(&build.stderr);
+    assert_eq!(build.status.code(), Some(0), "{stderr}");
+    assert!(stderr.starts_with("warning[K0009]: no shaders in `fixtures/empty`"), "{stderr}");
+}
