@@ -44,6 +44,12 @@ pub enum RuntimeError {
     )]
     /// The keywords name a variant that was not built.
     MissingVariant { shader: String, pass: usize, keywords: Vec<String> },
+    /// A keyword the pass does not declare.
+    #[error(
+        "`{keyword}` is not a keyword of `{shader}` pass {pass}{}",
+        suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default()
+    )]
+    UnknownKeyword { shader: String, pass: usize, keyword: String, suggestion: Option<String> },
     /// No material of this name was built.
     #[error("no material `{0}` in the build")]
     NoMaterial(String),
@@ -187,6 +193,16 @@ impl Library {
         keywords: &[&str],
     ) -> Result<&VariantManifest, RuntimeError> {
         let (s, p) = self.pass_position(shader, pass)?;
+        // A keyword the pass does not have is a typo, not a variant to build.
+        let known = &self.manifest.shaders[s].passes[p].keywords;
+        if let Some(unknown) = keywords.iter().find(|k| !known.iter().any(|known| known == *k)) {
+            return Err(RuntimeError::UnknownKeyword {
+                shader: shader.to_string(),
+                pass,
+                keyword: unknown.to_string(),
+                suggestion: crate::material::closest(unknown, known.iter().map(String::as_str)),
+            });
+        }
         let wanted: BTreeSet<String> = keywords.iter().map(|k| k.to_string()).collect();
         let found = self.variants[&(s, p)].get(&wanted);
         let missing = || RuntimeError::MissingVariant {

@@ -378,3 +378,15 @@ fn a_logged_missing_variant_is_built_by_variants_from() {
         "{stderr}"
     );
 }
+
+#[test]
+fn a_misspelt_keyword_is_named_with_the_one_meant_not_a_missing_variant() {
+    let output = tempfile::tempdir().expect("temp dir");
+    built(&root().join("fixtures/runtime"), output.path());
+    let library = Library::open(output.path()).expect("opens");
+    let error = library.variant("Test/Blend", 0, &["_TINR"]).expect_err("a typo");
+    assert_eq!(error.to_string(), "`_TINR` is not a keyword of `Test/Blend` pass 0 (did you mean `_TINT`?)");
+    // A real keyword whose variant was not built is still a missing variant.
+    let error = library.variant("Test/Blend", 0, &["_TINT", "_PREMULTIPLY_ALPHA"]).expect_err("not built");
+    assert!(matches!(error, RuntimeError::MissingVariant { .. }), "{error}");
+}
