@@ -105,7 +105,7 @@ impl UsageLog {
 }
 
 /// The variant with exactly these keywords, looked up once and recorded in the usage log (when
-/// there is one) as found or missing.
+/// there is one) as found or missing; a misspelt name is not recorded.
 fn logged_variant<'l>(
     library: &'l Library,
     usage: &mut Option<UsageLog>,
@@ -114,8 +114,12 @@ fn logged_variant<'l>(
     keywords: &[&str],
 ) -> Result<&'l crate::manifest::VariantManifest, RuntimeError> {
     let found = library.variant(shader, pass, keywords);
-    if let Some(log) = usage {
-        log.record(shader, pass, keywords, found.is_err());
+    // A typo (an unknown shader, pass or keyword) is no variant to build later: not logged.
+    let missing = matches!(found, Err(RuntimeError::MissingVariant { .. }));
+    if let Some(log) = usage
+        && (found.is_ok() || missing)
+    {
+        log.record(shader, pass, keywords, missing);
     }
     found
 }
