@@ -67,6 +67,19 @@ pub struct ProgramListing {
     pub possible_variants: Option<u128>,
     /// The variants materials need (all of them for an always-included shader), in key order.
     pub used_variants: Vec<VariantListing>,
+    /// The multi_compile sets `global_keywords` in kiln.toml narrows to one option: each set's
+    /// keywords and the one built.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub fixed_by_global_keywords: Vec<FixedSet>,
+}
+
+/// A multi_compile set the global keyword state narrows to one option.
+#[derive(Debug, Serialize)]
+pub struct FixedSet {
+    /// The set's keywords (`_` for none).
+    pub keywords: Vec<String>,
+    /// The one built.
+    pub built: String,
 }
 
 /// One variant materials use.
@@ -127,18 +140,21 @@ pub fn list_shaders(
     input: &CatalogInput,
 ) -> (Listing, Vec<Diagnostic>) {
     let (catalog, diagnostics) = catalog(store, includes, input);
-    (listing(store, &catalog), diagnostics)
+    let global: Option<Vec<&str>> =
+        input.global_keywords.as_ref().map(|g| g.iter().map(|k| k.value.as_str()).collect());
+    (listing(store, &catalog, global.as_deref()), diagnostics)
 }
 
-/// The listing of a catalogue.
-pub fn listing(store: &SourceStore, catalog: &Catalog) -> Listing {
+/// The listing of a catalogue built under the global keyword state `global` (when the project
+/// sets one).
+pub fn listing(store: &SourceStore, catalog: &Catalog, global: Option<&[&str]>) -> Listing {
     let shaders = catalog
         .shaders
         .iter()
         .map(|s| ShaderListing {
             name: s.shader.name.value.clone(),
             file: store.name(s.file).to_string(),
-            passes: s.passes.iter().map(|p| pass_listing(catalog, p)).collect(),
+            passes: s.passes.iter().map(|p| pass_listing(catalog, p, global)).collect(),
         })
         .collect();
     let materials = catalog
@@ -149,7 +165,7 @@ pub fn listing(store: &SourceStore, catalog: &Catalog) -> Listing {
     Listing { shaders, materials }
 }
 
-fn pass_listing(catalog: &Catalog, pass: &CatalogPass) -> PassListing {
+fn pass_listing(catalog: &Catalog, pass: &CatalogPass, global: Option<&[&str]>) -> PassListing {
     PassListing {
         subshader: pass.subshader,
         pass: pass.index,
@@ -171,6 +187,9 @@ fn pass_listing(catalog: &Catalog, pass: &CatalogPass) -> PassListing {
                     materials: v.materials.iter().map(|&m| catalog.materials[m].name.clone()).collect(),
                 })
                 .collect();
+            let fixed = global.map(|global| keywords.fixed_by_global(global)).unwrap_or_default();
+            listing.fixed_by_global_keywords =
+                fixed.into_iter().map(|(keywords, built)| FixedSet { keywords, built }).collect();
             listing
         }),
     }
@@ -219,6 +238,7 @@ fn program_from_pragmas(language: &'static str, pragmas: &ProgramPragmas) -> Pro
         keyword_sets: pragmas.keyword_sets.iter().map(set_listing).collect(),
         possible_variants: pragmas.possible_variants(),
         used_variants: Vec::new(),
+        fixed_by_global_keywords: Vec::new(),
     }
 }
 
@@ -270,6 +290,14 @@ pub fn render_text(listing: &Listing) -> String {
             }
             let count = program.possible_variants.map_or("more than 2^128".to_string(), |n| n.to_string());
             let _ = writeln!(out, "    variants: used {} of {count} possible", program.used_variants.len());
+            for set in &program.fixed_by_global_keywords {
+                let _ = writeln!(
+                    out,
+                    "      multi_compile {} built as `{}` only: kiln.toml's global_keywords",
+                    set.keywords.join(" "),
+                    set.built
+                );
+            }
             for variant in &program.used_variants {
                 let keywords = if variant.keywords.is_empty() {
                     "(no keywords)".to_string()

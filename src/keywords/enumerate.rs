@@ -158,6 +158,22 @@ impl PassKeywords {
         }
     }
 
+    /// The multi_compile sets the global keyword state narrows to one option, each as its
+    /// keywords (`_` for none) and the one built: what `kiln list` explains its count with.
+    pub fn fixed_by_global(&self, global: &[&str]) -> Vec<(Vec<String>, String)> {
+        self.indices(KeywordKind::MultiCompile)
+            .into_iter()
+            .filter_map(|set| {
+                let options = &self.sets[set].options;
+                let chosen = self.chosen(set, global).filter(|_| options.len() > 1)?;
+                let name = |o: &crate::shaderlab::pragma::KeywordOption| {
+                    o.keyword.clone().unwrap_or_else(|| "_".into())
+                };
+                Some((options.iter().map(name).collect(), name(&options[chosen])))
+            })
+            .collect()
+    }
+
     /// The variants the materials need (each given as its enabled keywords), or every variant
     /// when `everything` (a shader the project always includes). Sorted by their choices. More
     /// than [`MAX_VARIANTS_PER_PASS`] is refused with the count it would have been, before
