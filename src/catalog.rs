@@ -219,11 +219,15 @@ pub fn catalog(
     let store_view: &SourceStore = store;
     let parsed: Vec<_> =
         input.shaders.par_iter().map(|&file| (file, parse_shader(store_view, file))).collect();
+    let mut failed = Vec::new();
     for (file, parsed) in parsed {
         diagnostics.extend(parsed.diagnostics);
-        if let Some(shader) = parsed.shader {
-            let passes = passes(store, includes, &shader, &mut diagnostics);
-            shaders.push(CatalogShader { file, shader, passes });
+        match parsed.shader {
+            Some(shader) => {
+                let passes = passes(store, includes, &shader, &mut diagnostics);
+                shaders.push(CatalogShader { file, shader, passes });
+            }
+            None => failed.extend(crate::shaderlab::declared_name(store.text(file))),
         }
     }
 
@@ -242,7 +246,8 @@ pub fn catalog(
                 ShaderEntry::from_shader(&s.shader, &sets)
             })
             .collect(),
-    );
+    )
+    .with_failed(failed);
     // Materials are many and independent: resolved in parallel, kept in their order.
     let store_view: &SourceStore = store;
     let resolved: Vec<(Option<Material>, Vec<Diagnostic>)> =

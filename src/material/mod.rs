@@ -164,6 +164,9 @@ impl ShaderEntry {
 pub struct ShaderEntries {
     entries: Vec<ShaderEntry>,
     by_name: std::collections::HashMap<String, usize>,
+    /// Shaders whose files did not parse: their materials are not checked (the file's own errors
+    /// say what is wrong; "unknown shader" for each of its materials would only repeat it).
+    failed: std::collections::HashSet<String>,
 }
 
 impl ShaderEntries {
@@ -181,7 +184,13 @@ impl ShaderEntries {
         for (index, entry) in entries.iter().enumerate() {
             by_name.entry(entry.name.clone()).or_insert(index);
         }
-        ShaderEntries { entries, by_name }
+        ShaderEntries { entries, by_name, failed: Default::default() }
+    }
+
+    /// The same, knowing the names of shaders whose files did not parse.
+    pub fn with_failed(mut self, failed: impl IntoIterator<Item = String>) -> ShaderEntries {
+        self.failed.extend(failed);
+        self
     }
 }
 
@@ -225,6 +234,9 @@ fn resolve(
         }
     };
     let shader_name = raw.shader.get_ref();
+    if shaders.failed.contains(shader_name) && !shaders.by_name.contains_key(shader_name.as_str()) {
+        return None;
+    }
     let Some(&index) = shaders.by_name.get(shader_name.as_str()) else {
         let suggestion = closest(shader_name, shaders.entries.iter().map(|s| s.name.as_str()));
         errors.push(MaterialError::UnknownShader {

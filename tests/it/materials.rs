@@ -320,3 +320,32 @@ fn material_new_without_kiln_toml_finds_shaders_from_the_current_folder() {
     assert!(stderr.contains("no shader named `T/Layout` in the project at"), "{stderr}");
     assert!(stderr.contains(folder.file_name().and_then(|n| n.to_str()).expect("name")), "{stderr}");
 }
+
+#[test]
+fn a_shader_that_does_not_parse_is_reported_once_not_again_by_each_of_its_materials() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let shaders = crate::support::root().join("fixtures/project/shaders");
+    let unlit = std::fs::read_to_string(shaders.join("Unlit.shader")).expect("shader");
+    // A syntax error after the name: the file does not parse.
+    let broken = unlit.replacen("Properties {", "Properties { {", 1);
+    assert_ne!(broken, unlit);
+    std::fs::write(dir.path().join("Unlit.shader"), broken).expect("write");
+    std::fs::copy(shaders.join("UnlitPass.wgsl"), dir.path().join("UnlitPass.wgsl")).expect("copy");
+    for name in ["A", "B"] {
+        std::fs::write(dir.path().join(format!("{name}.mat")), "shader = \"Custom RP/Unlit\"\n")
+            .expect("write");
+    }
+    let run = crate::support::kiln(&["check", dir.path().to_str().expect("utf-8")]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("Unlit.shader:"), "the shader's own error: {stderr}");
+    assert!(!stderr.contains("K0502"), "no \"unknown shader\" for its materials: {stderr}");
+    // A material naming a shader that does not exist at all is still reported.
+    std::fs::write(dir.path().join("C.mat"), "shader = \"Custom RP/Unlt\"\n").expect("write");
+    let run = crate::support::kiln(&["check", dir.path().to_str().expect("utf-8")]);
+    assert!(
+        String::from_utf8_lossy(&run.stderr).contains("K0502"),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+}
