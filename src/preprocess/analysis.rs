@@ -4,7 +4,7 @@
 use super::BUILTIN_MACROS;
 use super::error::PreprocessError;
 use super::include::{Includes, Program};
-use super::scan::{BranchKind, Condition, Item, identifiers};
+use super::scan::{BranchKind, Condition, Item, Target, identifiers};
 use crate::diagnostics::Diagnostic;
 use crate::shaderlab::pragma::{KeywordKind, PragmaSource, ProgramPragmas};
 use crate::source::{SourceStore, Span};
@@ -41,6 +41,13 @@ pub(super) fn analyze_keywords(
     pragmas: &ProgramPragmas,
 ) -> Vec<Diagnostic> {
     let reachable = includes.reachable(program, false);
+    // An include that was not found (its own error) may test any keyword.
+    let all_loaded = reachable.iter().all(|&id| {
+        includes.units[id]
+            .items
+            .iter()
+            .all(|item| !matches!(item, Item::Include { target: Target::Failed(_), .. }))
+    });
     let counted: HashSet<usize> = includes.reachable(program, true).into_iter().collect();
     let mut tested: HashSet<&str> = HashSet::new();
     let mut defined: HashSet<&str> = BUILTIN_MACROS.into_iter().collect();
@@ -81,7 +88,9 @@ pub(super) fn analyze_keywords(
             let Some(keyword) = option.keyword.as_deref() else { continue };
             // Dynamic-branch keywords are tested by `if` at run time, not by the preprocessor.
             let first_declaration = declared.insert(keyword);
-            if first_declaration && set.kind != KeywordKind::DynamicBranch && !tested.contains(keyword) {
+            // With an include missing, what it tests is unknown: not reported as untested.
+            let untested = all_loaded && !tested.contains(keyword);
+            if first_declaration && set.kind != KeywordKind::DynamicBranch && untested {
                 warnings.push(PreprocessError::KeywordNeverTested {
                     span: option.span,
                     keyword: keyword.to_string(),
