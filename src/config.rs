@@ -72,10 +72,36 @@ pub fn parse_config(store: &SourceStore, file: FileId) -> (ProjectConfig, Vec<Di
         Err(error) => {
             let span = Span::new(file, error.span().unwrap_or(0..0));
             let message = error.message().trim().trim_end_matches('.').to_string();
+            // serde lists the fields after an unknown one; said once, in the help, with the closest.
+            let (message, unknown) = match message.split_once(", expected one of") {
+                Some((head, _)) => {
+                    let field = head.strip_prefix("unknown field `").and_then(|f| f.strip_suffix('`'));
+                    (head.to_string(), field.map(str::to_string))
+                }
+                None => (message, None),
+            };
+            let suggestion = unknown
+                .and_then(|field| crate::material::closest(&field, FIELDS.iter().copied()))
+                .map(|near| format!("did you mean `{near}`? "))
+                .unwrap_or_default();
             let diagnostic = Diagnostic::error("K0003", "invalid `kiln.toml`")
                 .at(span, message)
-                .help("fields are shaders, materials, include_paths, output, backends, always_include, global_keywords, strict, variant_logs and cache_dir (docs/project.md)");
+                .help(format!("{suggestion}fields are {} (docs/project.md)", FIELDS.join(", ")));
             (ProjectConfig::default(), vec![diagnostic])
         }
     }
 }
+
+/// The fields of `kiln.toml`, as a message lists them.
+const FIELDS: &[&str] = &[
+    "shaders",
+    "materials",
+    "include_paths",
+    "output",
+    "backends",
+    "always_include",
+    "global_keywords",
+    "strict",
+    "variant_logs",
+    "cache_dir",
+];

@@ -560,7 +560,8 @@ struct Given {
 
 fn load_given(store: &mut SourceStore, paths: &[PathBuf], mode: &BuildMode) -> Result<Given, ProjectError> {
     let (workspace, mut diagnostics) = open_workspace(store, paths)?;
-    if workspace.shaders.is_empty() {
+    // Not after a broken kiln.toml: its error says why nothing was found.
+    if workspace.shaders.is_empty() && !diagnostics::has_errors(&diagnostics) {
         diagnostics.push(no_shaders(paths, mode.write));
     }
     let includes = Includes::new(workspace.include.clone().unwrap_or_else(|| include_config(paths)));

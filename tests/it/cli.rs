@@ -183,3 +183,15 @@ fn a_project_without_shaders_fails_a_check_and_warns_a_build() {
     assert_eq!(build.status.code(), Some(0), "{stderr}");
     assert!(stderr.starts_with("warning[K0009]: no shaders in `fixtures/empty`"), "{stderr}");
 }
+
+#[test]
+fn a_misspelt_kiln_toml_field_is_named_with_the_one_meant_and_nothing_follows_it() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    std::fs::write(dir.path().join("kiln.toml"), "shaderz = [\"shaders\"]\n").expect("write");
+    let run = kiln(&["check", dir.path().to_str().expect("utf-8")]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("unknown field `shaderz`\n"), "the field list once, in the help: {stderr}");
+    assert!(stderr.contains("= help: did you mean `shaders`? fields are shaders, materials"), "{stderr}");
+    assert!(!stderr.contains("K0009"), "no follow-on \"no shaders\": {stderr}");
+}
