@@ -84,7 +84,8 @@ pub struct Library {
 
 impl Library {
     /// The build in an output folder (`kiln build`'s, or `kiln watch`'s).
-    pub fn open(output: &Path) -> Result<Library, RuntimeError> {
+    pub fn open(output: impl AsRef<Path>) -> Result<Library, RuntimeError> {
+        let output = output.as_ref();
         let read = |name: &str| {
             let path = output.join(name);
             std::fs::read(&path).map_err(|e| RuntimeError::Read { path, message: e.to_string() })

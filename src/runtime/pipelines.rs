@@ -168,7 +168,8 @@ impl Runtime {
     }
 
     /// A runtime over the build in an output folder, which [`Runtime::reload`] watches.
-    pub fn open(device: &wgpu::Device, output: &Path) -> Result<Runtime, RuntimeError> {
+    pub fn open(device: &wgpu::Device, output: impl AsRef<Path>) -> Result<Runtime, RuntimeError> {
+        let output = output.as_ref();
         let hash = manifest_hash(output)?;
         let mut runtime = Runtime::new(device, Library::open(output)?);
         runtime.source = Some((output.to_path_buf(), hash));
