@@ -1,5 +1,5 @@
 //! Where a pass's fronts (the resources a stage text declares) and stage modules come from. Each
-//! is asked of an ordered list of sources until one has it; naga, last, always answers. Whole
+//! is asked of an ordered list of sources until one has it; when none has, naga makes it. Whole
 //! builds and shards compile alike (a shard is a whole build of the passes it owns), so there is
 //! one list of each; a merge compiles nothing and has none.
 //!
@@ -55,18 +55,18 @@ pub(super) trait ModuleSource: Sync {
     fn module(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>>;
 }
 
-/// Fronts, in the order asked.
-pub(super) const FRONTS: &[&dyn FrontSource] = &[&OutputCache, &SharedCache, &OtherPasses, &Naga];
+/// Where fronts are looked for, in order, before naga parses the text.
+pub(super) const FRONTS: &[&dyn FrontSource] = &[&OutputCache, &SharedCache, &OtherPasses];
 
-/// Stage modules, in the order asked.
-pub(super) const MODULES: &[&dyn ModuleSource] = &[&OutputCache, &SharedCache, &OtherPasses, &Naga];
+/// Where stage modules are looked for, in order, before naga compiles them.
+pub(super) const MODULES: &[&dyn ModuleSource] = &[&OutputCache, &SharedCache, &OtherPasses];
 
-/// The first front a source has.
+/// The first front a source has, or naga's parse.
 pub(super) fn front(pass: &PassSources, job: &Job) -> Front {
     FRONTS.iter().find_map(|source| source.front(pass, job)).unwrap_or_else(|| Naga.parse(pass, job))
 }
 
-/// The first module a source has.
+/// The first module a source has, or naga's compile.
 pub(super) fn module(pass: &PassSources, ask: &mut ModuleAsk) -> Result<Built, Diagnostic> {
     MODULES.iter().find_map(|source| source.module(pass, ask)).unwrap_or_else(|| Naga.compile(pass, ask))
 }
@@ -128,7 +128,8 @@ impl ModuleSource for OtherPasses {
     }
 }
 
-/// naga: parses and compiles; what it made is offered to the build's other passes.
+/// naga, when no source has it: parses and compiles; what it made is offered to the build's
+/// other passes.
 struct Naga;
 
 impl Naga {
@@ -169,17 +170,5 @@ impl Naga {
             pass.session.compiled.insert(ask.key, compiled.clone(), compiled.size());
         }
         Ok(Built::Compiled(compiled))
-    }
-}
-
-impl FrontSource for Naga {
-    fn front(&self, pass: &PassSources, job: &Job) -> Option<Front> {
-        Some(self.parse(pass, job))
-    }
-}
-
-impl ModuleSource for Naga {
-    fn module(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>> {
-        Some(self.compile(pass, ask))
     }
 }
