@@ -9,7 +9,7 @@ use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::catalog::{Catalog, CatalogShader, property_references};
 use crate::diagnostics::{self, Diagnostic};
 use crate::manifest::*;
-use crate::material::MaterialValue;
+use crate::material::{Material, MaterialValue};
 use crate::reflect::{Resource, UniformBlock};
 use crate::shaderlab::ast::Property;
 use crate::shaderlab::pragma::KeywordScope;
@@ -79,7 +79,7 @@ pub(super) fn catalogue_part(
     let absent: BTreeSet<String> = store.absent().iter().map(|p| relative_to(p, &options.root)).collect();
     CataloguePart {
         shaders: shaders.into_iter().map(|(_, head)| head).collect(),
-        materials: materials(catalog).count(),
+        materials: listed_materials(catalog).count(),
         counts: [summary.shaders, summary.passes, summary.variants],
         unused: summary.unused.clone(),
         given: options.given_files,
@@ -371,18 +371,20 @@ pub(super) fn pass_manifest(
     }
 }
 
-/// Every resolved material, for the run time (`materials.json`, in this order), with its shader's
-/// index in the catalogue.
-pub(super) fn materials(catalog: &Catalog) -> impl Iterator<Item = (usize, MaterialManifest)> + '_ {
-    catalog.materials.iter().filter_map(|m| {
-        let shader = catalog.shaders.get(m.shader)?;
-        Some((m.shader, m.to_manifest(&shader.shader.name.value)))
-    })
+/// The materials `materials.json` lists, in its order: every resolved material of a shader in
+/// the catalogue.
+pub(super) fn listed_materials(catalog: &Catalog) -> impl Iterator<Item = &Material> + '_ {
+    catalog.materials.iter().filter(|m| catalog.shaders.get(m.shader).is_some())
+}
+
+/// A listed material as `materials.json` has it.
+pub(super) fn material_entry(catalog: &Catalog, material: &Material) -> MaterialManifest {
+    material.to_manifest(&catalog.shaders[material.shader].shader.name.value)
 }
 
 /// `materials.json`'s compact text, from a whole build's catalogue.
 pub(super) fn all_materials(catalog: &Catalog) -> Box<RawValue> {
-    let all: Vec<MaterialManifest> = materials(catalog).map(|(_, m)| m).collect();
+    let all: Vec<MaterialManifest> = listed_materials(catalog).map(|m| material_entry(catalog, m)).collect();
     json_text(&all)
 }
 

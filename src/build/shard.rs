@@ -5,7 +5,7 @@
 //! weight (distinct stage requests, [`super::plan::weights`]), heaviest first, each to the shard
 //! with the least so far, so no shard reads, preprocesses or parses another shard's texts.
 
-use super::emit::{CataloguePart, json_text, materials, write_failure, write_json};
+use super::emit::{CataloguePart, json_text, listed_materials, material_entry, write_failure, write_json};
 use super::noop::inputs_key;
 use super::plan::PassWork;
 use super::{BuildOptions, BuildResult, BuildSummary};
@@ -69,10 +69,10 @@ impl Shard {
         for (work, owned) in work.iter().zip(owned) {
             first_pass_owned[work.shader_index].get_or_insert(*owned);
         }
-        materials(catalog)
+        listed_materials(catalog)
             .enumerate()
-            .filter(|(_, (shader, _))| first_pass_owned[*shader].unwrap_or(self.index == 0))
-            .map(|(position, (_, material))| (position, json_text(&material)))
+            .filter(|(_, m)| first_pass_owned[m.shader].unwrap_or(self.index == 0))
+            .map(|(position, m)| (position, json_text(&material_entry(catalog, m))))
             .collect()
     }
 }
