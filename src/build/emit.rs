@@ -3,7 +3,7 @@
 
 use super::error::BuildLayerError;
 use super::jobs::Job;
-use super::noop::{disk_files, inputs_key, recorded_name};
+use super::noop::{disk_files, recorded_name};
 use super::plan::{PassWork, pass_key};
 use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::catalog::{Catalog, CatalogShader, property_references};
@@ -110,11 +110,12 @@ pub(super) fn manifest<P: PassFiles>(heads: Vec<ShaderHead>, parts: Vec<P>) -> M
 }
 
 /// Writes what a whole build (or a merge) leaves once its passes are built: the manifest, the
-/// materials (`materials.json`'s compact text), and the record of a clean build.
+/// materials (`materials.json`'s compact text), and the record of a clean build (`inputs`: the
+/// inputs key, [`super::noop::inputs_key`]).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn finish<P: PassFiles + Serialize>(
-    store: &SourceStore,
     options: &BuildOptions,
+    inputs: &str,
     catalogue: &CataloguePart,
     materials: &RawValue,
     manifest: &Manifest<P>,
@@ -142,7 +143,7 @@ pub(super) fn finish<P: PassFiles + Serialize>(
     if options.write && options.record && diagnostics.is_empty() {
         // Only costs a full build next time if it cannot be written.
         let _ = Cache::new(&options.output, true).record_inputs(&Recorded {
-            key: inputs_key(store, options),
+            key: inputs.to_string(),
             given: catalogue.given,
             shaders: summary.shaders,
             passes: summary.passes,

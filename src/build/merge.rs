@@ -111,20 +111,20 @@ pub(super) fn merge(store: &mut SourceStore, options: &BuildOptions, merge: &Mer
         match parsed {
             Ok(parsed) => {
                 let manifest = manifest(heads, parsed);
-                finish(store, options, &catalogue, &materials, &manifest, summary, diagnostics)
+                finish(options, &merge.inputs, &catalogue, &materials, &manifest, summary, diagnostics)
             }
             Err(error) => BuildResult::failed(options, summary, vec![error.into()]),
         }
     } else {
         let manifest = manifest(heads, parts);
-        finish(store, options, &catalogue, &materials, &manifest, summary, diagnostics)
+        finish(options, &merge.inputs, &catalogue, &materials, &manifest, summary, diagnostics)
     }
 }
 
 /// A shard's pass: its JSON text, written into the manifest as it is, and what the merge reads of
 /// it (packs and modules to verify and link, layout and blocks to place the shader's properties).
-struct RawPass {
-    text: Box<RawValue>,
+struct RawPass<'a> {
+    text: &'a RawValue,
     view: PassView,
 }
 
@@ -138,21 +138,21 @@ struct PassView {
     uniform_blocks: Vec<UniformBlock>,
 }
 
-impl RawPass {
-    fn read(folder: &Path, part: &ShardPass) -> Result<RawPass, Diagnostic> {
+impl<'a> RawPass<'a> {
+    fn read(folder: &Path, part: &'a ShardPass) -> Result<RawPass<'a>, Diagnostic> {
         let view: PassView = serde_json::from_str(part.manifest.get())
             .map_err(|_| Diagnostic::from(BuildLayerError::PartDamaged { folder: folder.to_path_buf() }))?;
-        Ok(RawPass { text: part.manifest.clone(), view })
+        Ok(RawPass { text: &part.manifest, view })
     }
 }
 
-impl Serialize for RawPass {
+impl Serialize for RawPass<'_> {
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         self.text.serialize(serializer)
     }
 }
 
-impl PassFiles for RawPass {
+impl PassFiles for RawPass<'_> {
     fn packs(&self) -> &[String] {
         &self.view.packs
     }

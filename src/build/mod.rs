@@ -271,8 +271,15 @@ fn build_passes(
             let materials = emit::all_materials(catalog);
             let mut catalogue = catalogue();
             let manifest = emit::manifest(std::mem::take(&mut catalogue.shaders), parts);
-            let mut result =
-                emit::finish(store, options, &catalogue, &materials, &manifest, summary, diagnostics);
+            let mut result = emit::finish(
+                options,
+                &noop::inputs_key(store, options),
+                &catalogue,
+                &materials,
+                &manifest,
+                summary,
+                diagnostics,
+            );
             result.manifest = Some(manifest);
             result
         }
