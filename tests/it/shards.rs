@@ -242,7 +242,20 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     assert!(record.contains("\"shard\":3,"), "{record}");
     std::fs::write(&record_path, record.replace("\"shard\":3,", "\"shard\":0,")).expect("write");
     refused(&shards, "shard 3/3 is missing");
+    // A record that is not JSON any more.
+    std::fs::write(&record_path, &record[..record.len() / 2]).expect("write");
+    refused(&shards, "shard.json` is damaged");
     std::fs::write(&record_path, record).expect("write");
+    // A pass's part that does not read: the merge names the shard and writes nothing.
+    let first_record = shards[0].join("shard.json");
+    let first = std::fs::read_to_string(&first_record).expect("record");
+    assert!(first.contains("\"interfaces\""), "the first shard holds the pass");
+    std::fs::write(&first_record, first.replace("\"interfaces\"", "\"interfacez\"")).expect("write");
+    let run = merge(&dir.path().join("merged"), &shards);
+    assert_eq!(run.status.code(), Some(1), "{}", text(&run));
+    assert!(text(&run).starts_with("error[K0412]: a pass's part in "), "{}", text(&run));
+    assert!(!dir.path().join("merged/manifest.json").exists());
+    std::fs::write(&first_record, first).expect("write");
 
     // The project changed since the shards were built: an error, and nothing written.
     let shader = project.join("Synth.shader");
