@@ -189,7 +189,10 @@ fn add_logged_variants(
             diagnostics.push(error("K0532", message, "logged here"));
             continue;
         };
-        match crate::keywords::select_variant(program.keywords.sets(), &logged.keywords) {
+        match crate::keywords::select_variant(
+            program.keywords.sets(),
+            &program.pragmas.variant_keywords(&logged.keywords),
+        ) {
             Ok(keywords) => {
                 let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
                 added.entry((index, position)).or_default().push(program.keywords.variant_of(&keywords));
@@ -241,7 +244,11 @@ pub fn catalog(
                     .passes
                     .iter()
                     .filter_map(|p| p.program.as_ref())
-                    .flat_map(|p| p.keywords.sets().to_vec())
+                    .flat_map(|p| {
+                        let dynamic =
+                            p.pragmas.keyword_sets.iter().filter(|s| s.kind == KeywordKind::DynamicBranch);
+                        p.keywords.sets().iter().chain(dynamic).cloned()
+                    })
                     .collect();
                 ShaderEntry::from_shader(&s.shader, &sets)
             })

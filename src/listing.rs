@@ -65,6 +65,10 @@ pub struct ProgramListing {
     pub keyword_sets: Vec<KeywordSetListing>,
     /// The product of the variant-making sets' sizes; `null` when it exceeds 2^128.
     pub possible_variants: Option<u128>,
+    /// The product of the `dynamic_branch` sets' sizes: the keyword combinations each variant's
+    /// one module serves (absent without such sets; `null` past 2^128).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dynamic_combinations: Option<Option<u128>>,
     /// The variants materials need (all of them for an always-included shader), in key order.
     pub used_variants: Vec<VariantListing>,
     /// The multi_compile sets `global_keywords` in kiln.toml narrows to one option: each set's
@@ -237,6 +241,7 @@ fn program_from_pragmas(language: &'static str, pragmas: &ProgramPragmas) -> Pro
         target: pragmas.target().map(str::to_string),
         keyword_sets: pragmas.keyword_sets.iter().map(set_listing).collect(),
         possible_variants: pragmas.possible_variants(),
+        dynamic_combinations: pragmas.dynamic_combinations(),
         used_variants: Vec::new(),
         fixed_by_global_keywords: Vec::new(),
     }
@@ -289,6 +294,19 @@ pub fn render_text(listing: &Listing) -> String {
                 );
             }
             let count = program.possible_variants.map_or("more than 2^128".to_string(), |n| n.to_string());
+            if let Some(combinations) = program.dynamic_combinations {
+                let as_variants =
+                    combinations.zip(program.possible_variants).and_then(|(c, p)| c.checked_mul(p));
+                let (combinations, as_variants, saved) = match (combinations, as_variants) {
+                    (Some(c), Some(v)) => (c.to_string(), v.to_string(), (v - v / c).to_string()),
+                    _ => ("more than 2^128".into(), "more than 2^128".into(), "more than 2^128".into()),
+                };
+                let _ = writeln!(
+                    out,
+                    "    dynamic_branch: {combinations} keyword combinations share each variant's modules \
+                     (as variant keywords: {as_variants} possible, {saved} saved)"
+                );
+            }
             let _ = writeln!(out, "    variants: used {} of {count} possible", program.used_variants.len());
             for set in &program.fixed_by_global_keywords {
                 let _ = writeln!(

@@ -194,7 +194,8 @@ fn requested_variant(
     if program.language != ProgramLanguage::Wgsl {
         return Err(ProjectError::NotWgsl { language: program.language.name() });
     }
-    let keywords = select_variant(program.keywords.sets(), &request.keywords)?;
+    let keywords =
+        select_variant(program.keywords.sets(), &program.pragmas.variant_keywords(&request.keywords))?;
     let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
     let variant = program.keywords.variant_of(&keywords);
     if diagnostics::has_errors(&diagnostics) {

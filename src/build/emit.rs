@@ -12,7 +12,7 @@ use crate::manifest::*;
 use crate::material::{Material, MaterialValue};
 use crate::reflect::{Resource, UniformBlock};
 use crate::shaderlab::ast::Property;
-use crate::shaderlab::pragma::KeywordScope;
+use crate::shaderlab::pragma::{KeywordKind, KeywordScope};
 use crate::source::{SourceStore, relative_to};
 use crate::store::{Cache, CachedStage, Digest, Hashed, Recorded};
 use serde::{Deserialize, Serialize};
@@ -276,6 +276,7 @@ pub(super) fn pass_manifest(
             outputs: reflection.outputs.clone(),
             bindings: reflection.bindings.iter().map(|b| [b.group, b.binding]).collect(),
             uniform_blocks: blocks,
+            overrides: reflection.overrides.clone(),
         };
         let interface = *interface_of.entry(interface).or_insert_with_key(|interface| {
             interfaces.push(interface.clone());
@@ -346,11 +347,13 @@ pub(super) fn pass_manifest(
         name: work.pass.name.clone(),
         tags: work.pass.tags.clone(),
         render_state,
+        // The variant sets, then the `dynamic_branch` ones (which make no variants).
         keyword_sets: work
             .program
             .keywords
             .sets()
             .iter()
+            .chain(work.program.pragmas.keyword_sets.iter().filter(|s| s.kind == KeywordKind::DynamicBranch))
             .map(|set| KeywordSetManifest {
                 kind: set.kind.name().to_string(),
                 scope: if set.scope == KeywordScope::Local { "local" } else { "global" }.to_string(),

@@ -450,4 +450,79 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
         let _ = writeln!(out, "            [{}, {}],", index(*vertex), index(*fragment));
     }
     out.push_str("        ],\n    };\n");
+    overrides_struct(out, pass);
 }
+
+/// `PassNOverrides`: the pass's own `override` constants (its `dynamic_branch` keywords are set
+/// through keywords), typed, with their defaults, and the list a pipeline takes.
+fn overrides_struct(out: &mut String, pass: &PassManifest) {
+    let mut constants: Vec<&crate::manifest::OverrideConstant> = Vec::new();
+    for constant in pass.interfaces.iter().flat_map(|i| &i.overrides) {
+        if !pass.is_dynamic(&constant.name) && !constants.iter().any(|c| c.name == constant.name) {
+            constants.push(constant);
+        }
+    }
+    if constants.is_empty() {
+        return;
+    }
+    let rust_type = |ty: &str| match ty {
+        "bool" => "bool",
+        "i32" => "i32",
+        "u32" => "u32",
+        _ => "f32",
+    };
+    let field =
+        |name: &str| if RUST_KEYWORDS.contains(&name) { format!("r#{name}") } else { name.to_string() };
+    let name = format!("Pass{}Overrides", pass.index);
+    let _ = writeln!(
+        out,
+        "\n    /// The `override` constants of pass {}'s modules (`f16` ones as `f32`), for\n    \
+         /// `PipelineRequest::overrides` or wgpu's `PipelineCompilationOptions::constants`.",
+        pass.index
+    );
+    let _ = writeln!(out, "    #[derive(Debug, Clone, Copy, PartialEq)]\n    pub struct {name} {{");
+    for c in &constants {
+        let _ = writeln!(out, "        pub {}: {},", field(&c.name), rust_type(&c.ty));
+    }
+    out.push_str("    }\n");
+    let literal = |c: &crate::manifest::OverrideConstant, value: f64| match c.ty.as_str() {
+        "bool" => (value != 0.0).to_string(),
+        "i32" | "u32" => format!("{value}"),
+        _ => format!("{value:?}_f32"),
+    };
+    let defaults: Option<Vec<String>> = constants
+        .iter()
+        .map(|c| c.default.map(|v| format!("{}: {}", field(&c.name), literal(c, v))))
+        .collect();
+    // Only constants that all have defaults make a `Default`: a required one must be chosen.
+    if let Some(defaults) = defaults {
+        let _ = writeln!(
+            out,
+            "    impl Default for {name} {{\n        fn default() -> Self {{\n            Self {{ {} }}\n        }}\n    }}",
+            defaults.join(", ")
+        );
+    }
+    let values: Vec<String> = constants
+        .iter()
+        .map(|c| {
+            let value = match c.ty.as_str() {
+                "bool" => format!("f64::from(u8::from(self.{}))", field(&c.name)),
+                _ => format!("f64::from(self.{})", field(&c.name)),
+            };
+            format!("({:?}, {value})", c.key())
+        })
+        .collect();
+    let _ = writeln!(
+        out,
+        "    impl {name} {{\n        /// `(name or id, value)` of each constant.\n        \
+         pub fn constants(&self) -> [(&'static str, f64); {}] {{\n            [{}]\n        }}\n    }}",
+        values.len(),
+        values.join(", ")
+    );
+}
+
+/// Rust's keywords, which a WGSL identifier may be: such a field is written as a raw identifier.
+const RUST_KEYWORDS: [&str; 20] = [
+    "as", "async", "await", "box", "crate", "dyn", "extern", "impl", "in", "match", "mod", "move", "mut",
+    "pub", "ref", "self", "static", "trait", "type", "where",
+];

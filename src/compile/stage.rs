@@ -112,7 +112,9 @@ fn compile_unguarded(
     } else {
         None
     };
-    let spirv = if request.backends.contains(&Backend::Spirv) {
+    // naga's SPIR-V writer cannot express specialisation constants: a module with `override`s
+    // is WGSL only, specialised by wgpu (or naga's `process_overrides`) when a pipeline is made.
+    let spirv = if request.backends.contains(&Backend::Spirv) && module.overrides.is_empty() {
         let options = naga::back::spv::Options {
             lang_version: spirv_version(request.allowed.capabilities()),
             flags: naga::back::spv::WriterFlags::empty(),

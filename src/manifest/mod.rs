@@ -8,14 +8,14 @@
 mod reflection;
 pub mod state;
 
-pub use reflection::{Attribute, Member, Resource, UniformBlock};
+pub use reflection::{Attribute, Member, OverrideConstant, Resource, UniformBlock};
 pub use state::*;
 
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
 /// Raised whenever a field changes meaning or is removed (adding fields keeps it).
-pub const SCHEMA_VERSION: u32 = 5;
+pub const SCHEMA_VERSION: u32 = 6;
 
 /// The manifest's file name, at the top of the output folder.
 pub const FILE_NAME: &str = "manifest.json";
@@ -229,6 +229,17 @@ impl PassManifest {
         StageView { pass: self, index: module, module: m, interface: &self.interfaces[m.interface] }
     }
 
+    /// Its `dynamic_branch` sets.
+    pub fn dynamic_sets(&self) -> impl Iterator<Item = &KeywordSetManifest> {
+        self.keyword_sets.iter().filter(|set| set.kind == "dynamic_branch")
+    }
+
+    /// Whether `keyword` is one of its `dynamic_branch` keywords (an `override` of its modules,
+    /// not a variant).
+    pub fn is_dynamic(&self, keyword: &str) -> bool {
+        self.dynamic_sets().any(|set| set.keywords.iter().any(|k| k == keyword))
+    }
+
     /// A variant's vertex and fragment modules.
     pub fn variant_stages(&self, variant: &VariantManifest) -> [Option<StageView<'_>>; 2] {
         [variant.vertex, variant.fragment].map(|m| m.map(|m| self.stage(m)))
@@ -328,6 +339,9 @@ pub struct StageInterface {
     pub bindings: Vec<[u32; 2]>,
     /// The uniform blocks it uses: indices into the pass's `uniform_blocks`.
     pub uniform_blocks: Vec<usize>,
+    /// The pipeline-overridable constants it uses (`dynamic_branch` keywords among them).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub overrides: Vec<OverrideConstant>,
 }
 
 /// One compiled stage module, identified by its bytes: variants whose stage texts differ only in

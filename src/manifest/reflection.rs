@@ -78,3 +78,52 @@ pub struct Member {
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub members: Vec<Member>,
 }
+
+/// A pipeline-overridable constant (WGSL `override`) a stage module uses, set by name (or by its
+/// `@id`) when a pipeline is created. One named after a `dynamic_branch` keyword of its pass is
+/// that keyword (kiln declares it).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct OverrideConstant {
+    /// Its name in the WGSL.
+    pub name: String,
+    /// Its `@id`, if it has one: a pipeline then sets it by that number, written in decimal.
+    pub id: Option<u16>,
+    /// `bool`, `i32`, `u32`, `f32` or `f16`.
+    #[serde(rename = "type")]
+    pub ty: String,
+    /// Its default as a number (`bool`: 0 or 1) when the WGSL gives it as a literal; `None` when
+    /// it has none or computes it from other overrides.
+    pub default: Option<f64>,
+    /// Whether a pipeline must set it (it has no default).
+    pub required: bool,
+}
+
+impl OverrideConstant {
+    /// The key a pipeline sets it by: its `@id` in decimal, else its name (WebGPU's rule).
+    pub fn key(&self) -> String {
+        self.id.map_or_else(|| self.name.clone(), |id| id.to_string())
+    }
+
+    /// Whether `value` is one of its type's values: 0 or 1 for `bool`, a whole number in range
+    /// for the integers, finite and in range for the floats.
+    pub fn accepts(&self, value: f64) -> bool {
+        let whole = value.fract() == 0.0;
+        match self.ty.as_str() {
+            "bool" => value == 0.0 || value == 1.0,
+            "i32" => whole && (f64::from(i32::MIN)..=f64::from(i32::MAX)).contains(&value),
+            "u32" => whole && (0.0..=f64::from(u32::MAX)).contains(&value),
+            "f32" => value.is_finite() && value.abs() <= f64::from(f32::MAX),
+            "f16" => value.is_finite() && value.abs() <= 65504.0,
+            _ => false,
+        }
+    }
+}
+
+// Interfaces are deduplicated by hash; a default compares by its bits.
+impl Eq for OverrideConstant {}
+
+impl std::hash::Hash for OverrideConstant {
+    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
+        (&self.name, self.id, &self.ty, self.default.map(f64::to_bits), self.required).hash(state);
+    }
+}

@@ -113,7 +113,8 @@ pub struct EntryProperty {
 /// A keyword set as materials see it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EntrySet {
-    /// A `shader_feature` set (a material chooses) rather than `multi_compile`.
+    /// A set a material chooses from (`shader_feature` or `dynamic_branch`) rather than
+    /// `multi_compile`.
     pub shader_feature: bool,
     /// Its keywords, `_` left out.
     pub keywords: Vec<String>,
@@ -143,7 +144,7 @@ impl ShaderEntry {
             keyword_sets: keyword_sets
                 .iter()
                 .map(|set| EntrySet {
-                    shader_feature: set.kind == KeywordKind::ShaderFeature,
+                    shader_feature: set.kind != KeywordKind::MultiCompile,
                     keywords: set.keywords().map(str::to_string).collect(),
                     off_option: set.has_off_option(),
                     span: Some(set.span),
@@ -546,7 +547,7 @@ impl ShaderEntry {
             .iter()
             .flat_map(|pass| &pass.keyword_sets)
             .map(|set| EntrySet {
-                shader_feature: set.kind == crate::shaderlab::pragma::KeywordKind::ShaderFeature.name(),
+                shader_feature: set.kind != crate::shaderlab::pragma::KeywordKind::MultiCompile.name(),
                 keywords: set.keywords.iter().filter(|k| *k != "_").cloned().collect(),
                 off_option: set.keywords.iter().any(|k| k == "_"),
                 span: None,

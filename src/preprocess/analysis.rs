@@ -34,7 +34,8 @@ pub(super) fn pragma_sources<'a>(
 /// - a declared keyword that no `#if`, `#ifdef` or `#ifndef` tests only multiplies variants;
 /// - a name tested in the project's own files that no pragma declares and no `#define` defines
 ///   is always off (often a misspelt keyword);
-/// - keyword pragmas in a file reached only through a plain `#include` do not count.
+/// - keyword pragmas in a file reached only through a plain `#include` do not count;
+/// - a `dynamic_branch` keyword tested by a conditional is an error (it is never a macro).
 pub(super) fn analyze_keywords(
     includes: &Includes,
     program: &Program,
@@ -53,6 +54,8 @@ pub(super) fn analyze_keywords(
     let mut defined: HashSet<&str> = BUILTIN_MACROS.into_iter().collect();
     // Tests in the project's own files, in source order, for the "never declared" warning.
     let mut project_tests: Vec<(&str, Span)> = Vec::new();
+    // Every name a conditional tests, in any file, for `dynamic_branch` keywords tested there.
+    let mut conditions: Vec<(&str, Span)> = Vec::new();
     let mut warnings = Vec::new();
     for &id in &reachable {
         let unit = &includes.units[id];
@@ -67,6 +70,7 @@ pub(super) fn analyze_keywords(
                 Item::Branch { kind: BranchKind::If(condition) | BranchKind::Elif(condition), .. } => {
                     for (name, span) in condition_names(condition, unit.file) {
                         tested.insert(name);
+                        conditions.push((name, span));
                         if in_project {
                             project_tests.push((name, span));
                         }
@@ -79,6 +83,18 @@ pub(super) fn analyze_keywords(
             for (span, pragma) in &unit.keyword_pragmas {
                 warnings.push(PreprocessError::PragmaInPlainInclude { span: *span, pragma: pragma.clone() });
             }
+        }
+    }
+
+    for (name, span) in conditions {
+        let dynamic = pragmas.keyword_sets.iter().filter(|set| set.kind == KeywordKind::DynamicBranch);
+        let declaration = dynamic.flat_map(|set| &set.options).find(|o| o.keyword.as_deref() == Some(name));
+        if let Some(declaration) = declaration {
+            warnings.push(PreprocessError::DynamicKeywordInCondition {
+                span,
+                keyword: name.to_string(),
+                declared: declaration.span,
+            });
         }
     }
 

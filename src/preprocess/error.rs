@@ -131,6 +131,11 @@ pub enum PreprocessError {
         span: Span,
         pragma: String,
     },
+    DynamicKeywordInCondition {
+        span: Span,
+        keyword: String,
+        declared: Span,
+    },
 }
 
 /// The directives the preprocessor knows, for the "unknown directive" help.
@@ -291,6 +296,14 @@ impl From<PreprocessError> for Diagnostic {
                     .at(span, "this pragma does not count for the pass")
                     .help("include the file with `#include_with_pragmas` to make its pragmas count")
             }
+            DynamicKeywordInCondition { span, keyword, declared } => Diagnostic::error(
+                "K0328",
+                format!("`{keyword}` is a `dynamic_branch` keyword: the preprocessor cannot test it"),
+            )
+            .at(span, "tested by the preprocessor here")
+            .label(declared, "declared `dynamic_branch` here")
+            .note("one module serves every value of a `dynamic_branch` keyword, so it is never a macro; it is an `override` constant set when the pipeline is created")
+            .help(format!("branch with `if ({keyword}) {{ ... }}`, or declare it `shader_feature` to compile a variant for it")),
         }
     }
 }

@@ -3,6 +3,7 @@
 //! come in only through the [`SourceStore`], which records them for `rerun-if-changed`.
 
 use super::error::PreprocessError;
+use super::pass::DynamicKeyword;
 use super::scan::{self, Item, Target, Unit};
 use crate::diagnostics::Diagnostic;
 use crate::source::{FileId, SourceStore, Span, normalize_lexically};
@@ -54,10 +55,12 @@ pub struct Includes {
     blocks: HashMap<(FileId, u32), usize>,
 }
 
-/// One pass's program: its blocks (include blocks first), as scanned units.
+/// One pass's program: its blocks (include blocks first), as scanned units, and the
+/// `dynamic_branch` keywords every variant's text declares.
 #[derive(Debug, Clone)]
 pub struct Program {
     pub(crate) blocks: Vec<usize>,
+    pub(crate) dynamic_keywords: Vec<DynamicKeyword>,
 }
 
 impl Includes {
@@ -85,7 +88,7 @@ impl Includes {
     pub fn load_program(&mut self, store: &mut SourceStore, blocks: &[Span]) -> (Program, Vec<Diagnostic>) {
         let mut diagnostics = Vec::new();
         let first_new = self.units.len();
-        let mut program = Program { blocks: Vec::new() };
+        let mut program = Program { blocks: Vec::new(), dynamic_keywords: Vec::new() };
         for &block in blocks {
             let unit = match self.blocks.get(&(block.file, block.start)) {
                 Some(&unit) => unit,

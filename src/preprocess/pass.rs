@@ -5,7 +5,7 @@ use super::analysis::{analyze_keywords, pragma_sources};
 use super::include::{Includes, Program};
 use crate::diagnostics::Diagnostic;
 use crate::shaderlab::ast::ProgramBlock;
-use crate::shaderlab::pragma::{ProgramPragmas, collect_pragmas};
+use crate::shaderlab::pragma::{KeywordKind, KeywordStage, ProgramPragmas, collect_pragmas};
 use crate::source::{SourceStore, Span};
 
 /// A pass's program, ready to be preprocessed once per variant and stage.
@@ -34,9 +34,48 @@ pub fn load_pass_text(
     store: &mut SourceStore,
     spans: &[Span],
 ) -> (PassProgram, Vec<Diagnostic>) {
-    let (program, mut diagnostics) = includes.load_program(store, spans);
+    let (mut program, mut diagnostics) = includes.load_program(store, spans);
     let (pragmas, errors) = collect_pragmas(pragma_sources(includes, store, &program));
+    program.dynamic_keywords = DynamicKeyword::of(&pragmas);
     diagnostics.extend(errors);
     diagnostics.extend(analyze_keywords(includes, &program, &pragmas));
     (PassProgram { program, pragmas }, diagnostics)
+}
+
+/// A `dynamic_branch` keyword: declared in each stage it is for as `override NAME: bool`, so one
+/// module tests it with `if` and a pipeline sets it (docs/keywords.md).
+#[derive(Debug, Clone)]
+pub struct DynamicKeyword {
+    /// The keyword.
+    pub name: String,
+    /// Where the pragma lists it: the declaration maps there.
+    pub span: Span,
+    /// The stages whose pipeline stage sets it (every stage's text declares it).
+    pub stage: KeywordStage,
+    /// Whether it is on when nothing sets it: the first keyword of a set without `_`.
+    pub default_on: bool,
+}
+
+impl DynamicKeyword {
+    /// The `dynamic_branch` keywords of a pass's pragmas, in declaration order.
+    pub fn of(pragmas: &ProgramPragmas) -> Vec<DynamicKeyword> {
+        let sets = pragmas.keyword_sets.iter().filter(|set| set.kind == KeywordKind::DynamicBranch);
+        sets.flat_map(|set| {
+            let first_is_default = !set.has_off_option();
+            set.options.iter().filter_map(|o| o.keyword.as_ref().map(|k| (k, o.span))).enumerate().map(
+                move |(i, (name, span))| DynamicKeyword {
+                    name: name.clone(),
+                    span,
+                    stage: set.stage,
+                    default_on: first_is_default && i == 0,
+                },
+            )
+        })
+        .collect()
+    }
+
+    /// Its declaration in WGSL.
+    pub fn declaration(&self) -> String {
+        format!("override {}: bool = {};", self.name, self.default_on)
+    }
 }

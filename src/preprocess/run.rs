@@ -42,6 +42,13 @@ pub(super) fn run<'a>(
         runner.unit(block, ROOT);
         runner.stack.pop();
     }
+    // Module-scope declarations may come in any order in WGSL: at the end, nothing shifts. Every
+    // stage's text has every function, so each declares them all; the pipeline sets a stage's own.
+    for keyword in &program.dynamic_keywords {
+        runner.out.push('\n');
+        runner.map.expanded(runner.out.len(), keyword.span, None, ROOT);
+        runner.out.push_str(&keyword.declaration());
+    }
     runner.map.finish(runner.out.len());
     Preprocessed { text: runner.out, source_map: runner.map, diagnostics: runner.diagnostics }
 }

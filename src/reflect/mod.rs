@@ -2,7 +2,7 @@
 //! outputs, bindings, uniform block layouts from naga's `Layouter`), converted to the manifest's
 //! types (`crate::manifest`).
 
-pub use crate::manifest::{Attribute, Member, Resource, UniformBlock};
+pub use crate::manifest::{Attribute, Member, OverrideConstant, Resource, UniformBlock};
 
 use naga::proc::Layouter;
 use naga::{
@@ -23,6 +23,9 @@ pub struct StageReflection {
     pub bindings: Vec<BindingInfo>,
     /// The uniform and storage blocks the module uses.
     pub uniform_blocks: Vec<UniformBlock>,
+    /// The `override` constants the module uses.
+    #[serde(default)]
+    pub overrides: Vec<OverrideConstant>,
 }
 
 /// One resource the module uses, where it is bound.
@@ -134,6 +137,7 @@ pub fn reflect_stage(
         outputs: Vec::new(),
         bindings: Vec::new(),
         uniform_blocks: Vec::new(),
+        overrides: module.overrides.iter().map(|(_, o)| override_constant(module, o)).collect(),
     };
     if let Some(entry) = module.entry_points.iter().find(|e| e.name == entry_point) {
         if entry.stage == naga::ShaderStage::Vertex {
@@ -164,6 +168,31 @@ pub fn reflect_stage(
     }
     reflection.bindings.sort_by_key(|b| (b.group, b.binding));
     reflection
+}
+
+/// An `override` as the manifest describes it; compaction has removed those the entry point
+/// does not use.
+fn override_constant(module: &Module, constant: &naga::Override) -> OverrideConstant {
+    let default = constant.init.and_then(|init| match module.global_expressions[init] {
+        naga::Expression::Literal(literal) => match literal {
+            naga::Literal::Bool(b) => Some(f64::from(u8::from(b))),
+            naga::Literal::F32(v) => Some(f64::from(v)),
+            naga::Literal::F16(v) => Some(f64::from(v)),
+            naga::Literal::I32(v) => Some(f64::from(v)),
+            naga::Literal::U32(v) => Some(f64::from(v)),
+            naga::Literal::F64(v) => Some(v),
+            naga::Literal::AbstractFloat(v) => Some(v),
+            _ => None,
+        },
+        _ => None,
+    });
+    OverrideConstant {
+        name: constant.name.clone().unwrap_or_default(),
+        id: constant.id,
+        ty: type_name(module, constant.ty),
+        default,
+        required: constant.init.is_none(),
+    }
 }
 
 /// `@location` bindings of an argument or result, flattening structs.

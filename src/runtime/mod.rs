@@ -6,6 +6,7 @@
 //! Behind the `wgpu` feature; the compiler stages never import it.
 
 mod layout;
+mod overrides;
 mod pipelines;
 mod state;
 
@@ -50,6 +51,30 @@ pub enum RuntimeError {
         suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default()
     )]
     UnknownKeyword { shader: String, pass: usize, keyword: String, suggestion: Option<String> },
+    /// Two keywords of one `dynamic_branch` set at once.
+    #[error(
+        "`{shader}` pass {pass}: `{first}` and `{second}` are keywords of one `dynamic_branch` set; turn on one at a time"
+    )]
+    TwoKeywordsOfOneSet { shader: String, pass: usize, first: String, second: String },
+    /// An override value for a constant the pipeline's modules do not use.
+    #[error(
+        "`{name}` is not an `override` constant of `{shader}` pass {pass}'s modules{}",
+        if *keyword {
+            " (it is a `dynamic_branch` keyword: turn it on through the keywords)".to_string()
+        } else {
+            suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default()
+        }
+    )]
+    UnknownOverride { shader: String, pass: usize, name: String, keyword: bool, suggestion: Option<String> },
+    /// An override value its constant's type cannot hold.
+    #[error(
+        "`{shader}` pass {pass}: override `{name}` is `{ty}`, which cannot hold {value}{}",
+        type_hint(ty)
+    )]
+    OverrideValue { shader: String, pass: usize, name: String, ty: String, value: f64 },
+    /// An override without a default that the request does not set.
+    #[error("`{shader}` pass {pass}: override `{name}: {ty}` has no default; give it a value")]
+    OverrideRequired { shader: String, pass: usize, name: String, ty: String },
     /// No material of this name was built.
     #[error("no material `{0}` in the build")]
     NoMaterial(String),
@@ -65,6 +90,15 @@ pub enum RuntimeError {
     /// The last build failed (its diagnostics, from `errors.txt`).
     #[error("the build failed; the last good pipelines stay in use:\n{0}")]
     BuildFailed(String),
+}
+
+/// What values an override type holds, for [`RuntimeError::OverrideValue`].
+fn type_hint(ty: &str) -> &'static str {
+    match ty {
+        "bool" => " (0 or 1)",
+        "i32" | "u32" => " (a whole number in its range)",
+        _ => " (a finite number in its range)",
+    }
 }
 
 /// A build as the runtime reads it: the manifest, the packs its modules are in, and the resolved
@@ -187,6 +221,7 @@ impl Library {
     }
 
     /// The variant built with exactly these keywords (any order): strict, never a near match.
+    /// The pass's `dynamic_branch` keywords may be among them; they choose no variant.
     pub fn variant(
         &self,
         shader: &str,
@@ -195,16 +230,23 @@ impl Library {
     ) -> Result<&VariantManifest, RuntimeError> {
         let (s, p) = self.pass_position(shader, pass)?;
         // A keyword the pass does not have is a typo, not a variant to build.
-        let known = &self.manifest.shaders[s].passes[p].keywords;
-        if let Some(unknown) = keywords.iter().find(|k| !known.iter().any(|known| known == *k)) {
+        let manifest = &self.manifest.shaders[s].passes[p];
+        let known = &manifest.keywords;
+        let dynamic = || manifest.dynamic_sets().flat_map(|set| &set.keywords).filter(|k| *k != "_");
+        if let Some(unknown) =
+            keywords.iter().find(|k| !known.iter().chain(dynamic()).any(|known| known == *k))
+        {
+            let names = known.iter().chain(dynamic()).map(String::as_str);
             return Err(RuntimeError::UnknownKeyword {
                 shader: shader.to_string(),
                 pass,
                 keyword: unknown.to_string(),
-                suggestion: crate::material::closest(unknown, known.iter().map(String::as_str)),
+                suggestion: crate::material::closest(unknown, names),
             });
         }
-        let wanted: BTreeSet<String> = keywords.iter().map(|k| k.to_string()).collect();
+        // `dynamic_branch` keywords choose constants, not variants.
+        let wanted: BTreeSet<String> =
+            keywords.iter().filter(|k| !manifest.is_dynamic(k)).map(|k| k.to_string()).collect();
         let found = self.variants[&(s, p)].get(&wanted);
         let missing = || RuntimeError::MissingVariant {
             shader: shader.to_string(),

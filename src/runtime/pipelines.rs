@@ -3,6 +3,7 @@
 //! build from its output folder; usage capture.
 
 use super::layout::{PassLayout, VertexLayout};
+use super::overrides::{ConstantRequest, stage_constants};
 use super::{Library, RuntimeError};
 use crate::manifest::{ERRORS_FILE, FILE_NAME, MaterialManifest};
 use std::collections::{HashMap, HashSet};
@@ -35,6 +36,10 @@ pub struct PipelineRequest<'a> {
     pub targets: &'a Targets,
     /// `None`: [`VertexLayout::packed`] from the vertex stage's inputs.
     pub vertex_layout: Option<&'a VertexLayout>,
+    /// Values of the modules' own `override` constants, by name (or `@id` in decimal), as wgpu
+    /// takes them (a generated `OVERRIDES` struct's `constants()`); `dynamic_branch` keywords
+    /// come from `keywords`.
+    pub overrides: &'a [(&'a str, f64)],
 }
 
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
@@ -46,6 +51,8 @@ struct PipelineKey {
     state: super::RenderState,
     targets: Targets,
     vertex_layout: VertexLayout,
+    /// Each stage's override constants, values by their bits.
+    constants: [Vec<(String, u64)>; 2],
 }
 
 /// What [`Runtime::reload`] found.
@@ -281,6 +288,10 @@ impl Runtime {
                 VertexLayout::packed(&inputs).map_err(layout_error)?
             }
         };
+        let constants = stage_constants(
+            &ConstantRequest { shader, pass, keywords: request.keywords, overrides: request.overrides },
+            &stages,
+        )?;
         let key = PipelineKey {
             modules: [Some(&vertex), fragment.as_ref()]
                 .map(|s| s.and_then(|s| s.module.wgsl.as_ref()).map(|f| f.hash.clone())),
@@ -288,6 +299,9 @@ impl Runtime {
             state,
             targets: request.targets.clone(),
             vertex_layout,
+            constants: constants
+                .each_ref()
+                .map(|c| c.iter().map(|(k, v)| (k.clone(), v.to_bits())).collect()),
         };
         if let Some(pipeline) = self.pipelines.get(&key) {
             return Ok(pipeline.clone());
@@ -334,6 +348,8 @@ impl Runtime {
             })
             .collect();
         let buffers = key.vertex_layout.wgpu();
+        let [vertex_constants, fragment_constants] =
+            constants.each_ref().map(|c| c.iter().map(|(k, v)| (k.as_str(), *v)).collect::<Vec<_>>());
         let label = format!("{shader} pass {pass_index} [{}]", variant.keywords.join(" "));
         let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let pipeline = self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -342,7 +358,10 @@ impl Runtime {
             vertex: wgpu::VertexState {
                 module: &vertex_module,
                 entry_point: Some(&vertex_entry),
-                compilation_options: Default::default(),
+                compilation_options: wgpu::PipelineCompilationOptions {
+                    constants: &vertex_constants,
+                    ..Default::default()
+                },
                 buffers: &buffers,
             },
             primitive: key.state.primitive(),
@@ -355,7 +374,10 @@ impl Runtime {
             fragment: fragment_module.as_ref().map(|(module, entry)| wgpu::FragmentState {
                 module,
                 entry_point: Some(entry),
-                compilation_options: Default::default(),
+                compilation_options: wgpu::PipelineCompilationOptions {
+                    constants: &fragment_constants,
+                    ..Default::default()
+                },
                 targets: &targets,
             }),
             multiview_mask: None,
@@ -390,8 +412,13 @@ impl Runtime {
                 }
             };
             for pass in passes {
-                let declared: Vec<String> =
-                    self.library.pass(&material.shader, pass).map(|p| p.keywords.clone()).unwrap_or_default();
+                let declared: Vec<String> = self
+                    .library
+                    .pass(&material.shader, pass)
+                    .map(|p| {
+                        p.keywords.iter().chain(p.dynamic_sets().flat_map(|s| &s.keywords)).cloned().collect()
+                    })
+                    .unwrap_or_default();
                 let globals = global_keywords.iter().filter(|k| declared.iter().any(|d| d == *k));
                 keywords.extend(globals);
                 let request = PipelineRequest {
@@ -401,6 +428,7 @@ impl Runtime {
                     material,
                     targets,
                     vertex_layout: None,
+                    overrides: &[],
                 };
                 if let Err(error) = self.pipeline(&request) {
                     errors.push(error);

@@ -277,6 +277,7 @@ pub enum PragmaError {
     InvalidKeyword { span: Span, found: String },
     DuplicateKeyword { span: Span, first: Span, keyword: String },
     KeywordInTwoSets { span: Span, first: Span, keyword: String },
+    DynamicAndVariantKeyword { span: Span, first: Span, keyword: String, kinds: [&'static str; 2] },
     UnknownRequirement { span: Span, found: String },
     UnknownKeywordPragma { span: Span, found: String },
     ConflictingEntryPoint { span: Span, first: Span, stage: &'static str },
@@ -317,6 +318,14 @@ impl From<PragmaError> for Diagnostic {
             .at(span, "declared again here")
             .label(first, "first declared here")
             .note("the sets then multiply variants that can never differ; declare each keyword once"),
+            DynamicAndVariantKeyword { span, first, keyword, kinds } => Diagnostic::error(
+                "K0210",
+                format!("keyword `{keyword}` is declared by both `{}` and `{}`", kinds[0], kinds[1]),
+            )
+            .at(span, format!("declared by `{}` here", kinds[1]))
+            .label(first, format!("declared by `{}` here", kinds[0]))
+            .note("a `dynamic_branch` keyword is tested by `if` at run time in one module; a variant keyword makes a module of its own")
+            .help("declare it once: `dynamic_branch` to branch at run time, `multi_compile` or `shader_feature` to compile variants"),
             UnknownRequirement { span, found } => {
                 Diagnostic::warning("K0207", format!("unknown requirement `{found}`"))
                     .at(span, "not a requirement kiln knows")
@@ -629,17 +638,27 @@ fn finish(pragmas: &mut ProgramPragmas, errors: &mut Vec<PragmaError>) {
             }
         }
     }
-    let mut seen: Vec<(&str, Span)> = Vec::new();
+    let mut seen: Vec<(&str, Span, KeywordKind)> = Vec::new();
     for set in &pragmas.keyword_sets {
         for option in &set.options {
             let Some(keyword) = option.keyword.as_deref() else { continue };
-            match seen.iter().find(|(k, _)| *k == keyword) {
-                Some(&(_, first)) => errors.push(PragmaError::KeywordInTwoSets {
-                    span: option.span,
-                    first,
-                    keyword: keyword.to_string(),
-                }),
-                None => seen.push((keyword, option.span)),
+            let (span, keyword_name) = (option.span, keyword.to_string());
+            match seen.iter().find(|(k, ..)| *k == keyword) {
+                // One module cannot both branch on a keyword and be compiled per its value.
+                Some(&(_, first, kind))
+                    if (kind == KeywordKind::DynamicBranch) != (set.kind == KeywordKind::DynamicBranch) =>
+                {
+                    errors.push(PragmaError::DynamicAndVariantKeyword {
+                        span,
+                        first,
+                        keyword: keyword_name,
+                        kinds: [kind.name(), set.kind.name()],
+                    })
+                }
+                Some(&(_, first, _)) => {
+                    errors.push(PragmaError::KeywordInTwoSets { span, first, keyword: keyword_name })
+                }
+                None => seen.push((keyword, option.span, set.kind)),
             }
         }
     }
@@ -662,9 +681,31 @@ impl ProgramPragmas {
             .collect()
     }
 
+    /// Whether `keyword` is one of the pass's `dynamic_branch` keywords.
+    pub fn is_dynamic(&self, keyword: &str) -> bool {
+        self.keyword_sets
+            .iter()
+            .any(|set| set.kind == KeywordKind::DynamicBranch && set.keywords().any(|k| k == keyword))
+    }
+
+    /// `requested` without the pass's `dynamic_branch` keywords: what chooses a variant (a
+    /// usage log or `kiln preprocess --keywords` may name both kinds).
+    pub fn variant_keywords(&self, requested: &[String]) -> Vec<String> {
+        requested.iter().filter(|k| !self.is_dynamic(k)).cloned().collect()
+    }
+
     /// The number of variants the pass could have: the product of its set sizes, `None` past u128.
     pub fn possible_variants(&self) -> Option<u128> {
         self.variant_sets().iter().try_fold(1u128, |n, set| n.checked_mul(set.options.len() as u128))
+    }
+
+    /// The keyword combinations of its `dynamic_branch` sets (the product of their sizes), which
+    /// one module serves: `None` without such sets, `Some(None)` past u128.
+    pub fn dynamic_combinations(&self) -> Option<Option<u128>> {
+        let mut sets =
+            self.keyword_sets.iter().filter(|set| set.kind == KeywordKind::DynamicBranch).peekable();
+        sets.peek()?;
+        Some(sets.try_fold(1u128, |n, set| n.checked_mul(set.options.len() as u128)))
     }
 
     /// The base target level (the last unconditional `#pragma target`), `None` when not given.

@@ -7,6 +7,7 @@ mod build;
 mod cache;
 mod cli;
 mod cpp;
+mod dynamic;
 mod gpu;
 mod integrity;
 mod layouts;

@@ -13,7 +13,7 @@ use wgpu::util::DeviceExt;
 
 const BACKGROUND: [f64; 4] = [0.0, 0.0, 1.0, 1.0];
 
-fn targets() -> Targets {
+pub(crate) fn targets() -> Targets {
     Targets {
         colors: vec![wgpu::TextureFormat::Rgba8Unorm],
         depth: Some(wgpu::TextureFormat::Depth32Float),
@@ -29,14 +29,28 @@ fn draw(
     material: &MaterialManifest,
     keywords: &[&str],
 ) -> Result<([u8; 4], f32), RuntimeError> {
+    draw_pass(runtime, gpu, "Test/Blend", material, keywords, &[])
+}
+
+/// Draws pass 0 of a shader whose vertex stage takes a `vec2<f32>` position at location 0, as
+/// [`draw`] does.
+pub(crate) fn draw_pass(
+    runtime: &mut Runtime,
+    gpu: &Gpu,
+    shader: &str,
+    material: &MaterialManifest,
+    keywords: &[&str],
+    overrides: &[(&str, f64)],
+) -> Result<([u8; 4], f32), RuntimeError> {
     let targets = targets();
     let request = PipelineRequest {
-        shader: "Test/Blend",
+        shader,
         pass: 0,
         keywords,
         material,
         targets: &targets,
         vertex_layout: None,
+        overrides,
     };
     let pipeline = runtime.pipeline(&request)?;
     let device = &gpu.device;
@@ -220,6 +234,7 @@ fn every_variant_and_preset_of_the_bundled_project_gets_a_pipeline() {
             material,
             targets: &targets,
             vertex_layout: None,
+            overrides: &[],
         };
         runtime.pipeline(&request).unwrap_or_else(|e| panic!("{shader} {keywords:?} {}: {e}", material.name));
     }

@@ -339,6 +339,7 @@ pub fn render_with(
             material: &material,
             targets: &targets,
             vertex_layout: None,
+            overrides: &[],
         };
         let pipeline = runtime.pipeline(&request).map_err(|e| e.to_string())?;
         let number = |name: &str| material.number(name).unwrap_or_default() as f32;

@@ -1,0 +1,102 @@
+//! Pipeline-overridable constants: the values a pipeline's stages are specialised with, from the
+//! request's `dynamic_branch` keywords and the renderer's own `override` values, checked against
+//! what each stage module declares.
+
+use super::RuntimeError;
+use crate::manifest::{PassManifest, StageView};
+
+/// Each stage's constants (vertex, fragment), by the key a pipeline sets them by, sorted.
+pub(super) type StageConstants = [Vec<(String, f64)>; 2];
+
+/// What the constants are worked out for: names for errors, the pass, the request.
+pub(super) struct ConstantRequest<'a> {
+    pub shader: &'a str,
+    pub pass: &'a PassManifest,
+    pub keywords: &'a [&'a str],
+    pub overrides: &'a [(&'a str, f64)],
+}
+
+/// The constants each stage is created with: a `dynamic_branch` keyword is 1 when the request
+/// turns it on (or it is its set's default), else 0, in the stages its set is for; every other
+/// override the module uses takes the request's value, or its default.
+pub(super) fn stage_constants(
+    request: &ConstantRequest,
+    stages: &[Option<StageView>; 2],
+) -> Result<StageConstants, RuntimeError> {
+    let (shader, pass) = (request.shader, request.pass.index);
+    let declared = || stages.iter().flatten().flat_map(|s| &s.interface.overrides);
+    for &(name, value) in request.overrides {
+        let found = declared().find(|o| o.key() == name && !request.pass.is_dynamic(&o.name));
+        let Some(constant) = found else {
+            let names = declared().filter(|o| !request.pass.is_dynamic(&o.name)).map(|o| o.name.as_str());
+            return Err(RuntimeError::UnknownOverride {
+                shader: shader.to_string(),
+                pass,
+                name: name.to_string(),
+                keyword: request.pass.is_dynamic(name),
+                suggestion: crate::material::closest(name, names),
+            });
+        };
+        if !constant.accepts(value) {
+            return Err(RuntimeError::OverrideValue {
+                shader: shader.to_string(),
+                pass,
+                name: name.to_string(),
+                ty: constant.ty.clone(),
+                value,
+            });
+        }
+    }
+    // The keyword each dynamic set has on.
+    let mut on: Vec<&str> = Vec::new();
+    for set in request.pass.dynamic_sets() {
+        let requested: Vec<&str> =
+            request.keywords.iter().copied().filter(|k| set.keywords.iter().any(|s| s == k)).collect();
+        if let [first, second, ..] = requested[..] {
+            return Err(RuntimeError::TwoKeywordsOfOneSet {
+                shader: shader.to_string(),
+                pass,
+                first: first.to_string(),
+                second: second.to_string(),
+            });
+        }
+        let default = || set.keywords.first().filter(|_| !set.keywords.iter().any(|k| k == "_"));
+        if let Some(keyword) = requested.first().copied().or_else(|| default().map(String::as_str)) {
+            on.push(keyword);
+        }
+    }
+    let mut constants: StageConstants = Default::default();
+    for ((stage, constants), name) in stages.iter().zip(&mut constants).zip(["vertex", "fragment"]) {
+        let Some(stage) = stage else { continue };
+        for constant in &stage.interface.overrides {
+            let value = if request.pass.is_dynamic(&constant.name) {
+                let set_stage = request
+                    .pass
+                    .dynamic_sets()
+                    .find(|set| set.keywords.contains(&constant.name))
+                    .map_or("all", |set| set.stage.as_str());
+                // A `_fragment` keyword keeps its default in the vertex stage, as Unity's does.
+                if set_stage != "all" && set_stage != name {
+                    continue;
+                }
+                Some(f64::from(u8::from(on.contains(&constant.name.as_str()))))
+            } else {
+                request.overrides.iter().rev().find(|(key, _)| *key == constant.key()).map(|&(_, v)| v)
+            };
+            match value {
+                Some(value) => constants.push((constant.key(), value)),
+                None if constant.required => {
+                    return Err(RuntimeError::OverrideRequired {
+                        shader: shader.to_string(),
+                        pass,
+                        name: constant.name.clone(),
+                        ty: constant.ty.clone(),
+                    });
+                }
+                None => {}
+            }
+        }
+        constants.sort_by(|a, b| a.0.cmp(&b.0));
+    }
+    Ok(constants)
+}
