@@ -9,6 +9,7 @@ mod layout;
 mod overrides;
 mod pipelines;
 mod state;
+mod uniforms;
 
 pub use layout::{PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
 pub use pipelines::{PipelineRequest, Reload, Runtime, Targets, UsageLog};

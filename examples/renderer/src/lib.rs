@@ -169,14 +169,16 @@ fn sphere_mesh(rings: u32, segments: u32) -> (Vec<f32>, Vec<u32>) {
     (vertices, indices)
 }
 
-/// A device (with `shader-f16` where the adapter has it), or why there is none.
+/// A device (with `shader-f16` and timestamp queries where the adapter has them), or why there
+/// is none.
 pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle());
     let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
         .map_err(|e| format!("no GPU adapter ({e}); install mesa-vulkan-drivers for lavapipe"))?;
     let name = adapter.get_info().name;
     let descriptor = wgpu::DeviceDescriptor {
-        required_features: adapter.features() & wgpu::Features::SHADER_F16,
+        required_features: adapter.features()
+            & (wgpu::Features::SHADER_F16 | wgpu::Features::TIMESTAMP_QUERY),
         ..wgpu::DeviceDescriptor::default()
     };
     let (device, queue) =
@@ -213,6 +215,19 @@ pub fn render_with(
     queue: &wgpu::Queue,
     scene: &Scene,
 ) -> Result<Image, String> {
+    Ok(render_frames(runtime, device, queue, scene, 1)?.0)
+}
+
+/// Renders the scene `frames` times in one submission (each frame clears and draws every
+/// object) and returns the last image with the GPU time per frame in nanoseconds, measured with
+/// timestamp queries where the device has them (`device()` asks for them).
+pub fn render_frames(
+    runtime: &mut Runtime,
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    scene: &Scene,
+    frames: u32,
+) -> Result<(Image, Option<f64>), String> {
     use wgpu::util::DeviceExt;
     let layout = runtime.pass_layout(scene::SHADER, 0).map_err(|e| e.to_string())?;
     let pass = runtime.library().pass(scene::SHADER, 0).map_err(|e| e.to_string())?.clone();
@@ -342,19 +357,12 @@ pub fn render_with(
             overrides: &[],
         };
         let pipeline = runtime.pipeline(&request).map_err(|e| e.to_string())?;
-        let number = |name: &str| material.number(name).unwrap_or_default() as f32;
-        let color = material
-            .values
-            .get("_BaseColor")
-            .and_then(|v| serde_json::from_value::<[f32; 4]>(v.clone()).ok());
-        let material = lit::LitMaterial {
-            _BaseMap_ST: [1.0, 1.0, 0.0, 0.0],
-            _BaseColor: color.ok_or("the material has no `_BaseColor`")?,
-            _Cutoff: number("_Cutoff"),
-            _Metallic: number("_Metallic"),
-            _Smoothness: number("_Smoothness"),
-            ..bytemuck::Zeroable::zeroed()
-        };
+        // The material's block from its values, at the manifest's offsets: whatever the
+        // program declares in it (`tests/render.rs` checks it against the generated struct).
+        let material = runtime
+            .library()
+            .material_uniform(&material, 0, "UnityPerMaterial")
+            .map_err(|e| e.to_string())?;
         let (p, s) = (object.position, object.radius);
         let draw = lit::PerDraw {
             unity_ObjectToWorld: mat_f32(&[
@@ -370,16 +378,43 @@ pub fn render_with(
                 [-p[0] / s, -p[1] / s, -p[2] / s, 1.0],
             ]),
         };
-        let material_buffer = uniform(bytemuck::bytes_of(&material));
+        let material_buffer = uniform(&material);
         let draw_buffer = uniform(bytemuck::bytes_of(&draw));
         let groups =
             [bind(1, &[("UnityPerMaterial", &material_buffer)]), bind(2, &[("UnityPerDraw", &draw_buffer)])];
         draws.push((pipeline, groups));
     }
 
+    let timed = device.features().contains(wgpu::Features::TIMESTAMP_QUERY);
+    let queries = timed.then(|| {
+        let set = device.create_query_set(&wgpu::QuerySetDescriptor {
+            label: None,
+            ty: wgpu::QueryType::Timestamp,
+            count: 2,
+        });
+        let buffer = |usage| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: None,
+                size: 16,
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        let resolved = buffer(wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC);
+        let read = buffer(wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ);
+        (set, resolved, read)
+    });
     let mut encoder = device.create_command_encoder(&Default::default());
-    {
+    for frame in 0..frames.max(1) {
         let bg = scene.background;
+        // The first frame's start and the last one's end.
+        let (first, last) = (frame == 0, frame + 1 == frames.max(1));
+        let timestamp_writes =
+            queries.as_ref().filter(|_| first || last).map(|(set, _, _)| wgpu::RenderPassTimestampWrites {
+                query_set: set,
+                beginning_of_pass_write_index: first.then_some(0),
+                end_of_pass_write_index: last.then_some(1),
+            });
         let mut render_pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: None,
             color_attachments: &[Some(wgpu::RenderPassColorAttachment {
@@ -399,6 +434,7 @@ pub fn render_with(
                 }),
                 stencil_ops: None,
             }),
+            timestamp_writes,
             ..Default::default()
         });
         render_pass.set_bind_group(0, &frame_group, &[]);
@@ -426,16 +462,32 @@ pub fn render_with(
         },
         size,
     );
+    if let Some((set, resolved, read)) = &queries {
+        encoder.resolve_query_set(set, 0..2, resolved, 0);
+        encoder.copy_buffer_to_buffer(resolved, 0, read, 0, 16);
+    }
     queue.submit([encoder.finish()]);
     readback.map_async(wgpu::MapMode::Read, .., |_| {});
+    if let Some((_, _, read)) = &queries {
+        read.map_async(wgpu::MapMode::Read, .., |_| {});
+    }
     device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| e.to_string())?;
+    let gpu_time = match &queries {
+        Some((_, _, read)) => {
+            let stamps = read.get_mapped_range(..).map_err(|e| e.to_string())?;
+            let stamp = |at: usize| u64::from_le_bytes(stamps[at..at + 8].try_into().unwrap_or_default());
+            let ticks = stamp(8).saturating_sub(stamp(0)) as f64;
+            Some(ticks * f64::from(queue.get_timestamp_period()) / f64::from(frames.max(1)))
+        }
+        None => None,
+    };
     let mapped = readback.get_mapped_range(..).map_err(|e| e.to_string())?;
     let mut pixels = Vec::with_capacity((scene.width * scene.height * 4) as usize);
     for y in 0..scene.height {
         let start = (y * row) as usize;
         pixels.extend_from_slice(&mapped[start..start + (scene.width * 4) as usize]);
     }
-    Ok(Image { width: scene.width, height: scene.height, pixels })
+    Ok((Image { width: scene.width, height: scene.height, pixels }, gpu_time))
 }
 
 /// The scene drawn on the CPU in f64: analytic spheres, kiln's reference lighting, the same

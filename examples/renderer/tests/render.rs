@@ -88,3 +88,27 @@ fn a_scene_with_one_light_gets_only_the_single_light_variants() {
         [single(vec![]), single(vec!["_CLIPPING"]), single(vec!["_PREMULTIPLY_ALPHA"])].into_iter().collect();
     assert_eq!(built, expected);
 }
+
+/// `Library::material_uniform` fills the material's block as the generated `#[repr(C)]` struct
+/// lays it out: the same bytes as that struct filled by hand from the material's values.
+#[test]
+fn material_uniform_bytes_are_the_generated_structs() {
+    use kiln_renderer::shaders::custom_rp_lit::LitMaterial;
+    let library = kiln_renderer::library().expect("embedded build");
+    for material in library.materials() {
+        let number = |name: &str| material.number(name).expect("a number") as f32;
+        let color: [f32; 4] =
+            serde_json::from_value(material.values["_BaseColor"].clone()).expect("a colour");
+        let by_hand = LitMaterial {
+            _BaseMap_ST: [1.0, 1.0, 0.0, 0.0],
+            _BaseColor: color,
+            _Cutoff: number("_Cutoff"),
+            _Metallic: number("_Metallic"),
+            _Smoothness: number("_Smoothness"),
+            ..bytemuck::Zeroable::zeroed()
+        };
+        let filled = library.material_uniform(material, 0, "UnityPerMaterial").expect("fills");
+        assert_eq!(filled, bytemuck::bytes_of(&by_hand), "{}", material.name);
+    }
+    assert!(library.materials().len() >= 10);
+}
