@@ -120,8 +120,11 @@ pub struct Pass {
     pub shader: &'static str,
     pub index: usize,
     pub name: Option<&'static str>,
-    /// Every keyword the pass declares; bit i of a variant key stands for `keywords[i]`.
+    /// Every variant keyword the pass declares; bit i of a variant key stands for `keywords[i]`.
     pub keywords: &'static [&'static str],
+    /// Its `dynamic_branch` keywords: `bool` `override` constants of its modules (set to 1 or 0
+    /// when a pipeline is created), never part of a variant.
+    pub dynamic_keywords: &'static [&'static str],
     pub layout: &'static [BindingEntry],
     interfaces: &'static [Interface],
     modules: &'static [ModuleRow],
@@ -178,10 +181,11 @@ impl std::error::Error for MissingVariant {}
 #[allow(dead_code)]
 impl Pass {
     /// The variant with exactly these keywords (in any order), or an error naming what is missing.
+    /// `dynamic_branch` keywords among them choose no variant.
     pub fn variant(&'static self, keywords: &[&str]) -> Result<Variant, MissingVariant> {
         let mut key = vec![0u64; self.key_words];
         let mut undeclared = Vec::new();
-        for keyword in keywords {
+        for keyword in keywords.iter().filter(|k| !self.dynamic_keywords.contains(k)) {
             match self.keywords.iter().position(|k| k == keyword) {
                 Some(bit) => key[bit / 64] |= 1 << (bit % 64),
                 None => undeclared.push(keyword.to_string()),
@@ -362,6 +366,9 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
         pass.index, pass.name
     );
     let _ = writeln!(out, "        keywords: &[{}],", quoted(&pass.keywords));
+    let dynamic: Vec<String> =
+        pass.dynamic_sets().flat_map(|set| &set.keywords).filter(|k| *k != "_").cloned().collect();
+    let _ = writeln!(out, "        dynamic_keywords: &[{}],", quoted(&dynamic));
     out.push_str("        layout: &[\n");
     for group in &pass.layout {
         for entry in &group.entries {

@@ -7,7 +7,7 @@ use crate::runtime::draw_pass;
 use crate::support::{build_without_errors, gpu, kiln, root};
 use expect_test::expect_file;
 use kiln::build::VariantSelection;
-use kiln::runtime::{Runtime, RuntimeError};
+use kiln::runtime::{Runtime, RuntimeError, UsageLog};
 
 const SHADER: &str = "Test/Dynamic";
 
@@ -81,33 +81,33 @@ fn the_generated_module_has_typed_overrides_that_compile() {
         assert!(module.contains(line), "the generated module has `{line}`:\n{module}");
     }
     assert!(!module.contains("pub _FOG"), "keywords are set through keywords, not overrides");
-    // Compiled by cargo: the struct's fields have the types a renderer writes.
+    assert!(module.contains(r#"dynamic_keywords: &["_TINT_RED", "_TINT_GREEN", "_FOG"],"#));
+    // Compiled and run by cargo: the struct's fields have the types a renderer writes.
     let krate = out.path().join("crate");
-    std::fs::create_dir_all(krate.join("src")).expect("crate");
-    std::fs::write(
-        krate.join("Cargo.toml"),
-        "[package]\nname = \"kiln-overrides-check\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n\
-         [dependencies]\nbytemuck = { version = \"1\", features = [\"derive\", \"min_const_generics\"] }\n\n[workspace]\n",
-    )
-    .expect("Cargo.toml");
-    for (path, bytes) in crate::support::tree(&out.path().join("kiln")) {
-        let to = krate.join("src/kiln").join(path);
-        std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
-        std::fs::write(to, bytes).expect("pack");
-    }
-    std::fs::write(krate.join("src/shaders.rs"), &module).expect("module");
-    std::fs::write(
-        krate.join("src/lib.rs"),
+    crate::support::generated_module_crate(
+        &krate,
+        &module,
+        (&out.path().join("kiln"), "kiln"),
         "pub mod shaders;\n\
          pub fn constants() -> [(&'static str, f64); 3] {\n\
          \x20   let o = shaders::test_dynamic::Pass0Overrides { brightness: 0.5f32, ..Default::default() };\n\
          \x20   let _: (f32, u32) = (o.blue, o.steps);\n\
          \x20   o.constants()\n\
+         }\n\
+         #[test]\n\
+         fn dynamic_keywords_choose_no_variant_and_constants_are_the_values() {\n\
+         \x20   assert!(shaders::test_dynamic::PASS_0.variant(&[\"_FOG\", \"_TINT_RED\"]).is_ok());\n\
+         \x20   assert_eq!(constants(), [(\"brightness\", 0.5), (\"7\", 0.0), (\"steps\", 1.0)]);\n\
          }\n",
-    )
-    .expect("lib.rs");
-    let run = crate::support::cargo_scratch(&krate, &["build"]);
-    assert!(run.status.success(), "does not compile:\n{}", String::from_utf8_lossy(&run.stderr));
+    );
+    // Its test runs the generated lookup and `constants()`.
+    let run = crate::support::cargo_scratch(&krate, &["test"]);
+    assert!(
+        run.status.success(),
+        "fails:\n{}{}",
+        String::from_utf8_lossy(&run.stdout),
+        String::from_utf8_lossy(&run.stderr)
+    );
 }
 
 #[test]
@@ -149,6 +149,8 @@ fn keyword_values_and_overrides_draw_the_right_pixels_with_one_module() {
     let Some(gpu) = gpu("the dynamic_branch test") else { return };
     let output = built();
     let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
+    let log = output.path().join("usage.jsonl");
+    runtime.log_usage(UsageLog::new(Some(&log), None).expect("log"));
     let material = |name: &str| runtime.library().material(name).expect("built").clone();
     let (plain, red, green) = (material("Plain"), material("Red"), material("Green"));
     let grey = [0.2, 0.2, 0.2];
@@ -179,6 +181,25 @@ fn keyword_values_and_overrides_draw_the_right_pixels_with_one_module() {
     let materials = [&plain, &red, &green];
     runtime.warm_up(&materials, &[], &crate::runtime::targets()).expect("warms up");
     assert_eq!(runtime.pipelines_created(), 7);
+    // The usage log names the dynamic keywords each draw asked for, and builds from it.
+    let logged = std::fs::read_to_string(&log).expect("usage log");
+    assert!(logged.lines().any(|l| l.contains(r#"["_FOG","_TINT_RED"]"#)), "{logged}");
+    let rebuilt = output.path().join("rebuilt");
+    let (log, rebuilt) = (log.to_str().expect("utf-8"), rebuilt.to_str().expect("utf-8"));
+    let run = kiln(&["build", "fixtures/dynamic", "--variants-from", log, "--output", rebuilt]);
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+}
+
+#[test]
+fn reflect_shows_overrides_and_takes_dynamic_keywords() {
+    let run = kiln(&["reflect", "fixtures/dynamic/Dynamic.shader", "--keywords", "_FOG"]);
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let reflected: serde_json::Value = serde_json::from_slice(&run.stdout).expect("JSON");
+    let overrides = &reflected["variant"]["fragment"]["overrides"];
+    let names: Vec<&str> =
+        overrides.as_array().expect("a list").iter().filter_map(|o| o["name"].as_str()).collect();
+    assert_eq!(names, ["brightness", "blue", "steps", "_TINT_RED", "_TINT_GREEN", "_FOG"]);
+    assert_eq!(overrides[1]["id"], 7);
 }
 
 #[test]

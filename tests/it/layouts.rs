@@ -1118,26 +1118,13 @@ fn the_generated_rust_of_random_structs_compiles_with_its_layout_assertions() {
     let dir = tempfile::tempdir().expect("temp dir");
     let manifest = build_valid(dir.path(), &sample);
     let krate = dir.path().join("crate");
-    std::fs::create_dir_all(krate.join("src")).expect("crate");
-    std::fs::write(
-        krate.join("Cargo.toml"),
-        "[package]\nname = \"kiln-layouts-check\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n\
-         [dependencies]\nbytemuck = { version = \"1\", features = [\"derive\", \"min_const_generics\"] }\n\n[workspace]\n",
-    )
-    .expect("Cargo.toml");
-    // The packs beside the module, as a build script's OUT_DIR holds them.
-    for (path, bytes) in crate::support::tree(&dir.path().join("out")) {
-        let to = krate.join("src/out").join(path);
-        std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
-        std::fs::write(to, bytes).expect("pack");
-    }
     let module = kiln::codegen::generate(&manifest, "out");
-    std::fs::write(krate.join("src/shaders.rs"), &module).expect("module");
-    std::fs::write(
-        krate.join("src/lib.rs"),
+    crate::support::generated_module_crate(
+        &krate,
+        &module,
+        (&dir.path().join("out"), "out"),
         "#![allow(dead_code, non_snake_case, non_camel_case_types, clippy::all)]\npub mod shaders;\n",
-    )
-    .expect("lib.rs");
+    );
     let run = crate::support::cargo_scratch(&krate, &["build"]);
     assert!(
         run.status.success(),

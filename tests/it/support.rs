@@ -192,6 +192,26 @@ pub fn cargo_scratch(krate: &Path, args: &[&str]) -> Output {
         .expect("cargo runs")
 }
 
+/// A scratch crate in `krate` that compiles a generated module as `src/shaders.rs`, with
+/// bytemuck and the build's output folder `packs` copied to `src/PACKS_NAME` (as a build script's
+/// `OUT_DIR` holds them), and `lib` as its `src/lib.rs`.
+pub fn generated_module_crate(krate: &Path, module: &str, packs: (&Path, &str), lib: &str) {
+    std::fs::create_dir_all(krate.join("src")).expect("crate");
+    std::fs::write(
+        krate.join("Cargo.toml"),
+        "[package]\nname = \"kiln-generated-check\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n\
+         [dependencies]\nbytemuck = { version = \"1\", features = [\"derive\", \"min_const_generics\"] }\n\n[workspace]\n",
+    )
+    .expect("Cargo.toml");
+    for (path, bytes) in tree(packs.0) {
+        let to = krate.join("src").join(packs.1).join(path);
+        std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
+        std::fs::write(to, bytes).expect("pack");
+    }
+    std::fs::write(krate.join("src/shaders.rs"), module).expect("module");
+    std::fs::write(krate.join("src/lib.rs"), lib).expect("lib.rs");
+}
+
 /// A copy of the bundled example project (without build output) in `dir/project`.
 pub fn example_project_copy(dir: &Path) -> PathBuf {
     let project = dir.join("project");
