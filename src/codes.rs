@@ -78,6 +78,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0326", "pasting does not give a token"),
     ("K0327", "shift out of range in `#if`"),
     ("K0328", "`dynamic_branch` keyword tested by the preprocessor"),
+    ("K0329", "`__VA_ARGS__` or `__VA_OPT__` misused"),
     ("K0401", "WGSL syntax error"),
     ("K0402", "WGSL validation error"),
     ("K0403", "entry point not found"),

@@ -131,6 +131,11 @@ pub enum PreprocessError {
         span: Span,
         pragma: String,
     },
+    VariadicMisuse {
+        span: Span,
+        name: String,
+        reason: &'static str,
+    },
     DynamicKeywordInCondition {
         span: Span,
         keyword: String,
@@ -295,6 +300,11 @@ impl From<PreprocessError> for Diagnostic {
                 Diagnostic::warning("K0322", format!("`#pragma {pragma}` in a plain `#include` is ignored"))
                     .at(span, "this pragma does not count for the pass")
                     .help("include the file with `#include_with_pragmas` to make its pragmas count")
+            }
+            VariadicMisuse { span, name, reason } => {
+                Diagnostic::error("K0329", format!("`{name}` where C does not allow it"))
+                    .at(span, "not allowed here")
+                    .note(reason)
             }
             DynamicKeywordInCondition { span, keyword, declared } => Diagnostic::error(
                 "K0328",

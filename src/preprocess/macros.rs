@@ -278,7 +278,10 @@ impl<'a> MacroDef<'a> {
         self.params == other.params
             && self.variadic == other.variadic
             && self.body.len() == other.body.len()
-            && self.body.iter().zip(other.body.iter()).all(|(a, b)| self.text(a) == other.text(b))
+            && self.body.iter().zip(other.body.iter()).enumerate().all(|(i, (a, b))| {
+                // C compares whitespace too: its presence between tokens, not its amount.
+                self.text(a) == other.text(b) && (i == 0 || a.space == b.space)
+            })
     }
 
     fn param(&self, name: &str) -> Option<usize> {
@@ -556,6 +559,22 @@ impl<'m, 'a> Expander<'m, 'a> {
         }
     }
 
+    /// An argument macro-expanded on its own, as C expands it before substitution. The macros
+    /// expanded inside it are hidden from its tokens only while that expansion runs (gcc's
+    /// contexts, which end with it): afterwards a token keeps the hide set it came in with, unless
+    /// it was painted (its own name hidden when it was read), which lasts.
+    fn pre_expand(&mut self, tokens: Vec<Token<'a>>) -> Vec<Token<'a>> {
+        let came_in = tokens.iter().fold(0, |set, t| self.hides.union(set, t.hide));
+        let mut expanded = self.all(tokens);
+        for t in &mut expanded {
+            let painted = t.kind == Kind::Ident && self.hides.contains(t.hide, &t.text);
+            if !painted {
+                t.hide = self.hides.intersection(t.hide, came_in);
+            }
+        }
+        expanded
+    }
+
     /// A macro's body with its parameters replaced and `##` applied, every token hidden from the
     /// macros in `hide` and placed at the invocation.
     fn substitute(
@@ -593,7 +612,7 @@ impl<'m, 'a> Expander<'m, 'a> {
                 // otherwise (as C23 and gcc: an argument that expands to nothing is none).
                 let (group, after) = parenthesised(def, i + 1);
                 if expanded[named].is_none() {
-                    expanded[named] = Some(self.all(variadic.clone()));
+                    expanded[named] = Some(self.pre_expand(variadic.clone()));
                 }
                 if expanded[named].as_ref().is_some_and(|tokens| !tokens.is_empty()) {
                     let inner = MacroDef { body: Cow::Owned(group), defined_at: None, ..def.clone() };
@@ -612,7 +631,7 @@ impl<'m, 'a> Expander<'m, 'a> {
                         match &expanded[index] {
                             Some(tokens) => tokens.clone(),
                             None => {
-                                let tokens = self.all(arg(index).clone());
+                                let tokens = self.pre_expand(arg(index).clone());
                                 expanded[index] = Some(tokens.clone());
                                 tokens
                             }

@@ -155,6 +155,20 @@ pub(crate) fn scan(file: FileId, text: &str, range: Range<usize>) -> (Unit, Vec<
     (scanner.unit, scanner.errors)
 }
 
+/// The index of the `)` closing the `(` at `open` in a macro body (the last token when unclosed).
+fn closing_paren(value: &str, tokens: &[BodyToken], open: usize) -> usize {
+    let mut depth = 0;
+    for (i, token) in tokens.iter().enumerate().skip(open) {
+        match token.text(value) {
+            "(" => depth += 1,
+            ")" if depth == 1 => return i,
+            ")" => depth -= 1,
+            _ => {}
+        }
+    }
+    tokens.len().saturating_sub(1)
+}
+
 fn next_line(text: &str, pos: usize, end: usize) -> usize {
     text[pos..end].find('\n').map_or(end, |i| pos + i + 1)
 }
@@ -539,7 +553,31 @@ impl Scanner<'_> {
         let is_param = |name: &str| {
             params.is_some_and(|p| p.iter().any(|q| q == name) || (variadic && name == "__VA_ARGS__"))
         };
+        // The end of the `__VA_OPT__(...)` group being read, to refuse one inside another.
+        let mut in_va_opt: Option<usize> = None;
         for (i, token) in tokens.iter().enumerate() {
+            let text = token.text(value);
+            if in_va_opt.is_some_and(|end| i > end) {
+                in_va_opt = None;
+            }
+            if text == "__VA_ARGS__" || text == "__VA_OPT__" {
+                let reason = if !variadic {
+                    Some("only a variadic macro's body (`...` last among its parameters) may use it")
+                } else if text == "__VA_OPT__" && tokens.get(i + 1).is_none_or(|t| t.text(value) != "(") {
+                    Some("`__VA_OPT__` must be followed by `(`")
+                } else if text == "__VA_OPT__" && in_va_opt.is_some() {
+                    Some("`__VA_OPT__(...)` may not contain another `__VA_OPT__`")
+                } else {
+                    None
+                };
+                if let Some(reason) = reason {
+                    self.errors.push(PreprocessError::VariadicMisuse { span: span(token), name: text.to_string(), reason });
+                    return false;
+                }
+                if text == "__VA_OPT__" {
+                    in_va_opt = Some(closing_paren(value, tokens, i + 1));
+                }
+            }
             if token.text(value) == "##" && (i == 0 || i + 1 == tokens.len()) {
                 self.errors.push(PreprocessError::PasteAtEdge { span: span(token) });
                 return false;
@@ -558,6 +596,12 @@ impl Scanner<'_> {
     fn macro_name(&mut self, cursor: &mut Cursor, directive: &str, whole: Span) -> Option<(String, Span)> {
         cursor.skip_space();
         let (start, name) = cursor.ident();
+        if directive == "define" && (name == "__VA_ARGS__" || name == "__VA_OPT__") {
+            let span = self.span(start..start + name.len());
+            let reason = "it is reserved for variadic macros' bodies and cannot be defined";
+            self.errors.push(PreprocessError::VariadicMisuse { span, name: name.to_string(), reason });
+            return None;
+        }
         if name.is_empty() || name == "defined" || name.as_bytes()[0].is_ascii_digit() {
             self.errors.push(PreprocessError::MalformedDirective {
                 span: whole,

@@ -140,33 +140,50 @@ fn call(rng: &mut Rng, depth: usize, comma_free: bool) -> String {
 
 /// kiln's output for `text` with keyword `K1` on.
 fn kiln_output(text: &str) -> String {
+    let (out, rendered, _) = kiln_run(text, &["K1"]);
+    assert!(rendered.is_empty(), "{rendered}");
+    out
+}
+
+/// kiln's output for `text` with `keywords` on, its errors rendered (empty when none), and how
+/// many warnings it gave.
+pub(crate) fn kiln_run(text: &str, keywords: &[&str]) -> (String, String, usize) {
     let mut store = SourceStore::new();
-    let file = store.add("generated.wgsl", text);
+    let file = store.add("input.wgsl", text);
     let mut includes = Includes::new(IncludeConfig::new(Vec::new()));
     let (program, mut diagnostics) = includes.load_program(&mut store, &[Span::new(file, 0..text.len())]);
-    let out = kiln::preprocess::preprocess(&includes, &store, &program, &["K1"], Stage::Vertex);
+    let out = kiln::preprocess::preprocess(&includes, &store, &program, keywords, Stage::Vertex);
     diagnostics.extend(out.diagnostics);
     let errors: Vec<_> = diagnostics.iter().filter(|d| d.is_error()).cloned().collect();
-    assert!(errors.is_empty(), "{}", kiln::diagnostics::render_plain(&store, &errors));
-    out.text
+    let warnings = diagnostics.len() - errors.len();
+    (out.text, kiln::diagnostics::render_plain(&store, &errors), warnings)
 }
 
 /// gcc's output for `text` with `K1` defined as 1.
 fn cpp_output(text: &str) -> String {
+    cpp_run(&format!("#define K1 1\n{text}")).unwrap_or_else(|e| panic!("cpp failed: {e}")).0
+}
+
+/// gcc's output for `text` as C (`cpp -P -undef -nostdinc`) with what it printed on stderr
+/// (warnings), or its error output.
+pub(crate) fn cpp_run(text: &str) -> Result<(String, String), String> {
     let dir = tempfile::tempdir().expect("temp dir");
-    let input = dir.path().join("generated.c");
-    std::fs::write(&input, format!("#define K1 1\n{text}")).expect("write");
+    let input = dir.path().join("input.c");
+    std::fs::write(&input, text).expect("write");
     let out = Command::new("cpp")
         .args(["-P", "-undef", "-nostdinc", "-x", "c"])
         .arg(&input)
         .output()
         .expect("cpp runs");
-    assert!(out.status.success(), "cpp failed: {}", String::from_utf8_lossy(&out.stderr));
-    String::from_utf8(out.stdout).expect("utf-8")
+    if out.status.success() {
+        Ok((String::from_utf8_lossy(&out.stdout).into_owned(), String::from_utf8_lossy(&out.stderr).into_owned()))
+    } else {
+        Err(String::from_utf8_lossy(&out.stderr).into_owned())
+    }
 }
 
 /// C's preprocessing tokens of a text (spacing is not compared).
-fn tokens(text: &str) -> Vec<String> {
+pub(crate) fn tokens(text: &str) -> Vec<String> {
     let mut out = Vec::new();
     let bytes = text.as_bytes();
     let mut i = 0;
@@ -205,7 +222,7 @@ fn tokens(text: &str) -> Vec<String> {
 }
 
 /// The first difference between two token streams, with some context.
-fn first_difference(ours: &[String], theirs: &[String]) -> Option<String> {
+pub(crate) fn first_difference(ours: &[String], theirs: &[String]) -> Option<String> {
     let at = ours
         .iter()
         .zip(theirs)

@@ -1,0 +1,13 @@
+/*=============================================================================
+    Boost.Wave: A Standard compliant C++ preprocessor library
+    http://www.boost.org/
+
+    Copyright (c) 2001-2012 Hartmut Kaiser. Distributed under the Boost
+    Software License, Version 1.0. (See accompanying file
+    LICENSE_1_0.txt or copy at http://www.boost.org/LICENSE_1_0.txt)
+=============================================================================*/
+
+//U yes
+//R #line 10 "file.hpp"
+//R "$P(utf8-test-ßµ™∃/file.hpp)"
+#include <utf8-test-ßµ™∃/file.hpp>
