@@ -131,6 +131,11 @@ pub enum PreprocessError {
         span: Span,
         pragma: String,
     },
+    DefinedInExpansion {
+        span: Span,
+        name: String,
+        definition: Option<Span>,
+    },
     VariadicMisuse {
         span: Span,
         name: String,
@@ -278,6 +283,7 @@ impl From<PreprocessError> for Diagnostic {
                 Diagnostic::warning("K0316", format!("macro `{name}` redefined with a different value"))
                     .at(span, "redefined here")
                     .label(previous, "first defined here")
+                    .note("a redefinition is the same only with the same tokens and whitespace between the same ones, as C has it")
                     .help("`#undef` it first if the new value is intended")
             }
             KeywordNeverTested { span, keyword } => Diagnostic::warning(
@@ -300,6 +306,16 @@ impl From<PreprocessError> for Diagnostic {
                 Diagnostic::warning("K0322", format!("`#pragma {pragma}` in a plain `#include` is ignored"))
                     .at(span, "this pragma does not count for the pass")
                     .help("include the file with `#include_with_pragmas` to make its pragmas count")
+            }
+            DefinedInExpansion { span, name, definition } => {
+                let d = Diagnostic::warning("K0330", format!("`defined` written by expanding `{name}` in `#if`"))
+                    .at(span, "expanded here");
+                let d = match definition {
+                    Some(definition) => d.label(definition, "whose value uses `defined`"),
+                    None => d,
+                };
+                d.note("C leaves this undefined; kiln evaluates it as gcc and clang do, on the name as written")
+                    .help("test the names in the `#if` itself, or define the macro as 0 or 1")
             }
             VariadicMisuse { span, name, reason } => {
                 Diagnostic::error("K0329", format!("`{name}` where C does not allow it"))

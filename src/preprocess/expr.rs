@@ -7,13 +7,14 @@
 use super::macros::{Expander, Kind, Token, lex};
 use std::borrow::Cow;
 
-/// Parentheses and unary operators nested deeper than this are refused rather than recursed into
-/// (C guarantees 63 levels of parentheses; each level counts once).
+/// Parentheses nested deeper than this are refused rather than recursed into (C guarantees 63
+/// levels, and counts only parentheses: unary operators are read in a loop and count for
+/// nothing).
 pub(super) const MAX_NESTING: usize = 64;
 
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub(super) enum ExprError {
-    /// Parentheses or unary operators nested past [`MAX_NESTING`].
+    /// Parentheses nested past [`MAX_NESTING`].
     NestedTooDeep {
         offset: usize,
     },
@@ -314,33 +315,34 @@ impl Parser {
         })
     }
 
+    /// Prefix operators, then a number or a parenthesised expression. The operators are read in
+    /// a loop and applied innermost first, so a long run of them needs no stack.
     fn unary(&mut self) -> Result<Value, ExprError> {
-        if self.depth >= MAX_NESTING {
-            return Err(ExprError::NestedTooDeep { offset: self.offset() });
+        let mut operators = Vec::new();
+        while let Some(op) = ["!", "-", "+", "~"].into_iter().find(|op| self.eat(op)) {
+            operators.push(op);
         }
-        self.depth += 1;
-        let value = self.unary_inner();
-        self.depth -= 1;
-        value
+        let mut value = self.primary()?;
+        for op in operators.into_iter().rev() {
+            value = match op {
+                "!" => Value::truth(!value.is_true()),
+                "-" => Value { bits: value.bits.wrapping_neg(), ..value },
+                "~" => Value { bits: !value.bits, ..value },
+                _ => value,
+            };
+        }
+        Ok(value)
     }
 
-    fn unary_inner(&mut self) -> Result<Value, ExprError> {
-        if self.eat("!") {
-            return Ok(Value::truth(!self.unary()?.is_true()));
-        }
-        if self.eat("-") {
-            let v = self.unary()?;
-            return Ok(Value { bits: v.bits.wrapping_neg(), ..v });
-        }
-        if self.eat("+") {
-            return self.unary();
-        }
-        if self.eat("~") {
-            let v = self.unary()?;
-            return Ok(Value { bits: !v.bits, ..v });
-        }
+    fn primary(&mut self) -> Result<Value, ExprError> {
         if self.eat("(") {
-            let value = self.comma()?;
+            if self.depth >= MAX_NESTING {
+                return Err(ExprError::NestedTooDeep { offset: self.offset() });
+            }
+            self.depth += 1;
+            let value = self.comma();
+            self.depth -= 1;
+            let value = value?;
             if !self.eat(")") {
                 return Err(ExprError::Malformed { offset: self.offset(), expected: "`)`" });
             }
@@ -474,7 +476,9 @@ mod tests {
     fn deep_nesting_is_refused() {
         let deep = format!("{}1{}", "(".repeat(10_000), ")".repeat(10_000));
         assert!(matches!(eval(&deep), Err(ExprError::NestedTooDeep { .. })));
-        assert!(matches!(eval(&"!".repeat(10_000)), Err(ExprError::NestedTooDeep { .. })));
+        // Unary operators count for nothing: C's limit is on parentheses.
+        assert_eq!(eval(&format!("{}1", "!".repeat(10_000))), Ok(true));
+        assert_eq!(eval(&format!("{}1", "- ".repeat(10_001))), Ok(true));
         let fine = format!("{}1{}", "(".repeat(60), ")".repeat(60));
         assert_eq!(eval(&fine), Ok(true));
     }

@@ -95,6 +95,46 @@ fn comment_len(rest: &[u8]) -> Option<usize> {
     Some(i)
 }
 
+/// The length of a line splice (`\\` and a line break) at the start of `bytes`, or 0.
+pub(crate) fn splice_len(bytes: &[u8]) -> usize {
+    if bytes.starts_with(b"\\\n") {
+        2
+    } else if bytes.starts_with(b"\\\r\n") {
+        3
+    } else {
+        0
+    }
+}
+
+/// `text` without its line splices (C's translation phase 2).
+pub(crate) fn unspliced(text: &str) -> Cow<'_, str> {
+    if !text.contains('\\') {
+        return Cow::Borrowed(text);
+    }
+    Cow::Owned(text.replace("\\\r\n", "").replace("\\\n", ""))
+}
+
+/// Whether a preprocessing number starts at `at`: a digit, or `.` and a digit.
+pub(crate) fn starts_pp_number(bytes: &[u8], at: usize) -> bool {
+    bytes[at].is_ascii_digit() || (bytes[at] == b'.' && bytes.get(at + 1).is_some_and(u8::is_ascii_digit))
+}
+
+/// Where the preprocessing number starting at `at` ends: C's pp-number is digits, letters, `_`,
+/// `.`, and a sign after `e`, `E`, `p` or `P`, so `12E+EXP` is one token and no macro is
+/// expanded inside it.
+pub(crate) fn pp_number_end(bytes: &[u8], at: usize) -> usize {
+    let mut i = at + 1;
+    while i < bytes.len() {
+        let c = bytes[i];
+        let signed_exponent = matches!(c, b'+' | b'-') && matches!(bytes[i - 1], b'e' | b'E' | b'p' | b'P');
+        if !(signed_exponent || is_ident_char(c) || c == b'.') {
+            break;
+        }
+        i += 1;
+    }
+    i
+}
+
 pub(crate) fn is_ident_start(b: u8) -> bool {
     b.is_ascii_alphabetic() || b == b'_' || b >= 0x80
 }
@@ -121,21 +161,26 @@ impl<'a> Lexer<'a> {
         self.pos
     }
 
-    /// Skips whitespace and comments; whether there were any.
+    /// Skips whitespace, comments and line splices; whether there was whitespace or a comment
+    /// (a splice joins what it separates: it is no space).
     fn skip_space(&mut self) -> bool {
         let bytes = self.text.as_bytes();
-        let start = self.pos;
+        let mut space = false;
         while self.pos < self.end {
             let rest = &bytes[self.pos..self.end];
             if rest[0].is_ascii_whitespace() {
                 self.pos += 1;
+                space = true;
             } else if let Some(len) = comment_len(rest) {
                 self.pos += len;
+                space = true;
+            } else if splice_len(rest) > 0 {
+                self.pos += splice_len(rest);
             } else {
                 break;
             }
         }
-        self.pos > start
+        space
     }
 
     pub(super) fn next_token(&mut self) -> Option<Token<'a>> {
@@ -147,22 +192,28 @@ impl<'a> Lexer<'a> {
         let start = self.pos;
         let b = bytes[start];
         let mut i = start + 1;
+        // An identifier split by line splices is one name; its text is then spliced.
+        let mut spliced: Option<String> = None;
         let kind = if is_ident_start(b) {
-            while i < bytes.len() && is_ident_char(bytes[i]) {
-                i += 1;
-            }
-            Kind::Ident
-        } else if b.is_ascii_digit() || (b == b'.' && bytes.get(i).is_some_and(u8::is_ascii_digit)) {
-            // A pp-number: digits, letters, `_`, `.`, and a sign after an exponent letter.
-            while i < bytes.len() {
-                let c = bytes[i];
-                let signed_exponent =
-                    matches!(c, b'+' | b'-') && matches!(bytes[i - 1], b'e' | b'E' | b'p' | b'P');
-                if !(signed_exponent || is_ident_char(c) || c == b'.') {
+            let mut piece = start;
+            loop {
+                while i < bytes.len() && is_ident_char(bytes[i]) {
+                    i += 1;
+                }
+                let splice = splice_len(&bytes[i..]);
+                if splice == 0 || !bytes.get(i + splice).is_some_and(|&c| is_ident_char(c)) {
                     break;
                 }
-                i += 1;
+                spliced.get_or_insert_with(String::new).push_str(&self.text[piece..i]);
+                i += splice;
+                piece = i;
             }
+            if let Some(name) = spliced.as_mut() {
+                name.push_str(&self.text[piece..i]);
+            }
+            Kind::Ident
+        } else if starts_pp_number(bytes, start) {
+            i = pp_number_end(bytes, start);
             Kind::Number
         } else if b == b'"' || b == b'\'' {
             while i < bytes.len() && bytes[i] != b && bytes[i] != b'\n' {
@@ -181,7 +232,7 @@ impl<'a> Lexer<'a> {
         self.pos = i;
         Some(Token {
             kind,
-            text: Cow::Borrowed(&self.text[start..i]),
+            text: spliced.map_or(Cow::Borrowed(&self.text[start..i]), Cow::Owned),
             space,
             hide: 0,
             at: start,
@@ -296,10 +347,32 @@ impl<'a> MacroDef<'a> {
 /// What went wrong in an expansion; `at` is an offset in the lexed text.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub(crate) enum ExpandError {
-    ArgumentCount { at: Range<usize>, name: String, expected: usize, variadic: bool, found: usize },
-    Unterminated { at: Range<usize>, name: String },
-    Paste { at: Range<usize>, name: String, left: String, right: String },
-    TooDeep { at: Range<usize>, name: String },
+    /// `defined` written by expanding the macro `name` in an `#if` (a warning).
+    DefinedInExpansion {
+        at: Range<usize>,
+        name: String,
+    },
+    ArgumentCount {
+        at: Range<usize>,
+        name: String,
+        expected: usize,
+        variadic: bool,
+        found: usize,
+    },
+    Unterminated {
+        at: Range<usize>,
+        name: String,
+    },
+    Paste {
+        at: Range<usize>,
+        name: String,
+        left: String,
+        right: String,
+    },
+    TooDeep {
+        at: Range<usize>,
+        name: String,
+    },
 }
 
 /// Where macro tokens come from during one expansion: tokens to rescan first, then the text.
@@ -417,11 +490,26 @@ pub(crate) struct Expander<'m, 'a> {
     produced: usize,
     /// The invocation the user wrote that the current expansion came from (name's place, name).
     outer: (Range<usize>, String),
+    /// Expanding an `#if` expression: the name after `defined` is an operand, never expanded.
+    in_condition: bool,
 }
 
 impl<'m, 'a> Expander<'m, 'a> {
     pub(super) fn new(macros: &'m Macros<'a>, hides: &'m mut HideSets<'a>) -> Expander<'m, 'a> {
-        Expander { macros, errors: Vec::new(), hides, produced: 0, outer: (0..0, String::new()) }
+        Expander {
+            macros,
+            errors: Vec::new(),
+            hides,
+            produced: 0,
+            outer: (0..0, String::new()),
+            in_condition: false,
+        }
+    }
+
+    /// An expander for an `#if` expression: `defined NAME` and `defined(NAME)` that a macro's
+    /// expansion writes keep their operand unexpanded, as gcc evaluates them (with a warning).
+    pub(super) fn for_condition(macros: &'m Macros<'a>, hides: &'m mut HideSets<'a>) -> Expander<'m, 'a> {
+        Expander { in_condition: true, ..Expander::new(macros, hides) }
     }
 
     /// Expands the invocation that starts at the lexer's position (a macro name), reading as
@@ -463,6 +551,23 @@ impl<'m, 'a> Expander<'m, 'a> {
                     None => return,
                 }
             };
+            if self.in_condition && token.kind == Kind::Ident && token.text == "defined" {
+                let reported =
+                    self.errors.iter().any(|e| matches!(e, ExpandError::DefinedInExpansion { .. }));
+                if token.hide != 0 && !reported {
+                    let (at, name) = self.outer.clone();
+                    self.errors.push(ExpandError::DefinedInExpansion { at, name });
+                }
+                out.push(token);
+                // Its operand, `NAME` or `( NAME`, passes through as written.
+                let Some(next) = input.next() else { return };
+                let parenthesised = next.is("(");
+                out.push(next);
+                if parenthesised && let Some(name) = input.next() {
+                    out.push(name);
+                }
+                continue;
+            }
             if token.kind != Kind::Ident || self.hides.contains(token.hide, &token.text) {
                 out.push(token);
                 continue;

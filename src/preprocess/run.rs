@@ -4,12 +4,16 @@
 use super::error::PreprocessError;
 use super::expr::{self, ExprError};
 use super::include::{Includes, Program};
-use super::macros::{ExpandError, Expander, HideSets, Lexer, MAX_EXPANSION_DEPTH, MacroDef, Macros, glues};
+use super::macros::{
+    ExpandError, Expander, HideSets, Lexer, MAX_EXPANSION_DEPTH, MacroDef, Macros, glues, splice_len,
+    unspliced,
+};
 use super::scan::{BranchKind, Condition, Item, Target};
 use super::source_map::{ROOT, SourceMap};
 use super::{Preprocessed, Stage};
 use crate::diagnostics::Diagnostic;
 use crate::source::{FileId, SourceStore, Span};
+use std::borrow::Cow;
 use std::collections::HashSet;
 
 /// Includes nested deeper than this are refused.
@@ -53,6 +57,15 @@ pub(super) fn run<'a>(
     Preprocessed { text: runner.out, source_map: runner.map, diagnostics: runner.diagnostics }
 }
 
+/// A run of source text to copy: its range, the names in it a macro may replace, and whether it
+/// has line splices.
+struct TextRun<'i> {
+    start: usize,
+    end: usize,
+    idents: &'i [(u32, u32)],
+    spliced: bool,
+}
+
 struct Runner<'a> {
     includes: &'a Includes,
     store: &'a SourceStore,
@@ -84,8 +97,10 @@ impl<'a> Runner<'a> {
         let mut i = 0;
         while i < unit.items.len() {
             match &unit.items[i] {
-                Item::Text { start, end, idents, .. } => {
-                    self.text(text, file, *start as usize, *end as usize, idents, inclusion)
+                Item::Text { start, end, idents, spliced, .. } => {
+                    let run =
+                        TextRun { start: *start as usize, end: *end as usize, idents, spliced: *spliced };
+                    self.text(text, file, &run, inclusion)
                 }
                 Item::Include { target, span, .. } => self.include(target, *span, inclusion),
                 Item::Define { name, span, params, variadic, value, body } => {
@@ -152,36 +167,62 @@ impl<'a> Runner<'a> {
         }
     }
 
-    fn copy(&mut self, text: &str, file: FileId, range: std::ops::Range<usize>, inclusion: u32) {
-        if range.is_empty() {
-            return;
-        }
-        self.map.copied(self.out.len(), file, range.start, inclusion);
-        self.out.push_str(&text[range]);
-    }
-
-    fn text(
+    /// Copies source text to the output, without its line splices (each piece mapped to where
+    /// it starts, so a name split by a splice maps to its first character).
+    fn copy(
         &mut self,
-        text: &'a str,
+        text: &str,
         file: FileId,
-        start: usize,
-        end: usize,
-        idents: &[(u32, u32)],
+        range: std::ops::Range<usize>,
+        spliced: bool,
         inclusion: u32,
     ) {
-        let mut copied = start;
-        if !self.macros.is_empty() {
-            for &(s, e) in idents {
-                let s = s as usize;
-                // Names an earlier expansion consumed (as arguments) are gone.
-                if s < copied || !self.macros.contains_key(&text[s..e as usize]) {
-                    continue;
-                }
-                self.copy(text, file, copied..s, inclusion);
-                copied = self.expand(text, file, s..end, &text[s..e as usize], inclusion);
+        if !spliced {
+            if !range.is_empty() {
+                self.map.copied(self.out.len(), file, range.start, inclusion);
+                self.out.push_str(&text[range]);
+            }
+            return;
+        }
+        let mut start = range.start;
+        let bytes = text.as_bytes();
+        while start < range.end {
+            let splice = text[start..range.end]
+                .match_indices('\\')
+                .map(|(at, _)| (start + at, splice_len(&bytes[start + at..range.end])))
+                .find(|&(_, len)| len > 0);
+            let piece_end = splice.map_or(range.end, |(at, _)| at);
+            if piece_end > start {
+                self.map.copied(self.out.len(), file, start, inclusion);
+                self.out.push_str(&text[start..piece_end]);
+            }
+            match splice {
+                Some((at, len)) => start = at + len,
+                None => break,
             }
         }
-        self.copy(text, file, copied..end, inclusion);
+    }
+
+    fn text(&mut self, text: &'a str, file: FileId, run: &TextRun, inclusion: u32) {
+        let (end, spliced) = (run.end, run.spliced);
+        let mut copied = run.start;
+        if !self.macros.is_empty() {
+            for &(s, e) in run.idents {
+                let s = s as usize;
+                let name = if spliced {
+                    unspliced(&text[s..e as usize])
+                } else {
+                    Cow::Borrowed(&text[s..e as usize])
+                };
+                // Names an earlier expansion consumed (as arguments) are gone.
+                if s < copied || !self.macros.contains_key(&*name) {
+                    continue;
+                }
+                self.copy(text, file, copied..s, spliced, inclusion);
+                copied = self.expand(text, file, s..end, &name, inclusion);
+            }
+        }
+        self.copy(text, file, copied..end, spliced, inclusion);
     }
 
     /// Expands the invocation at the start of `range` (a macro name, and its arguments for a
@@ -253,6 +294,9 @@ impl<'a> Runner<'a> {
                 left,
                 right,
             },
+            ExpandError::DefinedInExpansion { at, name } => {
+                PreprocessError::DefinedInExpansion { span: span(at), definition: defined(&name), name }
+            }
             ExpandError::TooDeep { at, name } => {
                 PreprocessError::ExpansionTooDeep { span: span(at), name, limit: MAX_EXPANSION_DEPTH }
             }
@@ -277,7 +321,7 @@ impl<'a> Runner<'a> {
             Condition::Defined { name, .. } => self.macros.contains_key(name.as_str()),
             Condition::NotDefined { name, .. } => !self.macros.contains_key(name.as_str()),
             Condition::Expr { text, start } => {
-                let mut expander = Expander::new(&self.macros, &mut self.hides);
+                let mut expander = Expander::for_condition(&self.macros, &mut self.hides);
                 let result = expr::evaluate(text, &mut expander);
                 let errors = std::mem::take(&mut expander.errors);
                 let at = |offset: usize, len: usize| {
@@ -297,7 +341,7 @@ impl<'a> Runner<'a> {
                             }
                             ExprError::NestedTooDeep { offset } => PreprocessError::MalformedExpression {
                                 span: at(offset, 1),
-                                expected: "fewer nested parentheses or unary operators",
+                                expected: "at most 64 nested parentheses (kiln's limit; C guarantees 63)",
                             },
                             ExprError::DivisionByZero { offset } => {
                                 PreprocessError::DivisionByZero { span: at(offset, 1) }

@@ -6,7 +6,9 @@
 //! conditional links need them all; split, the pieces would share the scanner's state.
 
 use super::error::PreprocessError;
-use super::macros::{BodyToken, is_ident_char, is_ident_start, lex_body};
+use super::macros::{
+    BodyToken, is_ident_char, is_ident_start, lex_body, pp_number_end, splice_len, starts_pp_number,
+};
 use crate::source::{FileId, Span};
 use std::ops::Range;
 
@@ -39,6 +41,8 @@ pub(crate) enum Item {
         end: u32,
         idents: Vec<(u32, u32)>,
         code: bool,
+        /// The run has line splices (rare: WGSL has no `\\`), which copying must drop.
+        spliced: bool,
     },
     Include {
         name: String,
@@ -134,8 +138,12 @@ pub(crate) fn scan(file: FileId, text: &str, range: Range<usize>) -> (Unit, Vec<
         let line_end = next_line(text, pos, range.end);
         if scanner.comment_depth == 0 && is_directive(&text[pos..line_end]) {
             scanner.flush_text();
+            // A directive goes on after a line splice, and through a block comment's line
+            // breaks (C removes comments before reading directives).
             let mut end = line_end;
-            while end < range.end && line_content(&text[pos..end]).ends_with('\\') {
+            while end < range.end
+                && (line_content(&text[pos..end]).ends_with('\\') || comment_open(&text[pos..end]))
+            {
                 end = next_line(text, end, range.end);
             }
             if !scanner.directive(pos, end) {
@@ -145,8 +153,13 @@ pub(crate) fn scan(file: FileId, text: &str, range: Range<usize>) -> (Unit, Vec<
             }
             pos = end;
         } else {
-            scanner.text_line(pos, line_end);
-            pos = line_end;
+            // A line splice joins the next line to this one, in text as in directives.
+            let mut end = line_end;
+            while end < range.end && line_content(&text[pos..end]).ends_with('\\') {
+                end = next_line(text, end, range.end);
+            }
+            scanner.text_line(pos, end);
+            pos = end;
         }
     }
     scanner.flush_text();
@@ -177,8 +190,36 @@ fn line_content(line: &str) -> &str {
     line.trim_end_matches(['\n', '\r'])
 }
 
+/// Whether a line is a directive: `#` first, after blanks and block comments that close on the
+/// line (C replaces comments by a space before it looks for directives).
 fn is_directive(line: &str) -> bool {
-    line.trim_start_matches([' ', '\t']).starts_with('#')
+    let mut rest = line.trim_start_matches([' ', '\t']);
+    while let Some(comment) = rest.strip_prefix("/*") {
+        let Some(close) = comment.find("*/") else { return false };
+        rest = comment[close + 2..].trim_start_matches([' ', '\t']);
+    }
+    rest.starts_with('#')
+}
+
+/// Whether a block comment is still open at the end of `text` (WGSL's nest; `//` ends a line).
+fn comment_open(text: &str) -> bool {
+    let bytes = text.as_bytes();
+    let (mut depth, mut i) = (0usize, 0);
+    while i < bytes.len() {
+        let rest = &bytes[i..];
+        if depth == 0 && rest.starts_with(b"//") {
+            i += rest.iter().position(|&b| b == b'\n').unwrap_or(rest.len());
+        } else if rest.starts_with(b"/*") {
+            depth += 1;
+            i += 2;
+        } else if depth > 0 && rest.starts_with(b"*/") {
+            depth -= 1;
+            i += 2;
+        } else {
+            i += 1;
+        }
+    }
+    depth > 0
 }
 
 /// Identifiers of an expression or macro value with their offsets (numbers are skipped, so the
@@ -196,10 +237,8 @@ pub(crate) fn identifiers(text: &str) -> impl Iterator<Item = (usize, &str)> {
                 }
                 return Some((start, &text[start..i]));
             }
-            if b.is_ascii_digit() {
-                while i < bytes.len() && (is_ident_char(bytes[i]) || bytes[i] == b'.') {
-                    i += 1;
-                }
+            if starts_pp_number(bytes, i) {
+                i = pp_number_end(bytes, i);
             } else {
                 i += 1;
             }
@@ -221,6 +260,7 @@ struct TextRun {
     end: usize,
     idents: Vec<(u32, u32)>,
     code: bool,
+    spliced: bool,
 }
 
 struct Scanner<'a> {
@@ -246,14 +286,17 @@ impl Scanner<'_> {
                 end: run.end as u32,
                 idents: run.idents,
                 code: run.code,
+                spliced: run.spliced,
             });
         }
     }
 
     /// Records the identifiers of one line of WGSL, skipping comments and strings.
     fn text_line(&mut self, start: usize, end: usize) {
-        let run = self.run.get_or_insert(TextRun { start, end, idents: Vec::new(), code: false });
+        let run =
+            self.run.get_or_insert(TextRun { start, end, idents: Vec::new(), code: false, spliced: false });
         run.end = end;
+        run.spliced |= self.text[start..end].contains('\\');
         let bytes = self.text.as_bytes();
         let mut i = start;
         while i < end {
@@ -284,15 +327,21 @@ impl Scanner<'_> {
                 i += 1;
             } else if is_ident_start(b) {
                 let s = i;
-                while i < end && is_ident_char(bytes[i]) {
-                    i += 1;
+                loop {
+                    while i < end && is_ident_char(bytes[i]) {
+                        i += 1;
+                    }
+                    // One name across a line splice.
+                    let splice = splice_len(&bytes[i..end]);
+                    if splice == 0 || !bytes.get(i + splice).is_some_and(|&c| is_ident_char(c)) {
+                        break;
+                    }
+                    i += splice;
                 }
                 run.idents.push((s as u32, i as u32));
                 run.code = true;
-            } else if b.is_ascii_digit() {
-                while i < end && (is_ident_char(bytes[i]) || bytes[i] == b'.') {
-                    i += 1;
-                }
+            } else if starts_pp_number(&bytes[..end], i) {
+                i = pp_number_end(&bytes[..end], i);
                 run.code = true;
             } else {
                 run.code |= !b.is_ascii_whitespace();
@@ -571,7 +620,11 @@ impl Scanner<'_> {
                     None
                 };
                 if let Some(reason) = reason {
-                    self.errors.push(PreprocessError::VariadicMisuse { span: span(token), name: text.to_string(), reason });
+                    self.errors.push(PreprocessError::VariadicMisuse {
+                        span: span(token),
+                        name: text.to_string(),
+                        reason,
+                    });
                     return false;
                 }
                 if text == "__VA_OPT__" {

@@ -164,19 +164,23 @@ fn cpp_output(text: &str) -> String {
     cpp_run(&format!("#define K1 1\n{text}")).unwrap_or_else(|e| panic!("cpp failed: {e}")).0
 }
 
-/// gcc's output for `text` as C (`cpp -P -undef -nostdinc`) with what it printed on stderr
+/// gcc's output for `text` as C (`cpp -P -undef -nostdinc`, warning of `defined` that a macro
+/// writes, as kiln does) with what it printed on stderr
 /// (warnings), or its error output.
 pub(crate) fn cpp_run(text: &str) -> Result<(String, String), String> {
     let dir = tempfile::tempdir().expect("temp dir");
     let input = dir.path().join("input.c");
     std::fs::write(&input, text).expect("write");
     let out = Command::new("cpp")
-        .args(["-P", "-undef", "-nostdinc", "-x", "c"])
+        .args(["-P", "-undef", "-nostdinc", "-Wexpansion-to-defined", "-x", "c"])
         .arg(&input)
         .output()
         .expect("cpp runs");
     if out.status.success() {
-        Ok((String::from_utf8_lossy(&out.stdout).into_owned(), String::from_utf8_lossy(&out.stderr).into_owned()))
+        Ok((
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        ))
     } else {
         Err(String::from_utf8_lossy(&out.stderr).into_owned())
     }
@@ -316,3 +320,66 @@ fn the_cases_kiln_once_got_wrong_expand_as_c_expands_them() {
         }
     }
 }
+
+/// The classes of disagreement a public conformance suite found (issue 26), each as C's
+/// translation phases decide it, checked against gcc, with the warning gcc gives where it gives
+/// one.
+#[test]
+fn translation_phases_as_c_has_them() {
+    // (input, expected tokens, whether kiln warns)
+    let cases: [(&str, &str, bool); 11] = [
+        // 1. A block comment spanning lines inside a directive: the directive goes on after it.
+        (
+            "#define FTN_LIKE( a )( /* note the white space */ \\\na /* other stuff on this line\n * spanning lines */ )\nFTN_LIKE( c);\n",
+            "( c ) ;",
+            false,
+        ),
+        // 2. Preprocessing numbers are one token: no macro is expanded inside them.
+        (
+            "#define EXP 1\n12E+EXP .2e-EXP 0x1p+EXP 1e+EXP+EXP 1.0+EXP\n",
+            "12E+EXP .2e-EXP 0x1p+EXP 1e+EXP+EXP 1.0 + 1",
+            false,
+        ),
+        // 3. Comments before `#`, and between `#` and the directive's name.
+        ("/**/ # /**/ define /**/ MACRO_abcde /**/ abcde /**/\nMACRO_abcde\n", "abcde", false),
+        ("/* a */ /* b */ #define TWO 2\nTWO\n", "2", false),
+        // 4. Line splicing everywhere, not only in directives: `abc\` + `de` is one identifier.
+        ("#define abcde spliced\nabc\\\nde x\\\ny\n", "spliced xy", false),
+        ("#define F(a, b) a + b\nF(1,\\\n 2) F\\\n(3, 4)\n", "1 + 2 3 + 4", false),
+        // 5. A redefinition differing only in whitespace between the same tokens is a new one.
+        ("#define OBJ_LIKE (1-1)\n#define OBJ_LIKE (1 - 1)\nOBJ_LIKE\n", "( 1 - 1 )", true),
+        // An identical one (whitespace amount aside) is not.
+        ("#define SAME (1 -  1)\n#define SAME  (1 - 1)\nSAME\n", "( 1 - 1 )", false),
+        // 6. `defined` produced by a macro in `#if`: gcc evaluates it, with a warning.
+        (
+            "#define A\n#define HAVE_X defined(A) && !defined(B)\n#if HAVE_X\nyes\n#else\nno\n#endif\n",
+            "yes",
+            true,
+        ),
+        // 7. Unary operators do not count toward the nesting limit; parentheses do.
+        (&UNARY_40, "deep", false),
+        (
+            "#if - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - 1\nfar\n#endif\n",
+            "far",
+            false,
+        ),
+    ];
+    let cpp = tool("cpp", "cpp", "translation_phases_as_c_has_them");
+    for (text, expected, warns) in cases {
+        let (ours, errors, warnings) = kiln_run(text, &[]);
+        assert!(errors.is_empty(), "{text}: {errors}");
+        assert_eq!(tokens(&ours), tokens(expected), "{text} gave {ours}");
+        assert_eq!(warnings > 0, warns, "{text}: {warnings} warnings");
+        if cpp {
+            let (theirs, their_warnings) = cpp_run(text).unwrap_or_else(|e| panic!("{text}: cpp: {e}"));
+            assert_eq!(tokens(&ours), tokens(&theirs), "{text}");
+            assert_eq!(their_warnings.contains("warning"), warns, "{text}: cpp says {their_warnings}");
+        }
+    }
+}
+
+/// `#if` with 40 nested unary minus and complement operators, each parenthesised.
+static UNARY_40: std::sync::LazyLock<String> = std::sync::LazyLock::new(|| {
+    let (open, close) = ("-(~(".repeat(20), "))".repeat(20));
+    format!("#if {open}1{close}\ndeep\n#endif\n")
+});
