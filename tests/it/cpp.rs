@@ -321,51 +321,11 @@ fn the_cases_kiln_once_got_wrong_expand_as_c_expands_them() {
     }
 }
 
-/// The classes of disagreement a public conformance suite found (issue 26), each as C's
-/// translation phases decide it, checked against gcc, with the warning gcc gives where it gives
-/// one.
-#[test]
-fn translation_phases_as_c_has_them() {
-    // (input, expected tokens, whether kiln warns)
-    let cases: [(&str, &str, bool); 11] = [
-        // 1. A block comment spanning lines inside a directive: the directive goes on after it.
-        (
-            "#define FTN_LIKE( a )( /* note the white space */ \\\na /* other stuff on this line\n * spanning lines */ )\nFTN_LIKE( c);\n",
-            "( c ) ;",
-            false,
-        ),
-        // 2. Preprocessing numbers are one token: no macro is expanded inside them.
-        (
-            "#define EXP 1\n12E+EXP .2e-EXP 0x1p+EXP 1e+EXP+EXP 1.0+EXP\n",
-            "12E+EXP .2e-EXP 0x1p+EXP 1e+EXP+EXP 1.0 + 1",
-            false,
-        ),
-        // 3. Comments before `#`, and between `#` and the directive's name.
-        ("/**/ # /**/ define /**/ MACRO_abcde /**/ abcde /**/\nMACRO_abcde\n", "abcde", false),
-        ("/* a */ /* b */ #define TWO 2\nTWO\n", "2", false),
-        // 4. Line splicing everywhere, not only in directives: `abc\` + `de` is one identifier.
-        ("#define abcde spliced\nabc\\\nde x\\\ny\n", "spliced xy", false),
-        ("#define F(a, b) a + b\nF(1,\\\n 2) F\\\n(3, 4)\n", "1 + 2 3 + 4", false),
-        // 5. A redefinition differing only in whitespace between the same tokens is a new one.
-        ("#define OBJ_LIKE (1-1)\n#define OBJ_LIKE (1 - 1)\nOBJ_LIKE\n", "( 1 - 1 )", true),
-        // An identical one (whitespace amount aside) is not.
-        ("#define SAME (1 -  1)\n#define SAME  (1 - 1)\nSAME\n", "( 1 - 1 )", false),
-        // 6. `defined` produced by a macro in `#if`: gcc evaluates it, with a warning.
-        (
-            "#define A\n#define HAVE_X defined(A) && !defined(B)\n#if HAVE_X\nyes\n#else\nno\n#endif\n",
-            "yes",
-            true,
-        ),
-        // 7. Unary operators do not count toward the nesting limit; parentheses do.
-        (&UNARY_40, "deep", false),
-        (
-            "#if - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - - 1\nfar\n#endif\n",
-            "far",
-            false,
-        ),
-    ];
-    let cpp = tool("cpp", "cpp", "translation_phases_as_c_has_them");
-    for (text, expected, warns) in cases {
+/// Preprocesses each case with kiln and gcc: the tokens must be the expected ones, the same for
+/// both, and kiln warns exactly where gcc does. `(input, expected tokens, whether both warn)`.
+fn agree_with_cpp(test: &str, cases: &[(&str, &str, bool)]) {
+    let cpp = tool("cpp", "cpp", test);
+    for &(text, expected, warns) in cases {
         let (ours, errors, warnings) = kiln_run(text, &[]);
         assert!(errors.is_empty(), "{text}: {errors}");
         assert_eq!(tokens(&ours), tokens(expected), "{text} gave {ours}");
@@ -376,6 +336,87 @@ fn translation_phases_as_c_has_them() {
             assert_eq!(their_warnings.contains("warning"), warns, "{text}: cpp says {their_warnings}");
         }
     }
+}
+
+// C's translation phases, each class a conformance suite found kiln getting wrong.
+
+#[test]
+fn a_block_comment_spanning_lines_inside_a_directive_does_not_end_it() {
+    agree_with_cpp(
+        "a_block_comment_spanning_lines_inside_a_directive_does_not_end_it",
+        &[(
+            "#define FTN_LIKE( a )( /* note the white space */ \\\na /* other stuff on this line\n * spanning lines */ )\nFTN_LIKE( c);\n",
+            "( c ) ;",
+            false,
+        )],
+    );
+}
+
+#[test]
+fn preprocessing_numbers_are_one_token_and_hide_no_macro() {
+    agree_with_cpp(
+        "preprocessing_numbers_are_one_token_and_hide_no_macro",
+        &[(
+            "#define EXP 1\n12E+EXP .2e-EXP 0x1p+EXP 1e+EXP+EXP 1.0+EXP\n",
+            "12E+EXP .2e-EXP 0x1p+EXP 1e+EXP+EXP 1.0 + 1",
+            false,
+        )],
+    );
+}
+
+#[test]
+fn comments_may_stand_before_and_inside_a_directive_name() {
+    agree_with_cpp(
+        "comments_may_stand_before_and_inside_a_directive_name",
+        &[
+            ("/**/ # /**/ define /**/ MACRO_abcde /**/ abcde /**/\nMACRO_abcde\n", "abcde", false),
+            ("/* a */ /* b */ #define TWO 2\nTWO\n", "2", false),
+        ],
+    );
+}
+
+#[test]
+fn line_splices_join_lines_everywhere() {
+    agree_with_cpp(
+        "line_splices_join_lines_everywhere",
+        &[
+            ("#define abcde spliced\nabc\\\nde x\\\ny\n", "spliced xy", false),
+            ("#define F(a, b) a + b\nF(1,\\\n 2) F\\\n(3, 4)\n", "1 + 2 3 + 4", false),
+        ],
+    );
+}
+
+#[test]
+fn a_redefinition_differing_in_whitespace_is_a_redefinition() {
+    agree_with_cpp(
+        "a_redefinition_differing_in_whitespace_is_a_redefinition",
+        &[
+            ("#define OBJ_LIKE (1-1)\n#define OBJ_LIKE (1 - 1)\nOBJ_LIKE\n", "( 1 - 1 )", true),
+            // The amount of whitespace does not count.
+            ("#define SAME (1 -  1)\n#define SAME  (1 - 1)\nSAME\n", "( 1 - 1 )", false),
+        ],
+    );
+}
+
+#[test]
+fn defined_written_by_a_macro_in_if_is_evaluated_with_a_warning() {
+    agree_with_cpp(
+        "defined_written_by_a_macro_in_if_is_evaluated_with_a_warning",
+        &[(
+            "#define A\n#define HAVE_X defined(A) && !defined(B)\n#if HAVE_X\nyes\n#else\nno\n#endif\n",
+            "yes",
+            true,
+        )],
+    );
+}
+
+#[test]
+fn unary_operators_do_not_count_toward_the_nesting_limit() {
+    let long_run = format!("#if {}1\nfar\n#endif\n", "- ".repeat(101));
+    agree_with_cpp(
+        "unary_operators_do_not_count_toward_the_nesting_limit",
+        &[(&UNARY_40, "deep", false), (&long_run, "far", false)],
+    );
 }
 
 /// `#if` with 40 nested unary minus and complement operators, each parenthesised.
