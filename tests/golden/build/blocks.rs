@@ -152,6 +152,7 @@ pub mod test_halfblocks {
         index: 0,
         name: None,
         keywords: &[],
+        dynamic_keywords: &[],
         layout: &[
             super::BindingEntry { group: 1, binding: 0, name: "halves", vertex: true, fragment: true, kind: super::BindingKind::Uniform { size: 56 } },
         ],
