@@ -222,14 +222,16 @@ pub fn preprocess_variant(
     Ok((ok.then_some(output), diagnostics))
 }
 
-/// The example project bundled with kiln, used when no path is given; relative to the working
-/// directory when it lies below it, so diagnostics show short paths.
-pub fn bundled_example() -> PathBuf {
-    let absolute = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/project");
-    std::env::current_dir()
-        .ok()
-        .and_then(|cwd| absolute.strip_prefix(cwd).ok().map(Path::to_path_buf))
-        .unwrap_or(absolute)
+/// The project a command without a path works on, as cargo finds its package: the nearest folder
+/// from the current one up with a `kiln.toml` (written relative, `.`, `..`, ..., so diagnostics
+/// show short paths), else the current folder (a project of defaults).
+pub fn default_project() -> PathBuf {
+    let Ok(current) = std::env::current_dir() else { return PathBuf::from(".") };
+    let found = current.ancestors().position(|a| a.join(crate::config::FILE_NAME).is_file());
+    match found {
+        None | Some(0) => PathBuf::from("."),
+        Some(levels) => (0..levels).map(|_| "..").collect(),
+    }
 }
 
 /// What the given paths hold: folders are projects (with their `kiln.toml`, or the defaults), files

@@ -4,7 +4,7 @@ use crate::support::kiln;
 
 #[test]
 fn exit_codes() {
-    assert_eq!(kiln(&["list"]).status.code(), Some(0));
+    assert_eq!(kiln(&["list", "fixtures/project"]).status.code(), Some(0));
     assert_eq!(kiln(&["list", "fixtures/bad/unclosed_brace.shader"]).status.code(), Some(1));
     assert_eq!(kiln(&["list", "no/such/folder"]).status.code(), Some(2));
     assert_eq!(kiln(&["list", "--format", "yaml"]).status.code(), Some(2));
@@ -194,4 +194,16 @@ fn a_misspelt_kiln_toml_field_is_named_with_the_one_meant_and_nothing_follows_it
     assert!(stderr.contains("unknown field `shaderz`\n"), "the field list once, in the help: {stderr}");
     assert!(stderr.contains("= help: did you mean `shaders`? fields are shaders, materials"), "{stderr}");
     assert!(!stderr.contains("K0009"), "no follow-on \"no shaders\": {stderr}");
+}
+
+#[test]
+fn without_a_path_kiln_works_on_the_folder_it_runs_in_not_its_own_fixtures() {
+    // An empty folder with no kiln.toml above it: a project of defaults, with no shaders.
+    let empty = tempfile::tempdir().expect("temp dir");
+    let check = crate::support::kiln_in(empty.path(), &["check"]);
+    assert_eq!(check.status.code(), Some(1), "CI on the wrong folder fails");
+    assert!(String::from_utf8_lossy(&check.stderr).contains("error[K0009]"));
+    let build = crate::support::kiln_in(empty.path(), &["build"]);
+    assert_eq!(build.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&build.stderr).contains("warning[K0009]"));
 }

@@ -38,11 +38,24 @@ fn unity_style_shaders() {
 }
 
 #[test]
-fn default_path_is_the_bundled_project() {
-    let default = kiln(&["list"]);
-    let explicit = kiln(&["list", "fixtures/project"]);
-    assert_eq!(default.status.code(), Some(0));
-    assert_eq!(String::from_utf8_lossy(&default.stdout), String::from_utf8_lossy(&explicit.stdout));
+fn without_a_path_the_project_is_the_nearest_folder_up_with_a_kiln_toml() {
+    // Run in the project's `shaders/` folder, as cargo is run anywhere in a package.
+    let below = crate::support::root().join("fixtures/project/shaders");
+    let default = crate::support::kiln_in(&below, &["list", "--format", "json"]);
+    let explicit = kiln(&["list", "fixtures/project", "--format", "json"]);
+    assert_eq!(default.status.code(), Some(0), "{}", String::from_utf8_lossy(&default.stderr));
+    let read = |output: &std::process::Output| {
+        let value: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+        let shaders = value["shaders"].as_array().expect("shaders").clone();
+        // The same shaders and passes; paths differ only by where kiln ran.
+        shaders.iter().map(|s| (s["name"].to_string(), s["passes"].to_string())).collect::<Vec<_>>()
+    };
+    assert_eq!(read(&default), read(&explicit));
+    assert_eq!(read(&default).len(), 3);
+    let file =
+        serde_json::from_slice::<serde_json::Value>(&default.stdout).expect("json")["shaders"][0]["file"]
+            .clone();
+    assert_eq!(file, "../shaders/Complex.shader", "relative to where kiln ran");
 }
 
 #[test]

@@ -36,9 +36,14 @@ pub fn load(paths: &[PathBuf]) -> (SourceStore, Vec<FileId>, Vec<Diagnostic>) {
 
 /// Runs the built `kiln` binary from the repository root.
 pub fn kiln(args: &[&str]) -> Output {
+    kiln_in(&root(), args)
+}
+
+/// The `kiln` binary run in `folder`.
+pub fn kiln_in(folder: &Path, args: &[&str]) -> Output {
     std::process::Command::new(env!("CARGO_BIN_EXE_kiln"))
         .args(args)
-        .current_dir(root())
+        .current_dir(folder)
         .env("NO_COLOR", "1")
         .output()
         .expect("kiln binary runs")

@@ -17,7 +17,7 @@ pub enum Command {
     /// List each shader's passes, keyword sets, and the variants its materials use.
     List {
         /// Project folders (with their kiln.toml, if any), `.shader` or `.mat` files
-        /// (default: the bundled example project).
+        /// (default: the nearest folder up with a kiln.toml, else this one).
         paths: Vec<PathBuf>,
         /// `text` for people, `json` for tools (diagnostics included).
         #[arg(long, value_enum, default_value_t = Format::Text)]
@@ -43,7 +43,7 @@ pub enum Command {
     },
     /// Compile every variant the materials use to WGSL and SPIR-V, with a manifest.
     Build {
-        /// The project folder (default: the bundled example project).
+        /// The project folder (default: the nearest folder up with a kiln.toml, else this one).
         project: Option<PathBuf>,
         /// Worker threads, 1 to 1024 (default: all cores).
         #[arg(long, value_parser = clap::value_parser!(u16).range(1..=1024))]
@@ -89,7 +89,7 @@ pub enum Command {
     /// looks), printing diagnostics and a summary line per build. A failed build leaves its
     /// diagnostics in the output folder for a running program (`kiln::runtime`) to report.
     Watch {
-        /// The project folder (default: the bundled example project).
+        /// The project folder (default: the nearest folder up with a kiln.toml, else this one).
         project: Option<PathBuf>,
         /// Write here instead of the project's `output` folder.
         #[arg(long)]
@@ -104,7 +104,7 @@ pub enum Command {
     /// Validate without writing anything: used variants, and for shaders no material uses, the
     /// default variant and each keyword on its own. Exit 1 on any error.
     Check {
-        /// The project folder (default: the bundled example project).
+        /// The project folder (default: the nearest folder up with a kiln.toml, else this one).
         project: Option<PathBuf>,
         /// `text` for people, `json` for tools.
         #[arg(long, value_enum, default_value_t = Format::Text)]
@@ -137,7 +137,7 @@ pub enum Command {
 pub enum CacheCommand {
     /// How many modules the cache holds and their size (and any that no longer verify).
     Stats {
-        /// The project whose kiln.toml names the cache (default: the bundled example project).
+        /// The project whose kiln.toml names the cache (default: the nearest folder up with a kiln.toml, else this one).
         project: Option<PathBuf>,
         /// The cache folder (default: `KILN_CACHE_DIR`, then the project's `cache_dir`).
         #[arg(long, value_name = "DIR")]
@@ -146,7 +146,7 @@ pub enum CacheCommand {
     /// Removes the least recently used entries until the cache is at most SIZE (`500M`, `2G`).
     /// Safe while builds run: an entry gone is a miss.
     Gc {
-        /// The project whose kiln.toml names the cache (default: the bundled example project).
+        /// The project whose kiln.toml names the cache (default: the nearest folder up with a kiln.toml, else this one).
         project: Option<PathBuf>,
         /// The most the cache may hold: bytes, or a number and K, M, G or T.
         #[arg(long, value_name = "SIZE")]

@@ -73,14 +73,14 @@ pub fn watch(
     cache_dir: Option<PathBuf>,
 ) -> ExitCode {
     let mode = BuildMode { output, variant_logs: variants_from, cache_dir, ..BuildMode::default() };
-    watch_loop(project.unwrap_or_else(kiln::project::bundled_example), &mode)
+    watch_loop(project.unwrap_or_else(kiln::project::default_project), &mode)
 }
 
 /// `kiln check --all-variants` refuses passes with more variants than this.
 const ALL_VARIANTS_LIMIT: u128 = 4096;
 
 fn run(project: Option<PathBuf>, mode: BuildMode, format: Format, part: Part) -> ExitCode {
-    let project = project.unwrap_or_else(kiln::project::bundled_example);
+    let project = project.unwrap_or_else(kiln::project::default_project);
     let mut store = SourceStore::new();
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = indicatif::ProgressBar::new(0);

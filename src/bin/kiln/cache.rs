@@ -10,7 +10,7 @@ use std::process::ExitCode;
 pub fn run(command: CacheCommand) -> ExitCode {
     let (project, given) = match &command {
         CacheCommand::Stats { project, cache_dir } | CacheCommand::Gc { project, cache_dir, .. } => {
-            (project.clone().unwrap_or_else(kiln::project::bundled_example), cache_dir.clone())
+            (project.clone().unwrap_or_else(kiln::project::default_project), cache_dir.clone())
         }
     };
     let mut store = SourceStore::new();

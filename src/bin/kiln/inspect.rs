@@ -12,7 +12,7 @@ use std::process::ExitCode;
 
 /// `kiln list`.
 pub fn list(paths: Vec<PathBuf>, format: Format, show_materials: bool) -> ExitCode {
-    let paths = if paths.is_empty() { vec![kiln::project::bundled_example()] } else { paths };
+    let paths = if paths.is_empty() { vec![kiln::project::default_project()] } else { paths };
     let mut store = SourceStore::new();
     let (listing, problems) = match kiln::project::list_project(&mut store, &paths) {
         Ok(listed) => listed,
