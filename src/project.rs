@@ -326,8 +326,8 @@ pub fn open_workspace(
         let under = |folders: &[PathBuf]| -> Vec<PathBuf> {
             folders.iter().map(|f| crate::source::normalize_lexically(&path.join(f))).collect()
         };
-        workspace.shaders.extend(find_files(&under(&config.shaders), "shader")?);
-        workspace.materials.extend(find_files(&under(&config.materials), "mat")?);
+        workspace.shaders.extend(find_files(&under(&config.shaders), &SHADER_EXTENSIONS)?);
+        workspace.materials.extend(find_files(&under(&config.materials), &["mat"])?);
         for folder in under(&config.shaders)
             .into_iter()
             .chain(under(&config.materials))
@@ -389,18 +389,21 @@ pub fn include_config(paths: &[PathBuf]) -> IncludeConfig {
     IncludeConfig::new(roots)
 }
 
-/// Every `.shader` file under the given files and folders, in a stable (sorted) order. A file
+/// Every `.shader` and `.compute` file under the given files and folders, in a stable (sorted) order. A file
 /// named directly is taken whatever its extension; symbolic links are not followed.
 pub fn find_shader_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, ProjectError> {
     if let Some(missing) = paths.iter().find(|p| !p.exists()) {
         return Err(ProjectError::NotFound(missing.clone()));
     }
-    find_files(paths, "shader")
+    find_files(paths, &SHADER_EXTENSIONS)
 }
+
+/// The files a project's shader folders are searched for: `.shader` files and compute shaders.
+pub const SHADER_EXTENSIONS: [&str; 2] = ["shader", crate::shaderlab::compute::EXTENSION];
 
 /// Every file with this extension under the given files and folders (see [`find_shader_files`]).
 /// A folder that does not exist contributes nothing (a project without materials is fine).
-pub fn find_files(paths: &[PathBuf], extension: &str) -> Result<Vec<PathBuf>, ProjectError> {
+pub fn find_files(paths: &[PathBuf], extensions: &[&str]) -> Result<Vec<PathBuf>, ProjectError> {
     let mut files = Vec::new();
     for path in paths.iter().filter(|p| p.exists()) {
         if path.is_file() {
@@ -410,7 +413,10 @@ pub fn find_files(paths: &[PathBuf], extension: &str) -> Result<Vec<PathBuf>, Pr
         for entry in walkdir::WalkDir::new(path).sort_by_file_name() {
             let entry =
                 entry.map_err(|e| ProjectError::Walk { path: path.clone(), message: e.to_string() })?;
-            let matches = entry.path().extension().is_some_and(|ext| ext.eq_ignore_ascii_case(extension));
+            let matches = entry
+                .path()
+                .extension()
+                .is_some_and(|ext| extensions.iter().any(|wanted| ext.eq_ignore_ascii_case(wanted)));
             if entry.file_type().is_file() && matches {
                 files.push(entry.into_path());
             }

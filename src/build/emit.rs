@@ -224,10 +224,11 @@ pub(super) fn pass_manifest(
     catalog: &Catalog,
     work: &PassWork,
     jobs: &[Job],
-    stages: &[[Option<usize>; 2]],
+    stages: &[Vec<Option<usize>>],
     built: &[Option<CachedStage>],
 ) -> PassManifest {
     let shader = &work.shader.shader;
+    let compute = !work.program.pragmas.kernels.is_empty();
     let mut entries: BTreeMap<(u32, u32), LayoutEntry> = BTreeMap::new();
     let mut uniform_blocks: Vec<UniformBlock> = Vec::new();
     let mut packs: Vec<String> = Vec::new();
@@ -277,6 +278,7 @@ pub(super) fn pass_manifest(
             bindings: reflection.bindings.iter().map(|b| [b.group, b.binding]).collect(),
             uniform_blocks: blocks,
             overrides: reflection.overrides.clone(),
+            workgroup_size: reflection.workgroup_size,
         };
         let interface = *interface_of.entry(interface).or_insert_with_key(|interface| {
             interfaces.push(interface.clone());
@@ -305,12 +307,22 @@ pub(super) fn pass_manifest(
         .variants
         .iter()
         .zip(stages)
-        .map(|(variant, [vertex, fragment])| VariantManifest {
-            key: variant.bits.key(),
-            keywords: work.program.keywords.keywords(&variant.bits).map(str::to_string).collect(),
-            materials: variant.materials.iter().map(|&m| catalog.materials[m].name.clone()).collect(),
-            vertex: vertex.and_then(|j| module_of_job[j]),
-            fragment: fragment.and_then(|j| module_of_job[j]),
+        .map(|(variant, jobs)| {
+            let module = |job: Option<&Option<usize>>| job.copied().flatten().and_then(|j| module_of_job[j]);
+            // A compute pass's entries are its kernels; a render pass's its two stages.
+            let (vertex, fragment, kernels) = if compute {
+                (None, None, (0..jobs.len()).map(|k| module(jobs.get(k))).collect())
+            } else {
+                (module(jobs.first()), module(jobs.get(1)), Vec::new())
+            };
+            VariantManifest {
+                key: variant.bits.key(),
+                keywords: work.program.keywords.keywords(&variant.bits).map(str::to_string).collect(),
+                materials: variant.materials.iter().map(|&m| catalog.materials[m].name.clone()).collect(),
+                vertex,
+                fragment,
+                kernels,
+            }
         })
         .collect();
     let mut groups: BTreeMap<u32, Vec<LayoutEntry>> = BTreeMap::new();
@@ -366,6 +378,7 @@ pub(super) fn pass_manifest(
             })
             .collect(),
         keywords: work.program.keywords.names().to_vec(),
+        kernels: work.program.pragmas.kernels.iter().map(|k| k.value.clone()).collect(),
         layout: groups.into_iter().map(|(group, entries)| BindGroup { group, entries }).collect(),
         uniform_blocks,
         packs,

@@ -7,7 +7,8 @@ use crate::diagnostics;
 use crate::diagnostics::Diagnostic;
 use crate::keywords::KeywordBits;
 use crate::preprocess::{Includes, SourceMap, Stage, preprocess};
-use crate::source::{SourceStore, Span};
+use crate::shaderlab::pragma::ProgramPragmas;
+use crate::source::{SourceStore, Span, Spanned};
 use crate::store::hash;
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -34,11 +35,20 @@ impl Job<'_> {
     }
 }
 
-/// A pass's distinct stage modules, and each variant's vertex and fragment job (`None` when that
-/// stage failed or is absent).
+/// A pass's distinct stage modules, and each variant's job for each of the pass's
+/// [`entry_points`] (`None` when that stage failed or is absent).
 pub(super) struct PassJobs<'a> {
     pub jobs: Vec<Job<'a>>,
-    pub stages: Vec<[Option<usize>; 2]>,
+    pub stages: Vec<Vec<Option<usize>>>,
+}
+
+/// The entry points each variant of a pass compiles, in the order the manifest lists its modules:
+/// a compute pass's kernels, else its vertex and its fragment entry point (`None` when absent).
+pub(super) fn entry_points(pragmas: &ProgramPragmas) -> Vec<(Stage, Option<&Spanned<String>>)> {
+    if !pragmas.kernels.is_empty() {
+        return pragmas.kernels.iter().map(|kernel| (Stage::Compute, Some(kernel))).collect();
+    }
+    vec![(Stage::Vertex, pragmas.vertex.as_ref()), (Stage::Fragment, pragmas.fragment.as_ref())]
 }
 
 /// One stage of one variant, to preprocess.
@@ -61,29 +71,34 @@ pub(super) fn pass_jobs<'a>(
     let (shader, pass, program) = (work.shader, work.pass, work.program);
     let mut jobs: Vec<Job<'a>> = Vec::new();
     let Some(wgsl) = program.wgsl.as_ref() else {
-        return PassJobs { jobs, stages: vec![[None, None]; work.variants.len()] };
+        return PassJobs { jobs, stages: vec![Vec::new(); work.variants.len()] };
     };
     let mut requests: Vec<Request> = Vec::new();
-    let mut request_of: HashMap<(Stage, &KeywordBits, String), usize> = HashMap::new();
-    let mut per_variant: Vec<[Option<usize>; 2]> = Vec::with_capacity(work.variants.len());
+    let mut request_of: HashMap<(Stage, &str, &KeywordBits, String), usize> = HashMap::new();
+    let mut per_variant: Vec<Vec<Option<usize>>> = Vec::with_capacity(work.variants.len());
+    let entries = entry_points(&program.pragmas);
     for variant in work.variants.iter() {
         let all: Vec<&str> = program.keywords.keywords(&variant.bits).collect();
         let allowed = Allowed::for_variant(&program.pragmas, &all);
-        per_variant.push([Stage::Vertex, Stage::Fragment].map(|stage| {
-            let entry = match stage {
-                Stage::Vertex => program.pragmas.vertex.as_ref()?,
-                Stage::Fragment => program.pragmas.fragment.as_ref()?,
-            };
+        let variant_jobs = entries.iter().map(|&(stage, entry)| {
+            let entry = entry?;
             let bits = program.keywords_for(variant, stage);
-            Some(*request_of.entry((stage, bits, allowed.key())).or_insert_with(|| {
+            // Each kernel is an entry point of its own, compiled from the same text.
+            let key = (stage, entry.value.as_str(), bits, allowed.key());
+            Some(*request_of.entry(key).or_insert_with(|| {
                 let shown = if all.is_empty() { "(no keywords)".to_string() } else { all.join(" ") };
+                let kernel = if stage == Stage::Compute {
+                    format!(" (kernel `{}`)", entry.value)
+                } else {
+                    String::new()
+                };
                 requests.push(Request {
                     stage,
                     entry,
                     keywords: program.keywords.keywords(bits).map(str::to_string).collect(),
                     allowed: allowed.clone(),
                     context: format!(
-                        "in variant `{shown}` of `{}` pass {}, {} stage",
+                        "in variant `{shown}` of `{}` pass {}, {} stage{kernel}",
                         shader.shader.name.value,
                         pass.index,
                         stage.name()
@@ -91,7 +106,8 @@ pub(super) fn pass_jobs<'a>(
                 });
                 requests.len() - 1
             }))
-        }));
+        });
+        per_variant.push(variant_jobs.collect());
     }
     let outputs: Vec<_> = requests
         .par_iter()
@@ -103,7 +119,7 @@ pub(super) fn pass_jobs<'a>(
         })
         .collect();
     // Different keywords can still give the same text (a keyword no `#if` of this stage tests).
-    let mut job_of_text: HashMap<(Stage, String, String), usize> = HashMap::new();
+    let mut job_of_text: HashMap<(Stage, &str, String, String), usize> = HashMap::new();
     let mut job_of_request: Vec<Option<usize>> = Vec::with_capacity(requests.len());
     for (request, (out, text_hash)) in requests.into_iter().zip(outputs) {
         let failed = diagnostics::has_errors(&out.diagnostics);
@@ -112,7 +128,7 @@ pub(super) fn pass_jobs<'a>(
             job_of_request.push(None);
             continue;
         }
-        let key = (request.stage, text_hash.clone(), request.allowed.key());
+        let key = (request.stage, request.entry.value.as_str(), text_hash.clone(), request.allowed.key());
         let job = *job_of_text.entry(key).or_insert_with(|| {
             jobs.push(Job {
                 stage: request.stage,
@@ -130,7 +146,9 @@ pub(super) fn pass_jobs<'a>(
         jobs[job].requests += 1;
         job_of_request.push(Some(job));
     }
-    let stages =
-        per_variant.into_iter().map(|stages| stages.map(|r| r.and_then(|r| job_of_request[r]))).collect();
+    let stages = per_variant
+        .into_iter()
+        .map(|stages| stages.into_iter().map(|r| r.and_then(|r| job_of_request[r])).collect())
+        .collect();
     PassJobs { jobs, stages }
 }

@@ -60,9 +60,16 @@ pub(super) fn weights(work: &[PassWork]) -> Vec<u64> {
     work.iter()
         .map(|pass| {
             let mut requests = HashSet::new();
+            let entries = super::jobs::entry_points(&pass.program.pragmas);
             for variant in pass.variants.iter() {
-                for stage in [Stage::Vertex, Stage::Fragment] {
-                    requests.insert((stage, pass.program.keywords_for(variant, stage)));
+                for &(stage, entry) in entries.iter() {
+                    if let Some(entry) = entry {
+                        requests.insert((
+                            stage,
+                            entry.value.as_str(),
+                            pass.program.keywords_for(variant, stage),
+                        ));
+                    }
                 }
             }
             requests.len() as u64

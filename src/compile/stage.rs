@@ -36,6 +36,7 @@ pub(crate) fn naga_stage(stage: Stage) -> naga::ShaderStage {
     match stage {
         Stage::Vertex => naga::ShaderStage::Vertex,
         Stage::Fragment => naga::ShaderStage::Fragment,
+        Stage::Compute => naga::ShaderStage::Compute,
     }
 }
 
@@ -213,6 +214,7 @@ fn check_limits(module: &naga::Module, request: &StageRequest, mapper: &Mapper) 
             "interpolators15 or interpolators32",
         ),
         Stage::Fragment => (request.allowed.max_color_targets(), "colour targets", "K0405", "mrt4 or mrt8"),
+        Stage::Compute => return Ok(()),
     };
     let used = locations.len() as u32;
     if used <= limit {

@@ -125,6 +125,8 @@ impl PassKeywords {
         match stage {
             Stage::Vertex => &variant.vertex,
             Stage::Fragment => &variant.fragment,
+            // A compute kernel sees every keyword (stage suffixes name render stages).
+            Stage::Compute => &variant.bits,
         }
     }
 

@@ -205,6 +205,9 @@ pub struct PassManifest {
     pub keyword_sets: Vec<KeywordSetManifest>,
     /// The pass's keywords in bit order: bit i of a variant key is `keywords[i]`.
     pub keywords: Vec<String>,
+    /// A compute pass: its kernels (`#pragma kernel`), in order; a variant's `kernels` follow it.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub kernels: Vec<String>,
     /// One bind group layout for every variant of the pass.
     pub layout: Vec<BindGroup>,
     /// The distinct uniform block layouts of the pass's modules, laid out by naga.
@@ -319,6 +322,9 @@ pub struct VariantManifest {
     pub vertex: Option<usize>,
     /// Index into the pass's `modules`, or `None`.
     pub fragment: Option<usize>,
+    /// A compute pass: each kernel's module (in the pass's `kernels` order), `None` when it failed.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub kernels: Vec<Option<usize>>,
 }
 
 /// What a stage module exposes to the pipeline that uses it; modules of a pass that differ only
@@ -342,6 +348,9 @@ pub struct StageInterface {
     /// The pipeline-overridable constants it uses (`dynamic_branch` keywords among them).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub overrides: Vec<OverrideConstant>,
+    /// A compute kernel's `@workgroup_size` (0 where an `override` gives it).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub workgroup_size: Option<[u32; 3]>,
 }
 
 /// One compiled stage module, identified by its bytes: variants whose stage texts differ only in

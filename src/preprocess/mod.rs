@@ -27,14 +27,16 @@ pub use source_map::{Origin, SourceMap};
 use crate::diagnostics::Diagnostic;
 use crate::source::SourceStore;
 
-/// The stage a text is preprocessed for. Its macro (`SHADER_STAGE_VERTEX` or
-/// `SHADER_STAGE_FRAGMENT`) is defined, as Unity does.
+/// The stage a text is preprocessed for. Its macro (`SHADER_STAGE_VERTEX`,
+/// `SHADER_STAGE_FRAGMENT` or `SHADER_STAGE_COMPUTE`) is defined, as Unity does.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Stage {
     /// The vertex stage.
     Vertex,
     /// The fragment stage.
     Fragment,
+    /// A compute kernel (`#pragma kernel`).
+    Compute,
 }
 
 impl Stage {
@@ -43,6 +45,7 @@ impl Stage {
         match self {
             Stage::Vertex => "SHADER_STAGE_VERTEX",
             Stage::Fragment => "SHADER_STAGE_FRAGMENT",
+            Stage::Compute => "SHADER_STAGE_COMPUTE",
         }
     }
 
@@ -51,12 +54,14 @@ impl Stage {
         match self {
             Stage::Vertex => "vertex",
             Stage::Fragment => "fragment",
+            Stage::Compute => "compute",
         }
     }
 }
 
 /// Macros kiln defines itself, which keyword analysis must not call undeclared.
-pub const BUILTIN_MACROS: [&str; 2] = ["SHADER_STAGE_VERTEX", "SHADER_STAGE_FRAGMENT"];
+pub const BUILTIN_MACROS: [&str; 3] =
+    ["SHADER_STAGE_VERTEX", "SHADER_STAGE_FRAGMENT", "SHADER_STAGE_COMPUTE"];
 
 /// One variant's spliced WGSL.
 #[derive(Debug, Clone)]

@@ -26,6 +26,9 @@ pub struct StageReflection {
     /// The `override` constants the module uses.
     #[serde(default)]
     pub overrides: Vec<OverrideConstant>,
+    /// A compute kernel's `@workgroup_size` (a size an `override` gives reads as 0).
+    #[serde(default)]
+    pub workgroup_size: Option<[u32; 3]>,
 }
 
 /// One resource the module uses, where it is bound.
@@ -138,8 +141,12 @@ pub fn reflect_stage(
         bindings: Vec::new(),
         uniform_blocks: Vec::new(),
         overrides: module.overrides.iter().map(|(_, o)| override_constant(module, o)).collect(),
+        workgroup_size: None,
     };
     if let Some(entry) = module.entry_points.iter().find(|e| e.name == entry_point) {
+        if entry.stage == naga::ShaderStage::Compute {
+            reflection.workgroup_size = Some(entry.workgroup_size);
+        }
         if entry.stage == naga::ShaderStage::Vertex {
             for argument in &entry.function.arguments {
                 let name = argument.name.clone().unwrap_or_default();

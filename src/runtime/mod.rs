@@ -12,7 +12,7 @@ mod state;
 mod uniforms;
 
 pub use layout::{PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
-pub use pipelines::{PipelineRequest, Reload, Runtime, Targets, UsageLog};
+pub use pipelines::{Kernel, KernelRequest, PipelineRequest, Reload, Runtime, Targets, UsageLog};
 pub use state::{
     MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state,
 };
@@ -76,6 +76,12 @@ pub enum RuntimeError {
     /// An override without a default that the request does not set.
     #[error("`{shader}` pass {pass}: override `{name}: {ty}` has no default; give it a value")]
     OverrideRequired { shader: String, pass: usize, name: String, ty: String },
+    /// A kernel the compute shader does not have.
+    #[error(
+        "`{shader}` has no kernel `{kernel}`{}",
+        suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default()
+    )]
+    UnknownKernel { shader: String, kernel: String, suggestion: Option<String> },
     /// No material of this name was built.
     #[error("no material `{0}` in the build")]
     NoMaterial(String),

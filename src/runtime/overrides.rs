@@ -5,8 +5,9 @@
 use super::RuntimeError;
 use crate::manifest::{PassManifest, StageView};
 
-/// Each stage's constants (vertex, fragment), by the key a pipeline sets them by, sorted.
-pub(super) type StageConstants = [Vec<(String, f64)>; 2];
+/// Each stage's constants (in the order the stages were given), by the key a pipeline sets them
+/// by, sorted.
+pub(super) type StageConstants = Vec<Vec<(String, f64)>>;
 
 /// What the constants are worked out for: names for errors, the pass, the request.
 pub(super) struct ConstantRequest<'a> {
@@ -21,7 +22,7 @@ pub(super) struct ConstantRequest<'a> {
 /// override the module uses takes the request's value, or its default.
 pub(super) fn stage_constants(
     request: &ConstantRequest,
-    stages: &[Option<StageView>; 2],
+    stages: &[Option<StageView>],
 ) -> Result<StageConstants, RuntimeError> {
     let (shader, pass) = (request.shader, request.pass.index);
     let declared = || stages.iter().flatten().flat_map(|s| &s.interface.overrides);
@@ -65,9 +66,10 @@ pub(super) fn stage_constants(
             on.push(keyword);
         }
     }
-    let mut constants: StageConstants = Default::default();
-    for ((stage, constants), name) in stages.iter().zip(&mut constants).zip(["vertex", "fragment"]) {
+    let mut constants: StageConstants = vec![Vec::new(); stages.len()];
+    for (stage, constants) in stages.iter().zip(&mut constants) {
         let Some(stage) = stage else { continue };
+        let name = stage.interface.stage.as_str();
         for constant in &stage.interface.overrides {
             let value = if request.pass.is_dynamic(&constant.name) {
                 let set_stage = request

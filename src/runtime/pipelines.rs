@@ -5,7 +5,7 @@
 use super::layout::{PassLayout, VertexLayout};
 use super::overrides::{ConstantRequest, stage_constants};
 use super::{Library, RuntimeError};
-use crate::manifest::{ERRORS_FILE, FILE_NAME, MaterialManifest};
+use crate::manifest::{ERRORS_FILE, FILE_NAME, MaterialManifest, StageView};
 use std::collections::{HashMap, HashSet};
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -37,7 +37,7 @@ pub struct PipelineRequest<'a> {
     /// `None`: [`VertexLayout::packed`] from the vertex stage's inputs.
     pub vertex_layout: Option<&'a VertexLayout>,
     /// Values of the modules' own `override` constants, by name (or `@id` in decimal), as wgpu
-    /// takes them (a generated `OVERRIDES` struct's `constants()`); `dynamic_branch` keywords
+    /// takes them (a generated `PassNOverrides` struct's `constants()`); `dynamic_branch` keywords
     /// come from `keywords`.
     pub overrides: &'a [(&'a str, f64)],
 }
@@ -52,7 +52,48 @@ struct PipelineKey {
     targets: Targets,
     vertex_layout: VertexLayout,
     /// Each stage's override constants, values by their bits.
-    constants: [Vec<(String, u64)>; 2],
+    constants: Vec<Vec<(String, u64)>>,
+}
+
+/// What a dispatch needs a compute pipeline for.
+pub struct KernelRequest<'a> {
+    /// The compute shader's name (a `.compute` file's stem).
+    pub shader: &'a str,
+    /// The kernel (`#pragma kernel NAME`).
+    pub kernel: &'a str,
+    /// The variant's keywords (the renderer's global ones and its own), `dynamic_branch` ones too.
+    pub keywords: &'a [&'a str],
+    /// Values of the module's own `override` constants, as [`PipelineRequest::overrides`].
+    pub overrides: &'a [(&'a str, f64)],
+}
+
+/// A kernel's compute pipeline and its workgroup size.
+#[derive(Debug, Clone)]
+pub struct Kernel {
+    /// The pipeline, with the compute shader's layout ([`Runtime::pass_layout`] of pass 0).
+    pub pipeline: Arc<wgpu::ComputePipeline>,
+    /// Its `@workgroup_size` (0 where an `override` gives it).
+    pub workgroup_size: [u32; 3],
+}
+
+impl Kernel {
+    /// The workgroups to dispatch so that every one of `size` invocations runs (each dimension
+    /// rounded up to whole workgroups).
+    pub fn workgroups(&self, size: [u32; 3]) -> [u32; 3] {
+        let mut count = [0; 3];
+        for (c, (n, group)) in count.iter_mut().zip(size.into_iter().zip(self.workgroup_size)) {
+            *c = n.div_ceil(group.max(1));
+        }
+        count
+    }
+}
+
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+struct KernelKey {
+    /// BLAKE3 of the kernel module's WGSL.
+    module: String,
+    layout: blake3::Hash,
+    constants: Vec<(String, u64)>,
 }
 
 /// What [`Runtime::reload`] found.
@@ -152,6 +193,7 @@ pub struct Runtime {
     passes: HashMap<String, HashMap<usize, PassFacts>>,
     modules: HashMap<String, wgpu::ShaderModule>,
     pipelines: HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>,
+    kernels: HashMap<KernelKey, Arc<wgpu::ComputePipeline>>,
     created: usize,
     usage: Option<UsageLog>,
     wgpu_cache: Option<wgpu::PipelineCache>,
@@ -168,6 +210,7 @@ impl Runtime {
             passes: HashMap::new(),
             modules: HashMap::new(),
             pipelines: HashMap::new(),
+            kernels: HashMap::new(),
             created: 0,
             usage: None,
             wgpu_cache: None,
@@ -299,9 +342,7 @@ impl Runtime {
             state,
             targets: request.targets.clone(),
             vertex_layout,
-            constants: constants
-                .each_ref()
-                .map(|c| c.iter().map(|(k, v)| (k.clone(), v.to_bits())).collect()),
+            constants: constant_bits(&constants),
         };
         if let Some(pipeline) = self.pipelines.get(&key) {
             return Ok(pipeline.clone());
@@ -315,27 +356,11 @@ impl Runtime {
                 "the variant needs `{feature}`, which the device was not created with"
             )));
         }
-        let mut module =
-            |stage: &crate::manifest::StageView| -> Result<(wgpu::ShaderModule, String), RuntimeError> {
-                let file = stage
-                    .module
-                    .wgsl
-                    .as_ref()
-                    .ok_or_else(|| layout_error("the build has no WGSL for it".into()))?;
-                if let Some(module) = self.modules.get(&file.hash) {
-                    return Ok((module.clone(), stage.interface.entry_point.clone()));
-                }
-                let bytes = library
-                    .bytes(pass, file)
-                    .ok_or_else(|| layout_error("its module is missing from its pack".into()))?;
-                let text = std::str::from_utf8(bytes).map_err(|e| layout_error(e.to_string()))?;
-                let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
-                    label: Some(&format!("{shader} {}", stage.interface.entry_point)),
-                    source: wgpu::ShaderSource::Wgsl(text.into()),
-                });
-                self.modules.insert(file.hash.clone(), module.clone());
-                Ok((module, stage.interface.entry_point.clone()))
-            };
+        let mut module = |stage: &StageView| {
+            let module = shader_module(&self.device, library, &mut self.modules, shader, stage)
+                .map_err(layout_error)?;
+            Ok::<_, RuntimeError>((module, stage.interface.entry_point.clone()))
+        };
         let (vertex_module, vertex_entry) = module(&vertex)?;
         let fragment_module = fragment.as_ref().map(&mut module).transpose()?;
         let targets: Vec<Option<wgpu::ColorTargetState>> = key
@@ -348,8 +373,7 @@ impl Runtime {
             })
             .collect();
         let buffers = key.vertex_layout.wgpu();
-        let [vertex_constants, fragment_constants] =
-            constants.each_ref().map(|c| c.iter().map(|(k, v)| (k.as_str(), *v)).collect::<Vec<_>>());
+        let [vertex_constants, fragment_constants] = [0, 1].map(|stage| wgpu_constants(&constants[stage]));
         let label = format!("{shader} pass {pass_index} [{}]", variant.keywords.join(" "));
         let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let pipeline = self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -390,6 +414,63 @@ impl Runtime {
         self.created += 1;
         self.pipelines.insert(key, pipeline.clone());
         Ok(pipeline)
+    }
+
+    /// The compute pipeline of a kernel of a compute shader's variant, created the first time it
+    /// is asked for (the variant recorded in the usage log, as for render pipelines).
+    pub fn kernel(&mut self, request: &KernelRequest) -> Result<Kernel, RuntimeError> {
+        let shader = request.shader;
+        let facts = self.pass_facts(shader, 0)?;
+        let library = &self.library;
+        let variant = logged_variant(library, &mut self.usage, shader, 0, request.keywords)?;
+        let pass = library.pass(shader, 0)?;
+        let layout_error =
+            |message: String| RuntimeError::Layout { shader: shader.to_string(), pass: 0, message };
+        let Some(index) = pass.kernels.iter().position(|k| k == request.kernel) else {
+            return Err(RuntimeError::UnknownKernel {
+                shader: shader.to_string(),
+                kernel: request.kernel.to_string(),
+                suggestion: crate::material::closest(request.kernel, pass.kernels.iter().map(String::as_str)),
+            });
+        };
+        let module = variant.kernels.get(index).copied().flatten();
+        let stage =
+            module.map(|m| pass.stage(m)).ok_or_else(|| layout_error("the kernel was not built".into()))?;
+        let constants = stage_constants(
+            &ConstantRequest { shader, pass, keywords: request.keywords, overrides: request.overrides },
+            std::slice::from_ref(&Some(stage)),
+        )?;
+        let workgroup_size = stage.interface.workgroup_size.unwrap_or([1, 1, 1]);
+        let hash = stage.module.wgsl.as_ref().map(|f| f.hash.clone()).unwrap_or_default();
+        let key = KernelKey {
+            module: hash,
+            layout: facts.layout_key,
+            constants: constant_bits(&constants).remove(0),
+        };
+        if let Some(pipeline) = self.kernels.get(&key) {
+            return Ok(Kernel { pipeline: pipeline.clone(), workgroup_size });
+        }
+        let module =
+            shader_module(&self.device, library, &mut self.modules, shader, &stage).map_err(layout_error)?;
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let pipeline = self.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(&format!("{shader} kernel {} [{}]", request.kernel, variant.keywords.join(" "))),
+            layout: Some(&facts.layout.pipeline),
+            module: &module,
+            entry_point: Some(request.kernel),
+            compilation_options: wgpu::PipelineCompilationOptions {
+                constants: &wgpu_constants(&constants[0]),
+                ..Default::default()
+            },
+            cache: self.wgpu_cache.as_ref(),
+        });
+        if let Some(error) = pollster::block_on(scope.pop()) {
+            return Err(layout_error(format!("wgpu refused the pipeline: {error}")));
+        }
+        let pipeline = Arc::new(pipeline);
+        self.created += 1;
+        self.kernels.insert(key, pipeline.clone());
+        Ok(Kernel { pipeline, workgroup_size })
     }
 
     /// Creates, ahead of the first frame, the pipeline of every pass each material's variant has
@@ -452,16 +533,49 @@ impl Runtime {
         }
         let library = Library::open(&output)?;
         let hashes: HashSet<String> = library.manifest().files().into_iter().map(|f| f.hash).collect();
-        let before = self.pipelines.len();
+        let before = self.pipelines.len() + self.kernels.len();
         self.pipelines.retain(|key, _| key.modules.iter().flatten().all(|h| hashes.contains(h)));
+        self.kernels.retain(|key, _| hashes.contains(&key.module));
         self.modules.retain(|hash, _| hashes.contains(hash));
         // Layouts and render state are read again from the new manifest.
         self.passes.clear();
-        let dropped_pipelines = before - self.pipelines.len();
+        let dropped_pipelines = before - self.pipelines.len() - self.kernels.len();
         self.library = library;
         self.source = Some((output, hash));
         Ok(Reload::Swapped { dropped_pipelines })
     }
+}
+
+/// A stage's constants with their values' bits, for a pipeline key.
+fn constant_bits(constants: &[Vec<(String, f64)>]) -> Vec<Vec<(String, u64)>> {
+    constants.iter().map(|c| c.iter().map(|(k, v)| (k.clone(), v.to_bits())).collect()).collect()
+}
+
+/// A stage's constants as wgpu takes them.
+fn wgpu_constants(constants: &[(String, f64)]) -> Vec<(&str, f64)> {
+    constants.iter().map(|(k, v)| (k.as_str(), *v)).collect()
+}
+
+/// A stage's WGSL module, created once per module (by its hash) and kept across pipelines.
+fn shader_module(
+    device: &wgpu::Device,
+    library: &Library,
+    modules: &mut HashMap<String, wgpu::ShaderModule>,
+    shader: &str,
+    stage: &StageView,
+) -> Result<wgpu::ShaderModule, String> {
+    let file = stage.module.wgsl.as_ref().ok_or("the build has no WGSL for it")?;
+    if let Some(module) = modules.get(&file.hash) {
+        return Ok(module.clone());
+    }
+    let bytes = library.bytes(stage.pass, file).ok_or("its module is missing from its pack")?;
+    let text = std::str::from_utf8(bytes).map_err(|e| e.to_string())?;
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(&format!("{shader} {}", stage.interface.entry_point)),
+        source: wgpu::ShaderSource::Wgsl(text.into()),
+    });
+    modules.insert(file.hash.clone(), module.clone());
+    Ok(module)
 }
 
 fn manifest_hash(output: &Path) -> Result<blake3::Hash, RuntimeError> {

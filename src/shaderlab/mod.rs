@@ -3,6 +3,7 @@
 //! pest types never leave this module: callers get [`ast::Shader`] and diagnostics.
 
 pub mod ast;
+pub mod compute;
 pub(crate) mod error;
 mod parse;
 pub mod pragma;

@@ -26,8 +26,12 @@ pub struct ParsedShader {
     pub diagnostics: Vec<Diagnostic>,
 }
 
-/// Parses one `.shader` file held in the store.
+/// Parses one `.shader` file held in the store (a `.compute` file reads as a shader of one pass:
+/// [`super::compute`]).
 pub fn parse_shader(store: &SourceStore, file: FileId) -> ParsedShader {
+    if store.path(file).is_some_and(super::compute::is_compute_file) {
+        return super::compute::parse_compute(store, file);
+    }
     let text = store.text(file);
     let failed = |errors: Vec<ShaderLabError>| ParsedShader {
         shader: None,

@@ -147,6 +147,8 @@ pub struct ProgramPragmas {
     pub vertex: Option<Spanned<String>>,
     /// `#pragma fragment NAME`.
     pub fragment: Option<Spanned<String>>,
+    /// `#pragma kernel NAME` lines of a compute shader, in order, each name once.
+    pub kernels: Vec<Spanned<String>>,
     /// `#pragma target` lines, in order.
     pub targets: Vec<Target>,
     /// `#pragma require` lines, in order.
@@ -483,6 +485,15 @@ fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<Pragma
                     })
                 }
                 _ => *slot = Some(entry),
+            }
+        }
+        "kernel" => {
+            let Some(kernel) = line.args.into_iter().next() else {
+                errors.push(missing("a kernel function name"));
+                return;
+            };
+            if !pragmas.kernels.iter().any(|k| k.value == kernel.value) {
+                pragmas.kernels.push(kernel);
             }
         }
         "target" => {

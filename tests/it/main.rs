@@ -6,6 +6,7 @@ mod bad;
 mod build;
 mod cache;
 mod cli;
+mod compute;
 mod conformance;
 mod cpp;
 mod dynamic;

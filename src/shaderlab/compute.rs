@@ -1,0 +1,63 @@
+//! `.compute` files, as Unity has them: WGSL with the preprocessor, includes and pragmas
+//! (`#pragma kernel NAME` for each kernel, keyword pragmas, `target`, `require`), and no ShaderLab
+//! around it. One reads as a shader of one pass whose program is the whole file, named after the
+//! file (`Particles.compute` is `Particles`), so that the catalogue, keywords, builds, usage logs
+//! and the run time treat its kernels as they treat a pass's stages (docs/compute.md).
+
+use super::ast::{Pass, PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
+use super::parse::ParsedShader;
+use crate::source::{FileId, SourceStore, Span, Spanned};
+use std::path::Path;
+
+/// The extension of compute shader files.
+pub const EXTENSION: &str = "compute";
+
+/// Whether `path` names a compute shader file.
+pub fn is_compute_file(path: &Path) -> bool {
+    path.extension().is_some_and(|e| e.eq_ignore_ascii_case(EXTENSION))
+}
+
+/// A `.compute` file as a shader: its name is the file's stem, its one pass's program the file.
+pub fn parse_compute(store: &SourceStore, file: FileId) -> ParsedShader {
+    let text = store.text(file);
+    let whole = Span::new(file, 0..text.len());
+    let name = store
+        .path(file)
+        .and_then(Path::file_stem)
+        .map_or_else(|| "compute".to_string(), |stem| stem.to_string_lossy().into_owned());
+    let state = || StateBlock {
+        name: None,
+        tags: Vec::new(),
+        lod: None,
+        render_state: Vec::new(),
+        package_requirements: Vec::new(),
+        legacy: Vec::new(),
+    };
+    let program = ProgramBlock {
+        language: ProgramLanguage::Wgsl,
+        is_include: false,
+        body: text.to_string(),
+        body_span: whole,
+        span: whole,
+    };
+    let pass = Pass { state: state(), programs: vec![program], span: whole };
+    let subshader = SubShader {
+        state: state(),
+        passes: vec![PassItem::Pass(pass)],
+        programs: Vec::new(),
+        category: None,
+        span: whole,
+    };
+    let shader = Shader {
+        name: Spanned::new(name, Span::new(file, 0..0)),
+        properties: Vec::new(),
+        subshaders: vec![subshader],
+        categories: Vec::new(),
+        includes: Vec::new(),
+        fallback: None,
+        custom_editors: Vec::new(),
+        dependencies: Vec::new(),
+        span: whole,
+    };
+    ParsedShader { shader: Some(shader), diagnostics: Vec::new() }
+}

@@ -1,0 +1,152 @@
+//! Compute shaders (`fixtures/compute`: a `.compute` file with two kernels and a `multi_compile`
+//! set): built as a pass of kernels, reflected, and each kernel variant dispatched on the GPU
+//! (lavapipe in CI) through `kiln::runtime`, its read-back output checked against the same
+//! computation on the CPU.
+
+use crate::support::{build_without_errors, gpu, root};
+use kiln::build::VariantSelection;
+use kiln::runtime::{KernelRequest, Runtime};
+use wgpu::util::DeviceExt;
+
+const SHADER: &str = "Scale";
+
+fn built() -> tempfile::TempDir {
+    let output = tempfile::tempdir().expect("temp dir");
+    build_without_errors(&root().join("fixtures/compute"), Some(output.path()), VariantSelection::Used);
+    output
+}
+
+#[test]
+fn kernels_are_built_and_reflected_per_variant() {
+    let output = built();
+    let manifest = crate::support::verified_manifest(output.path());
+    let pass = &manifest.shaders.iter().find(|s| s.name == SHADER).expect("built").passes[0];
+    assert_eq!(pass.kernels, ["Double", "AddOffset"]);
+    assert_eq!(pass.variants.len(), 2, "the multi_compile set's two options");
+    for variant in &pass.variants {
+        assert!(variant.vertex.is_none() && variant.fragment.is_none());
+        let sizes: Vec<_> = variant
+            .kernels
+            .iter()
+            .map(|m| {
+                let stage = pass.stage(m.expect("built"));
+                assert_eq!(stage.interface.stage, "compute");
+                (stage.interface.entry_point.clone(), stage.interface.workgroup_size)
+            })
+            .collect();
+        assert_eq!(sizes, [("Double".into(), Some([64, 1, 1])), ("AddOffset".into(), Some([32, 2, 1]))]);
+    }
+    // One bind group shared by both kernels of every variant, visible to compute.
+    let entries: Vec<_> = pass.layout.iter().flat_map(|g| &g.entries).collect();
+    assert!(entries.iter().all(|e| e.visibility == ["compute"]), "{entries:?}");
+    assert_eq!(entries.iter().map(|e| e.name.as_str()).collect::<Vec<_>>(), ["params", "values"]);
+}
+
+/// Runs a kernel of a variant over `input` with `offset`; returns the numbers read back.
+fn dispatch(
+    runtime: &mut Runtime,
+    gpu: &kiln::accuracy::gpu::Gpu,
+    kernel: &str,
+    keywords: &[&str],
+    input: &[f32],
+    offset: f32,
+) -> Vec<f32> {
+    let device = &gpu.device;
+    let kernel_pipeline = runtime
+        .kernel(&KernelRequest { shader: SHADER, kernel, keywords, overrides: &[] })
+        .expect("pipeline");
+    let layout = runtime.pass_layout(SHADER, 0).expect("layout");
+    let pass = runtime.library().pass(SHADER, 0).expect("pass").clone();
+    let mut params = offset.to_le_bytes().to_vec();
+    params.extend((input.len() as u32).to_le_bytes());
+    let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: None,
+        contents: &params,
+        usage: wgpu::BufferUsages::UNIFORM,
+    });
+    let bytes: Vec<u8> = input.iter().flat_map(|v| v.to_le_bytes()).collect();
+    let storage = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: None,
+        contents: &bytes,
+        usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+    });
+    let read = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: bytes.len() as u64,
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    // Bindings by name, where the manifest's layout put them.
+    let group = &pass.layout[0];
+    let entries: Vec<wgpu::BindGroupEntry> = group
+        .entries
+        .iter()
+        .map(|e| wgpu::BindGroupEntry {
+            binding: e.binding,
+            resource: if e.name == "params" {
+                uniform.as_entire_binding()
+            } else {
+                storage.as_entire_binding()
+            },
+        })
+        .collect();
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &layout.groups[group.group as usize],
+        entries: &entries,
+    });
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut compute = encoder.begin_compute_pass(&Default::default());
+        compute.set_pipeline(&kernel_pipeline.pipeline);
+        compute.set_bind_group(group.group, &bind_group, &[]);
+        // AddOffset's invocations cover two numbers along y.
+        let size = if kernel == "AddOffset" {
+            [input.len().div_ceil(2) as u32, 2, 1]
+        } else {
+            [input.len() as u32, 1, 1]
+        };
+        let [x, y, z] = kernel_pipeline.workgroups(size);
+        compute.dispatch_workgroups(x, y, z);
+    }
+    encoder.copy_buffer_to_buffer(&storage, 0, &read, 0, bytes.len() as u64);
+    gpu.queue.submit([encoder.finish()]);
+    read.map_async(wgpu::MapMode::Read, .., |result| result.expect("maps"));
+    device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
+    let mapped = read.get_mapped_range(..).expect("mapped");
+    mapped.chunks_exact(4).map(|c| f32::from_le_bytes(c.try_into().expect("4 bytes"))).collect()
+}
+
+#[test]
+fn every_kernel_variant_computes_what_the_cpu_computes() {
+    let Some(gpu) = gpu("the compute kernels test") else { return };
+    let output = built();
+    let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
+    // 1,000 numbers: more than one workgroup, not a multiple of its size.
+    let input: Vec<f32> = (0..1000).map(|i| (i as f32) * 0.25 - 100.0).collect();
+    let offset = 3.5;
+    for keywords in [&[][..], &["_SQUARE"][..]] {
+        let shaped = |x: f32| if keywords.is_empty() { x } else { x * x };
+        for (kernel, cpu) in [
+            ("Double", &(|x: f32| shaped(x) * 2.0) as &dyn Fn(f32) -> f32),
+            ("AddOffset", &|x: f32| shaped(x) + offset),
+        ] {
+            let gpu_values = dispatch(&mut runtime, &gpu, kernel, keywords, &input, offset);
+            let expected: Vec<f32> = input.iter().map(|&x| cpu(x)).collect();
+            assert_eq!(gpu_values, expected, "{kernel} {keywords:?}");
+        }
+    }
+    // The keyword changes the result: squaring is visible.
+    assert_ne!(
+        dispatch(&mut runtime, &gpu, "Double", &[], &input, offset),
+        dispatch(&mut runtime, &gpu, "Double", &["_SQUARE"], &input, offset)
+    );
+    // One pipeline per kernel variant, each created once.
+    assert_eq!(runtime.pipelines_created(), 4);
+    let unknown =
+        runtime.kernel(&KernelRequest { shader: SHADER, kernel: "Dubble", keywords: &[], overrides: &[] });
+    assert_eq!(
+        unknown.expect_err("no such kernel").to_string(),
+        "`Scale` has no kernel `Dubble` (did you mean `Double`?)"
+    );
+}
