@@ -59,6 +59,9 @@ pub struct ProgramListing {
     pub vertex: Option<String>,
     /// The fragment entry point.
     pub fragment: Option<String>,
+    /// A compute shader's kernels.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub kernels: Vec<String>,
     /// `#pragma target`, if given.
     pub target: Option<String>,
     /// Its keyword sets.
@@ -238,6 +241,7 @@ fn program_from_pragmas(language: &'static str, pragmas: &ProgramPragmas) -> Pro
         language,
         vertex: pragmas.vertex.as_ref().map(|v| v.value.clone()),
         fragment: pragmas.fragment.as_ref().map(|v| v.value.clone()),
+        kernels: pragmas.kernels.iter().map(|k| k.value.clone()).collect(),
         target: pragmas.target().map(str::to_string),
         keyword_sets: pragmas.keyword_sets.iter().map(set_listing).collect(),
         possible_variants: pragmas.possible_variants(),
@@ -280,6 +284,9 @@ pub fn render_text(listing: &Listing) -> String {
             let mut facts = vec![program.language.to_uppercase()];
             facts.extend(program.vertex.as_ref().map(|v| format!("vertex {v}")));
             facts.extend(program.fragment.as_ref().map(|f| format!("fragment {f}")));
+            if !program.kernels.is_empty() {
+                facts.push(format!("kernels {}", program.kernels.join(", ")));
+            }
             facts.extend(program.target.as_ref().map(|t| format!("target {t}")));
             let _ = writeln!(out, "    program: {}", facts.join(", "));
             for set in &program.keyword_sets {

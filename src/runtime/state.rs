@@ -528,6 +528,7 @@ mod tests {
             render_state,
             keyword_sets: Vec::new(),
             keywords: Vec::new(),
+            kernels: Vec::new(),
             layout: Vec::new(),
             uniform_blocks: Vec::new(),
             packs: Vec::new(),

@@ -36,7 +36,7 @@ pub fn load(paths: &[PathBuf]) -> (SourceStore, Vec<FileId>, Vec<Diagnostic>) {
 
 /// Runs the built `kiln` binary from the repository root.
 pub fn kiln(args: &[&str]) -> Output {
-    kiln_in(&root(), args)
+    kiln_in(root(), args)
 }
 
 /// The `kiln` binary run in `folder`.
