@@ -38,6 +38,21 @@ pub struct CatalogInput {
     pub global_keywords: Option<Vec<Spanned<String>>>,
     /// Variant usage logs (JSON Lines): each variant they name is built too.
     pub variant_logs: Vec<FileId>,
+    /// Variants listed by name (`kiln.toml`'s `[compute.NAME] variants`), built too.
+    pub listed_variants: Vec<ListedVariant>,
+}
+
+/// A variant a project file names: a shader, a pass, its keywords, and where it is written.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ListedVariant {
+    /// The shader's name.
+    pub shader: String,
+    /// The pass's index.
+    pub pass: usize,
+    /// The keywords that choose the variant (`dynamic_branch` ones among them choose nothing).
+    pub keywords: Vec<String>,
+    /// Where it is written, for diagnostics.
+    pub span: Span,
 }
 
 /// The analysis every job shares (see the module's comment).
@@ -125,25 +140,20 @@ impl CatalogShader {
     }
 }
 
-/// Adds the variants a usage log names (one JSON object a line: `{"shader": "Custom RP/Lit",
-/// "pass": 0, "keywords": ["_CLIPPING"]}`) to the passes' variants, each exactly as logged; a
-/// line naming a shader, pass or keyword that does not exist is an error at that line.
-fn add_logged_variants(
+/// The variants usage logs name (one JSON object a line: `{"shader": "Custom RP/Lit", "pass": 0,
+/// "keywords": ["_CLIPPING"]}`); a line that does not read is an error at that line.
+fn logged_variants(
     store: &SourceStore,
     logs: &[FileId],
-    shaders: &mut [CatalogShader],
-) -> Vec<Diagnostic> {
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Vec<ListedVariant> {
     #[derive(serde::Deserialize)]
     struct Logged {
         shader: String,
         pass: usize,
         keywords: Vec<String>,
     }
-    let mut diagnostics = Vec::new();
-    // Found once, not per line: the shaders by name, the logged variants by program.
-    let by_name: HashMap<String, usize> =
-        shaders.iter().enumerate().rev().map(|(i, s)| (s.shader.name.value.clone(), i)).collect();
-    let mut added: HashMap<(usize, usize), Vec<Variant>> = HashMap::new();
+    let mut listed = Vec::new();
     let lines = logs.iter().flat_map(|&log| {
         let mut start = 0;
         store.text(log).split_inclusive('\n').map(move |line| {
@@ -156,26 +166,43 @@ fn add_logged_variants(
         if line.trim().is_empty() {
             continue;
         }
-        let error =
-            |code, message: String, label: &str| Diagnostic::error(code, message).at(span, label.to_string());
-        let logged: Logged = match serde_json::from_str(line) {
-            Ok(logged) => logged,
+        match serde_json::from_str::<Logged>(line) {
+            Ok(Logged { shader, pass, keywords }) => {
+                listed.push(ListedVariant { shader, pass, keywords, span })
+            }
             Err(e) => {
                 // serde counts lines and columns within the line; the label has the real place.
                 let message = e.to_string();
                 let message = message.split(" at line ").next().unwrap_or_default();
                 diagnostics.push(
-                    error("K0530", format!("malformed variant log line: {message}"), "not a variant")
+                    Diagnostic::error("K0530", format!("malformed variant log line: {message}"))
+                        .at(span, "not a variant")
                         .help(r#"each line is {"shader": NAME, "pass": INDEX, "keywords": [...]}"#),
                 );
-                continue;
             }
+        }
+    }
+    listed
+}
+
+/// Adds the variants usage logs and project files name to the passes' variants, each exactly as
+/// named; one naming a shader, pass or keyword that does not exist is an error where it is
+/// written.
+fn add_listed_variants(listed: &[ListedVariant], shaders: &mut [CatalogShader]) -> Vec<Diagnostic> {
+    let mut diagnostics = Vec::new();
+    // Found once, not per line: the shaders by name, the added variants by program.
+    let by_name: HashMap<String, usize> =
+        shaders.iter().enumerate().rev().map(|(i, s)| (s.shader.name.value.clone(), i)).collect();
+    let mut added: HashMap<(usize, usize), Vec<Variant>> = HashMap::new();
+    for logged in listed {
+        let error = |code, message: String, label: &str| {
+            Diagnostic::error(code, message).at(logged.span, label.to_string())
         };
         let Some(&index) = by_name.get(&logged.shader) else {
             diagnostics.push(error(
                 "K0531",
                 format!("no shader named `{}` in the project", logged.shader),
-                "logged here",
+                "named here",
             ));
             continue;
         };
@@ -186,7 +213,7 @@ fn add_logged_variants(
             position.map(|p| (p, shaders[index].passes[p].program.as_ref()))
         else {
             let message = format!("`{}` has no WGSL pass {}", logged.shader, logged.pass);
-            diagnostics.push(error("K0532", message, "logged here"));
+            diagnostics.push(error("K0532", message, "named here"));
             continue;
         };
         match crate::keywords::select_variant(
@@ -197,7 +224,7 @@ fn add_logged_variants(
                 let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
                 added.entry((index, position)).or_default().push(program.keywords.variant_of(&keywords));
             }
-            Err(e) => diagnostics.push(error("K0533", e.to_string(), "logged here")),
+            Err(e) => diagnostics.push(error("K0533", e.to_string(), "named here")),
         }
     }
     for ((shader, pass), variants) in added {
@@ -326,7 +353,9 @@ pub fn catalog(
         })
         .collect();
     diagnostics.extend(enumerated.into_iter().flatten());
-    diagnostics.extend(add_logged_variants(store, &input.variant_logs, &mut shaders));
+    let mut listed = logged_variants(store, &input.variant_logs, &mut diagnostics);
+    listed.extend(input.listed_variants.iter().cloned());
+    diagnostics.extend(add_listed_variants(&listed, &mut shaders));
     // Include blocks and files are shared by passes: report each of their problems once.
     diagnostics::dedup(&mut diagnostics);
     (Catalog { shaders, materials }, diagnostics)

@@ -36,6 +36,56 @@ pub struct ProjectConfig {
     pub variant_logs: Vec<PathBuf>,
     /// A module cache shared between builds and machines (docs/scaling.md).
     pub cache_dir: Option<PathBuf>,
+    /// The variants of each compute shader to build (`[compute.NAME]`), which no material
+    /// selects (docs/compute.md).
+    pub compute: std::collections::BTreeMap<String, ComputeConfig>,
+}
+
+/// `[compute.NAME]`: which variants of a compute shader are built.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ComputeConfig {
+    /// `"all"`, or a list of keyword lists (`[[], ["_SQUARE"]]`), each one variant.
+    pub variants: ComputeVariants,
+}
+
+/// A compute shader's variants: every one, or those listed.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ComputeVariants {
+    /// `"all"`: every variant, as `always_include` builds a shader.
+    All,
+    /// Keyword lists, each choosing one variant as a usage log line does.
+    Listed(Vec<toml::Spanned<Vec<String>>>),
+}
+
+// By hand, not `untagged`: the lists keep their places in the file (`toml::Spanned`).
+impl<'de> Deserialize<'de> for ComputeVariants {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<ComputeVariants, D::Error> {
+        struct Visitor;
+        impl<'de> serde::de::Visitor<'de> for Visitor {
+            type Value = ComputeVariants;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str(r#""all", or a list of keyword lists such as [[], ["_SQUARE"]]"#)
+            }
+            fn visit_str<E: serde::de::Error>(self, word: &str) -> Result<ComputeVariants, E> {
+                match word {
+                    "all" => Ok(ComputeVariants::All),
+                    _ => Err(E::invalid_value(serde::de::Unexpected::Str(word), &self)),
+                }
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<ComputeVariants, A::Error> {
+                let mut lists = Vec::new();
+                while let Some(list) = seq.next_element()? {
+                    lists.push(list);
+                }
+                Ok(ComputeVariants::Listed(lists))
+            }
+        }
+        deserializer.deserialize_any(Visitor)
+    }
 }
 
 /// A back end kiln writes stage modules for.
@@ -61,6 +111,7 @@ impl Default for ProjectConfig {
             strict: false,
             variant_logs: Vec::new(),
             cache_dir: None,
+            compute: Default::default(),
         }
     }
 }
@@ -104,4 +155,5 @@ const FIELDS: &[&str] = &[
     "strict",
     "variant_logs",
     "cache_dir",
+    "compute",
 ];

@@ -261,6 +261,8 @@ pub struct Workspace {
     pub variant_logs: Vec<PathBuf>,
     /// The first project folder's `cache_dir`.
     pub cache_dir: Option<PathBuf>,
+    /// The compute shader variants `kiln.toml` lists (`[compute.NAME] variants`).
+    pub listed_variants: Vec<crate::catalog::ListedVariant>,
 }
 
 impl Workspace {
@@ -281,6 +283,7 @@ impl Workspace {
             always_include: self.always_include.clone(),
             global_keywords: self.global_keywords.clone(),
             variant_logs: Vec::new(),
+            listed_variants: self.listed_variants.clone(),
         }
     }
 }
@@ -318,6 +321,21 @@ pub fn open_workspace(
                 let spanned =
                     global.iter().map(|k| Spanned::new(k.get_ref().clone(), Span::new(file, k.span())));
                 workspace.global_keywords.get_or_insert_with(Vec::new).extend(spanned);
+            }
+            for (name, compute) in &config.compute {
+                match &compute.variants {
+                    crate::config::ComputeVariants::All => workspace.always_include.push(name.clone()),
+                    crate::config::ComputeVariants::Listed(lists) => {
+                        workspace.listed_variants.extend(lists.iter().map(|keywords| {
+                            crate::catalog::ListedVariant {
+                                shader: name.clone(),
+                                pass: 0,
+                                keywords: keywords.get_ref().clone(),
+                                span: Span::new(file, keywords.span()),
+                            }
+                        }))
+                    }
+                }
             }
             config
         } else {

@@ -152,10 +152,14 @@ impl BuildSummary {
             [one] => format!("`{one}`, so it was not {verb}"),
             _ => format!("{} shaders, so they were not {verb}: {}", unused.len(), names.join(", ")),
         };
-        Some(Diagnostic::remark("K0008", format!("no material uses {what}")).help(
-            "add a `.mat` that names it, list it in `always_include` in kiln.toml, or check every \
-             variant with `kiln check --all-variants`",
-        ))
+        Some(
+            Diagnostic::remark("K0008", format!("no material uses {what}"))
+                .help(
+                    "add a `.mat` that names it, list it in `always_include` in kiln.toml, or check every \
+                     variant with `kiln check --all-variants`",
+                )
+                .note("a compute shader's variants are listed in kiln.toml: `[compute.NAME] variants = [[], [\"_KEYWORD\"]]` or `\"all\"`"),
+        )
     }
 }
 

@@ -87,9 +87,9 @@ fn compile_unguarded(
         .at(request.entry_pragma, "named here");
         return Err(match other {
             Some(e) => d.help(format!(
-                "`{}` is a {:?} entry point; mark it `@{}`",
+                "`{}` is a {} entry point; mark it `@{}`",
                 e.name,
-                e.stage,
+                format!("{:?}", e.stage).to_lowercase(),
                 request.stage.name()
             )),
             None => d.help(format!(

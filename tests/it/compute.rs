@@ -150,3 +150,22 @@ fn every_kernel_variant_computes_what_the_cpu_computes() {
         "`Scale` has no kernel `Dubble` (did you mean `Double`?)"
     );
 }
+
+#[test]
+fn mistakes_in_kernels_and_listed_variants_are_reported_where_they_are_written() {
+    let mut store = kiln::source::SourceStore::new();
+    let mode = kiln::project::BuildMode { write: false, threads: Some(1), ..Default::default() };
+    let path = std::path::PathBuf::from("fixtures/bad/compute");
+    let (result, mut diagnostics) =
+        kiln::project::build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
+    diagnostics.extend(result.diagnostics);
+    assert!(kiln::diagnostics::has_errors(&diagnostics));
+    let codes: Vec<&str> = diagnostics.iter().map(|d| d.code).collect();
+    assert_eq!(
+        codes,
+        ["K0533", "K0401", "K0403", "K0403"],
+        "an unlisted keyword, no workgroup size, a vertex entry point, a missing kernel"
+    );
+    expect_test::expect_file![root().join("fixtures/bad/compute/kiln.stderr")]
+        .assert_eq(&kiln::diagnostics::render_plain(&store, &diagnostics));
+}
