@@ -169,3 +169,47 @@ fn mistakes_in_kernels_and_listed_variants_are_reported_where_they_are_written()
     expect_test::expect_file![root().join("fixtures/bad/compute/kiln.stderr")]
         .assert_eq(&kiln::diagnostics::render_plain(&store, &diagnostics));
 }
+
+#[test]
+fn a_missing_kernel_variant_is_logged_built_from_the_log_and_an_edited_kernel_reloads() {
+    let Some(gpu) = gpu("the compute usage and reload test") else { return };
+    let dir = tempfile::tempdir().expect("temp dir");
+    // The project listing only the variant without `_SQUARE`.
+    let project = dir.path().join("project");
+    std::fs::create_dir(&project).expect("mkdir");
+    let source = std::fs::read_to_string(root().join("fixtures/compute/Scale.compute")).expect("read");
+    std::fs::write(project.join("Scale.compute"), &source).expect("write");
+    std::fs::write(project.join("kiln.toml"), "[compute.Scale]\nvariants = [[]]\n").expect("write");
+    let output = dir.path().join("out");
+    let build = |logs: &[&std::path::Path]| {
+        let mut args =
+            vec!["build", project.to_str().expect("utf-8"), "--output", output.to_str().expect("utf-8")];
+        for log in logs {
+            args.extend(["--variants-from", log.to_str().expect("utf-8")]);
+        }
+        let run = crate::support::kiln(&args);
+        assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+    };
+    build(&[]);
+    let mut runtime = Runtime::open(&gpu.device, &output).expect("opens");
+    let missing = dir.path().join("missing.jsonl");
+    runtime.log_usage(kiln::runtime::UsageLog::new(None, Some(&missing)).expect("log"));
+    let request = |keywords| KernelRequest { shader: SHADER, kernel: "Double", keywords, overrides: &[] };
+    let error = runtime.kernel(&request(&["_SQUARE"])).expect_err("not built");
+    assert!(matches!(error, kiln::runtime::RuntimeError::MissingVariant { .. }), "{error}");
+    assert_eq!(
+        std::fs::read_to_string(&missing).expect("missing log"),
+        "{\"keywords\":[\"_SQUARE\"],\"pass\":0,\"shader\":\"Scale\"}\n"
+    );
+    // Built from the log, reloaded, it runs.
+    build(&[&missing]);
+    assert!(matches!(runtime.reload(), Ok(kiln::runtime::Reload::Swapped { .. })));
+    let input = [1.0, 2.0, 3.0];
+    assert_eq!(dispatch(&mut runtime, &gpu, "Double", &["_SQUARE"], &input, 0.0), [2.0, 8.0, 18.0]);
+    // An edited kernel: rebuilt, reloaded, its new code runs.
+    std::fs::write(project.join("Scale.compute"), source.replace("* 2.0;", "* 3.0;")).expect("edit");
+    build(&[&missing]);
+    assert!(matches!(runtime.reload(), Ok(kiln::runtime::Reload::Swapped { .. })));
+    assert_eq!(dispatch(&mut runtime, &gpu, "Double", &["_SQUARE"], &input, 0.0), [3.0, 12.0, 27.0]);
+    assert_eq!(dispatch(&mut runtime, &gpu, "Double", &[], &input, 0.0), [3.0, 6.0, 9.0]);
+}
