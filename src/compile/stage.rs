@@ -103,6 +103,7 @@ fn compile_unguarded(
     let info = keep_entry_point(&mut module, request.entry, stage, request.allowed.capabilities(), mapper)
         .map_err(|d| located(d, request, mapper))?;
     check_limits(&module, request, mapper)?;
+    check_override_defaults(&module, mapper)?;
     layout::check_uniform_constructs(&module, request.text, mapper)?;
 
     if injected("KILN_INJECT_BACKEND_ERROR", request.entry) {
@@ -198,6 +199,39 @@ fn located(diagnostic: Diagnostic, request: &StageRequest, mapper: &Mapper) -> D
     } else {
         diagnostic.at(request.entry_pragma, "in this entry point")
     }
+}
+
+/// An `override` whose default is an expression (`override height = 2 * depth;`): naga's WGSL
+/// writer (30) can write only literals, constants and their composites there, and panics on
+/// the rest, so such a module is refused at the declaration, with the rewrite that works.
+fn check_override_defaults(module: &naga::Module, mapper: &Mapper) -> Result<(), Diagnostic> {
+    use naga::Expression as E;
+    for (handle, constant) in module.overrides.iter() {
+        let Some(init) = constant.init else { continue };
+        let writable = matches!(
+            module.global_expressions[init],
+            E::Literal(_)
+                | E::Constant(_)
+                | E::ZeroValue(_)
+                | E::Compose { .. }
+                | E::Splat { .. }
+                | E::Override(_)
+        );
+        if writable {
+            continue;
+        }
+        let name = constant.name.clone().unwrap_or_default();
+        let d = Diagnostic::error(
+            "K0418",
+            format!("the default of `override {name}` is an expression naga's WGSL writer cannot write"),
+        )
+        .help("give it a literal default (or none), and compute the value where it is used");
+        let range = module.overrides.get_span(handle).to_range();
+        return Err(
+            mapper.diagnostic_at(d, range.into_iter().map(|r| (r, "declared here".to_string())).collect())
+        );
+    }
+    Ok(())
 }
 
 /// Interpolators and colour targets beyond what the variant's target allows.

@@ -1,8 +1,8 @@
 //! naga's own WGSL test inputs (tests/corpus/naga, MIT/Apache, see ORIGIN.md there) through kiln:
 //! each file naga accepts on its own, with what kiln grants (WebGPU's baseline and `f16`), must
-//! build through kiln wrapped as a pass per vertex or fragment entry point, and each file naga
-//! refuses must be refused by kiln too; every file must come back from `kiln preprocess` token
-//! for token. Files with compute entry points only cannot be a pass yet, and are counted.
+//! build through kiln wrapped as a pass per vertex or fragment entry point and as a compute shader
+//! with a kernel per compute entry point, and each file naga refuses must be refused by kiln too;
+//! every file must come back from `kiln preprocess` token for token.
 
 use crate::support::{kiln, root, tool};
 use kiln::build::VariantSelection;
@@ -23,11 +23,17 @@ fn corpus() -> Vec<PathBuf> {
     files
 }
 
-/// What naga alone says of a text, and its vertex and fragment entry points.
+/// What naga alone says of a text, its vertex and fragment entry points, and its compute ones.
 struct NagaVerdict {
     accepted: Result<(), String>,
     entry_points: Vec<(&'static str, String)>,
-    compute_only: bool,
+    kernels: Vec<String>,
+}
+
+impl NagaVerdict {
+    fn compute_only(&self) -> bool {
+        self.entry_points.is_empty() && !self.kernels.is_empty()
+    }
 }
 
 fn naga_alone(text: &str) -> NagaVerdict {
@@ -36,9 +42,14 @@ fn naga_alone(text: &str) -> NagaVerdict {
         Err(error) => {
             // The entry points as written, for a text naga cannot parse.
             let mut entry_points = Vec::new();
-            for (attribute, stage) in [("@vertex", "vertex"), ("@fragment", "fragment")] {
+            for (attribute, stage) in
+                [("@vertex", "vertex"), ("@fragment", "fragment"), ("@compute", "compute")]
+            {
                 for (at, _) in text.match_indices(attribute) {
+                    // `@compute @workgroup_size(...)` then `fn`: the name after the next `fn `.
                     let rest = &text[at + attribute.len()..];
+                    let rest =
+                        if stage == "compute" { rest.find("fn ").map_or("", |i| &rest[i..]) } else { rest };
                     if let Some(name) = rest.trim_start().strip_prefix("fn ") {
                         let name: String =
                             name.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
@@ -46,8 +57,10 @@ fn naga_alone(text: &str) -> NagaVerdict {
                     }
                 }
             }
-            let compute_only = entry_points.is_empty() && text.contains("@compute");
-            NagaVerdict { accepted: Err(error.emit_to_string(text)), entry_points, compute_only }
+            let kernels =
+                entry_points.iter().filter(|(s, _)| *s == "compute").map(|(_, n)| n.clone()).collect();
+            entry_points.retain(|(stage, _)| *stage != "compute");
+            NagaVerdict { accepted: Err(error.emit_to_string(text)), entry_points, kernels }
         }
         Ok(module) => {
             let accepted = Validator::new(ValidationFlags::all(), capabilities)
@@ -63,8 +76,13 @@ fn naga_alone(text: &str) -> NagaVerdict {
                     _ => None,
                 })
                 .collect();
-            let compute_only = entry_points.is_empty() && !module.entry_points.is_empty();
-            NagaVerdict { accepted, entry_points, compute_only }
+            let kernels = module
+                .entry_points
+                .iter()
+                .filter(|e| e.stage == naga::ShaderStage::Compute)
+                .map(|e| e.name.clone())
+                .collect();
+            NagaVerdict { accepted, entry_points, kernels }
         }
     }
 }
@@ -87,6 +105,15 @@ fn wrapper(file: &Path, entry_points: &[(&str, String)]) -> String {
     }
     out.push_str("    }\n}\n");
     out
+}
+
+/// `file` as a compute shader of its own: a kernel per compute entry point, at the highest target.
+fn compute_wrapper(file: &Path, kernels: &[String]) -> String {
+    let name = file.file_name().expect("name").to_string_lossy();
+    let text = std::fs::read_to_string(file).expect("corpus file");
+    let require = if text.contains("enable f16") { "#pragma require native16bit\n" } else { "" };
+    let pragmas: String = kernels.iter().map(|k| format!("#pragma kernel {k}\n")).collect();
+    format!("#pragma target 5.0\n{require}{pragmas}#include \"{name}\"\n")
 }
 
 /// WGSL tokens, comments and whitespace left out.
@@ -149,11 +176,18 @@ fn naga_s_wgsl_tests_build_through_kiln_as_naga_judges_them() {
         let name = file.file_name().expect("name").to_string_lossy().into_owned();
         let text = std::fs::read_to_string(file).expect("corpus file");
         let verdict = naga_alone(&text);
-        if !verdict.entry_points.is_empty() {
+        if !verdict.entry_points.is_empty() || !verdict.kernels.is_empty() {
             std::fs::copy(file, project.join(&name)).expect("copy");
+        }
+        if !verdict.entry_points.is_empty() {
             let shader = project.join(format!("{name}.shader"));
             std::fs::write(&shader, wrapper(file, &verdict.entry_points)).expect("wrapper");
             names.push(format!("{:?}", format!("Naga/{name}")));
+        }
+        if !verdict.kernels.is_empty() {
+            std::fs::write(project.join(format!("{name}.compute")), compute_wrapper(file, &verdict.kernels))
+                .expect("wrapper");
+            names.push(format!("{name:?}"));
         }
         verdicts.insert(name, verdict);
     }
@@ -180,22 +214,33 @@ fn naga_s_wgsl_tests_build_through_kiln_as_naga_judges_them() {
             .unwrap_or_default();
         let name = file
             .file_name()
-            .map(|n| n.to_string_lossy().trim_end_matches(".shader").to_string())
+            .map(|n| n.to_string_lossy().trim_end_matches(".shader").trim_end_matches(".compute").to_string())
             .unwrap_or_default();
         errors.entry(name).or_default().push(d.clone());
     }
     let (mut built, mut refused_alike, mut kiln_refusals, mut no_pass) = (0, 0, 0, 0);
+    // Of those, the files with compute entry points (built as compute shaders).
+    let (mut compute_built, mut compute_refused) = (0, 0);
     let mut failures = Vec::new();
     for (name, verdict) in &verdicts {
         let found = errors.get(name).map(Vec::as_slice).unwrap_or_default();
         let rendered = kiln::diagnostics::render_plain(&store, found);
-        match (&verdict.accepted, verdict.entry_points.is_empty()) {
+        let compute = if verdict.kernels.is_empty() { 0 } else { 1 };
+        match (&verdict.accepted, verdict.entry_points.is_empty() && verdict.kernels.is_empty()) {
             (_, true) => no_pass += 1,
-            (Ok(()), false) if found.is_empty() => built += 1,
+            (Ok(()), false) if found.is_empty() => {
+                built += 1;
+                compute_built += compute;
+            }
             // Documented: valid WGSL naga's SPIR-V writer cannot express (docs/diagnostics.md).
-            (Ok(()), false) if found.iter().all(|d| d.code == "K0415") => kiln_refusals += 1,
+            (Ok(()), false) if found.iter().all(|d| d.code == "K0415" || d.code == "K0418") => {
+                kiln_refusals += 1
+            }
             (Ok(()), false) => failures.push(format!("{name}: naga accepts it, kiln refuses:\n{rendered}")),
-            (Err(_), false) if !found.is_empty() => refused_alike += 1,
+            (Err(_), false) if !found.is_empty() => {
+                refused_alike += 1;
+                compute_refused += compute;
+            }
             (Err(why), false) => failures.push(format!("{name}: naga refuses it, kiln builds it:\n{why}")),
         }
     }
@@ -205,11 +250,29 @@ fn naga_s_wgsl_tests_build_through_kiln_as_naga_judges_them() {
         let accepted = dir.path().join("accepted");
         std::fs::create_dir_all(&accepted).expect("folder");
         let mut names = Vec::new();
-        for (name, _) in verdicts.iter().filter(|(_, v)| v.accepted.is_ok() && !v.entry_points.is_empty()) {
+        for (name, verdict) in
+            verdicts.iter().filter(|(name, v)| v.accepted.is_ok() && !errors.contains_key(*name))
+        {
+            if verdict.entry_points.is_empty() && verdict.kernels.is_empty() {
+                continue;
+            }
             std::fs::copy(project.join(name), accepted.join(name)).expect("copy");
-            std::fs::copy(project.join(format!("{name}.shader")), accepted.join(format!("{name}.shader")))
+            if !verdict.entry_points.is_empty() {
+                std::fs::copy(
+                    project.join(format!("{name}.shader")),
+                    accepted.join(format!("{name}.shader")),
+                )
                 .expect("copy");
-            names.push(format!("{:?}", format!("Naga/{name}")));
+                names.push(format!("{:?}", format!("Naga/{name}")));
+            }
+            if !verdict.kernels.is_empty() {
+                std::fs::copy(
+                    project.join(format!("{name}.compute")),
+                    accepted.join(format!("{name}.compute")),
+                )
+                .expect("copy");
+                names.push(format!("{name:?}"));
+            }
         }
         std::fs::write(accepted.join("kiln.toml"), format!("always_include = [{}]\n", names.join(", ")))
             .expect("kiln.toml");
@@ -238,11 +301,12 @@ fn naga_s_wgsl_tests_build_through_kiln_as_naga_judges_them() {
         }
     }
     println!(
-        "naga's {} WGSL tests: {built} built as naga accepts them, {refused_alike} refused as naga refuses them, \
-         {kiln_refusals} refused by kiln (K0415), {no_pass} with no vertex or fragment entry point ({compute_only} of them \
-         compute-only: not a pass yet); {spirv_modules} SPIR-V modules through spirv-val",
+        "naga's {} WGSL tests: {built} built as naga accepts them ({compute_built} with compute kernels, \
+         {compute_only} of them compute-only), {refused_alike} refused as naga refuses them ({compute_refused} with \
+         kernels), {kiln_refusals} refused by kiln (K0415, K0418), {no_pass} with no entry point; {spirv_modules} SPIR-V \
+         modules through spirv-val",
         verdicts.len(),
-        compute_only = verdicts.values().filter(|v| v.compute_only).count(),
+        compute_only = verdicts.values().filter(|v| v.compute_only() && v.accepted.is_ok()).count(),
     );
     assert!(failures.is_empty(), "{} files:\n{}", failures.len(), failures.join("\n\n"));
     assert!(built >= 30, "only {built} built");
