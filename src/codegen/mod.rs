@@ -44,6 +44,7 @@ struct Interface {
     entry_point: &'static str,
     inputs: &'static [(u32, &'static str)],
     outputs: &'static [(u32, &'static str)],
+    workgroup_size: [u32; 3],
 }
 
 /// One stage module of a variant.
@@ -57,6 +58,8 @@ pub struct Stage {
     pub inputs: &'static [(u32, &'static str)],
     /// Fragment stage: `(location, format)` of each colour target.
     pub outputs: &'static [(u32, &'static str)],
+    /// A compute kernel's `@workgroup_size` (zeros for render stages).
+    pub workgroup_size: [u32; 3],
     /// Its index among the pass's modules: variants with the same index share the module.
     pub module: usize,
 }
@@ -77,6 +80,12 @@ impl Variant {
     /// Its keywords, in the pass's keyword order.
     pub fn keywords(&self) -> Vec<&'static str> {
         self.pass.keywords_of(self.index)
+    }
+
+    /// A compute shader's kernel of this variant, by name (`None`: no such kernel, or it failed).
+    pub fn kernel(&self, name: &str) -> Option<Stage> {
+        let k = self.pass.kernels.iter().position(|n| *n == name)?;
+        self.pass.stage(self.pass.kernel_modules[self.index * self.pass.kernels.len() + k])
     }
 }
 
@@ -122,6 +131,8 @@ pub struct Pass {
     pub name: Option<&'static str>,
     /// Every variant keyword the pass declares; bit i of a variant key stands for `keywords[i]`.
     pub keywords: &'static [&'static str],
+    /// A compute shader's kernels (`#pragma kernel`), in order.
+    pub kernels: &'static [&'static str],
     /// Its `dynamic_branch` keywords: `bool` `override` constants of its modules (set to 1 or 0
     /// when a pipeline is created), never part of a variant.
     pub dynamic_keywords: &'static [&'static str],
@@ -134,6 +145,8 @@ pub struct Pass {
     keys: &'static [u64],
     /// Each variant's vertex and fragment module.
     variants: &'static [[u32; 2]],
+    /// A compute shader's variants' kernel modules, `kernels.len()` per variant.
+    kernel_modules: &'static [u32],
 }
 
 impl core::fmt::Debug for Pass {
@@ -252,6 +265,7 @@ impl Pass {
             spirv,
             inputs: interface.inputs,
             outputs: interface.outputs,
+            workgroup_size: interface.workgroup_size,
             module: module as usize,
         })
     }
@@ -366,6 +380,7 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
         pass.index, pass.name
     );
     let _ = writeln!(out, "        keywords: &[{}],", quoted(&pass.keywords));
+    let _ = writeln!(out, "        kernels: &[{}],", quoted(&pass.kernels));
     let dynamic: Vec<String> =
         pass.dynamic_sets().flat_map(|set| &set.keywords).filter(|k| *k != "_").cloned().collect();
     let _ = writeln!(out, "        dynamic_keywords: &[{}],", quoted(&dynamic));
@@ -406,10 +421,11 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
     for interface in &pass.interfaces {
         let _ = writeln!(
             out,
-            "            super::Interface {{ entry_point: {:?}, inputs: &[{}], outputs: &[{}] }},",
+            "            super::Interface {{ entry_point: {:?}, inputs: &[{}], outputs: &[{}], workgroup_size: {:?} }},",
             interface.entry_point,
             pairs(&interface.inputs),
-            pairs(&interface.outputs)
+            pairs(&interface.outputs),
+            interface.workgroup_size.unwrap_or_default()
         );
     }
     out.push_str("        ],\n        modules: &[\n");
@@ -431,7 +447,7 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
     }
     // Variants sorted by key, for binary search.
     let words = pass.keywords.len().div_ceil(64);
-    let mut rows: Vec<(Vec<u64>, [Option<usize>; 2])> = pass
+    let mut rows: Vec<(Vec<u64>, [Option<usize>; 2], &[Option<usize>])> = pass
         .variants
         .iter()
         .map(|variant| {
@@ -441,23 +457,52 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
                     key[bit / 64] |= 1 << (bit % 64);
                 }
             }
-            (key, [variant.vertex, variant.fragment])
+            (key, [variant.vertex, variant.fragment], variant.kernels.as_slice())
         })
         .collect();
     rows.sort();
     let _ = writeln!(out, "        ],\n        key_words: {words},\n        keys: &[");
     // A pass without keywords has keys of no words: its one variant is found by an empty key.
-    for (key, _) in rows.iter().filter(|(key, _)| !key.is_empty()) {
+    for (key, ..) in rows.iter().filter(|(key, ..)| !key.is_empty()) {
         let words: Vec<String> = key.iter().map(|w| format!("{w:#x}")).collect();
         let _ = writeln!(out, "            {},", words.join(", "));
     }
     out.push_str("        ],\n        variants: &[\n");
     let index = |m: Option<usize>| m.map_or("super::NONE".to_string(), |m| m.to_string());
-    for (_, [vertex, fragment]) in &rows {
+    for (_, [vertex, fragment], _) in &rows {
         let _ = writeln!(out, "            [{}, {}],", index(*vertex), index(*fragment));
     }
+    out.push_str("        ],\n        kernel_modules: &[\n");
+    for (.., kernels) in rows.iter().filter(|(.., kernels)| !kernels.is_empty()) {
+        let modules: Vec<String> = kernels.iter().map(|m| index(*m)).collect();
+        let _ = writeln!(out, "            {},", modules.join(", "));
+    }
     out.push_str("        ],\n    };\n");
+    kernel_constants(out, pass);
     overrides_struct(out, pass);
+}
+
+/// `NAME_WORKGROUP_SIZE` for each kernel whose variants all have one size.
+fn kernel_constants(out: &mut String, pass: &PassManifest) {
+    for (k, kernel) in pass.kernels.iter().enumerate() {
+        let mut sizes = pass
+            .variants
+            .iter()
+            .filter_map(|v| v.kernels.get(k).copied().flatten())
+            .filter_map(|m| pass.stage(m).interface.workgroup_size);
+        let Some(first) = sizes.next() else { continue };
+        if sizes.all(|size| size == first) {
+            let name: String = kernel
+                .chars()
+                .map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_uppercase() } else { '_' })
+                .collect();
+            let _ = writeln!(
+                out,
+                "    /// `{kernel}`'s `@workgroup_size` (pass {}).\n    pub const {name}_WORKGROUP_SIZE: [u32; 3] = {first:?};",
+                pass.index
+            );
+        }
+    }
 }
 
 /// `PassNOverrides`: the pass's own `override` constants (its `dynamic_branch` keywords are set

@@ -213,3 +213,45 @@ fn a_missing_kernel_variant_is_logged_built_from_the_log_and_an_edited_kernel_re
     assert_eq!(dispatch(&mut runtime, &gpu, "Double", &["_SQUARE"], &input, 0.0), [3.0, 12.0, 27.0]);
     assert_eq!(dispatch(&mut runtime, &gpu, "Double", &[], &input, 0.0), [3.0, 6.0, 9.0]);
 }
+
+#[test]
+fn the_generated_module_finds_kernels_and_their_workgroup_sizes() {
+    let out = tempfile::tempdir().expect("temp dir");
+    let output = kiln::Build::new("fixtures/compute").out_dir(out.path()).execute().expect("builds");
+    let module = std::fs::read_to_string(&output.module).expect("generated");
+    for line in [
+        r#"kernels: &["Double", "AddOffset"],"#,
+        "pub const DOUBLE_WORKGROUP_SIZE: [u32; 3] = [64, 1, 1];",
+        "pub const ADDOFFSET_WORKGROUP_SIZE: [u32; 3] = [32, 2, 1];",
+    ] {
+        assert!(module.contains(line), "the generated module has `{line}`");
+    }
+    // Compiled and run by cargo: the strict lookup, each kernel's module and size.
+    let krate = out.path().join("crate");
+    crate::support::generated_module_crate(
+        &krate,
+        &module,
+        (&out.path().join("kiln"), "kiln"),
+        "pub mod shaders;\n\
+         #[test]\n\
+         fn kernels_of_each_variant() {\n\
+         \x20   use shaders::scale::PASS_0;\n\
+         \x20   for keywords in [&[][..], &[\"_SQUARE\"][..]] {\n\
+         \x20       let variant = PASS_0.variant(keywords).expect(\"built\");\n\
+         \x20       let double = variant.kernel(\"Double\").expect(\"a kernel\");\n\
+         \x20       assert_eq!(double.entry_point, \"Double\");\n\
+         \x20       assert_eq!(double.workgroup_size, shaders::scale::DOUBLE_WORKGROUP_SIZE);\n\
+         \x20       assert!(double.wgsl.contains(\"@compute @workgroup_size(64, 1, 1)\"));\n\
+         \x20       assert_eq!(variant.kernel(\"AddOffset\").expect(\"a kernel\").workgroup_size, [32, 2, 1]);\n\
+         \x20       assert!(variant.kernel(\"Dubble\").is_none());\n\
+         \x20   }\n\
+         }\n",
+    );
+    let run = crate::support::cargo_scratch(&krate, &["test"]);
+    assert!(
+        run.status.success(),
+        "fails:\n{}{}",
+        String::from_utf8_lossy(&run.stdout),
+        String::from_utf8_lossy(&run.stderr)
+    );
+}

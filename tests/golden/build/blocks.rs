@@ -152,13 +152,14 @@ pub mod test_halfblocks {
         index: 0,
         name: None,
         keywords: &[],
+        kernels: &[],
         dynamic_keywords: &[],
         layout: &[
             super::BindingEntry { group: 1, binding: 0, name: "halves", vertex: true, fragment: true, kind: super::BindingKind::Uniform { size: 56 } },
         ],
         interfaces: &[
-            super::Interface { entry_point: "Vertex", inputs: &[(0, "float32x3")], outputs: &[] },
-            super::Interface { entry_point: "Fragment", inputs: &[], outputs: &[(0, "float32x4")] },
+            super::Interface { entry_point: "Vertex", inputs: &[(0, "float32x3")], outputs: &[], workgroup_size: [0, 0, 0] },
+            super::Interface { entry_point: "Fragment", inputs: &[], outputs: &[(0, "float32x4")], workgroup_size: [0, 0, 0] },
         ],
         modules: &[
             [0, 0, 0, 448, 0, 0, 1036],
@@ -169,6 +170,8 @@ pub mod test_halfblocks {
         ],
         variants: &[
             [0, 1],
+        ],
+        kernel_modules: &[
         ],
     };
     /// The struct `HalfPair` (16 bytes).
