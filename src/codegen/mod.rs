@@ -350,6 +350,10 @@ pub fn module_name(shader: &str) -> String {
     }
 }
 
+/// A variant as the generated module lists it: its key, its vertex and fragment modules, and a
+/// compute pass's kernel modules.
+type VariantRow<'a> = (Vec<u64>, [Option<usize>; 2], &'a [Option<usize>]);
+
 /// The generated module's pack numbers, WGSL and SPIR-V, by path.
 type PackNumbers<'a> = [BTreeMap<&'a str, u32>; 2];
 
@@ -447,7 +451,7 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
     }
     // Variants sorted by key, for binary search.
     let words = pass.keywords.len().div_ceil(64);
-    let mut rows: Vec<(Vec<u64>, [Option<usize>; 2], &[Option<usize>])> = pass
+    let mut rows: Vec<VariantRow> = pass
         .variants
         .iter()
         .map(|variant| {
