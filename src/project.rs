@@ -49,7 +49,7 @@ pub enum ProjectError {
     NotAMaterial { path: PathBuf, message: String },
     #[error("cannot write `{path}`: {source}")]
     Write { path: PathBuf, source: std::io::Error },
-    #[error("`{}` is not a .shader file: give the shader that holds the pass", .0.display())]
+    #[error("`{}` is not a .shader or .compute file: give the shader that holds the pass", .0.display())]
     NotAShader(PathBuf),
     #[error("cannot merge: {0}")]
     Shards(#[from] crate::build::shard::ShardError),
@@ -171,7 +171,7 @@ fn requested_variant(
     store: &mut SourceStore,
     request: &VariantRequest,
 ) -> Result<(Option<Requested>, Vec<Diagnostic>), ProjectError> {
-    if request.shader.extension().is_none_or(|e| e != "shader") {
+    if !request.shader.extension().is_some_and(|e| SHADER_EXTENSIONS.iter().any(|s| e == *s)) {
         return Err(ProjectError::NotAShader(request.shader.clone()));
     }
     let file = store.load(&request.shader)?;
@@ -752,12 +752,22 @@ pub fn reflect_variant(
         let [vertex, fragment] = p.variant_stages(variant);
         let blocks: Vec<&UniformBlock> =
             p.variant_uniform_blocks(variant).into_iter().map(|b| &p.uniform_blocks[b]).collect();
-        Some(serde_json::json!({
+        let mut reflected = serde_json::json!({
             "layout": p.layout,
             "uniform_blocks": blocks,
             "variant": { "key": variant.key, "keywords": variant.keywords,
                          "vertex": stage(vertex), "fragment": stage(fragment) },
-        }))
+        });
+        // A compute shader's kernels, by name.
+        if !p.kernels.is_empty() {
+            let kernels = p
+                .kernels
+                .iter()
+                .zip(&variant.kernels)
+                .map(|(name, m)| (name.clone(), serde_json::json!(stage(m.map(|m| p.stage(m))))));
+            reflected["variant"]["kernels"] = serde_json::Value::Object(kernels.collect());
+        }
+        Some(reflected)
     });
     Ok((json, diagnostics))
 }

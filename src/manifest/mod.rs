@@ -250,10 +250,12 @@ impl PassManifest {
 
     /// The uniform blocks a variant's stages use, as indices into `uniform_blocks`, by name.
     pub fn variant_uniform_blocks(&self, variant: &VariantManifest) -> Vec<usize> {
+        let kernels = variant.kernels.iter().flatten().map(|&m| self.stage(m));
         let mut blocks: Vec<usize> = self
             .variant_stages(variant)
-            .iter()
+            .into_iter()
             .flatten()
+            .chain(kernels)
             .flat_map(|s| s.interface.uniform_blocks.clone())
             .collect();
         // By name, then index, so that a block both stages use is adjacent to itself.

@@ -130,7 +130,7 @@ fn mistakes_in_the_command_exit_2_with_the_reason_and_never_hang() {
         ),
         (
             &["reflect", "fixtures/project/materials/ComplexPlain.mat"],
-            "`fixtures/project/materials/ComplexPlain.mat` is not a .shader file",
+            "`fixtures/project/materials/ComplexPlain.mat` is not a .shader or .compute file",
         ),
     ];
     for (args, expected) in cases {

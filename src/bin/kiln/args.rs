@@ -37,9 +37,9 @@ pub enum Command {
         /// The variant's keywords, comma-separated. Sets without `_` default to their first keyword.
         #[arg(long, value_delimiter = ',')]
         keywords: Vec<String>,
-        /// The stage whose text to print.
-        #[arg(long, value_enum, default_value_t = StageArg::Fragment)]
-        stage: StageArg,
+        /// The stage whose text to print (default: compute for a .compute file, else fragment).
+        #[arg(long, value_enum)]
+        stage: Option<StageArg>,
     },
     /// Compile every variant the materials use to WGSL and SPIR-V, with a manifest.
     Build {
@@ -189,6 +189,7 @@ pub enum MaterialCommand {
 pub enum StageArg {
     Vertex,
     Fragment,
+    Compute,
 }
 
 #[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]

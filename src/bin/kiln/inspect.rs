@@ -42,10 +42,18 @@ pub fn list(paths: Vec<PathBuf>, format: Format, show_materials: bool) -> ExitCo
 }
 
 /// `kiln preprocess`.
-pub fn preprocess(shader: PathBuf, pass: Option<String>, keywords: Vec<String>, stage: StageArg) -> ExitCode {
+pub fn preprocess(
+    shader: PathBuf,
+    pass: Option<String>,
+    keywords: Vec<String>,
+    stage: Option<StageArg>,
+) -> ExitCode {
     let stage = match stage {
-        StageArg::Vertex => Stage::Vertex,
-        StageArg::Fragment => Stage::Fragment,
+        Some(StageArg::Vertex) => Stage::Vertex,
+        Some(StageArg::Fragment) => Stage::Fragment,
+        Some(StageArg::Compute) => Stage::Compute,
+        None if kiln::shaderlab::compute::is_compute_file(&shader) => Stage::Compute,
+        None => Stage::Fragment,
     };
     let request = VariantRequest { shader, pass, keywords, stage };
     let mut store = SourceStore::new();
