@@ -96,7 +96,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0415", "a construct naga's SPIR-V writer cannot express"),
     ("K0416", "internal error"),
     ("K0417", "`@align` below the member type's alignment"),
-    ("K0418", "`override` default naga cannot write"),
+    ("K0418", "`override` expression naga cannot write"),
     ("K0501", "invalid material file"),
     ("K0502", "unknown shader"),
     ("K0503", "unknown property"),

@@ -279,6 +279,8 @@ pub(super) fn pass_manifest(
             uniform_blocks: blocks,
             overrides: reflection.overrides.clone(),
             workgroup_size: reflection.workgroup_size,
+            workgroup_size_overrides: reflection.workgroup_size_overrides.clone(),
+            workgroup_memory: reflection.workgroup_memory,
         };
         let interface = *interface_of.entry(interface).or_insert_with_key(|interface| {
             interfaces.push(interface.clone());

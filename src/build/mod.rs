@@ -39,7 +39,7 @@ const NAGA_VERSION: &str = "naga 30";
 
 /// Part of every cache key, raised when kiln compiles the same text differently (revision 2:
 /// layouts by the WGSL spec, a wider capability baseline; 3: `override` constants reflected, their
-/// modules WGSL only), so that a cache an earlier kiln of the
+/// modules WGSL only, compute kernels), so that a cache an earlier kiln of the
 /// same version filled is not taken for current.
 const COMPILER_REVISION: u32 = 3;
 

@@ -170,9 +170,33 @@ pub(super) fn write_wgsl(
     let wgsl = naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
         .map_err(|e| backend_error("WGSL", e.to_string()))?;
     let wgsl = layout::annotate_wgsl(wgsl, module, host)?;
+    let wgsl = override_workgroup_sizes(wgsl, module);
     let needs_enable = capabilities.contains(naga::valid::Capabilities::SHADER_FLOAT16)
         && !wgsl.lines().any(|line| line.trim() == "enable f16;");
     Ok(if needs_enable { format!("enable f16;\n{wgsl}") } else { wgsl })
+}
+
+/// naga's WGSL writer (30) writes a workgroup size an `override` gives as 1: the entry point's
+/// `@workgroup_size` is written again with the constants' names. (Sizes given by other
+/// expressions are refused first: [`check_override_defaults`].)
+fn override_workgroup_sizes(wgsl: String, module: &naga::Module) -> String {
+    let Some(entry) = module.entry_points.first() else { return wgsl };
+    let Some(sizes) = &entry.workgroup_size_overrides else { return wgsl };
+    let dimension = |i: usize| match sizes[i].map(|e| &module.global_expressions[e]) {
+        Some(naga::Expression::Override(o)) => module.overrides[*o].name.clone().unwrap_or_default(),
+        _ => entry.workgroup_size[i].to_string(),
+    };
+    let Some(function) = wgsl.find(&format!("\nfn {}(", entry.name)) else { return wgsl };
+    let Some(start) = wgsl[..function].rfind("@workgroup_size(") else { return wgsl };
+    let Some(end) = wgsl[start..function].find(')').map(|e| start + e + 1) else { return wgsl };
+    format!(
+        "{}@workgroup_size({}, {}, {}){}",
+        &wgsl[..start],
+        dimension(0),
+        dimension(1),
+        dimension(2),
+        &wgsl[end..]
+    )
 }
 
 fn backend_error(backend: &str, message: String) -> Diagnostic {
@@ -206,6 +230,27 @@ fn located(diagnostic: Diagnostic, request: &StageRequest, mapper: &Mapper) -> D
 /// the rest, so such a module is refused at the declaration, with the rewrite that works.
 fn check_override_defaults(module: &naga::Module, mapper: &Mapper) -> Result<(), Diagnostic> {
     use naga::Expression as E;
+    // A workgroup size an expression of overrides gives (`@workgroup_size(block * 2)`).
+    for entry in &module.entry_points {
+        let sizes = entry.workgroup_size_overrides.iter().flatten().flatten();
+        let unwritable = sizes
+            .into_iter()
+            .find(|&&e| !matches!(module.global_expressions[e], E::Override(_) | E::Literal(_)));
+        if let Some(&size) = unwritable {
+            let d = Diagnostic::error(
+                "K0418",
+                format!(
+                    "`{}`'s `@workgroup_size` is an expression naga's WGSL writer cannot write",
+                    entry.name
+                ),
+            )
+            .help("give each size as a number or one `override` constant's name");
+            let range = module.global_expressions.get_span(size).to_range();
+            return Err(
+                mapper.diagnostic_at(d, range.into_iter().map(|r| (r, "this size".to_string())).collect())
+            );
+        }
+    }
     for (handle, constant) in module.overrides.iter() {
         let Some(init) = constant.init else { continue };
         let writable = matches!(

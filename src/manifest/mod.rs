@@ -353,6 +353,17 @@ pub struct StageInterface {
     /// A compute kernel's `@workgroup_size` (0 where an `override` gives it).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub workgroup_size: Option<[u32; 3]>,
+    /// The `override` constant that gives each workgroup size an `override` gives (`null` for
+    /// the others); absent when none does.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub workgroup_size_overrides: Vec<Option<String>>,
+    /// Bytes of `var<workgroup>` memory a kernel uses; absent when none.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub workgroup_memory: u32,
+}
+
+fn is_zero(n: &u32) -> bool {
+    *n == 0
 }
 
 /// One compiled stage module, identified by its bytes: variants whose stage texts differ only in

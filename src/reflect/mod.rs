@@ -29,6 +29,12 @@ pub struct StageReflection {
     /// A compute kernel's `@workgroup_size` (a size an `override` gives reads as 0).
     #[serde(default)]
     pub workgroup_size: Option<[u32; 3]>,
+    /// The `override` constant giving each workgroup size that one gives.
+    #[serde(default)]
+    pub workgroup_size_overrides: Vec<Option<String>>,
+    /// Bytes of `var<workgroup>` memory the kernel uses.
+    #[serde(default)]
+    pub workgroup_memory: u32,
 }
 
 /// One resource the module uses, where it is bound.
@@ -142,10 +148,34 @@ pub fn reflect_stage(
         uniform_blocks: Vec::new(),
         overrides: module.overrides.iter().map(|(_, o)| override_constant(module, o)).collect(),
         workgroup_size: None,
+        workgroup_size_overrides: Vec::new(),
+        workgroup_memory: 0,
     };
     if let Some(entry) = module.entry_points.iter().find(|e| e.name == entry_point) {
         if entry.stage == naga::ShaderStage::Compute {
             reflection.workgroup_size = Some(entry.workgroup_size);
+            if let Some(sizes) = &entry.workgroup_size_overrides {
+                reflection.workgroup_size_overrides = sizes
+                    .iter()
+                    .map(|size| match size.map(|e| &module.global_expressions[e]) {
+                        Some(naga::Expression::Override(o)) => module.overrides[*o].name.clone(),
+                        _ => None,
+                    })
+                    .collect();
+                // The pipeline's constants decide those sizes: no number stands for them.
+                let given = reflection.workgroup_size_overrides.iter().map(Option::is_some);
+                for (size, _) in reflection.workgroup_size.iter_mut().flatten().zip(given).filter(|(_, g)| *g)
+                {
+                    *size = 0;
+                }
+            }
+            // Compaction left only what the kernel uses.
+            reflection.workgroup_memory = module
+                .global_variables
+                .iter()
+                .filter(|(_, g)| g.space == AddressSpace::WorkGroup)
+                .map(|(_, g)| layouts.layouter[g.ty].size)
+                .sum();
         }
         if entry.stage == naga::ShaderStage::Vertex {
             for argument in &entry.function.arguments {

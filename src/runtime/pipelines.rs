@@ -440,7 +440,17 @@ impl Runtime {
             &ConstantRequest { shader, pass, keywords: request.keywords, overrides: request.overrides },
             std::slice::from_ref(&Some(stage)),
         )?;
-        let workgroup_size = stage.interface.workgroup_size.unwrap_or([1, 1, 1]);
+        // A size an `override` gives is that constant's value in this pipeline.
+        let mut workgroup_size = stage.interface.workgroup_size.unwrap_or([1, 1, 1]);
+        for (size, name) in workgroup_size.iter_mut().zip(&stage.interface.workgroup_size_overrides) {
+            let Some(constant) =
+                name.as_ref().and_then(|n| stage.interface.overrides.iter().find(|o| &o.name == n))
+            else {
+                continue;
+            };
+            let given = constants[0].iter().find(|(key, _)| *key == constant.key()).map(|&(_, v)| v);
+            *size = given.or(constant.default).unwrap_or(1.0) as u32;
+        }
         let hash = stage.module.wgsl.as_ref().map(|f| f.hash.clone()).unwrap_or_default();
         let key = KernelKey {
             module: hash,

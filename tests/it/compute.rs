@@ -21,7 +21,7 @@ fn kernels_are_built_and_reflected_per_variant() {
     let output = built();
     let manifest = crate::support::verified_manifest(output.path());
     let pass = &manifest.shaders.iter().find(|s| s.name == SHADER).expect("built").passes[0];
-    assert_eq!(pass.kernels, ["Double", "AddOffset"]);
+    assert_eq!(pass.kernels, ["Double", "AddOffset", "Reverse"]);
     assert_eq!(pass.variants.len(), 2, "the multi_compile set's two options");
     for variant in &pass.variants {
         assert!(variant.vertex.is_none() && variant.fragment.is_none());
@@ -34,7 +34,18 @@ fn kernels_are_built_and_reflected_per_variant() {
                 (stage.interface.entry_point.clone(), stage.interface.workgroup_size)
             })
             .collect();
-        assert_eq!(sizes, [("Double".into(), Some([64, 1, 1])), ("AddOffset".into(), Some([32, 2, 1]))]);
+        assert_eq!(
+            sizes,
+            [
+                ("Double".into(), Some([64, 1, 1])),
+                ("AddOffset".into(), Some([32, 2, 1])),
+                ("Reverse".into(), Some([0, 1, 1]))
+            ]
+        );
+        // Reverse's size is the `block` override's; its tile is 64 floats of workgroup memory.
+        let reverse = pass.stage(variant.kernels[2].expect("built"));
+        assert_eq!(reverse.interface.workgroup_size_overrides, [Some("block".to_string()), None, None]);
+        assert_eq!(reverse.interface.workgroup_memory, 256);
     }
     // One bind group shared by both kernels of every variant, visible to compute.
     let entries: Vec<_> = pass.layout.iter().flat_map(|g| &g.entries).collect();
@@ -51,10 +62,26 @@ fn dispatch(
     input: &[f32],
     offset: f32,
 ) -> Vec<f32> {
+    dispatch_with(
+        runtime,
+        gpu,
+        &KernelRequest { shader: SHADER, kernel, keywords, overrides: &[] },
+        input,
+        offset,
+    )
+}
+
+/// [`dispatch`] of any request (override values too).
+fn dispatch_with(
+    runtime: &mut Runtime,
+    gpu: &kiln::accuracy::gpu::Gpu,
+    request: &KernelRequest,
+    input: &[f32],
+    offset: f32,
+) -> Vec<f32> {
     let device = &gpu.device;
-    let kernel_pipeline = runtime
-        .kernel(&KernelRequest { shader: SHADER, kernel, keywords, overrides: &[] })
-        .expect("pipeline");
+    let kernel = request.kernel;
+    let kernel_pipeline = runtime.kernel(request).expect("pipeline");
     let layout = runtime.pass_layout(SHADER, 0).expect("layout");
     let pass = runtime.library().pass(SHADER, 0).expect("pass").clone();
     let mut params = offset.to_le_bytes().to_vec();
@@ -141,8 +168,20 @@ fn every_kernel_variant_computes_what_the_cpu_computes() {
         dispatch(&mut runtime, &gpu, "Double", &[], &input, offset),
         dispatch(&mut runtime, &gpu, "Double", &["_SQUARE"], &input, offset)
     );
-    // One pipeline per kernel variant, each created once.
-    assert_eq!(runtime.pipelines_created(), 4);
+    // Reverse, in blocks of the pipeline's `block` (its workgroup size and the tile it uses).
+    let numbers: Vec<f32> = (0..32).map(|i| i as f32).collect();
+    for block in [8u32, 16] {
+        let overrides = [("block", f64::from(block))];
+        let request =
+            KernelRequest { shader: SHADER, kernel: "Reverse", keywords: &[], overrides: &overrides };
+        assert_eq!(runtime.kernel(&request).expect("pipeline").workgroup_size, [block, 1, 1]);
+        let reversed = dispatch_with(&mut runtime, &gpu, &request, &numbers, 0.0);
+        let expected: Vec<f32> =
+            numbers.chunks(block as usize).flat_map(|c| c.iter().rev().copied()).collect();
+        assert_eq!(reversed, expected, "block {block}");
+    }
+    // One pipeline per kernel variant and override value, each created once.
+    assert_eq!(runtime.pipelines_created(), 6);
     let unknown =
         runtime.kernel(&KernelRequest { shader: SHADER, kernel: "Dubble", keywords: &[], overrides: &[] });
     assert_eq!(
@@ -163,8 +202,8 @@ fn mistakes_in_kernels_and_listed_variants_are_reported_where_they_are_written()
     let codes: Vec<&str> = diagnostics.iter().map(|d| d.code).collect();
     assert_eq!(
         codes,
-        ["K0533", "K0418", "K0401", "K0403", "K0403"],
-        "an unlisted keyword, an override default naga cannot write, no workgroup size, a vertex entry point, a missing kernel"
+        ["K0533", "K0418", "K0418", "K0401", "K0403", "K0403"],
+        "an unlisted keyword, a default and a workgroup size naga cannot write, no workgroup size, a vertex entry point, a missing kernel"
     );
     expect_test::expect_file![root().join("fixtures/bad/compute/kiln.stderr")]
         .assert_eq(&kiln::diagnostics::render_plain(&store, &diagnostics));
@@ -220,7 +259,7 @@ fn the_generated_module_finds_kernels_and_their_workgroup_sizes() {
     let output = kiln::Build::new("fixtures/compute").out_dir(out.path()).execute().expect("builds");
     let module = std::fs::read_to_string(&output.module).expect("generated");
     for line in [
-        r#"kernels: &["Double", "AddOffset"],"#,
+        r#"kernels: &["Double", "AddOffset", "Reverse"],"#,
         "pub const DOUBLE_WORKGROUP_SIZE: [u32; 3] = [64, 1, 1];",
         "pub const ADDOFFSET_WORKGROUP_SIZE: [u32; 3] = [32, 2, 1];",
     ] {
