@@ -5,8 +5,9 @@
 //! measures: naga alone (parse, validate, WGSL and SPIR-V) on the very stage texts kiln compiles;
 //! kiln's cold build; a no-op rebuild; a rebuild after touching one include; kiln's peak memory in
 //! the cold and the no-op build; the manifest's bytes per variant and the generated Rust's size.
-//! `-- generate N DIR` only writes the project of N variants. Results and how to read them:
-//! docs/performance.md.
+//! `-- generate N DIR` only writes the project of N variants. `-- compute 1000` builds a project of
+//! compute shaders instead (100 variants each, two kernels a variant) against naga alone on the
+//! same kernel texts. Results and how to read them: docs/performance.md.
 
 use kiln::build::stage_texts;
 use kiln::catalog::catalog;
@@ -149,8 +150,11 @@ fn naga_alone(project: &Path) -> (usize, Duration) {
         let wgsl = naga::back::wgsl::write_string(&module, &info, naga::back::wgsl::WriterFlags::empty())
             .expect("wgsl");
         let options = naga::back::spv::Options { fake_missing_bindings: true, ..Default::default() };
-        let shader_stage =
-            if *stage == Stage::Vertex { naga::ShaderStage::Vertex } else { naga::ShaderStage::Fragment };
+        let shader_stage = match stage {
+            Stage::Vertex => naga::ShaderStage::Vertex,
+            Stage::Fragment => naga::ShaderStage::Fragment,
+            Stage::Compute => naga::ShaderStage::Compute,
+        };
         let pipeline = naga::back::spv::PipelineOptions { shader_stage, entry_point: entry.clone() };
         let spirv = naga::back::spv::write_vec(&module, &info, &options, Some(&pipeline)).expect("spir-v");
         std::hint::black_box((wgsl, spirv));
@@ -158,9 +162,81 @@ fn naga_alone(project: &Path) -> (usize, Duration) {
     (texts.len(), started.elapsed())
 }
 
+/// Writes a project of compute shaders with `variants` variants in all (100 a file: two
+/// `multi_compile` sets of ten, each keyword changing both kernels), every variant listed.
+fn generate_compute(dir: &Path, variants: usize) {
+    let files = variants.div_ceil(100);
+    std::fs::create_dir_all(dir).expect("mkdir");
+    let mut toml = String::from("shaders = [\".\"]\n");
+    for f in 0..files {
+        let mut text = String::from("#pragma kernel Integrate\n#pragma kernel Reduce\n");
+        for set in ["A", "B"] {
+            let keywords: Vec<String> = (1..10).map(|k| format!("_{set}{k}")).collect();
+            let _ = writeln!(text, "#pragma multi_compile _ {}", keywords.join(" "));
+        }
+        let mut tweaks = String::new();
+        for k in 1..10 {
+            let _ = write!(
+                tweaks,
+                "#if defined(_A{k})\n    x = x * {:.2} + sin(x * {k}.0);\n#endif\n#if defined(_B{k})\n    x = mix(x, cos(x), {:.2});\n#endif\n",
+                1.0 + k as f32 / 100.0,
+                k as f32 / 10.0
+            );
+        }
+        let _ = write!(
+            text,
+            "var<storage, read_write> data: array<vec4<f32>>;\nvar<workgroup> partial: array<vec4<f32>, 64>;\n\n\
+             fn Shape(v: vec4<f32>) -> vec4<f32> {{\n    var x = v;\n{tweaks}    return x * {};\n}}\n\n\
+             @compute @workgroup_size(64)\nfn Integrate(@builtin(global_invocation_id) id: vec3<u32>) {{\n    \
+             let v = data[id.x];\n    data[id.x] = v + Shape(v) * 0.016;\n}}\n\n\
+             @compute @workgroup_size(64)\nfn Reduce(@builtin(local_invocation_index) i: u32, @builtin(workgroup_id) g: vec3<u32>) {{\n    \
+             partial[i] = Shape(data[g.x * 64u + i]);\n    workgroupBarrier();\n    \
+             for (var step = 32u; step > 0u; step = step / 2u) {{\n        if (i < step) {{\n            partial[i] += partial[i + step];\n        }}\n        workgroupBarrier();\n    }}\n    \
+             if (i == 0u) {{\n        data[g.x] = partial[0];\n    }}\n}}\n",
+            1.0 + f as f32 / 1000.0
+        );
+        std::fs::write(dir.join(format!("Kernels{f}.compute")), text).expect("write");
+        let _ = writeln!(toml, "\n[compute.Kernels{f}]\nvariants = \"all\"");
+    }
+    std::fs::write(dir.join("kiln.toml"), toml).expect("write");
+}
+
+/// `-- compute N`: a project of N compute variants, kiln against naga alone on its kernel texts.
+fn compute_scale(variants: usize) {
+    let dir: PathBuf = tempfile::tempdir().expect("temp dir").keep();
+    let project = dir.join("project");
+    generate_compute(&project, variants);
+    let (mut naga_times, mut build_times) = (Vec::new(), Vec::new());
+    let (mut modules, mut built) = (0, None);
+    for round in 0..5 {
+        let (count, naga) = naga_alone(&project);
+        modules = count;
+        naga_times.push(naga);
+        let (summary, time) = kiln_build(&project, &dir.join(format!("out{round}")), true);
+        build_times.push(time);
+        built = Some(summary);
+    }
+    let built = built.expect("built");
+    assert_eq!(built.modules, modules, "kiln compiles the texts naga was given");
+    let (naga, build) = (median(naga_times), median(build_times));
+    println!(
+        "{} threads: {} compute variants, {} kernel modules: naga alone {naga:.2?}, kiln build {build:.2?} ({:.2}x)",
+        rayon::current_num_threads(),
+        built.variants,
+        built.modules,
+        build.as_secs_f64() / naga.as_secs_f64()
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 fn main() {
     // `-- generate N DIR` only writes the project, for one-off runs of the CLI on it.
     let args: Vec<String> = std::env::args().collect();
+    if let Some(at) = args.iter().position(|a| a == "compute") {
+        let size = args.get(at + 1).and_then(|n| n.parse().ok()).unwrap_or(1000);
+        compute_scale(size);
+        return;
+    }
     if let Some(at) = args.iter().position(|a| a == "generate") {
         let size = args.get(at + 1).and_then(|n| n.parse().ok()).expect("generate N DIR");
         let dir = PathBuf::from(args.get(at + 2).expect("generate N DIR"));
