@@ -1,17 +1,30 @@
-//! Runs the compiled library functions on an adapter: the program below includes the library as
-//! any pass would, kiln preprocesses and compiles it per formulation, and compute entry points
-//! evaluate the hard cases (one result per case) or time the formulations compute-bound (many
-//! evaluations per invocation, kept in registers).
+//! Runs the compiled library functions on an adapter: the program below is a compute shader
+//! (a `.compute` file's text) that includes the library; kiln builds the variant each formulation
+//! needs as a project's compute shader is built, and its kernels evaluate the hard cases (one
+//! result per case) or time the formulations compute-bound (many evaluations per invocation,
+//! kept in registers).
 
 use super::{Case, Formulation, Row, Timing, hard_cases, reference, reference_lights, stats};
-use crate::compile::Bindings;
-use crate::compile::target::Allowed;
-use crate::preprocess::{IncludeConfig, Includes, Stage, load_pass_text, preprocess};
+use crate::build::{BuildOptions, Part, VariantSelection, build};
+use crate::catalog::{CatalogInput, ListedVariant, catalog};
+use crate::preprocess::{IncludeConfig, Includes};
 use crate::source::{SourceStore, Span};
 use wgpu::util::DeviceExt;
 
+/// Where each resource of a kernel is bound: name to `(group, binding)`.
+pub type Bindings = std::collections::BTreeMap<String, (u32, u32)>;
+
+/// The harness's name, as a compute shader file.
+const HARNESS_FILE: &str = "accuracy-harness.compute";
+
 /// The harness, a WGSL program in kiln's dialect, declaring what it needs as a pass would.
 const HARNESS: &str = r#"
+#pragma kernel OneLight
+#pragma kernel AllLights
+#pragma kernel TimeOneLight
+#pragma kernel TimeAllLights
+#pragma multi_compile _ _SPECULAR_STABLE _SPECULAR_HALF
+#pragma multi_compile _ _SINGLE_DIRECTIONAL_LIGHT
 #pragma require native16bit : _SPECULAR_HALF
 #if defined(_SPECULAR_HALF)
 enable f16;
@@ -117,20 +130,73 @@ fn timing_invocations() -> u32 {
         .min(most)
 }
 
-/// The WGSL kiln emits for one entry point of the harness with these keywords.
-pub fn harness_wgsl(keywords: &[&str], entry: &str) -> Result<(String, Bindings), String> {
+/// The WGSL kiln emits for one kernel of the harness's variant with these keywords, and where
+/// its resources are bound: the variant is built as a project's compute shader is (listed, into
+/// a scratch output folder), and read back from the build's manifest and packs.
+pub fn harness_wgsl(keywords: &[&str], kernel: &str) -> Result<(String, Bindings), String> {
     let mut store = SourceStore::new();
-    let file = store.add("accuracy-harness.wgsl", HARNESS);
+    let file = store.add(HARNESS_FILE, HARNESS);
     let mut includes = Includes::new(IncludeConfig::new(Vec::new()));
-    let (pass, found) = load_pass_text(&mut includes, &mut store, &[Span::new(file, 0..HARNESS.len())]);
-    let capabilities = Allowed::for_variant(&pass.pragmas, keywords).capabilities();
-    let out = preprocess(&includes, &store, &pass.program, keywords, Stage::Fragment);
-    let problems: Vec<_> = found.into_iter().chain(out.diagnostics.iter().cloned()).collect();
-    if crate::diagnostics::has_errors(&problems) {
-        return Err(crate::diagnostics::render_plain(&store, &problems));
-    }
-    crate::compile::compile_compute(&out, &store, entry, capabilities)
-        .map_err(|errors| crate::diagnostics::render_plain(&store, &errors))
+    let listed = ListedVariant {
+        shader: HARNESS_FILE.trim_end_matches(".compute").to_string(),
+        pass: 0,
+        keywords: keywords.iter().map(|k| k.to_string()).collect(),
+        span: Span::new(file, 0..0),
+    };
+    let input =
+        CatalogInput { shaders: vec![file], listed_variants: vec![listed], ..CatalogInput::default() };
+    let (catalog, mut problems) = catalog(&mut store, &mut includes, &input);
+    let scratch = tempfile_folder()?;
+    let options = BuildOptions {
+        output: scratch.clone(),
+        root: scratch.clone(),
+        write: true,
+        threads: Some(1),
+        backends: vec![crate::config::Backend::Wgsl],
+        unused_shaders: VariantSelection::Used,
+        pretty_manifest: false,
+        record: false,
+        part: Part::Whole,
+        cache_dir: None,
+        given_files: 0,
+    };
+    let result = build(&store, &includes, &catalog, &options, &|_, _| {});
+    problems.extend(result.diagnostics);
+    let read = || -> Result<(String, Bindings), String> {
+        if crate::diagnostics::has_errors(&problems) {
+            return Err(crate::diagnostics::render_plain(&store, &problems));
+        }
+        let manifest = result.manifest.as_ref().ok_or("the harness built nothing")?;
+        let pass = manifest.passes().next().ok_or("the harness built no pass")?;
+        let variant = pass.variants.first().ok_or("the harness built no variant")?;
+        let index = pass.kernels.iter().position(|k| k == kernel).ok_or(format!("no kernel `{kernel}`"))?;
+        let stage =
+            variant.kernels[index].map(|m| pass.stage(m)).ok_or(format!("`{kernel}` was not built"))?;
+        let bytes = stage.wgsl().ok_or("no WGSL")?.read(&scratch).map_err(|e| e.to_string())?;
+        let wgsl = String::from_utf8(bytes).map_err(|e| e.to_string())?;
+        let used = |g: u32, b: u32| stage.interface.bindings.contains(&[g, b]);
+        let bound = pass
+            .layout
+            .iter()
+            .flat_map(|group| group.entries.iter().map(move |e| (group.group, e)))
+            .filter(|(group, e)| used(*group, e.binding))
+            .map(|(group, e)| (e.name.clone(), (group, e.binding)))
+            .collect();
+        Ok((wgsl, bound))
+    };
+    let found = read();
+    let _ = std::fs::remove_dir_all(&scratch);
+    found
+}
+
+/// A new empty folder under the system's temporary folder, for one harness build.
+fn tempfile_folder() -> Result<std::path::PathBuf, String> {
+    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let folder = std::env::temp_dir().join(format!("kiln-accuracy-{}-{n}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&folder);
+    std::fs::create_dir_all(&folder).map_err(|e| format!("{}: {e}", folder.display()))?;
+    Ok(folder)
 }
 
 fn case_bytes(cases: &[Case]) -> Vec<u8> {
@@ -175,11 +241,7 @@ struct Harness<'a> {
 }
 
 impl Harness<'_> {
-    fn pipeline(
-        &self,
-        keywords: &[&str],
-        entry: &str,
-    ) -> Result<(wgpu::ComputePipeline, Option<(u32, u32)>), String> {
+    fn pipeline(&self, keywords: &[&str], entry: &str) -> Result<(wgpu::ComputePipeline, Bindings), String> {
         let (wgsl, bound) = harness_wgsl(keywords, entry)?;
         let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some(entry),
@@ -193,14 +255,14 @@ impl Harness<'_> {
             compilation_options: Default::default(),
             cache: None,
         });
-        Ok((pipeline, bound.get("_CustomLight").copied()))
+        Ok((pipeline, bound))
     }
 
     /// Runs `pipeline` over `invocations`, returning the results and the GPU time in ns (from
     /// timestamp queries when the adapter has them, else from the CPU around the submission).
     fn dispatch(
         &self,
-        pipeline: &(wgpu::ComputePipeline, Option<(u32, u32)>),
+        pipeline: &(wgpu::ComputePipeline, Bindings),
         cases: &[Case],
         light: Option<&[u8]>,
         invocations: u32,
@@ -224,28 +286,44 @@ impl Harness<'_> {
             usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
             mapped_at_creation: false,
         });
-        let (pipeline, light_slot) = pipeline;
-        let io = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: None,
-            layout: &pipeline.get_bind_group_layout(3),
-            entries: &[
-                wgpu::BindGroupEntry { binding: 0, resource: input.as_entire_binding() },
-                wgpu::BindGroupEntry { binding: 1, resource: output.as_entire_binding() },
-            ],
-        });
-        let light_group = light_slot.zip(light).map(|((group, binding), bytes)| {
-            let buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        let (pipeline, bound) = pipeline;
+        let light = light.map(|bytes| {
+            device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("_CustomLight"),
                 contents: bytes,
                 usage: wgpu::BufferUsages::UNIFORM,
-            });
-            let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: None,
-                layout: &pipeline.get_bind_group_layout(group),
-                entries: &[wgpu::BindGroupEntry { binding, resource: buffer.as_entire_binding() }],
-            });
-            (group, bind_group)
+            })
         });
+        // Each resource by name, where the build bound it; one bind group per group.
+        let mut groups: std::collections::BTreeMap<u32, Vec<wgpu::BindGroupEntry>> = Default::default();
+        for (name, &(group, binding)) in bound {
+            let buffer = match name.as_str() {
+                "cases" => Some(&input),
+                "results" => Some(&output),
+                "_CustomLight" => light.as_ref(),
+                _ => None,
+            };
+            if let Some(buffer) = buffer {
+                groups
+                    .entry(group)
+                    .or_default()
+                    .push(wgpu::BindGroupEntry { binding, resource: buffer.as_entire_binding() });
+            }
+        }
+        let bind_groups: Vec<(u32, wgpu::BindGroup)> = groups
+            .into_iter()
+            .map(|(group, entries)| {
+                let layout = pipeline.get_bind_group_layout(group);
+                (
+                    group,
+                    device.create_bind_group(&wgpu::BindGroupDescriptor {
+                        label: None,
+                        layout: &layout,
+                        entries: &entries,
+                    }),
+                )
+            })
+            .collect();
         let queries = self.timestamps.then(|| {
             let set = device.create_query_set(&wgpu::QuerySetDescriptor {
                 label: None,
@@ -277,8 +355,7 @@ impl Harness<'_> {
                 }),
             });
             pass.set_pipeline(pipeline);
-            pass.set_bind_group(3, &io, &[]);
-            if let Some((group, bind_group)) = &light_group {
+            for (group, bind_group) in &bind_groups {
                 pass.set_bind_group(*group, bind_group, &[]);
             }
             pass.dispatch_workgroups(invocations.div_ceil(64), 1, 1);

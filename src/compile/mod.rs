@@ -131,35 +131,3 @@ fn lowercase_first(message: &str) -> String {
         _ => message.to_string(),
     }
 }
-
-/// Where each resource of a module is bound: name to `(group, binding)`.
-pub type Bindings = std::collections::BTreeMap<String, (u32, u32)>;
-
-/// Compiles a compute entry point of a preprocessed text as a build compiles a stage: resources
-/// get bindings by update frequency (explicit ones kept), the module is compacted to the entry
-/// point, validated, and written as WGSL. Returns the WGSL and where each resource was bound.
-pub fn compile_compute(
-    preprocessed: &Preprocessed,
-    store: &SourceStore,
-    entry: &str,
-    capabilities: Capabilities,
-) -> Result<(String, Bindings), Vec<Diagnostic>> {
-    let mapper = Mapper { map: &preprocessed.source_map, store };
-    let mut module = parse(&preprocessed.text, &mapper).map_err(|d| vec![d])?;
-    let host = layout::correct(&mut module, &preprocessed.text, &mapper).map_err(|d| vec![d])?;
-    let (layout, _) = bind::layout(&[&bind::declared(&module, entry, naga::ShaderStage::Compute)]);
-    bind::apply(&mut module, &layout);
-    let compute = naga::ShaderStage::Compute;
-    if !module.entry_points.iter().any(|e| e.name == entry && e.stage == compute) {
-        return Err(vec![Diagnostic::error("K0403", format!("compute entry point `{entry}` not found"))]);
-    }
-    let info =
-        stage::keep_entry_point(&mut module, entry, compute, capabilities, &mapper).map_err(|d| vec![d])?;
-    let wgsl = stage::write_wgsl(&module, &info, capabilities, &host).map_err(|d| vec![d])?;
-    let used: Bindings = module
-        .global_variables
-        .iter()
-        .filter_map(|(_, g)| Some((g.name.clone()?, g.binding.as_ref().map(|b| (b.group, b.binding))?)))
-        .collect();
-    Ok((wgsl, used))
-}

@@ -145,7 +145,7 @@ pub(super) fn spirv_version(capabilities: naga::valid::Capabilities) -> (u8, u8)
 }
 
 /// Cuts a bound module down to one entry point and what it uses, then validates it.
-pub(super) fn keep_entry_point(
+fn keep_entry_point(
     module: &mut naga::Module,
     entry: &str,
     stage: naga::ShaderStage,
@@ -161,7 +161,7 @@ pub(super) fn keep_entry_point(
 /// `@align`/`@size`). naga's writer emits `enable f16;` only when a type declaration
 /// uses f16, not for f16 arithmetic in expressions (conversions, `h` literals), which the WGSL
 /// front end then rejects; a module allowed f16 always gets the directive.
-pub(super) fn write_wgsl(
+fn write_wgsl(
     module: &naga::Module,
     info: &naga::valid::ModuleInfo,
     capabilities: naga::valid::Capabilities,

@@ -21,9 +21,8 @@ pub fn is_compute_file(path: &Path) -> bool {
 pub fn parse_compute(store: &SourceStore, file: FileId) -> ParsedShader {
     let text = store.text(file);
     let whole = Span::new(file, 0..text.len());
-    let name = store
-        .path(file)
-        .and_then(Path::file_stem)
+    let name = Path::new(store.name(file))
+        .file_stem()
         .map_or_else(|| "compute".to_string(), |stem| stem.to_string_lossy().into_owned());
     let state = || StateBlock {
         name: None,
