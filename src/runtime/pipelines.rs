@@ -483,6 +483,14 @@ impl Runtime {
         Ok(Kernel { pipeline, workgroup_size })
     }
 
+    /// Creates, ahead of the first dispatch, the compute pipeline of each request (a scene's
+    /// kernels, or those a usage log names). Returns how many kernel pipelines exist afterwards,
+    /// or every request that failed.
+    pub fn warm_up_kernels(&mut self, requests: &[KernelRequest]) -> Result<usize, Vec<RuntimeError>> {
+        let errors: Vec<RuntimeError> = requests.iter().filter_map(|r| self.kernel(r).err()).collect();
+        if errors.is_empty() { Ok(self.kernels.len()) } else { Err(errors) }
+    }
+
     /// Creates, ahead of the first frame, the pipeline of every pass each material's variant has
     /// (with `global_keywords` added to its keywords). Returns how many exist afterwards, or every
     /// request that failed.

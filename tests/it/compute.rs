@@ -149,6 +149,19 @@ fn every_kernel_variant_computes_what_the_cpu_computes() {
     let Some(gpu) = gpu("the compute kernels test") else { return };
     let output = built();
     let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
+    // Warmed up ahead of the dispatches: every kernel of both variants, created once.
+    let requests: Vec<KernelRequest> = [&[][..], &["_SQUARE"][..]]
+        .into_iter()
+        .flat_map(|keywords| {
+            ["Double", "AddOffset"].map(|kernel| KernelRequest {
+                shader: SHADER,
+                kernel,
+                keywords,
+                overrides: &[],
+            })
+        })
+        .collect();
+    assert_eq!(runtime.warm_up_kernels(&requests).expect("warms up"), 4);
     // 1,000 numbers: more than one workgroup, not a multiple of its size.
     let input: Vec<f32> = (0..1000).map(|i| (i as f32) * 0.25 - 100.0).collect();
     let offset = 3.5;
