@@ -721,19 +721,7 @@ pub fn reflect_variant(
         }
     }
     let folder = request.shader.parent().map(Path::to_path_buf).unwrap_or_default();
-    let options = BuildOptions {
-        output: folder.join(".kiln-reflect-unused"),
-        root: folder,
-        write: false,
-        threads: Some(1),
-        backends: ProjectConfig::default().backends,
-        unused_shaders: VariantSelection::Used,
-        pretty_manifest: false,
-        record: false,
-        part: Part::Whole,
-        cache_dir: None,
-        given_files: 0,
-    };
+    let options = BuildOptions::one_off(folder.clone(), folder.join(".kiln-reflect-unused"), false);
     let result = build(store, &includes, &catalog, &options, &|_, _| {});
     diagnostics.extend(result.diagnostics);
     let pass = result.manifest.as_ref().and_then(|m| m.passes().next());

@@ -7,8 +7,7 @@
 #![no_main]
 
 use kiln::catalog::CatalogInput;
-use kiln::build::{BuildOptions, Part, VariantSelection};
-use kiln::config::Backend;
+use kiln::build::BuildOptions;
 use kiln::preprocess::{IncludeConfig, Includes};
 use kiln::source::SourceStore;
 use libfuzzer_sys::fuzz_target;
@@ -119,19 +118,7 @@ fuzz_target!(|data: &[u8]| {
         ..CatalogInput::default()
     };
     let (catalog, _) = kiln::catalog::catalog(&mut store, &mut includes, &input);
-    let options = BuildOptions {
-        output: "/nonexistent/kiln-fuzz".into(),
-        root: ".".into(),
-        write: false,
-        threads: Some(1),
-        backends: vec![Backend::Wgsl, Backend::Spirv],
-        unused_shaders: VariantSelection::Used,
-        pretty_manifest: false,
-        record: false,
-        part: Part::Whole,
-        cache_dir: None,
-        given_files: 0,
-    };
+    let options = BuildOptions::one_off(".".into(), "/nonexistent/kiln-fuzz".into(), false);
     let result = kiln::build::build(&store, &includes, &catalog, &options, &|_, _| {});
     if let Some(found) = result.diagnostics.iter().find(|d| d.code == "K0416" || d.code == "K0409") {
         panic!("{}\n{text}", kiln::diagnostics::render_plain(&store, std::slice::from_ref(found)));

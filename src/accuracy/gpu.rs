@@ -5,7 +5,7 @@
 //! kept in registers).
 
 use super::{Case, Formulation, Row, Timing, hard_cases, reference, reference_lights, stats};
-use crate::build::{BuildOptions, Part, VariantSelection, build};
+use crate::build::{BuildOptions, build};
 use crate::catalog::{CatalogInput, ListedVariant, catalog};
 use crate::preprocess::{IncludeConfig, Includes};
 use crate::source::{SourceStore, Span};
@@ -148,17 +148,8 @@ pub fn harness_wgsl(keywords: &[&str], kernel: &str) -> Result<(String, Bindings
     let (catalog, mut problems) = catalog(&mut store, &mut includes, &input);
     let scratch = tempfile_folder()?;
     let options = BuildOptions {
-        output: scratch.clone(),
-        root: scratch.clone(),
-        write: true,
-        threads: Some(1),
         backends: vec![crate::config::Backend::Wgsl],
-        unused_shaders: VariantSelection::Used,
-        pretty_manifest: false,
-        record: false,
-        part: Part::Whole,
-        cache_dir: None,
-        given_files: 0,
+        ..BuildOptions::one_off(scratch.clone(), scratch.clone(), true)
     };
     let result = build(&store, &includes, &catalog, &options, &|_, _| {});
     problems.extend(result.diagnostics);

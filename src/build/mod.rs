@@ -92,6 +92,26 @@ pub struct BuildOptions {
     pub given_files: usize,
 }
 
+impl BuildOptions {
+    /// A one-off build of what a caller catalogued itself (a shader to reflect, the accuracy
+    /// harness): one thread, both back ends, nothing recorded for a no-op, no shared cache.
+    pub fn one_off(root: PathBuf, output: PathBuf, write: bool) -> BuildOptions {
+        BuildOptions {
+            output,
+            root,
+            write,
+            threads: Some(1),
+            backends: vec![Backend::Wgsl, Backend::Spirv],
+            unused_shaders: VariantSelection::Used,
+            pretty_manifest: false,
+            record: false,
+            part: Part::Whole,
+            cache_dir: None,
+            given_files: 0,
+        }
+    }
+}
+
 /// How much of a build one process does.
 #[derive(Debug, Clone, Default)]
 pub enum Part {

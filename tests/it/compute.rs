@@ -3,17 +3,14 @@
 //! (lavapipe in CI) through `kiln::runtime`, its read-back output checked against the same
 //! computation on the CPU.
 
-use crate::support::{build_without_errors, gpu, root};
-use kiln::build::VariantSelection;
+use crate::support::{gpu, root};
 use kiln::runtime::{KernelRequest, Runtime};
 use wgpu::util::DeviceExt;
 
 const SHADER: &str = "Scale";
 
 fn built() -> tempfile::TempDir {
-    let output = tempfile::tempdir().expect("temp dir");
-    build_without_errors(&root().join("fixtures/compute"), Some(output.path()), VariantSelection::Used);
-    output
+    crate::support::built_fixture("compute")
 }
 
 #[test]

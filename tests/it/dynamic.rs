@@ -4,9 +4,8 @@
 //! overrides give; usage logs naming them build.
 
 use crate::runtime::draw_pass;
-use crate::support::{build_without_errors, gpu, kiln, root};
+use crate::support::{gpu, kiln, root};
 use expect_test::expect_file;
-use kiln::build::VariantSelection;
 use kiln::runtime::{Runtime, RuntimeError, UsageLog};
 
 const SHADER: &str = "Test/Dynamic";
@@ -15,9 +14,7 @@ const SHADER: &str = "Test/Dynamic";
 type Ask<'a> = (&'a [&'a str], &'a [(&'a str, f64)]);
 
 fn built() -> tempfile::TempDir {
-    let output = tempfile::tempdir().expect("temp dir");
-    build_without_errors(&root().join("fixtures/dynamic"), Some(output.path()), VariantSelection::Used);
-    output
+    crate::support::built_fixture("dynamic")
 }
 
 #[test]

@@ -148,6 +148,14 @@ pub fn build_without_errors(
     (result.summary, rendered)
 }
 
+/// A fixture project (a folder under `fixtures/`) built without errors into a new temporary
+/// folder, which is returned.
+pub fn built_fixture(project: &str) -> tempfile::TempDir {
+    let output = tempfile::tempdir().expect("temp dir");
+    build_without_errors(&root().join("fixtures").join(project), Some(output.path()), VariantSelection::Used);
+    output
+}
+
 /// Every file under `folder`, relative, with its bytes.
 pub fn tree(folder: &Path) -> std::collections::BTreeMap<PathBuf, Vec<u8>> {
     walkdir::WalkDir::new(folder)
