@@ -5,14 +5,16 @@
 //!
 //! Behind the `wgpu` feature; the compiler stages never import it.
 
+mod compute;
 mod layout;
 mod overrides;
 mod pipelines;
 mod state;
 mod uniforms;
 
+pub use compute::{Kernel, KernelRequest};
 pub use layout::{PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
-pub use pipelines::{Kernel, KernelRequest, PipelineRequest, Reload, Runtime, Targets, UsageLog};
+pub use pipelines::{PipelineRequest, Reload, Runtime, Targets, UsageLog};
 pub use state::{
     MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state,
 };

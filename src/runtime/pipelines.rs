@@ -55,47 +55,6 @@ struct PipelineKey {
     constants: Vec<Vec<(String, u64)>>,
 }
 
-/// What a dispatch needs a compute pipeline for.
-pub struct KernelRequest<'a> {
-    /// The compute shader's name (a `.compute` file's stem).
-    pub shader: &'a str,
-    /// The kernel (`#pragma kernel NAME`).
-    pub kernel: &'a str,
-    /// The variant's keywords (the renderer's global ones and its own), `dynamic_branch` ones too.
-    pub keywords: &'a [&'a str],
-    /// Values of the module's own `override` constants, as [`PipelineRequest::overrides`].
-    pub overrides: &'a [(&'a str, f64)],
-}
-
-/// A kernel's compute pipeline and its workgroup size.
-#[derive(Debug, Clone)]
-pub struct Kernel {
-    /// The pipeline, with the compute shader's layout ([`Runtime::pass_layout`] of pass 0).
-    pub pipeline: Arc<wgpu::ComputePipeline>,
-    /// Its `@workgroup_size` (0 where an `override` gives it).
-    pub workgroup_size: [u32; 3],
-}
-
-impl Kernel {
-    /// The workgroups to dispatch so that every one of `size` invocations runs (each dimension
-    /// rounded up to whole workgroups).
-    pub fn workgroups(&self, size: [u32; 3]) -> [u32; 3] {
-        let mut count = [0; 3];
-        for (c, (n, group)) in count.iter_mut().zip(size.into_iter().zip(self.workgroup_size)) {
-            *c = n.div_ceil(group.max(1));
-        }
-        count
-    }
-}
-
-#[derive(Debug, Clone, PartialEq, Eq, Hash)]
-struct KernelKey {
-    /// BLAKE3 of the kernel module's WGSL.
-    module: String,
-    layout: blake3::Hash,
-    constants: Vec<(String, u64)>,
-}
-
 /// What [`Runtime::reload`] found.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Reload {
@@ -154,7 +113,7 @@ impl UsageLog {
 
 /// The variant with exactly these keywords, looked up once and recorded in the usage log (when
 /// there is one) as found or missing; a misspelt name is not recorded.
-fn logged_variant<'l>(
+pub(super) fn logged_variant<'l>(
     library: &'l Library,
     usage: &mut Option<UsageLog>,
     shader: &str,
@@ -174,29 +133,29 @@ fn logged_variant<'l>(
 
 /// What a pass needs once, not per pipeline request: its layout and its render state, read.
 #[derive(Clone)]
-struct PassFacts {
-    layout_key: blake3::Hash,
-    layout: Arc<PassLayout>,
+pub(super) struct PassFacts {
+    pub(super) layout_key: blake3::Hash,
+    pub(super) layout: Arc<PassLayout>,
     state: Arc<super::state::PassState>,
 }
 
 /// A device's pipelines for one build, created once each and kept across reloads of unchanged
 /// modules.
 pub struct Runtime {
-    device: wgpu::Device,
-    library: Library,
+    pub(super) device: wgpu::Device,
+    pub(super) library: Library,
     /// The output folder the build came from, and its manifest's hash (for [`Runtime::reload`]).
     source: Option<(PathBuf, blake3::Hash)>,
     /// By the hash of the pass's layout entry: passes laid out alike share one.
     layouts: HashMap<blake3::Hash, Arc<PassLayout>>,
     /// Per shader, per pass index: what is worked out once (looked up without allocating).
     passes: HashMap<String, HashMap<usize, PassFacts>>,
-    modules: HashMap<String, wgpu::ShaderModule>,
+    pub(super) modules: HashMap<String, wgpu::ShaderModule>,
     pipelines: HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>,
-    kernels: HashMap<KernelKey, Arc<wgpu::ComputePipeline>>,
-    created: usize,
-    usage: Option<UsageLog>,
-    wgpu_cache: Option<wgpu::PipelineCache>,
+    pub(super) kernels: HashMap<super::compute::KernelKey, Arc<wgpu::ComputePipeline>>,
+    pub(super) created: usize,
+    pub(super) usage: Option<UsageLog>,
+    pub(super) wgpu_cache: Option<wgpu::PipelineCache>,
 }
 
 impl Runtime {
@@ -284,7 +243,7 @@ impl Runtime {
 
     /// What is worked out once per pass: its layout (shared by passes laid out alike) and its
     /// render state, read.
-    fn pass_facts(&mut self, shader: &str, pass: usize) -> Result<PassFacts, RuntimeError> {
+    pub(super) fn pass_facts(&mut self, shader: &str, pass: usize) -> Result<PassFacts, RuntimeError> {
         if let Some(facts) = self.passes.get(shader).and_then(|p| p.get(&pass)) {
             return Ok(facts.clone());
         }
@@ -416,81 +375,6 @@ impl Runtime {
         Ok(pipeline)
     }
 
-    /// The compute pipeline of a kernel of a compute shader's variant, created the first time it
-    /// is asked for (the variant recorded in the usage log, as for render pipelines).
-    pub fn kernel(&mut self, request: &KernelRequest) -> Result<Kernel, RuntimeError> {
-        let shader = request.shader;
-        let facts = self.pass_facts(shader, 0)?;
-        let library = &self.library;
-        let variant = logged_variant(library, &mut self.usage, shader, 0, request.keywords)?;
-        let pass = library.pass(shader, 0)?;
-        let layout_error =
-            |message: String| RuntimeError::Layout { shader: shader.to_string(), pass: 0, message };
-        let Some(index) = pass.kernels.iter().position(|k| k == request.kernel) else {
-            return Err(RuntimeError::UnknownKernel {
-                shader: shader.to_string(),
-                kernel: request.kernel.to_string(),
-                suggestion: crate::material::closest(request.kernel, pass.kernels.iter().map(String::as_str)),
-            });
-        };
-        let module = variant.kernels.get(index).copied().flatten();
-        let stage =
-            module.map(|m| pass.stage(m)).ok_or_else(|| layout_error("the kernel was not built".into()))?;
-        let constants = stage_constants(
-            &ConstantRequest { shader, pass, keywords: request.keywords, overrides: request.overrides },
-            std::slice::from_ref(&Some(stage)),
-        )?;
-        // A size an `override` gives is that constant's value in this pipeline.
-        let mut workgroup_size = stage.interface.workgroup_size.unwrap_or([1, 1, 1]);
-        for (size, name) in workgroup_size.iter_mut().zip(&stage.interface.workgroup_size_overrides) {
-            let Some(constant) =
-                name.as_ref().and_then(|n| stage.interface.overrides.iter().find(|o| &o.name == n))
-            else {
-                continue;
-            };
-            let given = constants[0].iter().find(|(key, _)| *key == constant.key()).map(|&(_, v)| v);
-            *size = given.or(constant.default).unwrap_or(1.0) as u32;
-        }
-        let hash = stage.module.wgsl.as_ref().map(|f| f.hash.clone()).unwrap_or_default();
-        let key = KernelKey {
-            module: hash,
-            layout: facts.layout_key,
-            constants: constant_bits(&constants).remove(0),
-        };
-        if let Some(pipeline) = self.kernels.get(&key) {
-            return Ok(Kernel { pipeline: pipeline.clone(), workgroup_size });
-        }
-        let module =
-            shader_module(&self.device, library, &mut self.modules, shader, &stage).map_err(layout_error)?;
-        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let pipeline = self.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some(&format!("{shader} kernel {} [{}]", request.kernel, variant.keywords.join(" "))),
-            layout: Some(&facts.layout.pipeline),
-            module: &module,
-            entry_point: Some(request.kernel),
-            compilation_options: wgpu::PipelineCompilationOptions {
-                constants: &wgpu_constants(&constants[0]),
-                ..Default::default()
-            },
-            cache: self.wgpu_cache.as_ref(),
-        });
-        if let Some(error) = pollster::block_on(scope.pop()) {
-            return Err(layout_error(format!("wgpu refused the pipeline: {error}")));
-        }
-        let pipeline = Arc::new(pipeline);
-        self.created += 1;
-        self.kernels.insert(key, pipeline.clone());
-        Ok(Kernel { pipeline, workgroup_size })
-    }
-
-    /// Creates, ahead of the first dispatch, the compute pipeline of each request (a scene's
-    /// kernels, or those a usage log names). Returns how many kernel pipelines exist afterwards,
-    /// or every request that failed.
-    pub fn warm_up_kernels(&mut self, requests: &[KernelRequest]) -> Result<usize, Vec<RuntimeError>> {
-        let errors: Vec<RuntimeError> = requests.iter().filter_map(|r| self.kernel(r).err()).collect();
-        if errors.is_empty() { Ok(self.kernels.len()) } else { Err(errors) }
-    }
-
     /// Creates, ahead of the first frame, the pipeline of every pass each material's variant has
     /// (with `global_keywords` added to its keywords). Returns how many exist afterwards, or every
     /// request that failed.
@@ -565,17 +449,17 @@ impl Runtime {
 }
 
 /// A stage's constants with their values' bits, for a pipeline key.
-fn constant_bits(constants: &[Vec<(String, f64)>]) -> Vec<Vec<(String, u64)>> {
+pub(super) fn constant_bits(constants: &[Vec<(String, f64)>]) -> Vec<Vec<(String, u64)>> {
     constants.iter().map(|c| c.iter().map(|(k, v)| (k.clone(), v.to_bits())).collect()).collect()
 }
 
 /// A stage's constants as wgpu takes them.
-fn wgpu_constants(constants: &[(String, f64)]) -> Vec<(&str, f64)> {
+pub(super) fn wgpu_constants(constants: &[(String, f64)]) -> Vec<(&str, f64)> {
     constants.iter().map(|(k, v)| (k.as_str(), *v)).collect()
 }
 
 /// A stage's WGSL module, created once per module (by its hash) and kept across pipelines.
-fn shader_module(
+pub(super) fn shader_module(
     device: &wgpu::Device,
     library: &Library,
     modules: &mut HashMap<String, wgpu::ShaderModule>,
