@@ -17,7 +17,7 @@ pub enum MaterialError {
     UnknownPreset { span: Span, name: String },
     PresetNotOffered { span: Span, preset: &'static str, shader: String },
     RenderQueue { span: Span, found: String },
-    KeywordNotDeclared { span: Span, keyword: String, shader: String },
+    KeywordNotDeclared { span: Span, keyword: String, shader: String, suggestion: Option<String> },
     TwoKeywordsOfOneSet { span: Span, first: String, second: String, set: Option<Span> },
     NoKeywordOfSet { span: Span, set: Option<Span>, options: String },
     KeywordDisagrees { span: Span, keyword: String, property: String, value: f64, enabled: bool },
@@ -68,12 +68,17 @@ impl From<MaterialError> for Diagnostic {
                         "queue names are `Background`, `Geometry`, `AlphaTest`, `Transparent` and `Overlay`",
                     )
             }
-            KeywordNotDeclared { span, keyword, shader } => Diagnostic::warning(
-                "K0507",
-                format!("keyword `{keyword}` is declared by no pass of `{shader}`"),
-            )
-            .at(span, "this keyword changes no variant")
-            .help("remove it, or declare it with `#pragma shader_feature`"),
+            KeywordNotDeclared { span, keyword, shader, suggestion } => {
+                let d = Diagnostic::warning(
+                    "K0507",
+                    format!("keyword `{keyword}` is declared by no pass of `{shader}`"),
+                )
+                .at(span, "this keyword changes no variant");
+                match suggestion {
+                    Some(s) => d.help(format!("did you mean `{s}`?")),
+                    None => d.help("remove it, or declare it with `#pragma shader_feature`"),
+                }
+            }
             TwoKeywordsOfOneSet { span, first, second, set } => set_label(
                 Diagnostic::error("K0508", format!("`{first}` and `{second}` belong to one keyword set"))
                     .at(span, "a material enables at most one keyword of a set"),

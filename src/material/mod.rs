@@ -357,7 +357,10 @@ fn property_value(property: &EntryProperty, value: &toml::Value) -> Result<Mater
                     .ok_or_else(|| match &names {
                         Some(names) => {
                             let names: Vec<&str> = names.iter().map(|(n, _)| n.as_str()).collect();
-                            format!("a number or one of {}", crate::shaderlab::one_of(&names))
+                            let guess = closest(s, names.iter().copied())
+                                .map(|g| format!(" (did you mean `{g}`?)"))
+                                .unwrap_or_default();
+                            format!("a number or one of {}{guess}", crate::shaderlab::one_of(&names))
                         }
                         None => "a number".to_string(),
                     }),
@@ -484,10 +487,12 @@ fn check_sets(
 ) {
     for (keyword, at) in keywords {
         if !entry.keyword_sets.iter().any(|s| s.keywords.contains(keyword)) {
+            let declared = entry.keyword_sets.iter().flat_map(|s| &s.keywords).map(String::as_str);
             errors.push(MaterialError::KeywordNotDeclared {
                 span: *at,
                 keyword: keyword.clone(),
                 shader: entry.name.clone(),
+                suggestion: closest(keyword, declared),
             });
         }
     }

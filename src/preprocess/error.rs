@@ -14,6 +14,7 @@ pub enum PreprocessError {
         span: Span,
         name: String,
         searched: Vec<String>,
+        suggestion: Option<String>,
     },
     /// `chain` runs from the file that includes itself again, through each include, back to it.
     IncludeCycle {
@@ -169,13 +170,16 @@ impl From<PreprocessError> for Diagnostic {
     fn from(error: PreprocessError) -> Diagnostic {
         use PreprocessError::*;
         match error {
-            IncludeNotFound { span, name, searched } => {
+            IncludeNotFound { span, name, searched, suggestion } => {
                 let mut d = Diagnostic::error("K0301", format!("cannot find include `{name}`"))
                     .at(span, "included here");
                 for folder in searched {
                     d = d.note(format!("searched {folder}"));
                 }
-                d.help("check the name, or add its folder to the project's include paths")
+                match suggestion {
+                    Some(s) => d.help(format!("did you mean `{s}`?")),
+                    None => d.help("check the name, or add its folder to the project's include paths"),
+                }
             }
             IncludeCycle { span, chain } => Diagnostic::error("K0302", "include cycle")
                 .at(span, "this include leads back to a file that is still being included")

@@ -166,7 +166,7 @@ impl Includes {
             Place::Nowhere => {}
         }
         folders.extend(self.config.include_paths.iter().cloned());
-        for folder in folders {
+        for folder in folders.iter() {
             let candidate = normalize_lexically(&folder.join(name));
             if let Some(canonical) = store.canonical_file(&candidate) {
                 return self.disk_unit(store, candidate, canonical, name, span, diagnostics);
@@ -178,7 +178,29 @@ impl Includes {
             return target;
         }
         searched.push("the bundled shader library".into());
-        Target::Failed(PreprocessError::IncludeNotFound { span, name: name.to_string(), searched })
+        let suggestion = self.closest_include(name, &folders);
+        Target::Failed(PreprocessError::IncludeNotFound {
+            span,
+            name: name.to_string(),
+            searched,
+            suggestion,
+        })
+    }
+
+    /// The file name nearest `name` in the folders searched and the bundled library, for a
+    /// "did you mean" (read only when an include was not found).
+    fn closest_include(&self, name: &str, folders: &[PathBuf]) -> Option<String> {
+        let wanted = Path::new(name);
+        let (parent, file) = (wanted.parent().unwrap_or(Path::new("")), wanted.file_name()?.to_str()?);
+        let on_disk: Vec<String> = folders
+            .iter()
+            .filter_map(|folder| std::fs::read_dir(folder.join(parent)).ok())
+            .flatten()
+            .filter_map(|entry| entry.ok()?.file_name().into_string().ok())
+            .collect();
+        let library = self.config.library.iter().map(|(n, _)| n.as_str());
+        let found = crate::material::closest(file, on_disk.iter().map(String::as_str).chain(library))?;
+        Some(parent.join(found).to_string_lossy().replace('\\', "/"))
     }
 
     fn disk_unit(
