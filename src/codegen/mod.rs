@@ -359,9 +359,13 @@ type PackNumbers<'a> = [BTreeMap<&'a str, u32>; 2];
 
 fn shader_module(out: &mut String, shader: &ShaderManifest, packs: &PackNumbers) {
     let _ = writeln!(out, "\n/// `{}` ({})", shader.name, shader.file);
-    let _ = writeln!(out, "#[allow(non_snake_case, non_camel_case_types, dead_code, clippy::all)]");
+    let _ = writeln!(
+        out,
+        "#[allow(non_snake_case, non_camel_case_types, non_upper_case_globals, dead_code, clippy::all)]"
+    );
     let _ = writeln!(out, "pub mod {} {{", module_name(&shader.name));
     let _ = writeln!(out, "    pub const NAME: &str = {:?};", shader.name);
+    handles(out, shader);
     for pass in &shader.passes {
         pass_static(out, pass, packs);
     }
@@ -486,6 +490,50 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
     overrides_struct(out, pass);
 }
 
+/// Its keywords and kernels as constants, so that a misspelt one is a compile error rather than
+/// a missing variant at run time: `keywords::_CLIPPING` is `"_CLIPPING"`, `kernels::DOUBLE` is
+/// `"Double"`.
+fn handles(out: &mut String, shader: &ShaderManifest) {
+    let mut keywords: Vec<&str> = shader
+        .passes
+        .iter()
+        .flat_map(|p| p.keyword_sets.iter().flat_map(|s| &s.keywords))
+        .map(String::as_str)
+        .filter(|k| *k != "_")
+        .collect();
+    keywords.sort_unstable();
+    keywords.dedup();
+    let mut kernels: Vec<&str> = shader.passes.iter().flat_map(|p| &p.kernels).map(String::as_str).collect();
+    kernels.dedup();
+    for (module, names, what) in [("keywords", keywords, "keyword"), ("kernels", kernels, "kernel")] {
+        if names.is_empty() {
+            continue;
+        }
+        let _ = writeln!(
+            out,
+            "    /// Each {what} of the shader, as the runtime takes it.\n    pub mod {module} {{"
+        );
+        for name in names {
+            let _ = writeln!(
+                out,
+                "        pub const {}: &str = {name:?};",
+                constant_name(name, module == "kernels")
+            );
+        }
+        out.push_str("    }\n");
+    }
+}
+
+/// A keyword as written (it is an identifier already), a kernel in upper case (`Double` is
+/// `DOUBLE`).
+fn constant_name(name: &str, upper: bool) -> String {
+    if upper {
+        name.chars().map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_uppercase() } else { '_' }).collect()
+    } else {
+        name.to_string()
+    }
+}
+
 /// `NAME_WORKGROUP_SIZE` for each kernel whose variants all have one size.
 fn kernel_constants(out: &mut String, pass: &PassManifest) {
     for (k, kernel) in pass.kernels.iter().enumerate() {
@@ -496,10 +544,7 @@ fn kernel_constants(out: &mut String, pass: &PassManifest) {
             .filter_map(|m| pass.stage(m).interface.workgroup_size);
         let Some(first) = sizes.next() else { continue };
         if sizes.all(|size| size == first) {
-            let name: String = kernel
-                .chars()
-                .map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_uppercase() } else { '_' })
-                .collect();
+            let name = constant_name(kernel, true);
             let _ = writeln!(
                 out,
                 "    /// `{kernel}`'s `@workgroup_size` (pass {}).\n    pub const {name}_WORKGROUP_SIZE: [u32; 3] = {first:?};",

@@ -287,7 +287,7 @@ fn the_generated_module_finds_kernels_and_their_workgroup_sizes() {
          \x20   use shaders::scale::PASS_0;\n\
          \x20   for keywords in [&[][..], &[\"_SQUARE\"][..]] {\n\
          \x20       let variant = PASS_0.variant(keywords).expect(\"built\");\n\
-         \x20       let double = variant.kernel(\"Double\").expect(\"a kernel\");\n\
+         \x20       let double = variant.kernel(shaders::scale::kernels::DOUBLE).expect(\"a kernel\");\n\
          \x20       assert_eq!(double.entry_point, \"Double\");\n\
          \x20       assert_eq!(double.workgroup_size, shaders::scale::DOUBLE_WORKGROUP_SIZE);\n\
          \x20       assert!(double.wgsl.contains(\"@compute @workgroup_size(64, 1, 1)\"));\n\

@@ -93,7 +93,8 @@ fn the_generated_module_has_typed_overrides_that_compile() {
          }\n\
          #[test]\n\
          fn dynamic_keywords_choose_no_variant_and_constants_are_the_values() {\n\
-         \x20   assert!(shaders::test_dynamic::PASS_0.variant(&[\"_FOG\", \"_TINT_RED\"]).is_ok());\n\
+         \x20   use shaders::test_dynamic::keywords::{_FOG, _TINT_RED};\n\
+         \x20   assert!(shaders::test_dynamic::PASS_0.variant(&[_FOG, _TINT_RED]).is_ok());\n\
          \x20   assert_eq!(constants(), [(\"brightness\", 0.5), (\"7\", 0.0), (\"steps\", 1.0)]);\n\
          }\n",
     );
@@ -103,6 +104,20 @@ fn the_generated_module_has_typed_overrides_that_compile() {
         run.status.success(),
         "fails:\n{}{}",
         String::from_utf8_lossy(&run.stdout),
+        String::from_utf8_lossy(&run.stderr)
+    );
+    // A misspelt keyword constant does not compile: the typo is found before any frame.
+    let lib = std::fs::read_to_string(krate.join("src/lib.rs")).expect("lib.rs");
+    std::fs::write(
+        krate.join("src/lib.rs"),
+        lib.replace("keywords::{_FOG, _TINT_RED}", "keywords::{_FOGG, _TINT_RED}"),
+    )
+    .expect("lib.rs");
+    let run = crate::support::cargo_scratch(&krate, &["test", "--no-run"]);
+    assert!(!run.status.success(), "a misspelt keyword compiles");
+    assert!(
+        String::from_utf8_lossy(&run.stderr).contains("_FOGG"),
+        "{}",
         String::from_utf8_lossy(&run.stderr)
     );
 }

@@ -142,7 +142,7 @@
 }
 
 /// `Test/HalfBlocks` (HalfBlocks.shader)
-#[allow(non_snake_case, non_camel_case_types, dead_code, clippy::all)]
+#[allow(non_snake_case, non_camel_case_types, non_upper_case_globals, dead_code, clippy::all)]
 pub mod test_halfblocks {
     pub const NAME: &str = "Test/HalfBlocks";
 
