@@ -7,6 +7,7 @@
 
 mod compute;
 mod layout;
+mod material;
 mod overrides;
 mod pipelines;
 mod state;
@@ -14,6 +15,7 @@ mod uniforms;
 
 pub use compute::{Kernel, KernelRequest};
 pub use layout::{PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
+pub use material::{MATERIAL_GROUP, MaterialBindGroup, MaterialTextures};
 pub use pipelines::{PipelineRequest, Reload, Runtime, Targets, UsageLog};
 pub use state::{
     MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state,

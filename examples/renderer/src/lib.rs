@@ -192,6 +192,23 @@ pub fn library() -> Result<Library, String> {
         .map_err(|e| e.to_string())
 }
 
+/// The scene's textures for materials: every texture property is white (the scene's materials
+/// use the default `"white"`), sampled by one sampler.
+struct SceneTextures<'a> {
+    white: &'a wgpu::TextureView,
+    sampler: &'a wgpu::Sampler,
+}
+
+impl kiln::runtime::MaterialTextures for SceneTextures<'_> {
+    fn texture(&self, _property: &str, texture: &str) -> Option<&wgpu::TextureView> {
+        (texture == "white").then_some(self.white)
+    }
+
+    fn sampler(&self, _property: &str) -> Option<&wgpu::Sampler> {
+        Some(self.sampler)
+    }
+}
+
 /// The attachments the scene renders to.
 pub fn targets() -> Targets {
     Targets {
@@ -256,6 +273,7 @@ pub fn render_frames(
     );
     let white_view = white.create_view(&Default::default());
     let sampler = device.create_sampler(&wgpu::SamplerDescriptor::default());
+    let textures = SceneTextures { white: &white_view, sampler: &sampler };
 
     // Everything a binding of the pass may name, by name.
     let per_frame = lit::PerFrame {
@@ -357,12 +375,11 @@ pub fn render_frames(
             overrides: &[],
         };
         let pipeline = runtime.pipeline(&request).map_err(|e| e.to_string())?;
-        // The material's block from its values, at the manifest's offsets: whatever the
-        // program declares in it (`tests/render.rs` checks it against the generated struct).
-        let material = runtime
-            .library()
-            .material_uniform(&material, 0, "UnityPerMaterial")
-            .map_err(|e| e.to_string())?;
+        // The material's group: its uniform block from its values at the manifest's offsets
+        // (`tests/render.rs` checks the bytes against the generated struct), its texture and
+        // sampler from `textures`.
+        let material_group =
+            runtime.material_bind_group(&material, 0, &textures).map_err(|e| e.to_string())?;
         let (p, s) = (object.position, object.radius);
         let draw = lit::PerDraw {
             unity_ObjectToWorld: mat_f32(&[
@@ -378,10 +395,8 @@ pub fn render_frames(
                 [-p[0] / s, -p[1] / s, -p[2] / s, 1.0],
             ]),
         };
-        let material_buffer = uniform(&material);
         let draw_buffer = uniform(bytemuck::bytes_of(&draw));
-        let groups =
-            [bind(1, &[("UnityPerMaterial", &material_buffer)]), bind(2, &[("UnityPerDraw", &draw_buffer)])];
+        let groups = [material_group.bind_group, bind(2, &[("UnityPerDraw", &draw_buffer)])];
         draws.push((pipeline, groups));
     }
 

@@ -112,3 +112,74 @@ fn material_uniform_bytes_are_the_generated_structs() {
     }
     assert!(library.materials().len() >= 10);
 }
+
+/// A texture provider for the tests: one texture for every property, or none.
+struct Textures {
+    view: Option<wgpu::TextureView>,
+    sampler: wgpu::Sampler,
+}
+
+impl kiln::runtime::MaterialTextures for Textures {
+    fn texture(&self, _property: &str, _texture: &str) -> Option<&wgpu::TextureView> {
+        self.view.as_ref()
+    }
+
+    fn sampler(&self, _property: &str) -> Option<&wgpu::Sampler> {
+        Some(&self.sampler)
+    }
+}
+
+/// A material's bind group holds its values, follows them when they change, and names a
+/// texture the renderer does not have.
+#[test]
+fn a_material_bind_group_follows_its_material() {
+    let Ok((device, queue, _)) = device() else {
+        assert!(std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"), "KILN_REQUIRE_GPU=1 but no device");
+        return;
+    };
+    let mut runtime = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
+    let texture = device.create_texture(&wgpu::TextureDescriptor {
+        label: None,
+        size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format: wgpu::TextureFormat::Rgba8Unorm,
+        usage: wgpu::TextureUsages::TEXTURE_BINDING,
+        view_formats: &[],
+    });
+    let textures = Textures {
+        view: Some(texture.create_view(&Default::default())),
+        sampler: device.create_sampler(&Default::default()),
+    };
+    let material = runtime.library().material("object00").expect("a scene material").clone();
+    let group = runtime.material_bind_group(&material, 0, &textures).expect("binds");
+    assert_eq!(group.group, kiln::runtime::MATERIAL_GROUP);
+    let read = |buffer: &wgpu::Buffer| {
+        let size = buffer.size();
+        let staging = device.create_buffer(&wgpu::BufferDescriptor {
+            label: None,
+            size,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let mut encoder = device.create_command_encoder(&Default::default());
+        encoder.copy_buffer_to_buffer(buffer, 0, &staging, 0, size);
+        queue.submit([encoder.finish()]);
+        staging.map_async(wgpu::MapMode::Read, .., |result| result.expect("maps"));
+        device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
+        staging.get_mapped_range(..).expect("mapped").to_vec()
+    };
+    let buffer = group.buffer("UnityPerMaterial").expect("the material block");
+    let uniform = |m| runtime.library().material_uniform(m, 0, "UnityPerMaterial").expect("fills");
+    assert_eq!(read(buffer), uniform(&material));
+    let mut changed = material.clone();
+    changed.values.insert("_Metallic".into(), serde_json::json!(0.75));
+    group.update(runtime.library(), &queue, &changed).expect("updates");
+    assert_eq!(read(buffer), uniform(&changed));
+    assert_ne!(uniform(&changed), uniform(&material));
+    // No texture for a texture property: an error naming it.
+    let none = Textures { view: None, sampler: device.create_sampler(&Default::default()) };
+    let error = runtime.material_bind_group(&material, 0, &none).expect_err("no texture").to_string();
+    assert!(error.contains("no texture for `_BaseMap` (`white`)"), "{error}");
+}
