@@ -17,6 +17,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0007", "the command cannot run"),
     ("K0008", "shader no material uses"),
     ("K0009", "project without shaders"),
+    ("K0010", "resource named in two bind groups"),
     ("K0101", "unterminated string"),
     ("K0102", "unterminated block comment"),
     ("K0103", "program block never closed"),

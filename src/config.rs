@@ -39,6 +39,19 @@ pub struct ProjectConfig {
     /// The variants of each compute shader to build (`[compute.NAME]`), which no material
     /// selects (docs/compute.md).
     pub compute: std::collections::BTreeMap<String, ComputeConfig>,
+    /// Resource names the project binds per frame or per object, besides kiln's own
+    /// (`[bind_groups]`, docs/project.md).
+    pub bind_groups: BindGroupsConfig,
+}
+
+/// `[bind_groups]`: names added to the per-frame (0) and per-object (2) groups.
+#[derive(Debug, Clone, Default, PartialEq, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct BindGroupsConfig {
+    /// Bound once per frame, in group 0 (kiln's own: `UnityPerFrame`, `_CustomLight`).
+    pub per_frame: Vec<toml::Spanned<String>>,
+    /// Bound once per object, in group 2 (kiln's own: `UnityPerDraw`).
+    pub per_object: Vec<toml::Spanned<String>>,
 }
 
 /// `[compute.NAME]`: which variants of a compute shader are built.
@@ -112,6 +125,7 @@ impl Default for ProjectConfig {
             variant_logs: Vec::new(),
             cache_dir: None,
             compute: Default::default(),
+            bind_groups: Default::default(),
         }
     }
 }
@@ -156,4 +170,5 @@ const FIELDS: &[&str] = &[
     "variant_logs",
     "cache_dir",
     "compute",
+    "bind_groups",
 ];

@@ -263,6 +263,8 @@ pub struct Workspace {
     pub cache_dir: Option<PathBuf>,
     /// The compute shader variants `kiln.toml` lists (`[compute.NAME] variants`).
     pub listed_variants: Vec<crate::catalog::ListedVariant>,
+    /// The names `kiln.toml` adds to the per-frame and per-object bind groups.
+    pub groups: crate::compile::bind::GroupNames,
 }
 
 impl Workspace {
@@ -286,6 +288,29 @@ impl Workspace {
             listed_variants: self.listed_variants.clone(),
         }
     }
+}
+
+/// Adds `[bind_groups]`'s names to `groups`; a name in both groups is an error at its second
+/// place (a resource has one update frequency).
+fn bind_group_names(
+    config: &crate::config::BindGroupsConfig,
+    file: FileId,
+    groups: &mut crate::compile::bind::GroupNames,
+) -> Vec<Diagnostic> {
+    let mut diagnostics = Vec::new();
+    for name in &config.per_object {
+        if let Some(first) = config.per_frame.iter().find(|f| f.get_ref() == name.get_ref()) {
+            diagnostics.push(
+                Diagnostic::error("K0010", format!("`{}` is named in two bind groups", name.get_ref()))
+                    .at(Span::new(file, name.span()), "bound per object here")
+                    .label(Span::new(file, first.span()), "bound per frame here")
+                    .help("a resource is updated at one frequency: keep it in one list"),
+            );
+        }
+    }
+    groups.per_frame.extend(config.per_frame.iter().map(|n| n.get_ref().clone()));
+    groups.per_object.extend(config.per_object.iter().map(|n| n.get_ref().clone()));
+    diagnostics
 }
 
 /// Gathers the shaders, materials and include settings of `paths` (see [`Workspace`]); a
@@ -322,6 +347,7 @@ pub fn open_workspace(
                     global.iter().map(|k| Spanned::new(k.get_ref().clone(), Span::new(file, k.span())));
                 workspace.global_keywords.get_or_insert_with(Vec::new).extend(spanned);
             }
+            diagnostics.extend(bind_group_names(&config.bind_groups, file, &mut workspace.groups));
             for (name, compute) in &config.compute {
                 match &compute.variants {
                     crate::config::ComputeVariants::All => workspace.always_include.push(name.clone()),
@@ -622,6 +648,7 @@ fn load_given(store: &mut SourceStore, paths: &[PathBuf], mode: &BuildMode) -> R
         part: Part::Whole,
         cache_dir: workspace.shared_cache_dir(mode.cache_dir.clone()),
         given_files: store.files_read().count(),
+        groups: workspace.groups.clone(),
     };
     Ok(Given { workspace, includes, input, diagnostics, options })
 }

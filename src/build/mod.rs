@@ -90,6 +90,8 @@ pub struct BuildOptions {
     /// file, shaders, materials, variant logs): the rest were read through includes. A no-op
     /// needs the same files given, not merely the same files read.
     pub given_files: usize,
+    /// The resource names the project adds to the per-frame and per-object bind groups.
+    pub groups: crate::compile::bind::GroupNames,
 }
 
 impl BuildOptions {
@@ -108,6 +110,7 @@ impl BuildOptions {
             part: Part::Whole,
             cache_dir: None,
             given_files: 0,
+            groups: Default::default(),
         }
     }
 }

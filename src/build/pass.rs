@@ -107,7 +107,7 @@ pub(super) fn build_pass(
     {
         shared::publish_layouts(dir, &key, &declared_by_text(&jobs, &fronts));
     }
-    let layout = lay_out(&jobs, &fronts, store, &mut diagnostics);
+    let layout = lay_out(&jobs, &fronts, store, &options.groups, &mut diagnostics);
     let requests: usize = jobs.iter().map(|j| j.requests).sum();
     let served = AtomicUsize::new(0);
     let outcomes: Vec<StageOutcome> = jobs
@@ -230,6 +230,7 @@ fn lay_out(
     members: &[Job],
     fronts: &[Front],
     store: &SourceStore,
+    groups: &bind::GroupNames,
     diagnostics: &mut Vec<Diagnostic>,
 ) -> Option<PassLayout> {
     let mut failed = false;
@@ -247,7 +248,7 @@ fn lay_out(
             }
         }
     }
-    let (layout, clashes) = bind::layout(&declared);
+    let (layout, clashes) = bind::layout(&declared, groups);
     for (m, d, message) in clashes {
         let job = &members[owners[m]];
         let range = declared[m][d].range;

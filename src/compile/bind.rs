@@ -21,11 +21,21 @@ pub const PER_OBJECT: u32 = 2;
 const PER_FRAME_NAMES: [&str; 2] = ["UnityPerFrame", "_CustomLight"];
 const PER_OBJECT_NAMES: [&str; 1] = ["UnityPerDraw"];
 
+/// The names a project adds to the per-frame and per-object groups (`[bind_groups]` in
+/// `kiln.toml`), besides kiln's own.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct GroupNames {
+    /// Resources bound once per frame (group 0).
+    pub per_frame: Vec<String>,
+    /// Resources bound once per object (group 2).
+    pub per_object: Vec<String>,
+}
+
 /// The group a resource without an explicit `@group` goes to.
-pub fn group_for(name: &str) -> u32 {
-    if PER_FRAME_NAMES.contains(&name) {
+pub fn group_for(name: &str, names: &GroupNames) -> u32 {
+    if PER_FRAME_NAMES.contains(&name) || names.per_frame.iter().any(|n| n == name) {
         PER_FRAME
-    } else if PER_OBJECT_NAMES.contains(&name) {
+    } else if PER_OBJECT_NAMES.contains(&name) || names.per_object.iter().any(|n| n == name) {
         PER_OBJECT
     } else {
         PER_MATERIAL
@@ -121,7 +131,7 @@ pub struct PassLayout {
 
 /// Lays out a pass from the resources of all its modules (in variant order). Explicit bindings
 /// are kept; the rest are numbered in order of first appearance within their group.
-pub fn layout(modules: &[&[Declared]]) -> (PassLayout, Vec<(usize, usize, String)>) {
+pub fn layout(modules: &[&[Declared]], names: &GroupNames) -> (PassLayout, Vec<(usize, usize, String)>) {
     let mut explicit: BTreeMap<String, (u32, u32)> = BTreeMap::new();
     let mut owner: BTreeMap<(u32, u32), String> = BTreeMap::new();
     let mut clashes = Vec::new();
@@ -165,7 +175,7 @@ pub fn layout(modules: &[&[Declared]]) -> (PassLayout, Vec<(usize, usize, String
         if layout.slots.contains_key(&name) {
             continue;
         }
-        let group = group_for(&name);
+        let group = group_for(&name, names);
         let binding = (0..).find(|b| !owner.contains_key(&(group, *b))).unwrap_or(0);
         owner.insert((group, binding), name.clone());
         layout.slots.insert(name, (group, binding));

@@ -509,3 +509,24 @@ fn a_shader_copied_under_another_name_is_compiled_once() {
     assert_eq!(hashes(lit), hashes(copy));
     assert!(!hashes(copy).is_empty());
 }
+
+#[test]
+fn kiln_toml_names_the_resources_bound_per_frame_and_per_object() {
+    let output = crate::support::built_fixture("bind_groups");
+    let manifest = crate::support::verified_manifest(output.path());
+    let pass = &manifest.shaders[0].passes[0];
+    let group_of =
+        |name: &str| pass.layout.iter().find(|g| g.entries.iter().any(|e| e.name == name)).map(|g| g.group);
+    assert_eq!(group_of("Fog"), Some(0), "named per frame");
+    assert_eq!(group_of("ObjectTint"), Some(2), "named per object");
+    assert_eq!(group_of("UnityPerMaterial"), Some(1), "the rest is the material's");
+    // One name in both lists: refused where it is written the second time.
+    let mut store = SourceStore::new();
+    let path = PathBuf::from("fixtures/bad/bind_groups");
+    let (_, diagnostics) =
+        build_project(&mut store, &[path], &BuildMode { write: false, ..BuildMode::default() }, &|_, _| {})
+            .expect("exists");
+    assert!(has_errors(&diagnostics));
+    expect_file![root().join("fixtures/bad/bind_groups/kiln.stderr")]
+        .assert_eq(&render_plain(&store, &diagnostics));
+}
