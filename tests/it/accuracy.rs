@@ -53,7 +53,7 @@ fn the_f16_form_keeps_three_digits_on_every_hard_case() {
     let Some((rows, f16)) = rows() else { return };
     let f16 = *f16;
     if !f16 {
-        println!("skipping the f16 check: the adapter has no shader-f16");
+        crate::support::skipped("the f16 check: the adapter has no shader-f16");
         return;
     }
     for row in rows.iter().filter(|r| r.formulation == "stable f16") {

@@ -59,7 +59,7 @@ pub fn assert_pinned(fixture: &Path, store: &SourceStore, diagnostics: &[Diagnos
     expect_test::expect_file![root().join(fixture.with_extension("stderr"))].assert_eq(&rendered);
 }
 
-/// A GPU device (lavapipe in CI), or `None` with the reason printed. `KILN_REQUIRE_GPU=1` (set
+/// A GPU device (lavapipe in CI), or `None` with the reason reported. `KILN_REQUIRE_GPU=1` (set
 /// by CI) makes a missing adapter a failure instead.
 pub fn gpu(test: &str) -> Option<kiln::accuracy::gpu::Gpu> {
     match kiln::accuracy::gpu::device() {
@@ -69,10 +69,20 @@ pub fn gpu(test: &str) -> Option<kiln::accuracy::gpu::Gpu> {
                 std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
                 "KILN_REQUIRE_GPU=1 but {reason}"
             );
-            println!("skipping {test}: {reason}; install mesa-vulkan-drivers for lavapipe");
+            skipped(&format!("{test}: {reason}; install mesa-vulkan-drivers for lavapipe"));
             None
         }
     }
+}
+
+/// Reports a skipped check where it stays visible: straight to the process's stderr, which the
+/// test harness does not capture (a passing test's `println!` is hidden), numbered so that the
+/// run shows how many were skipped.
+pub fn skipped(what: &str) {
+    use std::io::Write as _;
+    static SKIPPED: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = SKIPPED.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+    let _ = writeln!(std::io::stderr(), "SKIPPED ({n} in this run so far) {what}");
 }
 
 /// The manifest in `output`, after checking that every module it names is in its pack, whole,

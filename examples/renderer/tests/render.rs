@@ -1,6 +1,8 @@
 //! The renderer on a real device (lavapipe in CI) against the CPU f64 reference, and the build
 //! following the scene: a material's preset decides which variants exist.
 
+mod common;
+
 use kiln_renderer::{Scene, compare, device, reference, render};
 use std::collections::BTreeSet;
 use std::path::Path;
@@ -19,7 +21,7 @@ fn the_scene_matches_the_f64_reference() {
                 std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
                 "KILN_REQUIRE_GPU=1 but {reason}"
             );
-            println!("skipping the render test: {reason}");
+            common::skipped(&format!("the render test: {reason}"));
             return;
         }
     };

@@ -4,6 +4,8 @@
 //! value must be where the Rust side put it: the generated layout, the reflected layout and the
 //! GPU's agree.
 
+mod common;
+
 use bytemuck::Zeroable;
 use kiln::manifest::Manifest;
 use kiln::reflect::Member;
@@ -154,7 +156,7 @@ fn gpu(test: &str) -> Option<(wgpu::Device, wgpu::Queue, String)> {
                 std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
                 "KILN_REQUIRE_GPU=1 but {reason}"
             );
-            println!("skipping {test}: {reason}");
+            common::skipped(&format!("{test}: {reason}"));
             None
         }
     }
@@ -284,7 +286,7 @@ fn generated_structs_put_every_value_where_the_gpu_reads_it() {
 fn generated_structs_with_f16_members_put_every_value_where_the_gpu_reads_it() {
     let Some((device, queue, adapter)) = gpu("the f16 uniform block round trip") else { return };
     if !device.features().contains(wgpu::Features::SHADER_F16) {
-        println!("skipping the f16 round trip: {adapter} has no shader-f16");
+        common::skipped(&format!("the f16 round trip: {adapter} has no shader-f16"));
         return;
     }
     let (halves, count) = filled_halves();
