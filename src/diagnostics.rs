@@ -144,9 +144,61 @@ pub fn has_errors(diagnostics: &[Diagnostic]) -> bool {
 
 /// Drops repeats of a diagnostic (same code, message and primary span), keeping the first. Shared
 /// include blocks and files, and variants of one pass, would otherwise report one mistake often.
+/// The variants a repeat was found in are added to the first's note (`in variants `A` and `B` of
+/// ...`), so one diagnostic says every variant a cause occurs in.
 pub fn dedup(diagnostics: &mut Vec<Diagnostic>) {
-    let mut seen = std::collections::HashSet::new();
-    diagnostics.retain(|d| seen.insert((d.code, d.message.clone(), d.primary.as_ref().map(|l| l.span))));
+    type Key = (&'static str, String, Option<crate::source::Span>);
+    let key = |d: &Diagnostic| -> Key { (d.code, d.message.clone(), d.primary.as_ref().map(|l| l.span)) };
+    let mut first: std::collections::HashMap<Key, usize> = std::collections::HashMap::new();
+    let mut variants: Vec<Vec<String>> = vec![Vec::new(); diagnostics.len()];
+    let mut keep = vec![true; diagnostics.len()];
+    for (i, d) in diagnostics.iter().enumerate() {
+        match first.get(&key(d)) {
+            None => {
+                first.insert(key(d), i);
+            }
+            Some(&f) => {
+                keep[i] = false;
+                // Another variant of the same place and stage: named in the first's note.
+                if let (Some((v, rest)), Some((first_v, first_rest))) =
+                    (variant_note(&d.notes), variant_note(&diagnostics[f].notes))
+                    && rest == first_rest
+                    && v != first_v
+                    && !variants[f].contains(&v)
+                {
+                    variants[f].push(v);
+                }
+            }
+        }
+    }
+    for (i, more) in variants.iter().enumerate().filter(|(_, more)| !more.is_empty()) {
+        let Some((v, rest)) = variant_note(&diagnostics[i].notes) else { continue };
+        let names: Vec<String> =
+            std::iter::once(v).chain(more.iter().cloned()).map(|n| format!("`{n}`")).collect();
+        const SHOWN: usize = 6;
+        let shown = if names.len() > SHOWN {
+            format!("{} and {} more", names[..SHOWN].join(", "), names.len() - SHOWN)
+        } else {
+            let (last, rest_names) = names.split_last().expect("two at least");
+            format!("{} and {last}", rest_names.join(", "))
+        };
+        let note = format!("in {} variants {shown}{rest}", names.len());
+        if let Some(slot) = diagnostics[i].notes.iter_mut().find(|n| n.starts_with("in variant `")) {
+            *slot = note;
+        }
+    }
+    let mut index = 0;
+    diagnostics.retain(|_| {
+        index += 1;
+        keep[index - 1]
+    });
+}
+
+/// A note `in variant `X` of ...`: the variant and what follows it (` of `S` pass 0, ...`).
+fn variant_note(notes: &[String]) -> Option<(String, String)> {
+    let note = notes.iter().find(|n| n.starts_with("in variant `"))?;
+    let (variant, rest) = note.strip_prefix("in variant `")?.split_once('`')?;
+    Some((variant.to_string(), rest.to_string()))
 }
 
 /// Strict mode: every warning becomes an error (with the same code).
@@ -296,4 +348,29 @@ pub fn to_json(store: &SourceStore, diagnostics: &[Diagnostic]) -> Vec<JsonDiagn
             help: d.help.clone(),
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn in_variant(variant: &str, stage: &str) -> Diagnostic {
+        Diagnostic::error("K0401", "the same mistake")
+            .note(format!("in variant `{variant}` of `S` pass 0, {stage} stage"))
+    }
+
+    #[test]
+    fn repeats_become_one_diagnostic_naming_every_variant_of_the_same_stage() {
+        let mut found =
+            vec![in_variant("A", "fragment"), in_variant("B", "fragment"), in_variant("A", "vertex")];
+        dedup(&mut found);
+        assert_eq!(found.len(), 1, "one cause");
+        assert_eq!(found[0].notes, ["in 2 variants `A` and `B` of `S` pass 0, fragment stage"]);
+        let mut many: Vec<Diagnostic> = (0..9).map(|i| in_variant(&format!("V{i}"), "fragment")).collect();
+        dedup(&mut many);
+        assert_eq!(
+            many[0].notes,
+            ["in 9 variants `V0`, `V1`, `V2`, `V3`, `V4`, `V5` and 3 more of `S` pass 0, fragment stage"]
+        );
+    }
 }

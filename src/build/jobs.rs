@@ -22,8 +22,11 @@ pub(super) struct Job<'a> {
     pub map: SourceMap,
     pub text_hash: String,
     pub allowed: Allowed,
-    /// Which variant asked for it first, for diagnostics.
+    /// Which variant asked for it first, and the stage, for diagnostics.
     pub context: String,
+    /// Which variant asked for it first, for diagnostics about its whole text (a parse error
+    /// is the text's, whichever stage parsed it first).
+    pub variant: String,
     /// How many stage requests of the pass's variants it serves (for progress).
     pub requests: usize,
 }
@@ -57,7 +60,15 @@ struct Request<'a> {
     entry: &'a crate::source::Spanned<String>,
     keywords: Vec<String>,
     allowed: Allowed,
-    context: String,
+    variant: String,
+    stage_note: String,
+}
+
+impl Request<'_> {
+    /// `in variant `X` of `S` pass N, fragment stage`: where a stage's diagnostics arise.
+    fn context(&self) -> String {
+        format!("{}, {}", self.variant, self.stage_note)
+    }
 }
 
 /// The distinct stage texts of a pass's variants: each (stage, stage keywords, target) is
@@ -97,12 +108,11 @@ pub(super) fn pass_jobs<'a>(
                     entry,
                     keywords: program.keywords.keywords(bits).map(str::to_string).collect(),
                     allowed: allowed.clone(),
-                    context: format!(
-                        "in variant `{shown}` of `{}` pass {}, {} stage{kernel}",
-                        shader.shader.name.value,
-                        pass.index,
-                        stage.name()
+                    variant: format!(
+                        "in variant `{shown}` of `{}` pass {}",
+                        shader.shader.name.value, pass.index
                     ),
+                    stage_note: format!("{} stage{kernel}", stage.name()),
                 });
                 requests.len() - 1
             }))
@@ -123,7 +133,7 @@ pub(super) fn pass_jobs<'a>(
     let mut job_of_request: Vec<Option<usize>> = Vec::with_capacity(requests.len());
     for (request, (out, text_hash)) in requests.into_iter().zip(outputs) {
         let failed = diagnostics::has_errors(&out.diagnostics);
-        diagnostics.extend(out.diagnostics.into_iter().map(|d| d.note(request.context.clone())));
+        diagnostics.extend(out.diagnostics.into_iter().map(|d| d.note(request.context())));
         if failed {
             job_of_request.push(None);
             continue;
@@ -137,8 +147,9 @@ pub(super) fn pass_jobs<'a>(
                 text: out.text,
                 map: out.source_map,
                 text_hash,
+                context: request.context(),
                 allowed: request.allowed,
-                context: request.context,
+                variant: request.variant,
                 requests: 0,
             });
             jobs.len() - 1

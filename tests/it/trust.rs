@@ -73,7 +73,9 @@ fn a_back_end_failing_on_a_validated_module_is_reported_at_its_entry_point() {
     assert_eq!(run.status.code(), Some(1), "{stderr}");
     assert!(stderr.contains("error[K0409]: the WGSL writer failed: fault injected"), "{stderr}");
     assert!(stderr.contains("naga validated the module"), "{stderr}");
-    assert!(stderr.contains("in variant `") && stderr.contains("fragment stage"), "{stderr}");
+    // Once, naming every variant the failure occurs in (the bundled Lit pass has three).
+    assert_eq!(stderr.matches("error[K0409]").count(), 1, "{stderr}");
+    assert!(stderr.contains("in 3 variants `") && stderr.contains("fragment stage"), "{stderr}");
 }
 
 #[test]
