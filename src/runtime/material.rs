@@ -66,13 +66,13 @@ impl Runtime {
         let shader = material.shader.as_str();
         let layout = self.pass_facts(shader, pass)?.layout;
         let manifest = self.library.pass(shader, pass)?;
-        let missing = |what: String| RuntimeError::Layout { shader: shader.to_string(), pass, message: what };
+        let layout_error =
+            |message: String| RuntimeError::Layout { shader: shader.to_string(), pass, message };
         let entries =
             manifest.layout.iter().find(|g| g.group == MATERIAL_GROUP).map_or(&[][..], |g| &g.entries[..]);
-        let group_layout = layout
-            .groups
-            .get(MATERIAL_GROUP as usize)
-            .ok_or_else(|| missing(format!("the pass has no bind group {MATERIAL_GROUP} for a material")))?;
+        let group_layout = layout.groups.get(MATERIAL_GROUP as usize).ok_or_else(|| {
+            layout_error(format!("the pass has no bind group {MATERIAL_GROUP} for a material"))
+        })?;
         let mut buffers = Vec::new();
         for entry in entries.iter().filter(|e| matches!(e.resource, Resource::Uniform { .. })) {
             let bytes = self.library.material_uniform(material, pass, &entry.name)?;
@@ -95,21 +95,21 @@ impl Runtime {
                 Resource::Texture { .. } => {
                     let value = material.values.get(&entry.name).and_then(|v| v.as_str()).unwrap_or_default();
                     let view = textures.texture(&entry.name, value);
-                    Some(wgpu::BindingResource::TextureView(
-                        view.ok_or_else(|| missing(format!("no texture for `{}` (`{value}`)", entry.name)))?,
-                    ))
+                    Some(wgpu::BindingResource::TextureView(view.ok_or_else(|| {
+                        layout_error(format!("no texture for `{}` (`{value}`)", entry.name))
+                    })?))
                 }
                 Resource::Sampler { .. } => {
                     let property = entry.name.strip_prefix("sampler").unwrap_or(&entry.name);
                     let sampler = textures.sampler(property);
                     Some(wgpu::BindingResource::Sampler(
-                        sampler.ok_or_else(|| missing(format!("no sampler for `{}`", entry.name)))?,
+                        sampler.ok_or_else(|| layout_error(format!("no sampler for `{}`", entry.name)))?,
                     ))
                 }
                 _ => None,
             };
             let resource = resource.ok_or_else(|| {
-                missing(format!(
+                layout_error(format!(
                     "a material cannot bind `{}` (not a uniform, texture or sampler)",
                     entry.name
                 ))
