@@ -187,11 +187,8 @@ pub fn dedup(diagnostics: &mut Vec<Diagnostic>) {
             *slot = note;
         }
     }
-    let mut index = 0;
-    diagnostics.retain(|_| {
-        index += 1;
-        keep[index - 1]
-    });
+    let mut keep = keep.into_iter();
+    diagnostics.retain(|_| keep.next().unwrap_or(true));
 }
 
 /// A note `in variant `X` of ...`: the variant and what follows it (` of `S` pass 0, ...`).

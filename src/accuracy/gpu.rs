@@ -9,10 +9,14 @@ use crate::build::{BuildOptions, build};
 use crate::catalog::{CatalogInput, ListedVariant, catalog};
 use crate::preprocess::{IncludeConfig, Includes};
 use crate::source::{SourceStore, Span};
+use std::collections::{BTreeMap, HashMap};
 use wgpu::util::DeviceExt;
 
 /// Where each resource of a kernel is bound: name to `(group, binding)`.
-pub type Bindings = std::collections::BTreeMap<String, (u32, u32)>;
+pub type Bindings = BTreeMap<String, (u32, u32)>;
+
+/// A variant's kernels by name: each one's WGSL and bindings.
+pub type Kernels = BTreeMap<String, (String, Bindings)>;
 
 /// The harness's name, as a compute shader file.
 const HARNESS_FILE: &str = "accuracy-harness.compute";
@@ -130,10 +134,10 @@ fn timing_invocations() -> u32 {
         .min(most)
 }
 
-/// The WGSL kiln emits for one kernel of the harness's variant with these keywords, and where
-/// its resources are bound: the variant is built as a project's compute shader is (listed, into
-/// a scratch output folder), and read back from the build's manifest and packs.
-pub fn harness_wgsl(keywords: &[&str], kernel: &str) -> Result<(String, Bindings), String> {
+/// The WGSL kiln emits for each kernel of the harness's variant with these keywords, and where
+/// its resources are bound, by kernel name: the variant is built once, as a project's compute
+/// shader is (listed, into a scratch output folder), and read back from the manifest and packs.
+pub fn harness_kernels(keywords: &[&str]) -> Result<Kernels, String> {
     let mut store = SourceStore::new();
     let file = store.add(HARNESS_FILE, HARNESS);
     let mut includes = Includes::new(IncludeConfig::new(Vec::new()));
@@ -153,27 +157,29 @@ pub fn harness_wgsl(keywords: &[&str], kernel: &str) -> Result<(String, Bindings
     };
     let result = build(&store, &includes, &catalog, &options, &|_, _| {});
     problems.extend(result.diagnostics);
-    let read = || -> Result<(String, Bindings), String> {
+    let read = || -> Result<Kernels, String> {
         if crate::diagnostics::has_errors(&problems) {
             return Err(crate::diagnostics::render_plain(&store, &problems));
         }
         let manifest = result.manifest.as_ref().ok_or("the harness built nothing")?;
         let pass = manifest.passes().next().ok_or("the harness built no pass")?;
         let variant = pass.variants.first().ok_or("the harness built no variant")?;
-        let index = pass.kernels.iter().position(|k| k == kernel).ok_or(format!("no kernel `{kernel}`"))?;
-        let stage =
-            variant.kernels[index].map(|m| pass.stage(m)).ok_or(format!("`{kernel}` was not built"))?;
-        let bytes = stage.wgsl().ok_or("no WGSL")?.read(&scratch).map_err(|e| e.to_string())?;
-        let wgsl = String::from_utf8(bytes).map_err(|e| e.to_string())?;
-        let used = |g: u32, b: u32| stage.interface.bindings.contains(&[g, b]);
-        let bound = pass
-            .layout
-            .iter()
-            .flat_map(|group| group.entries.iter().map(move |e| (group.group, e)))
-            .filter(|(group, e)| used(*group, e.binding))
-            .map(|(group, e)| (e.name.clone(), (group, e.binding)))
-            .collect();
-        Ok((wgsl, bound))
+        let mut kernels = BTreeMap::new();
+        for (kernel, module) in pass.kernels.iter().zip(&variant.kernels) {
+            let stage = module.map(|m| pass.stage(m)).ok_or(format!("`{kernel}` was not built"))?;
+            let bytes = stage.wgsl().ok_or("no WGSL")?.read(&scratch).map_err(|e| e.to_string())?;
+            let wgsl = String::from_utf8(bytes).map_err(|e| e.to_string())?;
+            let used = |g: u32, b: u32| stage.interface.bindings.contains(&[g, b]);
+            let bound = pass
+                .layout
+                .iter()
+                .flat_map(|group| group.entries.iter().map(move |e| (group.group, e)))
+                .filter(|(group, e)| used(*group, e.binding))
+                .map(|(group, e)| (e.name.clone(), (group, e.binding)))
+                .collect();
+            kernels.insert(kernel.clone(), (wgsl, bound));
+        }
+        Ok(kernels)
     };
     let found = read();
     let _ = std::fs::remove_dir_all(&scratch);
@@ -229,11 +235,21 @@ struct Harness<'a> {
     device: &'a wgpu::Device,
     queue: &'a wgpu::Queue,
     timestamps: bool,
+    /// Each variant's kernels, built once (a formulation's evaluation and timing kernels).
+    built: std::cell::RefCell<HashMap<Vec<String>, Kernels>>,
 }
 
 impl Harness<'_> {
     fn pipeline(&self, keywords: &[&str], entry: &str) -> Result<(wgpu::ComputePipeline, Bindings), String> {
-        let (wgsl, bound) = harness_wgsl(keywords, entry)?;
+        let variant: Vec<String> = keywords.iter().map(|k| k.to_string()).collect();
+        if !self.built.borrow().contains_key(&variant) {
+            let kernels = harness_kernels(keywords)?;
+            self.built.borrow_mut().insert(variant.clone(), kernels);
+        }
+        let (wgsl, bound) = self.built.borrow()[&variant]
+            .get(entry)
+            .cloned()
+            .ok_or(format!("the harness has no kernel `{entry}`"))?;
         let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some(entry),
             source: wgpu::ShaderSource::Wgsl(wgsl.into()),
@@ -444,7 +460,12 @@ pub fn device() -> Result<Gpu, String> {
 /// Every formulation on every hard-case set, and the timings. The last value says how the times
 /// were taken.
 pub fn run(gpu: &Gpu) -> Result<(Vec<Row>, Vec<Timing>, String), String> {
-    let harness = Harness { device: &gpu.device, queue: &gpu.queue, timestamps: gpu.timestamps };
+    let harness = Harness {
+        device: &gpu.device,
+        queue: &gpu.queue,
+        timestamps: gpu.timestamps,
+        built: Default::default(),
+    };
     let formulations: Vec<Formulation> =
         Formulation::ALL.into_iter().filter(|f| gpu.f16 || !f.needs_f16()).collect();
     let sets = hard_cases();

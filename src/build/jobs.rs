@@ -22,16 +22,19 @@ pub(super) struct Job<'a> {
     pub map: SourceMap,
     pub text_hash: String,
     pub allowed: Allowed,
-    /// Which variant asked for it first, and the stage, for diagnostics.
-    pub context: String,
     /// Which variant asked for it first, for diagnostics about its whole text (a parse error
-    /// is the text's, whichever stage parsed it first).
+    /// is the text's, whichever stage parsed it first); [`Job::context`] adds the stage.
     pub variant: String,
     /// How many stage requests of the pass's variants it serves (for progress).
     pub requests: usize,
 }
 
 impl Job<'_> {
+    /// `in variant `X` of `S` pass N, fragment stage`: where a stage's diagnostics arise.
+    pub(super) fn context(&self) -> String {
+        stage_context(&self.variant, self.stage, self.entry)
+    }
+
     /// What the resources a job's module reaches depend on: its text, stage and entry point.
     pub(super) fn front_key(&self) -> String {
         format!("{} {} {}", self.text_hash, self.stage.name(), self.entry)
@@ -60,15 +63,14 @@ struct Request<'a> {
     entry: &'a crate::source::Spanned<String>,
     keywords: Vec<String>,
     allowed: Allowed,
+    /// `in variant `X` of `S` pass N`.
     variant: String,
-    stage_note: String,
 }
 
-impl Request<'_> {
-    /// `in variant `X` of `S` pass N, fragment stage`: where a stage's diagnostics arise.
-    fn context(&self) -> String {
-        format!("{}, {}", self.variant, self.stage_note)
-    }
+/// A variant's note with the stage (and a compute stage's kernel) added.
+fn stage_context(variant: &str, stage: Stage, entry: &str) -> String {
+    let kernel = if stage == Stage::Compute { format!(" (kernel `{entry}`)") } else { String::new() };
+    format!("{variant}, {} stage{kernel}", stage.name())
 }
 
 /// The distinct stage texts of a pass's variants: each (stage, stage keywords, target) is
@@ -98,11 +100,6 @@ pub(super) fn pass_jobs<'a>(
             let key = (stage, entry.value.as_str(), bits, allowed.key());
             Some(*request_of.entry(key).or_insert_with(|| {
                 let shown = if all.is_empty() { "(no keywords)".to_string() } else { all.join(" ") };
-                let kernel = if stage == Stage::Compute {
-                    format!(" (kernel `{}`)", entry.value)
-                } else {
-                    String::new()
-                };
                 requests.push(Request {
                     stage,
                     entry,
@@ -112,7 +109,6 @@ pub(super) fn pass_jobs<'a>(
                         "in variant `{shown}` of `{}` pass {}",
                         shader.shader.name.value, pass.index
                     ),
-                    stage_note: format!("{} stage{kernel}", stage.name()),
                 });
                 requests.len() - 1
             }))
@@ -133,7 +129,8 @@ pub(super) fn pass_jobs<'a>(
     let mut job_of_request: Vec<Option<usize>> = Vec::with_capacity(requests.len());
     for (request, (out, text_hash)) in requests.into_iter().zip(outputs) {
         let failed = diagnostics::has_errors(&out.diagnostics);
-        diagnostics.extend(out.diagnostics.into_iter().map(|d| d.note(request.context())));
+        let context = stage_context(&request.variant, request.stage, &request.entry.value);
+        diagnostics.extend(out.diagnostics.into_iter().map(|d| d.note(context.clone())));
         if failed {
             job_of_request.push(None);
             continue;
@@ -147,7 +144,6 @@ pub(super) fn pass_jobs<'a>(
                 text: out.text,
                 map: out.source_map,
                 text_hash,
-                context: request.context(),
                 allowed: request.allowed,
                 variant: request.variant,
                 requests: 0,

@@ -165,7 +165,7 @@ pub(super) fn build_pass(
                 (CachedStage { wgsl, spirv, reflection: module.reflection.clone() }, key)
             }),
             Some(Err(mut error)) => {
-                error.notes.push(job.context.clone());
+                error.notes.push(job.context());
                 diagnostics.push(error);
                 None
             }
@@ -258,7 +258,7 @@ fn lay_out(
         );
         let mut diagnostic = mapper
             .diagnostic_at(diagnostic, vec![(range.0 as usize..range.1 as usize, "declared here".into())]);
-        diagnostic.notes.push(job.context.clone());
+        diagnostic.notes.push(job.context());
         diagnostics.push(diagnostic);
         failed = true;
     }

@@ -514,24 +514,17 @@ fn handles(out: &mut String, shader: &ShaderManifest) {
             "    /// Each {what} of the shader, as the runtime takes it.\n    pub mod {module} {{"
         );
         for name in names {
-            let _ = writeln!(
-                out,
-                "        pub const {}: &str = {name:?};",
-                constant_name(name, module == "kernels")
-            );
+            // A keyword is an identifier already; a kernel is written in upper case.
+            let constant = if module == "kernels" { upper_snake(name) } else { name.to_string() };
+            let _ = writeln!(out, "        pub const {constant}: &str = {name:?};");
         }
         out.push_str("    }\n");
     }
 }
 
-/// A keyword as written (it is an identifier already), a kernel in upper case (`Double` is
-/// `DOUBLE`).
-fn constant_name(name: &str, upper: bool) -> String {
-    if upper {
-        name.chars().map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_uppercase() } else { '_' }).collect()
-    } else {
-        name.to_string()
-    }
+/// A name as a Rust constant's: `Double` is `DOUBLE`.
+fn upper_snake(name: &str) -> String {
+    name.chars().map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_uppercase() } else { '_' }).collect()
 }
 
 /// `NAME_WORKGROUP_SIZE` for each kernel whose variants all have one size.
@@ -544,7 +537,7 @@ fn kernel_constants(out: &mut String, pass: &PassManifest) {
             .filter_map(|m| pass.stage(m).interface.workgroup_size);
         let Some(first) = sizes.next() else { continue };
         if sizes.all(|size| size == first) {
-            let name = constant_name(kernel, true);
+            let name = upper_snake(kernel);
             let _ = writeln!(
                 out,
                 "    /// `{kernel}`'s `@workgroup_size` (pass {}).\n    pub const {name}_WORKGROUP_SIZE: [u32; 3] = {first:?};",

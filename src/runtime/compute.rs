@@ -4,7 +4,7 @@
 
 use super::RuntimeError;
 use super::overrides::{ConstantRequest, stage_constants};
-use super::pipelines::{Runtime, constant_bits, logged_variant, shader_module, wgpu_constants};
+use super::pipelines::{Runtime, constant_bits, logged_variant, shader_module, validated, wgpu_constants};
 use std::sync::Arc;
 
 /// What a dispatch needs a compute pipeline for.
@@ -95,21 +95,20 @@ impl Runtime {
         }
         let module =
             shader_module(&self.device, library, &mut self.modules, shader, &stage).map_err(layout_error)?;
-        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let pipeline = self.device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some(&format!("{shader} kernel {} [{}]", request.kernel, variant.keywords.join(" "))),
-            layout: Some(&facts.layout.pipeline),
-            module: &module,
-            entry_point: Some(request.kernel),
-            compilation_options: wgpu::PipelineCompilationOptions {
-                constants: &wgpu_constants(&constants[0]),
-                ..Default::default()
-            },
-            cache: self.wgpu_cache.as_ref(),
-        });
-        if let Some(error) = pollster::block_on(scope.pop()) {
-            return Err(layout_error(format!("wgpu refused the pipeline: {error}")));
-        }
+        let pipeline = validated(&self.device, |device| {
+            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(&format!("{shader} kernel {} [{}]", request.kernel, variant.keywords.join(" "))),
+                layout: Some(&facts.layout.pipeline),
+                module: &module,
+                entry_point: Some(request.kernel),
+                compilation_options: wgpu::PipelineCompilationOptions {
+                    constants: &wgpu_constants(&constants[0]),
+                    ..Default::default()
+                },
+                cache: self.wgpu_cache.as_ref(),
+            })
+        })
+        .map_err(layout_error)?;
         let pipeline = Arc::new(pipeline);
         self.created += 1;
         self.kernels.insert(key, pipeline.clone());

@@ -3,7 +3,7 @@
 //! what each stage module declares.
 
 use super::RuntimeError;
-use crate::manifest::{PassManifest, StageView};
+use crate::manifest::{KeywordSetManifest, PassManifest, StageView};
 
 /// Each stage's constants (in the order the stages were given), by the key a pipeline sets them
 /// by, sorted.
@@ -48,8 +48,8 @@ pub(super) fn stage_constants(
             });
         }
     }
-    // The keyword each dynamic set has on.
-    let mut on: Vec<&str> = Vec::new();
+    // Each dynamic set with the keyword it has on (the request's, else its default).
+    let mut chosen: Vec<(&KeywordSetManifest, Option<&str>)> = Vec::new();
     for set in request.pass.dynamic_sets() {
         let requested: Vec<&str> =
             request.keywords.iter().copied().filter(|k| set.keywords.iter().any(|s| s == k)).collect();
@@ -62,28 +62,20 @@ pub(super) fn stage_constants(
             });
         }
         let default = || set.keywords.first().filter(|_| !set.keywords.iter().any(|k| k == "_"));
-        if let Some(keyword) = requested.first().copied().or_else(|| default().map(String::as_str)) {
-            on.push(keyword);
-        }
+        chosen.push((set, requested.first().copied().or_else(|| default().map(String::as_str))));
     }
     let mut constants: StageConstants = vec![Vec::new(); stages.len()];
     for (stage, constants) in stages.iter().zip(&mut constants) {
         let Some(stage) = stage else { continue };
         let name = stage.interface.stage.as_str();
         for constant in &stage.interface.overrides {
-            let value = if request.pass.is_dynamic(&constant.name) {
-                let set_stage = request
-                    .pass
-                    .dynamic_sets()
-                    .find(|set| set.keywords.contains(&constant.name))
-                    .map_or("all", |set| set.stage.as_str());
+            let value = match chosen.iter().find(|(set, _)| set.keywords.contains(&constant.name)) {
                 // A `_fragment` keyword keeps its default in the vertex stage, as Unity's does.
-                if set_stage != "all" && set_stage != name {
-                    continue;
+                Some((set, _)) if set.stage != "all" && set.stage != name => continue,
+                Some((_, on)) => Some(f64::from(u8::from(*on == Some(constant.name.as_str())))),
+                None => {
+                    request.overrides.iter().rev().find(|(key, _)| *key == constant.key()).map(|&(_, v)| v)
                 }
-                Some(f64::from(u8::from(on.contains(&constant.name.as_str()))))
-            } else {
-                request.overrides.iter().rev().find(|(key, _)| *key == constant.key()).map(|&(_, v)| v)
             };
             match value {
                 Some(value) => constants.push((constant.key(), value)),

@@ -334,41 +334,40 @@ impl Runtime {
         let buffers = key.vertex_layout.wgpu();
         let [vertex_constants, fragment_constants] = [0, 1].map(|stage| wgpu_constants(&constants[stage]));
         let label = format!("{shader} pass {pass_index} [{}]", variant.keywords.join(" "));
-        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let pipeline = self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(&label),
-            layout: Some(&facts.layout.pipeline),
-            vertex: wgpu::VertexState {
-                module: &vertex_module,
-                entry_point: Some(&vertex_entry),
-                compilation_options: wgpu::PipelineCompilationOptions {
-                    constants: &vertex_constants,
-                    ..Default::default()
+        let pipeline = validated(&self.device, |device| {
+            device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+                label: Some(&label),
+                layout: Some(&facts.layout.pipeline),
+                vertex: wgpu::VertexState {
+                    module: &vertex_module,
+                    entry_point: Some(&vertex_entry),
+                    compilation_options: wgpu::PipelineCompilationOptions {
+                        constants: &vertex_constants,
+                        ..Default::default()
+                    },
+                    buffers: &buffers,
                 },
-                buffers: &buffers,
-            },
-            primitive: key.state.primitive(),
-            depth_stencil: key.targets.depth.map(|format| key.state.depth_stencil(format)),
-            multisample: wgpu::MultisampleState {
-                count: key.targets.samples,
-                mask: !0,
-                alpha_to_coverage_enabled: key.state.alpha_to_coverage,
-            },
-            fragment: fragment_module.as_ref().map(|(module, entry)| wgpu::FragmentState {
-                module,
-                entry_point: Some(entry),
-                compilation_options: wgpu::PipelineCompilationOptions {
-                    constants: &fragment_constants,
-                    ..Default::default()
+                primitive: key.state.primitive(),
+                depth_stencil: key.targets.depth.map(|format| key.state.depth_stencil(format)),
+                multisample: wgpu::MultisampleState {
+                    count: key.targets.samples,
+                    mask: !0,
+                    alpha_to_coverage_enabled: key.state.alpha_to_coverage,
                 },
-                targets: &targets,
-            }),
-            multiview_mask: None,
-            cache: self.wgpu_cache.as_ref(),
-        });
-        if let Some(error) = pollster::block_on(scope.pop()) {
-            return Err(layout_error(format!("wgpu refused the pipeline: {error}")));
-        }
+                fragment: fragment_module.as_ref().map(|(module, entry)| wgpu::FragmentState {
+                    module,
+                    entry_point: Some(entry),
+                    compilation_options: wgpu::PipelineCompilationOptions {
+                        constants: &fragment_constants,
+                        ..Default::default()
+                    },
+                    targets: &targets,
+                }),
+                multiview_mask: None,
+                cache: self.wgpu_cache.as_ref(),
+            })
+        })
+        .map_err(layout_error)?;
         let pipeline = Arc::new(pipeline);
         self.created += 1;
         self.pipelines.insert(key, pipeline.clone());
@@ -445,6 +444,20 @@ impl Runtime {
         self.library = library;
         self.source = Some((output, hash));
         Ok(Reload::Swapped { dropped_pipelines })
+    }
+}
+
+/// What `create` makes, or wgpu's validation error for it (a pipeline wgpu refuses is an error
+/// to return, not a panic in its error handler).
+pub(super) fn validated<T>(
+    device: &wgpu::Device,
+    create: impl FnOnce(&wgpu::Device) -> T,
+) -> Result<T, String> {
+    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let made = create(device);
+    match pollster::block_on(scope.pop()) {
+        Some(error) => Err(format!("wgpu refused the pipeline: {error}")),
+        None => Ok(made),
     }
 }
 

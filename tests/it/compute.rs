@@ -3,19 +3,15 @@
 //! (lavapipe in CI) through `kiln::runtime`, its read-back output checked against the same
 //! computation on the CPU.
 
-use crate::support::{gpu, root};
+use crate::support::{built_fixture, gpu, root};
 use kiln::runtime::{KernelRequest, Runtime};
 use wgpu::util::DeviceExt;
 
 const SHADER: &str = "Scale";
 
-fn built() -> tempfile::TempDir {
-    crate::support::built_fixture("compute")
-}
-
 #[test]
 fn kernels_are_built_and_reflected_per_variant() {
-    let output = built();
+    let output = built_fixture("compute");
     let manifest = crate::support::verified_manifest(output.path());
     let pass = &manifest.shaders.iter().find(|s| s.name == SHADER).expect("built").passes[0];
     assert_eq!(pass.kernels, ["Double", "AddOffset", "Reverse"]);
@@ -144,7 +140,7 @@ fn dispatch_with(
 #[test]
 fn every_kernel_variant_computes_what_the_cpu_computes() {
     let Some(gpu) = gpu("the compute kernels test") else { return };
-    let output = built();
+    let output = built_fixture("compute");
     let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
     // Warmed up ahead of the dispatches: every kernel of both variants, created once.
     let requests: Vec<KernelRequest> = [&[][..], &["_SQUARE"][..]]
@@ -276,11 +272,8 @@ fn the_generated_module_finds_kernels_and_their_workgroup_sizes() {
         assert!(module.contains(line), "the generated module has `{line}`");
     }
     // Compiled and run by cargo: the strict lookup, each kernel's module and size.
-    let krate = out.path().join("crate");
-    crate::support::generated_module_crate(
-        &krate,
-        &module,
-        (&out.path().join("kiln"), "kiln"),
+    crate::support::test_generated_module(
+        out.path(),
         "pub mod shaders;\n\
          #[test]\n\
          fn kernels_of_each_variant() {\n\
@@ -295,12 +288,5 @@ fn the_generated_module_finds_kernels_and_their_workgroup_sizes() {
          \x20       assert!(variant.kernel(\"Dubble\").is_none());\n\
          \x20   }\n\
          }\n",
-    );
-    let run = crate::support::cargo_scratch(&krate, &["test"]);
-    assert!(
-        run.status.success(),
-        "fails:\n{}{}",
-        String::from_utf8_lossy(&run.stdout),
-        String::from_utf8_lossy(&run.stderr)
     );
 }

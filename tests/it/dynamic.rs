@@ -4,7 +4,7 @@
 //! overrides give; usage logs naming them build.
 
 use crate::runtime::draw_pass;
-use crate::support::{gpu, kiln, root};
+use crate::support::{built_fixture, gpu, kiln, root};
 use expect_test::expect_file;
 use kiln::runtime::{Runtime, RuntimeError, UsageLog};
 
@@ -13,13 +13,9 @@ const SHADER: &str = "Test/Dynamic";
 /// What a draw asks for: keywords (beyond the material's) and override values.
 type Ask<'a> = (&'a [&'a str], &'a [(&'a str, f64)]);
 
-fn built() -> tempfile::TempDir {
-    crate::support::built_fixture("dynamic")
-}
-
 #[test]
 fn one_module_serves_every_keyword_value_and_its_overrides_are_reflected() {
-    let output = built();
+    let output = built_fixture("dynamic");
     let manifest = crate::support::verified_manifest(output.path());
     let shader = manifest.shaders.iter().find(|s| s.name == SHADER).expect("built");
     let pass = &shader.passes[0];
@@ -80,11 +76,8 @@ fn the_generated_module_has_typed_overrides_that_compile() {
     assert!(!module.contains("pub _FOG"), "keywords are set through keywords, not overrides");
     assert!(module.contains(r#"dynamic_keywords: &["_TINT_RED", "_TINT_GREEN", "_FOG"],"#));
     // Compiled and run by cargo: the struct's fields have the types a renderer writes.
-    let krate = out.path().join("crate");
-    crate::support::generated_module_crate(
-        &krate,
-        &module,
-        (&out.path().join("kiln"), "kiln"),
+    let krate = crate::support::test_generated_module(
+        out.path(),
         "pub mod shaders;\n\
          pub fn constants() -> [(&'static str, f64); 3] {\n\
          \x20   let o = shaders::test_dynamic::Pass0Overrides { brightness: 0.5f32, ..Default::default() };\n\
@@ -97,14 +90,6 @@ fn the_generated_module_has_typed_overrides_that_compile() {
          \x20   assert!(shaders::test_dynamic::PASS_0.variant(&[_FOG, _TINT_RED]).is_ok());\n\
          \x20   assert_eq!(constants(), [(\"brightness\", 0.5), (\"7\", 0.0), (\"steps\", 1.0)]);\n\
          }\n",
-    );
-    // Its test runs the generated lookup and `constants()`.
-    let run = crate::support::cargo_scratch(&krate, &["test"]);
-    assert!(
-        run.status.success(),
-        "fails:\n{}{}",
-        String::from_utf8_lossy(&run.stdout),
-        String::from_utf8_lossy(&run.stderr)
     );
     // A misspelt keyword constant does not compile: the typo is found before any frame.
     let lib = std::fs::read_to_string(krate.join("src/lib.rs")).expect("lib.rs");
@@ -159,7 +144,7 @@ fn assert_colour(pixel: [u8; 4], expected: [f64; 3], what: &str) {
 #[test]
 fn keyword_values_and_overrides_draw_the_right_pixels_with_one_module() {
     let Some(gpu) = gpu("the dynamic_branch test") else { return };
-    let output = built();
+    let output = built_fixture("dynamic");
     let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
     let log = output.path().join("usage.jsonl");
     runtime.log_usage(UsageLog::new(Some(&log), None).expect("log"));
@@ -217,7 +202,7 @@ fn reflect_shows_overrides_and_takes_dynamic_keywords() {
 #[test]
 fn wrong_keywords_and_override_values_are_refused_with_what_to_do() {
     let Some(gpu) = gpu("the override errors test") else { return };
-    let output = built();
+    let output = built_fixture("dynamic");
     let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
     let plain = runtime.library().material("Plain").expect("built").clone();
     let cases: [Ask; 7] = [

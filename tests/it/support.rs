@@ -235,6 +235,23 @@ pub fn generated_module_crate(krate: &Path, module: &str, packs: (&Path, &str), 
     std::fs::write(krate.join("src/lib.rs"), lib).expect("lib.rs");
 }
 
+/// The generated module of a build script's output folder `out` (`out/kiln_shaders.rs`, packs in
+/// `out/kiln`) in a scratch crate at `out/crate` with `lib` as its `src/lib.rs`, and its tests
+/// run by cargo, which must pass. Returns the crate's folder.
+pub fn test_generated_module(out: &Path, lib: &str) -> PathBuf {
+    let module = std::fs::read_to_string(out.join("kiln_shaders.rs")).expect("generated");
+    let krate = out.join("crate");
+    generated_module_crate(&krate, &module, (&out.join("kiln"), "kiln"), lib);
+    let run = cargo_scratch(&krate, &["test"]);
+    assert!(
+        run.status.success(),
+        "the generated module's tests fail:\n{}{}",
+        String::from_utf8_lossy(&run.stdout),
+        String::from_utf8_lossy(&run.stderr)
+    );
+    krate
+}
+
 /// A copy of the bundled example project (without build output) in `dir/project`.
 pub fn example_project_copy(dir: &Path) -> PathBuf {
     let project = dir.join("project");

@@ -17,7 +17,6 @@ pub mod blocks {
 }
 
 use kiln::reference as r;
-use kiln::reflect::Resource;
 use kiln::runtime::{Library, PipelineRequest, Runtime, Targets};
 pub use scene::Scene;
 use shaders::custom_rp_lit as lit;
@@ -192,6 +191,27 @@ pub fn library() -> Result<Library, String> {
         .map_err(|e| e.to_string())
 }
 
+/// A 1 x 1 white texture's view: what the scene's materials name (`"white"`, the default).
+pub fn white_texture(device: &wgpu::Device, queue: &wgpu::Queue) -> wgpu::TextureView {
+    use wgpu::util::DeviceExt;
+    let white = device.create_texture_with_data(
+        queue,
+        &wgpu::TextureDescriptor {
+            label: Some("white"),
+            size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: 1 },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: wgpu::TextureFormat::Rgba8Unorm,
+            usage: wgpu::TextureUsages::TEXTURE_BINDING,
+            view_formats: &[],
+        },
+        wgpu::util::TextureDataOrder::LayerMajor,
+        &[255, 255, 255, 255],
+    );
+    white.create_view(&Default::default())
+}
+
 /// The scene's textures for materials: every texture property is white (the scene's materials
 /// use the default `"white"`), sampled by one sampler.
 struct SceneTextures<'a> {
@@ -256,22 +276,7 @@ pub fn render_frames(
             usage: wgpu::BufferUsages::UNIFORM,
         })
     };
-    let white = device.create_texture_with_data(
-        queue,
-        &wgpu::TextureDescriptor {
-            label: Some("white"),
-            size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: 1 },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: wgpu::TextureFormat::Rgba8Unorm,
-            usage: wgpu::TextureUsages::TEXTURE_BINDING,
-            view_formats: &[],
-        },
-        wgpu::util::TextureDataOrder::LayerMajor,
-        &[255, 255, 255, 255],
-    );
-    let white_view = white.create_view(&Default::default());
+    let white_view = white_texture(device, queue);
     let sampler = device.create_sampler(&wgpu::SamplerDescriptor::default());
     let textures = SceneTextures { white: &white_view, sampler: &sampler };
 
@@ -298,15 +303,12 @@ pub fn render_frames(
             .filter(|g| g.group == group)
             .flat_map(|g| &g.entries)
             .map(|e| {
-                let resource = match e.resource {
-                    Resource::Texture { .. } => wgpu::BindingResource::TextureView(&white_view),
-                    Resource::Sampler { .. } => wgpu::BindingResource::Sampler(&sampler),
-                    _ => buffers
-                        .iter()
-                        .find(|(n, _)| *n == e.name)
-                        .map(|(_, b)| b.as_entire_binding())
-                        .expect("a buffer for every uniform"),
-                };
+                // Per frame and per object: buffers only (a material's textures are its group's).
+                let resource = buffers
+                    .iter()
+                    .find(|(n, _)| *n == e.name)
+                    .map(|(_, b)| b.as_entire_binding())
+                    .expect("a buffer for every uniform");
                 wgpu::BindGroupEntry { binding: e.binding, resource }
             })
             .collect();

@@ -140,18 +140,8 @@ fn a_material_bind_group_follows_its_material() {
         return;
     };
     let mut runtime = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
-    let texture = device.create_texture(&wgpu::TextureDescriptor {
-        label: None,
-        size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba8Unorm,
-        usage: wgpu::TextureUsages::TEXTURE_BINDING,
-        view_formats: &[],
-    });
     let textures = Textures {
-        view: Some(texture.create_view(&Default::default())),
+        view: Some(kiln_renderer::white_texture(&device, &queue)),
         sampler: device.create_sampler(&Default::default()),
     };
     let material = runtime.library().material("object00").expect("a scene material").clone();
