@@ -115,7 +115,7 @@ pub struct EntryProperty {
 pub struct EntrySet {
     /// A set a material chooses from (`shader_feature` or `dynamic_branch`) rather than
     /// `multi_compile`.
-    pub shader_feature: bool,
+    pub material_chooses: bool,
     /// Its keywords, `_` left out.
     pub keywords: Vec<String>,
     /// The set has `_`: a material may enable none of its keywords.
@@ -144,7 +144,7 @@ impl ShaderEntry {
             keyword_sets: keyword_sets
                 .iter()
                 .map(|set| EntrySet {
-                    shader_feature: set.kind != KeywordKind::MultiCompile,
+                    material_chooses: set.kind != KeywordKind::MultiCompile,
                     keywords: set.keywords().map(str::to_string).collect(),
                     off_option: set.has_off_option(),
                     span: Some(set.span),
@@ -477,8 +477,8 @@ fn keywords(
     enabled
 }
 
-/// Each shader_feature set gets at most one keyword, and one when it has no off choice; keywords
-/// no pass declares are flagged.
+/// Each set a material chooses from (shader_feature, dynamic_branch) gets at most one keyword,
+/// and one when it has no off choice; keywords no pass declares are flagged.
 fn check_sets(
     entry: &ShaderEntry,
     keywords: &[(String, Span)],
@@ -497,7 +497,7 @@ fn check_sets(
         }
     }
     let mut seen_sets: Vec<&EntrySet> = Vec::new();
-    for set in entry.keyword_sets.iter().filter(|s| s.shader_feature) {
+    for set in entry.keyword_sets.iter().filter(|s| s.material_chooses) {
         // Passes often repeat a set: check it once.
         if seen_sets.iter().any(|seen| (&seen.keywords, seen.off_option) == (&set.keywords, set.off_option)) {
             continue;
@@ -552,7 +552,7 @@ impl ShaderEntry {
             .iter()
             .flat_map(|pass| &pass.keyword_sets)
             .map(|set| EntrySet {
-                shader_feature: set.kind != crate::shaderlab::pragma::KeywordKind::MultiCompile.name(),
+                material_chooses: set.kind != crate::shaderlab::pragma::KeywordKind::MultiCompile.name(),
                 keywords: set.keywords.iter().filter(|k| *k != "_").cloned().collect(),
                 off_option: set.keywords.iter().any(|k| k == "_"),
                 span: None,
