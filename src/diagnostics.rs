@@ -47,6 +47,35 @@ pub struct Diagnostic {
     pub notes: Vec<String>,
     /// What to do about it (`= help:`).
     pub help: Option<String>,
+    /// The variants of a pass it occurs in (a note after the others), when a stage found it.
+    pub occurrence: Option<Occurrence>,
+}
+
+/// The variants of a pass a diagnostic occurs in, and where in them: `in variant `A` of `S`
+/// pass 0, fragment stage`, or `in 2 variants `A` and `B` of ...` once repeats are merged.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Occurrence {
+    /// The variants, each as its keywords (`(no keywords)`, `_CLIPPING _FOG`).
+    pub variants: Vec<String>,
+    /// What follows them: ` of `S` pass 0, fragment stage`.
+    pub place: String,
+}
+
+impl Occurrence {
+    /// The note it is shown as.
+    pub fn note(&self) -> String {
+        const SHOWN: usize = 6;
+        let names: Vec<String> = self.variants.iter().map(|n| format!("`{n}`")).collect();
+        let shown = match &names[..] {
+            [one] => return format!("in variant {one}{}", self.place),
+            _ if names.len() > SHOWN => {
+                format!("{} and {} more", names[..SHOWN].join(", "), names.len() - SHOWN)
+            }
+            [first @ .., last] => format!("{} and {last}", first.join(", ")),
+            [] => String::new(),
+        };
+        format!("in {} variants {shown}{}", names.len(), self.place)
+    }
 }
 
 impl Diagnostic {
@@ -81,6 +110,7 @@ impl Diagnostic {
             secondary: Vec::new(),
             notes: Vec::new(),
             help: None,
+            occurrence: None,
         }
     }
 
@@ -100,6 +130,17 @@ impl Diagnostic {
     pub fn note(mut self, note: impl Into<String>) -> Diagnostic {
         self.notes.push(note.into());
         self
+    }
+
+    /// Says which variant it occurs in (`variant`: its keywords) and where (`place`).
+    pub fn in_variant(mut self, variant: impl Into<String>, place: impl Into<String>) -> Diagnostic {
+        self.occurrence = Some(Occurrence { variants: vec![variant.into()], place: place.into() });
+        self
+    }
+
+    /// Its notes as shown: the notes, then the variants it occurs in.
+    pub fn shown_notes(&self) -> Vec<String> {
+        self.notes.iter().cloned().chain(self.occurrence.as_ref().map(Occurrence::note)).collect()
     }
 
     /// Sets the help.
@@ -144,58 +185,34 @@ pub fn has_errors(diagnostics: &[Diagnostic]) -> bool {
 
 /// Drops repeats of a diagnostic (same code, message and primary span), keeping the first. Shared
 /// include blocks and files, and variants of one pass, would otherwise report one mistake often.
-/// The variants a repeat was found in are added to the first's note (`in variants `A` and `B` of
-/// ...`), so one diagnostic says every variant a cause occurs in.
+/// The variants a repeat occurs in (at the same place of the pass) join the first's, so one
+/// diagnostic says every variant a cause occurs in.
 pub fn dedup(diagnostics: &mut Vec<Diagnostic>) {
     type Key = (&'static str, String, Option<crate::source::Span>);
-    let key = |d: &Diagnostic| -> Key { (d.code, d.message.clone(), d.primary.as_ref().map(|l| l.span)) };
     let mut first: std::collections::HashMap<Key, usize> = std::collections::HashMap::new();
-    let mut variants: Vec<Vec<String>> = vec![Vec::new(); diagnostics.len()];
-    let mut keep = vec![true; diagnostics.len()];
-    for (i, d) in diagnostics.iter().enumerate() {
-        match first.get(&key(d)) {
-            None => {
-                first.insert(key(d), i);
-            }
-            Some(&f) => {
-                keep[i] = false;
-                // Another variant of the same place and stage: named in the first's note.
-                if let (Some((v, rest)), Some((first_v, first_rest))) =
-                    (variant_note(&d.notes), variant_note(&diagnostics[f].notes))
-                    && rest == first_rest
-                    && v != first_v
-                    && !variants[f].contains(&v)
-                {
-                    variants[f].push(v);
+    let mut keep = Vec::with_capacity(diagnostics.len());
+    for i in 0..diagnostics.len() {
+        let d = &diagnostics[i];
+        let key = (d.code, d.message.clone(), d.primary.as_ref().map(|l| l.span));
+        let Some(&f) = first.get(&key) else {
+            first.insert(key, i);
+            keep.push(true);
+            continue;
+        };
+        keep.push(false);
+        let more = diagnostics[i].occurrence.clone();
+        if let (Some(more), Some(into)) = (more, diagnostics[f].occurrence.as_mut())
+            && more.place == into.place
+        {
+            for variant in more.variants {
+                if !into.variants.contains(&variant) {
+                    into.variants.push(variant);
                 }
             }
         }
     }
-    for (i, more) in variants.iter().enumerate().filter(|(_, more)| !more.is_empty()) {
-        let Some((v, rest)) = variant_note(&diagnostics[i].notes) else { continue };
-        let names: Vec<String> =
-            std::iter::once(v).chain(more.iter().cloned()).map(|n| format!("`{n}`")).collect();
-        const SHOWN: usize = 6;
-        let shown = if names.len() > SHOWN {
-            format!("{} and {} more", names[..SHOWN].join(", "), names.len() - SHOWN)
-        } else {
-            let (last, rest_names) = names.split_last().expect("two at least");
-            format!("{} and {last}", rest_names.join(", "))
-        };
-        let note = format!("in {} variants {shown}{rest}", names.len());
-        if let Some(slot) = diagnostics[i].notes.iter_mut().find(|n| n.starts_with("in variant `")) {
-            *slot = note;
-        }
-    }
     let mut keep = keep.into_iter();
     diagnostics.retain(|_| keep.next().unwrap_or(true));
-}
-
-/// A note `in variant `X` of ...`: the variant and what follows it (` of `S` pass 0, ...`).
-fn variant_note(notes: &[String]) -> Option<(String, String)> {
-    let note = notes.iter().find(|n| n.starts_with("in variant `"))?;
-    let (variant, rest) = note.strip_prefix("in variant `")?.split_once('`')?;
-    Some((variant.to_string(), rest.to_string()))
 }
 
 /// Strict mode: every warning becomes an error (with the same code).
@@ -219,7 +236,7 @@ fn to_codespan(d: &Diagnostic) -> cs::Diagnostic<crate::source::FileId> {
     for l in &d.secondary {
         labels.push(cs::Label::secondary(l.span.file, l.span.range()).with_message(&l.message));
     }
-    let mut notes: Vec<String> = d.notes.iter().map(|n| format!("note: {n}")).collect();
+    let mut notes: Vec<String> = d.shown_notes().iter().map(|n| format!("note: {n}")).collect();
     if let Some(h) = &d.help {
         notes.push(format!("help: {h}"));
     }
@@ -341,7 +358,7 @@ pub fn to_json(store: &SourceStore, diagnostics: &[Diagnostic]) -> Vec<JsonDiagn
             message: d.message.clone(),
             location: d.primary.as_ref().map(|l| json_label(store, l)),
             labels: d.secondary.iter().map(|l| json_label(store, l)).collect(),
-            notes: d.notes.clone(),
+            notes: d.shown_notes(),
             help: d.help.clone(),
         })
         .collect()
@@ -353,7 +370,7 @@ mod tests {
 
     fn in_variant(variant: &str, stage: &str) -> Diagnostic {
         Diagnostic::error("K0401", "the same mistake")
-            .note(format!("in variant `{variant}` of `S` pass 0, {stage} stage"))
+            .in_variant(variant, format!(" of `S` pass 0, {stage} stage"))
     }
 
     #[test]
@@ -362,11 +379,11 @@ mod tests {
             vec![in_variant("A", "fragment"), in_variant("B", "fragment"), in_variant("A", "vertex")];
         dedup(&mut found);
         assert_eq!(found.len(), 1, "one cause");
-        assert_eq!(found[0].notes, ["in 2 variants `A` and `B` of `S` pass 0, fragment stage"]);
+        assert_eq!(found[0].shown_notes(), ["in 2 variants `A` and `B` of `S` pass 0, fragment stage"]);
         let mut many: Vec<Diagnostic> = (0..9).map(|i| in_variant(&format!("V{i}"), "fragment")).collect();
         dedup(&mut many);
         assert_eq!(
-            many[0].notes,
+            many[0].shown_notes(),
             ["in 9 variants `V0`, `V1`, `V2`, `V3`, `V4`, `V5` and 3 more of `S` pass 0, fragment stage"]
         );
     }

@@ -22,17 +22,24 @@ pub(super) struct Job<'a> {
     pub map: SourceMap,
     pub text_hash: String,
     pub allowed: Allowed,
-    /// Which variant asked for it first, for diagnostics about its whole text (a parse error
-    /// is the text's, whichever stage parsed it first); [`Job::context`] adds the stage.
+    /// Which variant asked for it first (its keywords), for diagnostics.
     pub variant: String,
+    /// ` of `S` pass N`: the pass, for diagnostics.
+    pub pass_place: String,
     /// How many stage requests of the pass's variants it serves (for progress).
     pub requests: usize,
 }
 
 impl Job<'_> {
-    /// `in variant `X` of `S` pass N, fragment stage`: where a stage's diagnostics arise.
-    pub(super) fn context(&self) -> String {
-        stage_context(&self.variant, self.stage, self.entry)
+    /// A diagnostic about this stage module, said to occur in its variant's stage.
+    pub(super) fn in_stage(&self, diagnostic: Diagnostic) -> Diagnostic {
+        diagnostic.in_variant(&self.variant, stage_place(&self.pass_place, self.stage, self.entry))
+    }
+
+    /// A diagnostic about its whole text (a parse error is the text's, not the stage's that
+    /// parsed it first), said to occur in its variant.
+    pub(super) fn in_text(&self, diagnostic: Diagnostic) -> Diagnostic {
+        diagnostic.in_variant(&self.variant, &self.pass_place)
     }
 
     /// What the resources a job's module reaches depend on: its text, stage and entry point.
@@ -63,14 +70,14 @@ struct Request<'a> {
     entry: &'a crate::source::Spanned<String>,
     keywords: Vec<String>,
     allowed: Allowed,
-    /// `in variant `X` of `S` pass N`.
+    /// The variant's keywords, for diagnostics.
     variant: String,
 }
 
-/// A variant's note with the stage (and a compute stage's kernel) added.
-fn stage_context(variant: &str, stage: Stage, entry: &str) -> String {
+/// Where in its variant a stage is: ` of `S` pass N, fragment stage` (and a kernel's name).
+fn stage_place(pass_place: &str, stage: Stage, entry: &str) -> String {
     let kernel = if stage == Stage::Compute { format!(" (kernel `{entry}`)") } else { String::new() };
-    format!("{variant}, {} stage{kernel}", stage.name())
+    format!("{pass_place}, {} stage{kernel}", stage.name())
 }
 
 /// The distinct stage texts of a pass's variants: each (stage, stage keywords, target) is
@@ -90,6 +97,7 @@ pub(super) fn pass_jobs<'a>(
     let mut request_of: HashMap<(Stage, &str, &KeywordBits, String), usize> = HashMap::new();
     let mut per_variant: Vec<Vec<Option<usize>>> = Vec::with_capacity(work.variants.len());
     let entries = entry_points(&program.pragmas);
+    let pass_place = format!(" of `{}` pass {}", shader.shader.name.value, pass.index);
     for variant in work.variants.iter() {
         let all: Vec<&str> = program.keywords.keywords(&variant.bits).collect();
         let allowed = Allowed::for_variant(&program.pragmas, &all);
@@ -105,10 +113,7 @@ pub(super) fn pass_jobs<'a>(
                     entry,
                     keywords: program.keywords.keywords(bits).map(str::to_string).collect(),
                     allowed: allowed.clone(),
-                    variant: format!(
-                        "in variant `{shown}` of `{}` pass {}",
-                        shader.shader.name.value, pass.index
-                    ),
+                    variant: shown,
                 });
                 requests.len() - 1
             }))
@@ -129,8 +134,8 @@ pub(super) fn pass_jobs<'a>(
     let mut job_of_request: Vec<Option<usize>> = Vec::with_capacity(requests.len());
     for (request, (out, text_hash)) in requests.into_iter().zip(outputs) {
         let failed = diagnostics::has_errors(&out.diagnostics);
-        let context = stage_context(&request.variant, request.stage, &request.entry.value);
-        diagnostics.extend(out.diagnostics.into_iter().map(|d| d.note(context.clone())));
+        let place = stage_place(&pass_place, request.stage, &request.entry.value);
+        diagnostics.extend(out.diagnostics.into_iter().map(|d| d.in_variant(&request.variant, &place)));
         if failed {
             job_of_request.push(None);
             continue;
@@ -146,6 +151,7 @@ pub(super) fn pass_jobs<'a>(
                 text_hash,
                 allowed: request.allowed,
                 variant: request.variant,
+                pass_place: pass_place.clone(),
                 requests: 0,
             });
             jobs.len() - 1

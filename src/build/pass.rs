@@ -164,9 +164,8 @@ pub(super) fn build_pass(
                 let [wgsl, spirv] = files.next().unwrap_or_default();
                 (CachedStage { wgsl, spirv, reflection: module.reflection.clone() }, key)
             }),
-            Some(Err(mut error)) => {
-                error.notes.push(job.context());
-                diagnostics.push(error);
+            Some(Err(error)) => {
+                diagnostics.push(job.in_stage(error));
                 None
             }
             None => None,
@@ -256,10 +255,9 @@ fn lay_out(
         let diagnostic = Diagnostic::error("K0406", message).help(
             "give each resource its own slot, or leave out `@group`/`@binding` and let kiln assign them",
         );
-        let mut diagnostic = mapper
+        let diagnostic = mapper
             .diagnostic_at(diagnostic, vec![(range.0 as usize..range.1 as usize, "declared here".into())]);
-        diagnostic.notes.push(job.context());
-        diagnostics.push(diagnostic);
+        diagnostics.push(job.in_stage(diagnostic));
         failed = true;
     }
     (!failed).then_some(layout)

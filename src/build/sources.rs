@@ -135,8 +135,7 @@ struct Naga;
 impl Naga {
     fn parse(&self, pass: &PassSources, job: &Job) -> Front {
         let mapper = Mapper { map: &job.map, store: pass.store };
-        // A parse error is the text's, not the stage's that happened to parse it first.
-        let module = parse(&job.text, &mapper).map_err(|d| d.note(job.variant.clone()))?;
+        let module = parse(&job.text, &mapper).map_err(|d| job.in_text(d))?;
         let declared = bind::declared(&module, job.entry, stage::naga_stage(job.stage));
         if pass.session.texts.shared(&job.text_hash) {
             let size = declared.iter().map(|d| d.name.len() + 64).sum();
