@@ -29,6 +29,8 @@ pub mod config;
 pub mod diagnostics;
 pub mod keywords;
 pub mod listing;
+#[cfg(feature = "lsp")]
+pub mod lsp;
 pub mod manifest;
 pub mod material;
 pub mod preprocess;

@@ -544,6 +544,8 @@ pub struct BuildMode {
     pub variant_logs: Vec<PathBuf>,
     /// The shared module cache; else `KILN_CACHE_DIR`, else the project's `cache_dir`.
     pub cache_dir: Option<PathBuf>,
+    /// The shared module cache when none of those names one (the language server's own).
+    pub fallback_cache_dir: Option<PathBuf>,
 }
 
 impl Default for BuildMode {
@@ -559,6 +561,7 @@ impl Default for BuildMode {
             pretty_manifest: false,
             variant_logs: Vec::new(),
             cache_dir: None,
+            fallback_cache_dir: None,
         }
     }
 }
@@ -599,6 +602,55 @@ pub fn build_part(
         diagnostics::promote_warnings(&mut diagnostics);
     }
     Ok((result, diagnostics))
+}
+
+/// A project checked for an editor: besides the diagnostics, what its files were found to hold
+/// (the catalogue, the includes, the manifest a build would write) for hover and go-to.
+pub struct Checked {
+    /// The project's settings and files.
+    pub workspace: Workspace,
+    /// Every unit the programs can include.
+    pub includes: Includes,
+    /// Shaders, programs, materials, variants.
+    pub catalog: Catalog,
+    /// The manifest a build would write (`None` when a stage failed).
+    pub manifest: Option<crate::manifest::Manifest>,
+    /// What the check compiled and what it took from caches.
+    pub summary: crate::build::BuildSummary,
+    /// Everything `kiln check` reports.
+    pub diagnostics: Vec<Diagnostic>,
+}
+
+/// `kiln check` of the project at `paths`, keeping what it found: never the no-op path (the store
+/// may hold texts that are not on disk: [`SourceStore::with_overlay`]), never written. `narrow`
+/// may drop variants from the catalogue before anything is compiled (an editor checking the
+/// variants it shows first).
+pub fn check_project(
+    store: &mut SourceStore,
+    paths: &[PathBuf],
+    mode: &BuildMode,
+    narrow: impl FnOnce(&mut Catalog),
+) -> Result<Checked, ProjectError> {
+    let mode = BuildMode { write: false, ..mode.clone() };
+    let Given { workspace, mut includes, input, mut diagnostics, mut options } =
+        load_given(store, paths, &mode)?;
+    let (mut catalog, found) = catalog(store, &mut includes, &input);
+    diagnostics.extend(found);
+    narrow(&mut catalog);
+    options.record = false;
+    let result = build(store, &includes, &catalog, &options, &|_, _| {});
+    diagnostics.extend(result.diagnostics);
+    if workspace.strict {
+        diagnostics::promote_warnings(&mut diagnostics);
+    }
+    Ok(Checked {
+        workspace,
+        includes,
+        catalog,
+        manifest: result.manifest,
+        summary: result.summary,
+        diagnostics,
+    })
 }
 
 /// What a project is given before anything is parsed: its settings, the shaders, materials and
@@ -646,7 +698,9 @@ fn load_given(store: &mut SourceStore, paths: &[PathBuf], mode: &BuildMode) -> R
         pretty_manifest: mode.pretty_manifest,
         record: diagnostics.is_empty(),
         part: Part::Whole,
-        cache_dir: workspace.shared_cache_dir(mode.cache_dir.clone()),
+        cache_dir: workspace
+            .shared_cache_dir(mode.cache_dir.clone())
+            .or_else(|| mode.fallback_cache_dir.clone()),
         given_files: store.files_read().count(),
         groups: workspace.groups.clone(),
     };

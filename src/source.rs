@@ -182,8 +182,19 @@ impl SourceFile {
     }
 }
 
-/// Reads a text file of at most [`MAX_FILE_SIZE`] bytes (see [`decode`]).
-fn read_file(path: &Path) -> Result<SourceFile, LoadError> {
+/// Texts that stand in for files on disk, by canonical path: an editor's unsaved buffers, which a
+/// language server checks instead of what was last saved.
+pub type Overlay = HashMap<PathBuf, String>;
+
+/// Reads a text file of at most [`MAX_FILE_SIZE`] bytes (see [`decode`]), or its stand-in in
+/// `overlay`.
+fn read_file(path: &Path, overlay: Option<&Overlay>) -> Result<SourceFile, LoadError> {
+    let unsaved = overlay.filter(|o| !o.is_empty()).and_then(|o| o.get(&std::fs::canonicalize(path).ok()?));
+    if let Some(text) = unsaved {
+        let (text, problems) = decode(path, text.clone().into_bytes())?;
+        let name = path.to_string_lossy().replace('\\', "/");
+        return Ok(SourceFile { problems, ..SourceFile::new(name, Some(path.to_path_buf()), text) });
+    }
     let size = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
     if size > MAX_FILE_SIZE {
         return Err(LoadError::TooLarge { path: path.to_path_buf(), size });
@@ -204,12 +215,19 @@ pub struct SourceStore {
     absent: Vec<PathBuf>,
     /// Folders searched for files (shaders, materials, includes): a new file there could too.
     searched: Vec<PathBuf>,
+    /// Texts read instead of the files at their paths.
+    overlay: Option<std::sync::Arc<Overlay>>,
 }
 
 impl SourceStore {
     /// An empty store.
     pub fn new() -> SourceStore {
         SourceStore::default()
+    }
+
+    /// An empty store that reads the texts of `overlay` instead of the files at their paths.
+    pub fn with_overlay(overlay: std::sync::Arc<Overlay>) -> SourceStore {
+        SourceStore { overlay: Some(overlay), ..SourceStore::default() }
     }
 
     /// Adds text that did not come from disk (tests, generated sources, embedded library files).
@@ -219,7 +237,7 @@ impl SourceStore {
 
     /// Reads a file from disk and records it as read.
     pub fn load(&mut self, path: &Path) -> Result<FileId, LoadError> {
-        let file = read_file(path)?;
+        let file = read_file(path, self.overlay.as_deref())?;
         Ok(self.push_file(file))
     }
 
@@ -227,7 +245,9 @@ impl SourceStore {
     /// come in the order of `paths`.
     pub fn load_all(&mut self, paths: &[PathBuf]) -> Vec<Result<FileId, LoadError>> {
         use rayon::prelude::*;
-        let files: Vec<Result<SourceFile, LoadError>> = paths.par_iter().map(|p| read_file(p)).collect();
+        let overlay = self.overlay.as_deref();
+        let files: Vec<Result<SourceFile, LoadError>> =
+            paths.par_iter().map(|p| read_file(p, overlay)).collect();
         files.into_iter().map(|file| file.map(|f| self.push_file(f))).collect()
     }
 

@@ -6,6 +6,7 @@
 //! - `layout.rs`: host-shareable layouts by the WGSL spec (naga's offsets corrected, `@align`/`@size`
 //!   written back into emitted WGSL, constructs naga's SPIR-V writer gets wrong refused).
 //! - `stage.rs`: one stage module from parsed text to WGSL, SPIR-V and reflection.
+//! - `messages.rs`: naga's validation errors with names instead of arena handles.
 //! - `panics.rs`: a panic while compiling one module caught as a value (K0416).
 //! - `spirv.rs`: corrections to naga's SPIR-V where it breaks a Vulkan rule (`SampleMask`).
 //!
@@ -14,6 +15,7 @@
 
 pub mod bind;
 mod layout;
+mod messages;
 mod panics;
 mod spirv;
 pub(crate) mod stage;
@@ -23,7 +25,6 @@ use crate::diagnostics::Diagnostic;
 use crate::preprocess::{Preprocessed, SourceMap};
 use crate::source::SourceStore;
 use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
-use std::error::Error as _;
 
 /// A parsed and validated module.
 pub struct Checked {
@@ -60,16 +61,10 @@ pub(crate) fn validate(
     mapper: &Mapper,
 ) -> Result<ModuleInfo, Diagnostic> {
     Validator::new(flags, capabilities).validate(module).map_err(|error| {
-        let mut message = error.as_inner().to_string();
-        let mut source = error.as_inner().source();
-        while let Some(inner) = source {
-            message.push_str(": ");
-            message.push_str(&inner.to_string());
-            source = inner.source();
-        }
+        let message = messages::validation_message(error.as_inner(), module);
         // naga lists the enclosing function too; the narrowest span is where the mistake is.
         let mut labels: Vec<(naga::Span, String)> =
-            error.spans().map(|(span, text)| (*span, text.clone())).collect();
+            error.spans().map(|(span, text)| (*span, messages::label(text))).collect();
         labels.sort_by_key(|(span, _)| span.to_range().map_or(usize::MAX, |r| r.len()));
         mapper.diagnostic("K0402", message, labels)
     })

@@ -83,6 +83,37 @@ impl Includes {
         }
     }
 
+    /// The `#include` directive at `offset` in `file`: its span, its name and the file it resolved
+    /// to (`None` when it did not).
+    pub fn include_at(&self, file: FileId, offset: usize) -> Option<(Span, &str, Option<FileId>)> {
+        self.units.iter().filter(|unit| unit.file == file).flat_map(|unit| &unit.items).find_map(|item| {
+            match item {
+                Item::Include { name, span, target, .. } if span.range().contains(&offset) => {
+                    let resolved = match target {
+                        Target::Unit(unit) => Some(self.units[*unit].file),
+                        _ => None,
+                    };
+                    Some((*span, name.as_str(), resolved))
+                }
+                _ => None,
+            }
+        })
+    }
+
+    /// Every `#define` of every unit scanned: its name, its directive and its replacement text.
+    pub fn defines(&self) -> impl Iterator<Item = (&str, Span, &str)> {
+        self.units.iter().flat_map(|unit| &unit.items).filter_map(|item| match item {
+            Item::Define { name, span, value, .. } => Some((name.as_str(), *span, value.as_str())),
+            _ => None,
+        })
+    }
+
+    /// Every file a unit was scanned from, each once, in the order first scanned.
+    pub fn files(&self) -> Vec<FileId> {
+        let mut seen = std::collections::HashSet::new();
+        self.units.iter().map(|unit| unit.file).filter(|&file| seen.insert(file)).collect()
+    }
+
     /// Scans the program blocks at `blocks` and every file they can include. Diagnostics are for
     /// files scanned for the first time, so a library shared by many passes is reported once.
     pub fn load_program(&mut self, store: &mut SourceStore, blocks: &[Span]) -> (Program, Vec<Diagnostic>) {

@@ -21,6 +21,7 @@ pub use include::{IncludeConfig, Includes, LIBRARY_PREFIX, Program};
 pub(crate) use macros::{Kind, lex};
 pub use pass::{DynamicKeyword, PassProgram, load_pass, load_pass_text};
 pub use run::MAX_INCLUDE_DEPTH;
+pub use run::Skipped;
 pub use scan::MAX_CONDITIONAL_DEPTH;
 pub use source_map::{Origin, SourceMap};
 
@@ -85,4 +86,16 @@ pub fn preprocess(
     stage: Stage,
 ) -> Preprocessed {
     run::run(includes, store, program, keywords, stage)
+}
+
+/// What [`preprocess`] skips for this variant: each text run, include and define of a
+/// conditional group not taken (an editor's inactive regions), and the files it reads.
+pub fn inactive_regions(
+    includes: &Includes,
+    store: &SourceStore,
+    program: &Program,
+    keywords: &[&str],
+    stage: Stage,
+) -> Skipped {
+    run::run_recording(includes, store, program, keywords, stage, Some(Skipped::default())).1
 }

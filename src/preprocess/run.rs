@@ -26,7 +26,29 @@ pub(super) fn run<'a>(
     keywords: &[&'a str],
     stage: Stage,
 ) -> Preprocessed {
+    run_recording(includes, store, program, keywords, stage, None).0
+}
+
+/// What a run skipped, when asked for (see [`super::inactive_regions`]).
+#[derive(Debug, Default)]
+pub struct Skipped {
+    /// What each conditional group not taken held: text runs, includes, defines.
+    pub spans: Vec<Span>,
+    /// Every file the run entered (the program's own and each included), each once.
+    pub files: Vec<crate::source::FileId>,
+}
+
+/// [`run`], also giving what it skipped (when `skipped` is given), for an editor to grey out.
+pub(super) fn run_recording<'a>(
+    includes: &'a Includes,
+    store: &'a SourceStore,
+    program: &Program,
+    keywords: &[&'a str],
+    stage: Stage,
+    skipped: Option<Skipped>,
+) -> (Preprocessed, Skipped) {
     let mut runner = Runner {
+        skipped,
         includes,
         store,
         macros: Macros::default(),
@@ -54,7 +76,8 @@ pub(super) fn run<'a>(
         runner.out.push_str(&keyword.declaration());
     }
     runner.map.finish(runner.out.len());
-    Preprocessed { text: runner.out, source_map: runner.map, diagnostics: runner.diagnostics }
+    let skipped = runner.skipped.unwrap_or_default();
+    (Preprocessed { text: runner.out, source_map: runner.map, diagnostics: runner.diagnostics }, skipped)
 }
 
 /// A run of source text to copy: its range, the names in it a macro may replace, and whether it
@@ -78,6 +101,8 @@ struct Runner<'a> {
     /// Units with `#pragma once` already included.
     once: HashSet<usize>,
     diagnostics: Vec<Diagnostic>,
+    /// What skipped groups held, when asked for (builds skip a group in one jump).
+    skipped: Option<Skipped>,
 }
 
 impl<'a> Runner<'a> {
@@ -92,6 +117,9 @@ impl<'a> Runner<'a> {
         let unit = &includes.units[id];
         let file = unit.file;
         let text = store.text(file);
+        if let Some(skipped) = self.skipped.as_mut().filter(|s| !s.files.contains(&file)) {
+            skipped.files.push(file);
+        }
         // Whether some branch of each open conditional was taken.
         let mut taken: Vec<bool> = Vec::new();
         let mut i = 0;
@@ -127,13 +155,19 @@ impl<'a> Runner<'a> {
                     if let Some(top) = taken.last_mut() {
                         *top |= enter;
                     }
-                    i = if enter {
+                    let target = if enter {
                         i + 1
                     } else if already {
                         end
                     } else {
                         next
                     };
+                    if let Some(skipped) = &mut self.skipped {
+                        skipped.spans.extend(
+                            unit.items[i + 1..target.max(i + 1)].iter().filter_map(|item| item.span(file)),
+                        );
+                    }
+                    i = target;
                     continue;
                 }
                 Item::Endif => {

@@ -82,6 +82,21 @@ pub(crate) enum Item {
     },
 }
 
+impl Item {
+    /// Where the item is in `file`, for the kinds that keep it (text runs, includes, defines,
+    /// `#error` and `#warning`).
+    pub(crate) fn span(&self, file: FileId) -> Option<Span> {
+        match self {
+            Item::Text { start, end, .. } => Some(Span::new(file, *start as usize..*end as usize)),
+            Item::Include { span, .. }
+            | Item::Define { span, .. }
+            | Item::Error { span, .. }
+            | Item::Warning { span, .. } => Some(*span),
+            Item::Undef { .. } | Item::Branch { .. } | Item::Endif => None,
+        }
+    }
+}
+
 #[derive(Debug)]
 pub(crate) enum BranchKind {
     If(Condition),

@@ -127,6 +127,22 @@ impl SourceMap {
         Some(Origin { span: Span { file: s.file, start, end }, inclusion: s.inclusion, definition })
     }
 
+    /// The output a macro invocation at byte `offset` of `file` expanded to (its first expansion
+    /// there), as an output range.
+    pub fn expansion_at(&self, file: FileId, offset: usize) -> Option<Range<usize>> {
+        let offset = offset as u32;
+        let calls =
+            |s: &Segment| s.expansion > 0 && s.file == file && (s.src..s.src + s.expansion).contains(&offset);
+        let first = self.segments.iter().position(calls)?;
+        // Macros its text expands in turn map to the same invocation: the expansion runs on
+        // until a segment from elsewhere.
+        let call = |s: &Segment| (s.file, s.src, s.expansion);
+        let this = call(&self.segments[first]);
+        let end =
+            self.segments[first + 1..].iter().find(|s| call(s) != this).map_or(self.len, |next| next.out);
+        Some(self.segments[first].out as usize..end as usize)
+    }
+
     /// The origin of an output range: the original span from its first to its last byte when both
     /// lie in the same run of one file, otherwise just where it starts.
     pub fn map_range(&self, range: Range<usize>) -> Option<Origin> {

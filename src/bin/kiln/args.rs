@@ -126,8 +126,18 @@ pub enum Command {
         keywords: Vec<String>,
     },
     /// Measure the shader library's formulations against the f64 reference on hard cases, on
-    /// the GPU (the speed-against-error table of docs/accuracy.md).
+    /// the GPU (the speed-against-error table of docs/accuracy.md; needs `--features gpu`).
     Accuracy,
+    /// Serve editors: a language server (LSP over stdin and stdout) with diagnostics, hover,
+    /// go-to-definition and completion for the project of each file opened (docs/editor.md).
+    Lsp {
+        /// The module cache checks share (default: KILN_CACHE_DIR, else the project's `cache_dir`).
+        #[arg(long)]
+        cache_dir: Option<PathBuf>,
+        /// Accepted for clients that pass it (stdio is the only transport).
+        #[arg(long)]
+        stdio: bool,
+    },
     /// Create materials and apply presets to them.
     #[command(subcommand)]
     Material(MaterialCommand),

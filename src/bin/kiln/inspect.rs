@@ -85,7 +85,16 @@ pub fn reflect(shader: PathBuf, pass: Option<String>, keywords: Vec<String>) -> 
     }
 }
 
+/// `kiln accuracy` in a kiln built without the GPU harness.
+#[cfg(not(feature = "gpu"))]
+pub fn accuracy() -> ExitCode {
+    host_failure(
+        "this kiln was built without the `gpu` feature, which `kiln accuracy` needs: cargo install --path . --features gpu (or cargo run --features gpu -- accuracy)",
+    )
+}
+
 /// `kiln accuracy`.
+#[cfg(feature = "gpu")]
 pub fn accuracy() -> ExitCode {
     let gpu = match kiln::accuracy::gpu::device() {
         Ok(found) => found,
@@ -100,5 +109,14 @@ pub fn accuracy() -> ExitCode {
             report(&SourceStore::new(), &[kiln::diagnostics::Diagnostic::host_failure(error.to_string())]);
             ExitCode::from(1)
         }
+    }
+}
+
+/// `kiln lsp`: the language server on stdin and stdout, until the client says `exit`.
+pub fn lsp(cache_dir: Option<PathBuf>) -> ExitCode {
+    let options = kiln::lsp::ServerOptions { cache_dir, library_dir: None };
+    match kiln::lsp::serve_stdio(&options) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => host_failure(&error.to_string()),
     }
 }

@@ -2,7 +2,7 @@
 //! Exit codes: 0 success, 1 diagnostics with errors, 2 the run could not be made (K0007).
 //!
 //! One file per command group: `build.rs` (build, check, merge, watch), `inspect.rs` (list,
-//! preprocess, reflect, accuracy), `cache.rs`, `material.rs`; `output.rs` renders.
+//! preprocess, reflect, accuracy, lsp), `cache.rs`, `material.rs`; `output.rs` renders.
 
 mod args;
 mod build;
@@ -23,6 +23,7 @@ fn main() -> ExitCode {
         }
         Command::Reflect { shader, pass, keywords } => inspect::reflect(shader, pass, keywords),
         Command::Accuracy => inspect::accuracy(),
+        Command::Lsp { cache_dir, stdio: _ } => inspect::lsp(cache_dir),
         Command::Build { project, threads, output, pretty, variants_from, shard, cache_dir } => {
             build::build(project, threads, output, pretty, variants_from, shard, cache_dir)
         }
