@@ -124,3 +124,50 @@ impl Runtime {
         Ok(MaterialBindGroup { group: MATERIAL_GROUP, bind_group, pass, buffers })
     }
 }
+
+impl Runtime {
+    /// A bind group of buffers the renderer owns (group 0 per frame, 2 per object), each bound by
+    /// its name in the pass's layout (`("UnityPerFrame", &buffer)`), so the renderer needs no
+    /// binding numbers. A binding of the group without a buffer, or a name the group does not
+    /// have, is an error naming it.
+    pub fn buffer_bind_group(
+        &mut self,
+        shader: &str,
+        pass: usize,
+        group: u32,
+        buffers: &[(&str, &wgpu::Buffer)],
+    ) -> Result<wgpu::BindGroup, RuntimeError> {
+        let layout = self.pass_facts(shader, pass)?.layout;
+        let manifest = self.library.pass(shader, pass)?;
+        let layout_error =
+            |message: String| RuntimeError::Layout { shader: shader.to_string(), pass, message };
+        let entries = manifest.layout.iter().find(|g| g.group == group).map_or(&[][..], |g| &g.entries[..]);
+        let group_layout = layout
+            .groups
+            .get(group as usize)
+            .filter(|_| !entries.is_empty())
+            .ok_or_else(|| layout_error(format!("the pass has no bind group {group}")))?;
+        if let Some((name, _)) = buffers.iter().find(|(name, _)| !entries.iter().any(|e| e.name == *name)) {
+            let names: Vec<&str> = entries.iter().map(|e| e.name.as_str()).collect();
+            let hint = crate::material::closest(name, names.iter().copied())
+                .map(|s| format!(" (did you mean `{s}`?)"))
+                .unwrap_or_default();
+            return Err(layout_error(format!("group {group} has no binding `{name}`{hint}")));
+        }
+        let bound = entries
+            .iter()
+            .map(|entry| {
+                let buffer = buffers.iter().find(|(name, _)| *name == entry.name).map(|(_, b)| *b);
+                let buffer = buffer.ok_or_else(|| {
+                    layout_error(format!("no buffer for `{}` in group {group}", entry.name))
+                })?;
+                Ok(wgpu::BindGroupEntry { binding: entry.binding, resource: buffer.as_entire_binding() })
+            })
+            .collect::<Result<Vec<_>, RuntimeError>>()?;
+        Ok(self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some(&format!("{shader} pass {pass} group {group}")),
+            layout: group_layout,
+            entries: &bound,
+        }))
+    }
+}

@@ -9,6 +9,7 @@ mod cli;
 mod compute;
 mod conformance;
 mod cpp;
+mod docs;
 mod dynamic;
 mod gpu;
 mod integrity;

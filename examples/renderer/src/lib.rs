@@ -266,8 +266,6 @@ pub fn render_frames(
     frames: u32,
 ) -> Result<(Image, Option<f64>), String> {
     use wgpu::util::DeviceExt;
-    let layout = runtime.pass_layout(scene::SHADER, 0).map_err(|e| e.to_string())?;
-    let pass = runtime.library().pass(scene::SHADER, 0).map_err(|e| e.to_string())?.clone();
     let view = View::new(scene);
     let uniform = |contents: &[u8]| {
         device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -296,29 +294,10 @@ pub fn render_frames(
         light._DirectionalLightDirections[i] = to_f32([d[0], d[1], d[2], 0.0]);
     }
     let frame_buffers = [uniform(bytemuck::bytes_of(&per_frame)), uniform(bytemuck::bytes_of(&light))];
-    let bind = |group: u32, buffers: &[(&str, &wgpu::Buffer)]| {
-        let entries: Vec<wgpu::BindGroupEntry> = pass
-            .layout
-            .iter()
-            .filter(|g| g.group == group)
-            .flat_map(|g| &g.entries)
-            .map(|e| {
-                // Per frame and per object: buffers only (a material's textures are its group's).
-                let resource = buffers
-                    .iter()
-                    .find(|(n, _)| *n == e.name)
-                    .map(|(_, b)| b.as_entire_binding())
-                    .expect("a buffer for every uniform");
-                wgpu::BindGroupEntry { binding: e.binding, resource }
-            })
-            .collect();
-        device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: None,
-            layout: &layout.groups[group as usize],
-            entries: &entries,
-        })
-    };
-    let frame_group = bind(0, &[("UnityPerFrame", &frame_buffers[0]), ("_CustomLight", &frame_buffers[1])]);
+    // Per frame and per object: the renderer's buffers, bound by their names in the layout.
+    let frame_buffers = [("UnityPerFrame", &frame_buffers[0]), ("_CustomLight", &frame_buffers[1])];
+    let frame_group =
+        runtime.buffer_bind_group(scene::SHADER, 0, 0, &frame_buffers).map_err(|e| e.to_string())?;
 
     // The runtime's default vertex packing of the pass's inputs (position, normal, uv) is the
     // mesh's interleaving.
@@ -398,7 +377,10 @@ pub fn render_frames(
             ]),
         };
         let draw_buffer = uniform(bytemuck::bytes_of(&draw));
-        let groups = [material_group.bind_group, bind(2, &[("UnityPerDraw", &draw_buffer)])];
+        let draw_group = runtime
+            .buffer_bind_group(scene::SHADER, 0, 2, &[("UnityPerDraw", &draw_buffer)])
+            .map_err(|e| e.to_string())?;
+        let groups = [material_group.bind_group, draw_group];
         draws.push((pipeline, groups));
     }
 

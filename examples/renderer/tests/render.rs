@@ -175,3 +175,37 @@ fn a_material_bind_group_follows_its_material() {
     let error = runtime.material_bind_group(&material, 0, &none).expect_err("no texture").to_string();
     assert!(error.contains("no texture for `_BaseMap` (`white`)"), "{error}");
 }
+
+/// Per-frame and per-object groups are bound by name; a misspelt or missing buffer is an error
+/// naming it.
+#[test]
+fn buffer_groups_bind_by_name_and_name_what_is_wrong() {
+    let Ok((device, _queue, _)) = device() else {
+        assert!(std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"), "KILN_REQUIRE_GPU=1 but no device");
+        return;
+    };
+    let mut runtime = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: 1024,
+        usage: wgpu::BufferUsages::UNIFORM,
+        mapped_at_creation: false,
+    });
+    let shader = "Custom RP/Lit";
+    runtime
+        .buffer_bind_group(shader, 0, 0, &[("UnityPerFrame", &buffer), ("_CustomLight", &buffer)])
+        .expect("binds");
+    runtime.buffer_bind_group(shader, 0, 2, &[("UnityPerDraw", &buffer)]).expect("binds");
+    let error = |group, buffers: &[(&str, &wgpu::Buffer)], runtime: &mut kiln::runtime::Runtime| {
+        runtime.buffer_bind_group(shader, 0, group, buffers).expect_err("refused").to_string()
+    };
+    let misspelt = error(0, &[("UnityPerFrme", &buffer), ("_CustomLight", &buffer)], &mut runtime);
+    assert!(
+        misspelt.ends_with("group 0 has no binding `UnityPerFrme` (did you mean `UnityPerFrame`?)"),
+        "{misspelt}"
+    );
+    let missing = error(0, &[("UnityPerFrame", &buffer)], &mut runtime);
+    assert!(missing.ends_with("no buffer for `_CustomLight` in group 0"), "{missing}");
+    let no_group = error(5, &[], &mut runtime);
+    assert!(no_group.ends_with("the pass has no bind group 5"), "{no_group}");
+}

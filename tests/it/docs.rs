@@ -1,0 +1,193 @@
+//! The docs as a new user reads them: a renderer crate assembled from `docs/renderer.md`'s code
+//! blocks exactly as they stand, built by cargo (kiln as its build script and its run time) and
+//! run on the GPU, drawing through the material layer with no layout or uniform code of its own;
+//! the README's Rust blocks compiled in the same crate.
+
+use crate::support::{cargo_scratch, root};
+use std::path::Path;
+
+/// The fenced code blocks of `language` in a Markdown text, in order.
+fn code_blocks(markdown: &str, language: &str) -> Vec<String> {
+    let mut blocks = Vec::new();
+    let mut current: Option<String> = None;
+    for line in markdown.lines() {
+        match (&mut current, line.trim_start().strip_prefix("```")) {
+            (None, Some(info)) if info.trim() == language => current = Some(String::new()),
+            (Some(_), Some("")) => blocks.extend(current.take()),
+            (Some(block), _) => {
+                block.push_str(line);
+                block.push('\n');
+            }
+            _ => {}
+        }
+    }
+    blocks
+}
+
+/// What the docs leave to the renderer: a device, the targets, a white texture, a camera and an
+/// object (identity matrices: the triangle is given in clip space), a triangle facing the light,
+/// and reading the pixel back. The docs' blocks go where `{...}` stand.
+const HARNESS: &str = r#"
+{generated_module}
+
+fn device() -> (wgpu::Device, wgpu::Queue) {
+    let instance = wgpu::Instance::default();
+    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
+        .expect("an adapter (lavapipe in CI)");
+    pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default())).expect("a device")
+}
+
+fn texture(device: &wgpu::Device, format: wgpu::TextureFormat, usage: wgpu::TextureUsages) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: None,
+        size: wgpu::Extent3d { width: 8, height: 8, depth_or_array_layers: 1 },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage,
+        view_formats: &[],
+    })
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let (device, queue) = device();
+    let (format, depth_format) = (wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureFormat::Depth32Float);
+    let white = texture(&device, format, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
+    queue.write_texture(white.as_image_copy(), &[255u8; 8 * 8 * 4], wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(32), rows_per_image: None }, white.size());
+    let white_view = white.create_view(&Default::default());
+    let identity = [[1.0f32, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
+    let (view_projection, object_to_world, world_to_object) = (identity, identity, identity);
+    let eye = [0.0f32, 0.0, -5.0];
+
+    {materials_to_bind_groups}
+
+    {per_frame_and_per_object}
+
+    // A triangle in clip space facing the camera (normal towards -z, as the light comes from).
+    let vertex = |x: f32, y: f32| [x, y, 0.5, 0.0, 0.0, -1.0, 0.5, 0.5];
+    let triangle = [vertex(-1.0, -1.0), vertex(3.0, -1.0), vertex(-1.0, 3.0)];
+    let vertices = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: None,
+        contents: bytemuck::cast_slice(&triangle),
+        usage: wgpu::BufferUsages::VERTEX,
+    });
+    let target = texture(&device, format, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC);
+    let depth = texture(&device, depth_format, wgpu::TextureUsages::RENDER_ATTACHMENT);
+    let (target_view, depth_view) = (target.create_view(&Default::default()), depth.create_view(&Default::default()));
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut render_pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: None,
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &target_view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::BLACK), store: wgpu::StoreOp::Store },
+            })],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &depth_view,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+                stencil_ops: None,
+            }),
+            ..Default::default()
+        });
+        {render_pass}
+    }
+    let readback = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: 256 * 8,
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    encoder.copy_texture_to_buffer(
+        target.as_image_copy(),
+        wgpu::TexelCopyBufferInfo { buffer: &readback, layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(256), rows_per_image: None } },
+        target.size(),
+    );
+    queue.submit([encoder.finish()]);
+    readback.map_async(wgpu::MapMode::Read, .., |_| {});
+    device.poll(wgpu::PollType::wait_indefinitely())?;
+    let bytes = readback.get_mapped_range(..)?;
+    let pixel = &bytes[4 * 256 + 4 * 4..4 * 256 + 4 * 4 + 4];
+    println!("pixel {} {} {} {}", pixel[0], pixel[1], pixel[2], pixel[3]);
+    Ok(())
+}
+"#;
+
+#[test]
+fn a_renderer_written_from_the_docs_builds_and_draws() {
+    if crate::support::gpu("a_renderer_written_from_the_docs_builds_and_draws").is_none() {
+        return;
+    }
+    let page = std::fs::read_to_string(root().join("docs/renderer.md")).expect("docs/renderer.md");
+    let rust = code_blocks(&page, "rust");
+    let toml = code_blocks(&page, "toml");
+    let [build_rs, generated_module, materials, per_frame, render_pass] = &rust[..] else {
+        panic!("docs/renderer.md's Rust blocks changed: {} of them", rust.len());
+    };
+    let dir = tempfile::tempdir().expect("tempdir");
+    let krate = dir.path().join("my-renderer");
+    // Dependencies as the page gives them, kiln's path pointing at this checkout; the harness
+    // adds pollster to wait for the adapter.
+    let dependencies =
+        toml[0].replace("path = \"../kiln\"", &format!("path = {:?}", root().display().to_string()));
+    let manifest = format!(
+        "[package]\nname = \"my-renderer\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n{}\n\n\
+         [dependencies.pollster]\nversion = \"0.4\"\n\n[workspace]\n",
+        dependencies.trim_end()
+    );
+    write(&krate.join("Cargo.toml"), &manifest);
+    write(&krate.join("build.rs"), build_rs);
+    // The example project's shaders and materials, where the build script looks.
+    for (from, to) in [("fixtures/project/shaders", "shaders"), ("fixtures/project/materials", "materials")] {
+        for entry in std::fs::read_dir(root().join(from)).expect("fixtures") {
+            let path = entry.expect("entry").path();
+            std::fs::create_dir_all(krate.join(to)).expect("mkdir");
+            std::fs::copy(&path, krate.join(to).join(path.file_name().expect("name"))).expect("copy");
+        }
+    }
+    let mut main = HARNESS
+        .replace("{generated_module}", &format!("use wgpu::util::DeviceExt as _;\n{generated_module}"))
+        .replace("{materials_to_bind_groups}", materials)
+        .replace("{per_frame_and_per_object}", per_frame)
+        .replace("{render_pass}", render_pass);
+    main.push_str(&readme_functions());
+    write(&krate.join("src/main.rs"), &main);
+    let run = cargo_scratch(&krate, &["run", "--quiet"]);
+    let (stdout, stderr) = (String::from_utf8_lossy(&run.stdout), String::from_utf8_lossy(&run.stderr));
+    assert!(
+        run.status.success(),
+        "the crate from docs/renderer.md fails:\n{stdout}\n{stderr}\n--- src/main.rs\n{main}"
+    );
+    // LitClip's `_BaseColor` (0.3, 0.8, 0.2) lit head-on: green, far from the black clear colour.
+    let pixel: Vec<u32> = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("pixel "))
+        .expect("the pixel printed")
+        .split(' ')
+        .map(|v| v.parse().expect("a number"))
+        .collect();
+    assert!(pixel[1] > 60 && pixel[1] > pixel[0] && pixel[1] > pixel[2], "{pixel:?}\n{stdout}");
+}
+
+/// The README's Rust blocks, compiled (not run) in the same crate: its build script as a nested
+/// `fn main`, the generated module's use and the run time's, each in a function of its own with
+/// what the README assumes (`device`, `format`, `depth_format`) as parameters.
+fn readme_functions() -> String {
+    let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
+    let blocks = code_blocks(&readme, "rust");
+    let [build_script, generated_module, runtime] = &blocks[..] else {
+        panic!("the README's Rust blocks changed: {} of them", blocks.len());
+    };
+    format!(
+        "\n#[allow(dead_code, unused)]\nfn readme_build_script() {{\n{build_script}}}\n\n\
+         #[allow(dead_code, unused)]\nfn readme_generated_module() -> Result<(), Box<dyn std::error::Error>> {{\n{generated_module}    Ok(())\n}}\n\n\
+         #[allow(dead_code, unused)]\nfn readme_runtime(device: wgpu::Device, format: wgpu::TextureFormat, depth_format: wgpu::TextureFormat) -> Result<(), Box<dyn std::error::Error>> {{\n{runtime}    Ok(())\n}}\n"
+    )
+}
+
+fn write(path: &Path, text: &str) {
+    std::fs::create_dir_all(path.parent().expect("folder")).expect("mkdir");
+    std::fs::write(path, text).expect("write");
+}
