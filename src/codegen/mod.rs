@@ -7,6 +7,7 @@
 //! once (`include_str!`, `include_bytes!`), each module is a row of numbers (its interface and
 //! its ranges of the packs), and each variant a sorted key and two module indices.
 
+mod handles;
 mod layout;
 
 use crate::manifest::{Manifest, ModuleFile, PassManifest, ShaderManifest};
@@ -365,7 +366,7 @@ fn shader_module(out: &mut String, shader: &ShaderManifest, packs: &PackNumbers)
     );
     let _ = writeln!(out, "pub mod {} {{", module_name(&shader.name));
     let _ = writeln!(out, "    pub const NAME: &str = {:?};", shader.name);
-    handles(out, shader);
+    handles::handles(out, shader);
     for pass in &shader.passes {
         pass_static(out, pass, packs);
     }
@@ -486,65 +487,8 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
         let _ = writeln!(out, "            {},", modules.join(", "));
     }
     out.push_str("        ],\n    };\n");
-    kernel_constants(out, pass);
+    handles::kernel_constants(out, pass);
     overrides_struct(out, pass);
-}
-
-/// Its keywords and kernels as constants, so that a misspelt one is a compile error rather than
-/// a missing variant at run time: `keywords::_CLIPPING` is `"_CLIPPING"`, `kernels::DOUBLE` is
-/// `"Double"`.
-fn handles(out: &mut String, shader: &ShaderManifest) {
-    let mut keywords: Vec<&str> = shader
-        .passes
-        .iter()
-        .flat_map(|p| p.keyword_sets.iter().flat_map(|s| &s.keywords))
-        .map(String::as_str)
-        .filter(|k| *k != "_")
-        .collect();
-    keywords.sort_unstable();
-    keywords.dedup();
-    let mut kernels: Vec<&str> = shader.passes.iter().flat_map(|p| &p.kernels).map(String::as_str).collect();
-    kernels.dedup();
-    for (module, names, what) in [("keywords", keywords, "keyword"), ("kernels", kernels, "kernel")] {
-        if names.is_empty() {
-            continue;
-        }
-        let _ = writeln!(
-            out,
-            "    /// Each {what} of the shader, as the runtime takes it.\n    pub mod {module} {{"
-        );
-        for name in names {
-            // A keyword is an identifier already; a kernel is written in upper case.
-            let constant = if module == "kernels" { upper_snake(name) } else { name.to_string() };
-            let _ = writeln!(out, "        pub const {constant}: &str = {name:?};");
-        }
-        out.push_str("    }\n");
-    }
-}
-
-/// A name as a Rust constant's: `Double` is `DOUBLE`.
-fn upper_snake(name: &str) -> String {
-    name.chars().map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_uppercase() } else { '_' }).collect()
-}
-
-/// `NAME_WORKGROUP_SIZE` for each kernel whose variants all have one size.
-fn kernel_constants(out: &mut String, pass: &PassManifest) {
-    for (k, kernel) in pass.kernels.iter().enumerate() {
-        let mut sizes = pass
-            .variants
-            .iter()
-            .filter_map(|v| v.kernels.get(k).copied().flatten())
-            .filter_map(|m| pass.stage(m).interface.workgroup_size);
-        let Some(first) = sizes.next() else { continue };
-        if sizes.all(|size| size == first) {
-            let name = upper_snake(kernel);
-            let _ = writeln!(
-                out,
-                "    /// `{kernel}`'s `@workgroup_size` (pass {}).\n    pub const {name}_WORKGROUP_SIZE: [u32; 3] = {first:?};",
-                pass.index
-            );
-        }
-    }
 }
 
 /// `PassNOverrides`: the pass's own `override` constants (its `dynamic_branch` keywords are set

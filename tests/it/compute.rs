@@ -267,7 +267,7 @@ fn the_generated_module_finds_kernels_and_their_workgroup_sizes() {
     for line in [
         r#"kernels: &["Double", "AddOffset", "Reverse"],"#,
         "pub const DOUBLE_WORKGROUP_SIZE: [u32; 3] = [64, 1, 1];",
-        "pub const ADDOFFSET_WORKGROUP_SIZE: [u32; 3] = [32, 2, 1];",
+        "pub const ADD_OFFSET_WORKGROUP_SIZE: [u32; 3] = [32, 2, 1];",
     ] {
         assert!(module.contains(line), "the generated module has `{line}`");
     }

@@ -65,8 +65,11 @@ fn the_generated_module_grows_with_modules_not_variants_times_bytes() {
     let pack_bytes: u64 = packs.values().sum();
     assert_eq!((variants, modules), (200, 201), "one vertex module shared by every variant");
     // A fixed prelude (lookups of variants and kernels), a few constants per shader (its
-    // keywords), a row per module and a key and two indices per variant.
-    let bound = 18_432 + 1_024 * manifest.shaders.len() + 64 * modules + 32 * variants;
+    // keywords), a constant per material (its name), a row per module and a key and two indices
+    // per variant.
+    let materials: std::collections::BTreeSet<&String> =
+        manifest.passes().flat_map(|p| p.variants.iter().flat_map(|v| &v.materials)).collect();
+    let bound = 18_432 + 1_024 * manifest.shaders.len() + 48 * materials.len() + 64 * modules + 32 * variants;
     assert!(rust.len() < bound, "{} bytes, over {bound}", rust.len());
     assert!(
         (rust.len() as u64) * 20 < pack_bytes,
