@@ -73,6 +73,22 @@ pub fn serve(connection: &Connection, options: &ServerOptions) -> Result<(), Lsp
         .and_then(|c| c.refresh_support)
         .unwrap_or(false);
     connection.initialize_finish(id, initialize_result())?;
+    // Files changed behind the editor's back (a checkout, a generator) are checked again when the
+    // client can watch them for the server.
+    let watches = params.capabilities.workspace.as_ref().and_then(|w| w.did_change_watched_files.as_ref());
+    if watches.and_then(|w| w.dynamic_registration).unwrap_or(false) {
+        let watchers: Vec<Value> = ["**/*.{shader,compute,wgsl,mat}", "**/kiln.toml"]
+            .iter()
+            .map(|glob| json!({ "globPattern": glob }))
+            .collect();
+        let registration = json!({ "registrations": [{
+            "id": "kiln-files",
+            "method": "workspace/didChangeWatchedFiles",
+            "registerOptions": { "watchers": watchers },
+        }]});
+        let request = Request::new(RequestId::from(0), "client/registerCapability".into(), registration);
+        connection.sender.send(Message::Request(request)).map_err(|_| LspError::Disconnected)?;
+    }
     let user_cache = std::env::var_os("XDG_CACHE_HOME")
         .map(PathBuf::from)
         .or_else(|| std::env::var_os("HOME").map(|home| PathBuf::from(home).join(".cache")))

@@ -490,3 +490,33 @@ fn a_client_that_goes_away_ends_the_server() {
         assert!(stderr.contains("error[K0007]: language server protocol"), "{stderr}");
     }
 }
+
+/// A client that can watch files for the server is asked to watch the project's; a file changed
+/// on disk (not open in the editor) is checked again when the client says so.
+#[test]
+fn files_changed_behind_the_editor_are_checked_again() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let project = example_project_copy(dir.path());
+    let capabilities = json!({ "workspace": { "didChangeWatchedFiles": { "dynamicRegistration": true } } });
+    let mut client = Client::start_with(dir.path(), capabilities);
+    let registration = client.notification("client/registerCapability");
+    let watchers = &registration["registrations"][0]["registerOptions"]["watchers"];
+    assert!(watchers.to_string().contains("**/*.{shader,compute,wgsl,mat}"), "{registration}");
+    let (lit_uri, _) = open_saved(&mut client, &project, "shaders/LitPass.wgsl");
+    client.diagnostics(&lit_uri, Some(1));
+    let unlit = project.join("shaders/UnlitPass.wgsl");
+    let text = std::fs::read_to_string(&unlit).expect("UnlitPass");
+    std::fs::write(&unlit, text.replacen("return", "return not_declared +", 1)).expect("write");
+    let unlit_uri = uri(&unlit);
+    let changes = json!({ "changes": [{ "uri": unlit_uri, "type": 2 }] });
+    client.notify("workspace/didChangeWatchedFiles", changes);
+    // A request on the project is answered after its check, whose diagnostics come first.
+    client.request("textDocument/documentSymbol", json!({ "textDocument": { "uri": lit_uri } }));
+    let diagnostics = client.latest_diagnostics(&unlit_uri);
+    let found = errors(&diagnostics);
+    assert!(
+        found.iter().any(|d| d["message"].as_str().is_some_and(|m| m.contains("not_declared"))),
+        "{diagnostics:#?}"
+    );
+    client.shutdown();
+}

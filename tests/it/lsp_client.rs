@@ -26,6 +26,11 @@ pub struct Client {
 impl Client {
     /// Starts `kiln lsp` with its caches in `scratch` and initializes it.
     pub fn start(scratch: &Path) -> Client {
+        Client::start_with(scratch, json!({ "workspace": { "codeLens": { "refreshSupport": false } } }))
+    }
+
+    /// [`Client::start`] for a client with these capabilities.
+    pub fn start_with(scratch: &Path, capabilities: Value) -> Client {
         let mut child = Command::new(env!("CARGO_BIN_EXE_kiln"))
             .args(["lsp", "--cache-dir"])
             .arg(scratch.join("cache"))
@@ -46,7 +51,6 @@ impl Client {
             }
         });
         let mut client = Client { child, stdin, incoming, pending: Vec::new(), next_id: 0 };
-        let capabilities = json!({ "workspace": { "codeLens": { "refreshSupport": false } } });
         let init = client.request(
             "initialize",
             json!({ "processId": null, "rootUri": null, "capabilities": capabilities }),
@@ -98,7 +102,8 @@ impl Client {
         latest["params"]["diagnostics"].as_array().cloned().unwrap_or_default()
     }
 
-    /// Waits for the next notification `method` and returns its parameters.
+    /// Waits for the next message from the server with `method` (a notification or a request)
+    /// and returns its parameters.
     pub fn notification(&mut self, method: &str) -> Value {
         self.wait(|m| m["method"] == method)["params"].clone()
     }
