@@ -72,6 +72,35 @@ fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
     let normalization = f32(roughness) * 0.125 + 2.0;
     return q * q / (max(0.1, f32(lh * lh)) * normalization);
 }
+#elif defined(_SPECULAR_RATIO)
+// The stable form's model without normalising H. With M = L + V: (N.H)^2 = (N.M)^2 / M.M,
+// (L.H)^2 = (L.M)^2 / M.M and, for a unit N, 1 - (N.H)^2 = |N x M|^2 / M.M (Lagrange's identity),
+// so d = q / M.M with q = |N x M|^2 + (N.M)^2 r^2 + 0.00001 M.M, and the term is a ratio of
+// squares of M: one cross product takes the place of the reciprocal square root and the scaling
+// of H, and 1 - (N.H)^2 is never a difference of nearly equal numbers. A zero or denormal normal
+// keeps the identity's first term, 1 - |N|^2; L = -V (M = 0) is the seed's zero half vector.
+fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
+    let m = light.direction + surface.viewDirection;
+    let mm = dot(m, m);
+    // L and V nearly opposite (rare): normalised as SafeNormalize would, so that no product of
+    // squares below underflows.
+
+    let n = surface.normal;
+    let nm = max(dot(n, m), 0.0);
+    let lm = max(dot(light.direction, m), 0.0);
+    let nxm = cross(n, m);
+    let deficit = 1.0 - dot(n, n);
+    let roughness = max(brdf.roughness, KILN_MIN_ROUGHNESS);
+    let r2 = roughness * roughness;
+    let sin2mm = dot(nxm, nxm) + select(deficit * mm, 0.0, abs(deficit) < 1e-3);
+    // L = -V, or so nearly that |M|^6 would underflow: the seed's zero half vector.
+    let zero = mm < 1e-9;
+    let s = select(mm, 1.0, zero);
+    let q = select(sin2mm + nm * nm * r2 + 0.00001 * mm, 1.00001, zero);
+    let x = select(max(0.1 * mm, lm * lm), 0.1, zero);
+    let normalization = roughness * 4.0 + 2.0;
+    return r2 * s * s * s / (q * q * x * normalization);
+}
 #elif defined(_SPECULAR_STABLE)
 // The same model, written to avoid cancellation: d = (1 - (N.H)^2) + (N.H)^2 r^2 + 0.00001 with
 // 1 - (N.H)^2 taken from |N x H|^2 (Lagrange's identity: 1 - (N.H)^2 = 1 - |N|^2|H|^2 + |N x H|^2),

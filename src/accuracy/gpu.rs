@@ -27,7 +27,7 @@ const HARNESS: &str = r#"
 #pragma kernel AllLights
 #pragma kernel TimeOneLight
 #pragma kernel TimeAllLights
-#pragma multi_compile _ _SPECULAR_STABLE _SPECULAR_HALF
+#pragma multi_compile _ _SPECULAR_STABLE _SPECULAR_HALF _SPECULAR_RATIO
 #pragma multi_compile _ _SINGLE_DIRECTIONAL_LIGHT
 #pragma require native16bit : _SPECULAR_HALF
 #if defined(_SPECULAR_HALF)

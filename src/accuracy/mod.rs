@@ -17,11 +17,15 @@ pub enum Formulation {
     Stable,
     /// `_SPECULAR_HALF`: the stable form in f16 arithmetic (adapters with `shader-f16`).
     Half,
+    /// `_SPECULAR_RATIO`: the stable form's model as a ratio of squares of L + V (no
+    /// normalised half vector, no cancellation).
+    Ratio,
 }
 
 impl Formulation {
     /// Every formulation, in report order.
-    pub const ALL: [Formulation; 3] = [Formulation::Seed, Formulation::Stable, Formulation::Half];
+    pub const ALL: [Formulation; 4] =
+        [Formulation::Seed, Formulation::Stable, Formulation::Half, Formulation::Ratio];
 
     /// Its name in the report.
     pub fn name(self) -> &'static str {
@@ -29,6 +33,7 @@ impl Formulation {
             Formulation::Seed => "seed",
             Formulation::Stable => "stable",
             Formulation::Half => "stable f16",
+            Formulation::Ratio => "ratio",
         }
     }
 
@@ -38,6 +43,7 @@ impl Formulation {
             Formulation::Seed => &[],
             Formulation::Stable => &["_SPECULAR_STABLE"],
             Formulation::Half => &["_SPECULAR_HALF"],
+            Formulation::Ratio => &["_SPECULAR_RATIO"],
         }
     }
 
@@ -257,8 +263,8 @@ pub fn reference(case: &Case, formulation: Formulation) -> r::Vec3 {
     let brdf: Brdf = r::get_brdf(&case.surface, case.premultiply);
     let specular = match formulation {
         Formulation::Seed => r::specular_strength(&case.surface, &brdf, &case.light),
-        // The f16 form computes the stable form's model; its error is its precision's.
-        Formulation::Stable | Formulation::Half => {
+        // The f16 and ratio forms compute the stable form's model; their error is their arithmetic's.
+        Formulation::Stable | Formulation::Half | Formulation::Ratio => {
             r::specular_strength_stable(&case.surface, &brdf, &case.light)
         }
     };
