@@ -64,7 +64,8 @@ fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
     let nh = saturate(dot(n, h));
     let nxh = cross(n, h) * 32.0h;
     let deficit = 1.0h - dot(n, n) * dot(h, h);
-    let oneMinusNh2 = clamp(dot(nxh, nxh) + select(deficit * 1024.0h, 0.0h, abs(deficit) < 0.01h), 0.0h, 1024.0h);
+    // H below the surface (N.H <= 0, which saturate makes 0): 1 - (N.H)^2 is 1, not |N x H|^2.
+    let oneMinusNh2 = select(1024.0h, clamp(dot(nxh, nxh) + select(deficit * 1024.0h, 0.0h, abs(deficit) < 0.01h), 0.0h, 1024.0h), dot(n, h) > 0.0h);
     let lh = saturate(dot(vec3<f16>(light.direction), h));
     let roughness = max(f16(brdf.roughness), f16(KILN_MIN_ROUGHNESS)) * 32.0h;
     let d = oneMinusNh2 + nh * nh * roughness * roughness + 0.01024h;
@@ -92,7 +93,8 @@ fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
     let deficit = 1.0 - dot(n, n);
     let roughness = max(brdf.roughness, KILN_MIN_ROUGHNESS);
     let r2 = roughness * roughness;
-    let sin2mm = dot(nxm, nxm) + select(deficit * mm, 0.0, abs(deficit) < 1e-3);
+    // H below the surface (N.H <= 0, which saturate makes 0): 1 - (N.H)^2 is 1, not |N x H|^2.
+    let sin2mm = select(mm, dot(nxm, nxm) + select(deficit * mm, 0.0, abs(deficit) < 1e-3), dot(n, m) > 0.0);
     // L = -V, or so nearly that |M|^6 would underflow: the seed's zero half vector.
     let zero = mm < 1e-9;
     let s = select(mm, 1.0, zero);
@@ -112,7 +114,8 @@ fn SpecularStrength(surface: Surface, brdf: BRDF, light: Light) -> f32 {
     let nh = saturate(dot(surface.normal, h));
     let nxh = cross(surface.normal, h);
     let deficit = 1.0 - dot(surface.normal, surface.normal) * dot(h, h);
-    let oneMinusNh2 = saturate(dot(nxh, nxh) + select(deficit, 0.0, abs(deficit) < 1e-3));
+    // H below the surface (N.H <= 0, which saturate makes 0): 1 - (N.H)^2 is 1, not |N x H|^2.
+    let oneMinusNh2 = select(1.0, saturate(dot(nxh, nxh) + select(deficit, 0.0, abs(deficit) < 1e-3)), dot(surface.normal, h) > 0.0);
     let lh2 = Square(saturate(dot(light.direction, h)));
     let roughness = max(brdf.roughness, KILN_MIN_ROUGHNESS);
     let r2 = Square(roughness);

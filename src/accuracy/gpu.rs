@@ -544,3 +544,20 @@ pub fn run(gpu: &Gpu) -> Result<(Vec<Row>, Vec<Timing>, String), String> {
     );
     Ok((rows, timings, method))
 }
+
+/// [`super::search`] for every formulation the adapter runs: the worst input found for each.
+pub fn search(gpu: &Gpu) -> Result<Vec<(Formulation, super::Found)>, String> {
+    let harness = Harness {
+        device: &gpu.device,
+        queue: &gpu.queue,
+        timestamps: gpu.timestamps,
+        built: Default::default(),
+    };
+    let mut found = Vec::new();
+    for formulation in Formulation::ALL.into_iter().filter(|f| gpu.f16 || !f.needs_f16()) {
+        let one = harness.pipeline(formulation.keywords(), "OneLight")?;
+        let mut evaluate = |cases: &[Case]| harness.dispatch(&one, cases, None, cases.len() as u32).0;
+        found.push((formulation, super::search(formulation, &mut evaluate)));
+    }
+    Ok(found)
+}

@@ -373,3 +373,141 @@ pub fn render(adapter: &str, rows: &[Row], timings: &[Timing], method: &str) -> 
     let _ = writeln!(out, "\n{method}");
     out
 }
+
+/// One case's error as [`stats`] measures it: normwise relative, compared absolutely below
+/// [`ABSOLUTE_FLOOR`]; NaN or Inf is infinitely wrong.
+pub fn case_error(gpu: [f32; 3], want: r::Vec3) -> f64 {
+    if gpu.iter().any(|x| !x.is_finite()) {
+        return f64::INFINITY;
+    }
+    let scale = want.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let difference = (0..3).fold(0.0f64, |m, k| m.max((f64::from(gpu[k]) - want[k]).abs()));
+    difference / scale.max(ABSOLUTE_FLOOR)
+}
+
+/// The search looks where N·L is at least this. Below it the lit colour's error is N·L's own f32
+/// rounding (about 2e-7 absolute, so more than 1e-5 relative below N·L = 0.02) whatever the
+/// BRDF's formula, and searching there finds only that.
+pub const SEARCH_MIN_N_DOT_L: f64 = 0.05;
+
+/// [`case_error`] where N·L is at least [`SEARCH_MIN_N_DOT_L`], else 0.
+fn search_error(gpu: [f32; 3], case: &Case, formulation: Formulation) -> f64 {
+    if r::dot(case.surface.normal, case.light.direction) < SEARCH_MIN_N_DOT_L {
+        return 0.0;
+    }
+    case_error(gpu, reference(case, formulation))
+}
+
+/// The worst input a search found, with its error.
+#[derive(Debug, Clone, Copy)]
+pub struct Found {
+    /// The input.
+    pub case: Case,
+    /// Its error ([`case_error`]).
+    pub error: f64,
+    /// Evaluations the search made.
+    pub evaluations: usize,
+}
+
+/// Cases per evaluation round of [`search`], and rounds.
+pub const SEARCH_BATCH: usize = 4096;
+/// Rounds of [`search`]: a quarter of each round random restarts, the rest the best inputs so
+/// far moved by 10^-1 to 10^-7 (directions in radians), so a search can close in on a worst case
+/// as narrow as the seed's n·h → 1.
+pub const SEARCH_ROUNDS: usize = 24;
+const SEARCH_ELITES: usize = 32;
+
+impl Random {
+    /// Any input: three directions over the sphere, smoothness, metallic and colour in [0, 1].
+    fn case(&mut self) -> Case {
+        let surface = Surface {
+            normal: self.direction(),
+            view_direction: self.direction(),
+            color: [self.next(), self.next(), self.next()],
+            alpha: 1.0,
+            metallic: self.next(),
+            smoothness: self.next(),
+        };
+        Case { surface, light: Light { color: WHITE, direction: self.direction() }, premultiply: false }
+    }
+
+    /// `case` moved by about `scale`: each direction turned by up to `scale` radians, each scalar
+    /// moved by up to `scale` (kept in [0, 1]).
+    fn nearby(&mut self, case: &Case, scale: f64) -> Case {
+        let mut turn = |v: r::Vec3| {
+            let moved = r::add(v, r::scale(self.direction(), scale * self.next()));
+            r::scale(moved, 1.0 / r::dot(moved, moved).sqrt())
+        };
+        let (normal, view, light) =
+            (turn(case.surface.normal), turn(case.surface.view_direction), turn(case.light.direction));
+        let mut near = |x: f64| (x + scale * (self.next() * 2.0 - 1.0)).clamp(0.0, 1.0);
+        let s = case.surface;
+        let surface = Surface {
+            normal,
+            view_direction: view,
+            color: [near(s.color[0]), near(s.color[1]), near(s.color[2])],
+            metallic: near(s.metallic),
+            smoothness: near(s.smoothness),
+            ..s
+        };
+        Case { surface, light: Light { direction: light, ..case.light }, ..*case }
+    }
+}
+
+/// Searches the whole input space for the input where `evaluate` (a formulation run on an
+/// adapter, cases in, colours out) is worst against `formulation`'s f64 reference (relative
+/// error where N·L >= [`SEARCH_MIN_N_DOT_L`]): random restarts plus local
+/// search around the worst inputs so far, at scales from 10^-1 to 10^-7. Deterministic for a
+/// given `evaluate`.
+pub fn search(formulation: Formulation, evaluate: &mut dyn FnMut(&[Case]) -> Vec<[f32; 3]>) -> Found {
+    let mut random = Random(0x2545_f491_4f6c_dd1d);
+    let mut elites: Vec<(f64, Case)> = Vec::new();
+    let mut evaluations = 0;
+    for _ in 0..SEARCH_ROUNDS {
+        let batch: Vec<Case> = (0..SEARCH_BATCH)
+            .map(|i| match elites.get(i % SEARCH_ELITES.max(1)) {
+                Some((_, elite)) if i >= SEARCH_BATCH / 4 => {
+                    let scale = 10f64.powi(-1 - (random.next() * 7.0) as i32);
+                    random.nearby(elite, scale)
+                }
+                _ => random.case(),
+            })
+            .map(round_case)
+            .collect();
+        let results = evaluate(&batch);
+        evaluations += batch.len();
+        for (case, result) in batch.into_iter().zip(results) {
+            let error = search_error(result, &case, formulation);
+            elites.push((if error.is_nan() { f64::INFINITY } else { error }, case));
+        }
+        elites.sort_by(|a, b| b.0.total_cmp(&a.0));
+        elites.truncate(SEARCH_ELITES);
+    }
+    let (error, case) = elites[0];
+    Found { case, error, evaluations }
+}
+
+/// The worst inputs found, as a table.
+pub fn render_search(found: &[(Formulation, Found)]) -> String {
+    let mut out = format!(
+        "\nWorst found by search ({SEARCH_ROUNDS} rounds of {SEARCH_BATCH} inputs per formulation, N.L >= {SEARCH_MIN_N_DOT_L})\n{:<11}{:>11}  input\n",
+        "formula", "max rel"
+    );
+    for (formulation, found) in found {
+        let c = &found.case;
+        let v = |v: r::Vec3| format!("({:.6}, {:.6}, {:.6})", v[0], v[1], v[2]);
+        let _ = writeln!(
+            out,
+            "{:<11}{:>11.3e}  N {} V {} L {} smoothness {:.6} metallic {:.4} colour {}",
+            formulation.name(),
+            found.error,
+            v(c.surface.normal),
+            v(c.surface.view_direction),
+            v(c.light.direction),
+            c.surface.smoothness,
+            c.surface.metallic,
+            v(c.surface.color)
+        );
+    }
+    out
+}

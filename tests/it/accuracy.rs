@@ -115,3 +115,47 @@ fn hard_cases_are_generated_the_same_way_every_time() {
     let s = stats(&exact, &references);
     assert!(s.max_relative < 1e-7 && s.max_ulps == 0 && s.nan_or_inf == 0);
 }
+
+/// The search closes in on a bad input nobody told it about: a formulation broken (planted here,
+/// on the CPU) only within 1e-6 of n·h = 0.8, where its error grows as 1e-8 / |n·h - 0.8|. Random
+/// inputs see about 1e-6 of error; the search must find more than 1e-2 there.
+#[test]
+fn the_search_finds_a_planted_narrow_fault() {
+    let mut planted = |cases: &[kiln::accuracy::Case]| -> Vec<[f32; 3]> {
+        cases
+            .iter()
+            .map(|case| {
+                let right = reference(case, Formulation::Stable);
+                let s = &case.surface;
+                let h = kiln::reference::safe_normalize(kiln::reference::add(
+                    case.light.direction,
+                    s.view_direction,
+                ));
+                let nh = kiln::reference::dot(s.normal, h);
+                let fault = 1.0 + 1e-8 / ((nh - 0.8).abs() + 1e-12);
+                right.map(|x| (x * fault) as f32)
+            })
+            .collect()
+    };
+    let found = kiln::accuracy::search(Formulation::Stable, &mut planted);
+    let s = &found.case.surface;
+    let h =
+        kiln::reference::safe_normalize(kiln::reference::add(found.case.light.direction, s.view_direction));
+    let nh = kiln::reference::dot(s.normal, h);
+    assert!(found.error > 1e-2, "worst found {found:?}");
+    assert!((nh - 0.8).abs() < 1e-6, "n.h = {nh}: {found:?}");
+}
+
+/// On the GPU, the search finds the seed's cancellation near n·h = 1 by itself (more than 1e-3,
+/// as the chosen hard cases show), and reports every formulation.
+#[test]
+fn the_search_finds_the_seed_s_cancellation_on_the_gpu() {
+    let Some(gpu) = crate::support::gpu("the_search_finds_the_seed_s_cancellation_on_the_gpu") else {
+        return;
+    };
+    let found = kiln::accuracy::gpu::search(&gpu).expect("searches");
+    let seed = found.iter().find(|(f, _)| *f == Formulation::Seed).expect("seed").1;
+    assert!(seed.error > 1e-3, "{seed:?}");
+    let report = kiln::accuracy::render_search(&found);
+    assert!(report.contains("seed") && report.contains("ratio"), "{report}");
+}

@@ -103,7 +103,13 @@ pub fn accuracy() -> ExitCode {
     match kiln::accuracy::gpu::run(&gpu) {
         Ok((rows, timings, method)) => {
             print_out(&kiln::accuracy::render(&gpu.adapter, &rows, &timings, &method));
-            ExitCode::SUCCESS
+            match kiln::accuracy::gpu::search(&gpu) {
+                Ok(found) => {
+                    print_out(&kiln::accuracy::render_search(&found));
+                    ExitCode::SUCCESS
+                }
+                Err(error) => host_failure(&error),
+            }
         }
         Err(error) => {
             report(&SourceStore::new(), &[kiln::diagnostics::Diagnostic::host_failure(error.to_string())]);
