@@ -4,6 +4,8 @@
 
 #[cfg(feature = "gpu")]
 pub mod gpu;
+#[cfg(feature = "gpu")]
+pub mod plot;
 
 use crate::reference::{self as r, Brdf, Light, Surface};
 use std::fmt::Write as _;

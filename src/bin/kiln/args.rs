@@ -127,7 +127,12 @@ pub enum Command {
     },
     /// Measure the shader library's formulations against the f64 reference on hard cases, on
     /// the GPU (the speed-against-error table of docs/accuracy.md; needs `--features gpu`).
-    Accuracy,
+    Accuracy {
+        /// Also draw GPU time against worst error, one point per formulation with the Pareto
+        /// front, as an SVG file.
+        #[arg(long, value_name = "FILE.svg")]
+        plot: Option<PathBuf>,
+    },
     /// Serve editors: a language server (LSP over stdin and stdout) with diagnostics, hover,
     /// go-to-definition and completion for the project of each file opened (docs/editor.md).
     Lsp {

@@ -87,7 +87,7 @@ pub fn reflect(shader: PathBuf, pass: Option<String>, keywords: Vec<String>) -> 
 
 /// `kiln accuracy` in a kiln built without the GPU harness.
 #[cfg(not(feature = "gpu"))]
-pub fn accuracy() -> ExitCode {
+pub fn accuracy(_plot: Option<PathBuf>) -> ExitCode {
     host_failure(
         "this kiln was built without the `gpu` feature, which `kiln accuracy` needs: cargo install --path . --features gpu (or cargo run --features gpu -- accuracy)",
     )
@@ -95,7 +95,7 @@ pub fn accuracy() -> ExitCode {
 
 /// `kiln accuracy`.
 #[cfg(feature = "gpu")]
-pub fn accuracy() -> ExitCode {
+pub fn accuracy(plot: Option<PathBuf>) -> ExitCode {
     let gpu = match kiln::accuracy::gpu::device() {
         Ok(found) => found,
         Err(reason) => return host_failure(&reason),
@@ -103,12 +103,18 @@ pub fn accuracy() -> ExitCode {
     match kiln::accuracy::gpu::run(&gpu) {
         Ok((rows, timings, method)) => {
             print_out(&kiln::accuracy::render(&gpu.adapter, &rows, &timings, &method));
-            match kiln::accuracy::gpu::search(&gpu) {
-                Ok(found) => {
-                    print_out(&kiln::accuracy::render_search(&found));
-                    ExitCode::SUCCESS
-                }
-                Err(error) => host_failure(&error),
+            let found = match kiln::accuracy::gpu::search(&gpu) {
+                Ok(found) => found,
+                Err(error) => return host_failure(&error),
+            };
+            print_out(&kiln::accuracy::render_search(&found));
+            let Some(path) = plot else { return ExitCode::SUCCESS };
+            let points = kiln::accuracy::plot::points(&rows, &timings, &found);
+            let written = kiln::accuracy::plot::svg(&gpu.adapter, &points)
+                .and_then(|svg| std::fs::write(&path, svg).map_err(|e| e.to_string()));
+            match written {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(error) => host_failure(&format!("cannot write `{}`: {error}", path.display())),
             }
         }
         Err(error) => {
