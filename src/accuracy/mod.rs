@@ -317,10 +317,7 @@ pub fn stats(gpu: &[[f32; 3]], references: &[r::Vec3]) -> Stats {
             stats.nan_or_inf += 1;
             continue;
         }
-        let scale = want.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-        let difference = (0..3).fold(0.0f64, |m, k| m.max((f64::from(g[k]) - want[k]).abs()));
-        // Below ABSOLUTE_FLOOR a difference is not a relative error: GPUs flush denormals.
-        let relative = difference / scale.max(ABSOLUTE_FLOOR);
+        let relative = case_error(*g, *want);
         stats.max_relative = stats.max_relative.max(relative);
         sum += relative;
         for k in 0..3 {
@@ -377,7 +374,7 @@ pub fn render(adapter: &str, rows: &[Row], timings: &[Timing], method: &str) -> 
 }
 
 /// One case's error as [`stats`] measures it: normwise relative, compared absolutely below
-/// [`ABSOLUTE_FLOOR`]; NaN or Inf is infinitely wrong.
+/// [`ABSOLUTE_FLOOR`] (GPUs flush denormals); NaN or Inf is infinitely wrong.
 pub fn case_error(gpu: [f32; 3], want: r::Vec3) -> f64 {
     if gpu.iter().any(|x| !x.is_finite()) {
         return f64::INFINITY;

@@ -26,15 +26,7 @@ fn the_stable_form_is_accurate_everywhere_and_the_seed_is_not_near_nh_1() {
     let f16 = *f16;
     let sets = hard_cases().len();
     assert_eq!(rows.len(), if f16 { 4 } else { 3 } * sets);
-    for row in rows.iter().filter(|r| r.formulation == "stable") {
-        assert_eq!(row.stats.nan_or_inf, 0, "{}: no NaN or Inf", row.set);
-        assert!(
-            row.stats.max_relative <= 1e-4,
-            "{}: stable max relative error {}",
-            row.set,
-            row.stats.max_relative
-        );
-    }
+    assert_within(rows, "stable", 1e-4);
     let find = |formulation: &str, set: &str| {
         rows.iter().find(|r| r.formulation == formulation && r.set == set).expect("row").stats.max_relative
     };
@@ -52,16 +44,17 @@ const RATIO_MAX_RELATIVE: f64 = 1e-5;
 #[test]
 fn the_ratio_form_is_within_1e_5_on_every_hard_case() {
     let Some((rows, _)) = rows() else { return };
-    let ratio: Vec<&Row> = rows.iter().filter(|r| r.formulation == "ratio").collect();
-    assert_eq!(ratio.len(), hard_cases().len());
-    for row in ratio {
-        assert_eq!(row.stats.nan_or_inf, 0, "{}: no NaN or Inf", row.set);
-        assert!(
-            row.stats.max_relative <= RATIO_MAX_RELATIVE,
-            "{}: ratio max relative error {}",
-            row.set,
-            row.stats.max_relative
-        );
+    assert_within(rows, "ratio", RATIO_MAX_RELATIVE);
+}
+
+/// Every hard-case set of `formulation` ran, without NaN or Inf, within `bound`.
+fn assert_within(rows: &[Row], formulation: &str, bound: f64) {
+    let measured: Vec<&Row> = rows.iter().filter(|r| r.formulation == formulation).collect();
+    assert_eq!(measured.len(), hard_cases().len(), "{formulation}: every set");
+    for row in measured {
+        assert_eq!(row.stats.nan_or_inf, 0, "{formulation}, {}: no NaN or Inf", row.set);
+        let error = row.stats.max_relative;
+        assert!(error <= bound, "{formulation}, {}: max relative error {error}", row.set);
     }
 }
 
@@ -76,15 +69,7 @@ fn the_f16_form_keeps_three_digits_on_every_hard_case() {
         crate::support::skipped("the f16 check: the adapter has no shader-f16");
         return;
     }
-    for row in rows.iter().filter(|r| r.formulation == "stable f16") {
-        assert_eq!(row.stats.nan_or_inf, 0, "{}: no NaN or Inf", row.set);
-        assert!(
-            row.stats.max_relative <= HALF_MAX_RELATIVE,
-            "{}: f16 max relative error {}",
-            row.set,
-            row.stats.max_relative
-        );
-    }
+    assert_within(rows, "stable f16", HALF_MAX_RELATIVE);
 }
 
 #[test]
