@@ -135,22 +135,14 @@ fn mistakes_in_the_command_exit_2_with_the_reason_and_never_hang() {
     ];
     for (args, expected) in cases {
         // `kiln` waits for nothing here: a hang would fail the test by its timeout below.
-        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kiln"))
+        let child = std::process::Command::new(env!("CARGO_BIN_EXE_kiln"))
             .args(args)
             .current_dir(crate::support::root())
             .stderr(std::process::Stdio::piped())
             .stdout(std::process::Stdio::null())
             .spawn()
             .expect("kiln runs");
-        let started = std::time::Instant::now();
-        while child.try_wait().expect("waits").is_none() {
-            if started.elapsed() > std::time::Duration::from_secs(60) {
-                let _ = child.kill();
-                panic!("`kiln {}` did not end", args.join(" "));
-            }
-            std::thread::sleep(std::time::Duration::from_millis(20));
-        }
-        let output = child.wait_with_output().expect("ends");
+        let output = crate::support::output_within_a_minute(child, &format!("`kiln {}`", args.join(" ")));
         let stderr = String::from_utf8_lossy(&output.stderr);
         assert_eq!(output.status.code(), Some(2), "kiln {}: {stderr}", args.join(" "));
         assert!(stderr.contains(expected), "kiln {}: {stderr}", args.join(" "));

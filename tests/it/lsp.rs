@@ -479,12 +479,7 @@ fn a_client_that_goes_away_ends_the_server() {
         let mut stdin = child.stdin.take().expect("stdin");
         std::io::Write::write_all(&mut stdin, input).expect("write");
         drop(stdin);
-        let started = std::time::Instant::now();
-        while child.try_wait().expect("waits").is_none() {
-            assert!(started.elapsed() < std::time::Duration::from_secs(60), "kiln lsp did not end");
-            std::thread::sleep(std::time::Duration::from_millis(20));
-        }
-        let output = child.wait_with_output().expect("ends");
+        let output = crate::support::output_within_a_minute(child, "kiln lsp");
         let stderr = String::from_utf8_lossy(&output.stderr);
         assert_eq!(output.status.code(), Some(2), "{stderr}");
         assert!(stderr.contains("error[K0007]: language server protocol"), "{stderr}");

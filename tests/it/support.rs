@@ -265,3 +265,17 @@ pub fn example_project_copy(dir: &Path) -> PathBuf {
     }
     project
 }
+
+/// Waits for a process that must end by itself, failing the test (and killing it) after 60 s:
+/// a hang is a failure, not a stuck test run.
+pub fn output_within_a_minute(mut child: std::process::Child, what: &str) -> Output {
+    let started = std::time::Instant::now();
+    while child.try_wait().expect("waits").is_none() {
+        if started.elapsed() > std::time::Duration::from_secs(60) {
+            let _ = child.kill();
+            panic!("{what} did not end");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.wait_with_output().expect("ends")
+}

@@ -3,7 +3,7 @@
 
 mod common;
 
-use kiln_renderer::{Scene, compare, device, reference, render};
+use kiln_renderer::{Scene, compare, reference, render};
 use std::collections::BTreeSet;
 use std::path::Path;
 
@@ -14,17 +14,7 @@ const MEAN_ERROR: f64 = 0.003;
 
 #[test]
 fn the_scene_matches_the_f64_reference() {
-    let (device, queue, adapter) = match device() {
-        Ok(found) => found,
-        Err(reason) => {
-            assert!(
-                std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
-                "KILN_REQUIRE_GPU=1 but {reason}"
-            );
-            common::skipped(&format!("the render test: {reason}"));
-            return;
-        }
-    };
+    let Some((device, queue, adapter)) = common::gpu("the render test") else { return };
     let scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
     let image = render(&device, &queue, &scene).expect("renders");
     let (colors, edge) = reference(&scene);
@@ -135,10 +125,7 @@ impl kiln::runtime::MaterialTextures for Textures {
 /// texture the renderer does not have.
 #[test]
 fn a_material_bind_group_follows_its_material() {
-    let Ok((device, queue, _)) = device() else {
-        assert!(std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"), "KILN_REQUIRE_GPU=1 but no device");
-        return;
-    };
+    let Some((device, queue, _)) = common::gpu("the material bind group test") else { return };
     let mut runtime = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
     let textures = Textures {
         view: Some(kiln_renderer::white_texture(&device, &queue)),
@@ -180,10 +167,7 @@ fn a_material_bind_group_follows_its_material() {
 /// naming it.
 #[test]
 fn buffer_groups_bind_by_name_and_name_what_is_wrong() {
-    let Ok((device, _queue, _)) = device() else {
-        assert!(std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"), "KILN_REQUIRE_GPU=1 but no device");
-        return;
-    };
+    let Some((device, _queue, _)) = common::gpu("the buffer bind group test") else { return };
     let mut runtime = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
     let buffer = device.create_buffer(&wgpu::BufferDescriptor {
         label: None,

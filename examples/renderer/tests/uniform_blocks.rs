@@ -11,7 +11,6 @@ use kiln::manifest::Manifest;
 use kiln::reflect::Member;
 use kiln_renderer::blocks::test_halfblocks::{HalfPair, Halves};
 use kiln_renderer::blocks::test_uniformblocks::{Block, Cascade, Inner, Light, Shadow};
-use kiln_renderer::device;
 use std::path::Path;
 use wgpu::util::DeviceExt;
 
@@ -147,21 +146,6 @@ fn filled_halves() -> (Halves, u32) {
     (halves, n)
 }
 
-/// Skips (with the reason printed) when there is no adapter, unless CI requires one.
-fn gpu(test: &str) -> Option<(wgpu::Device, wgpu::Queue, String)> {
-    match device() {
-        Ok(found) => Some(found),
-        Err(reason) => {
-            assert!(
-                std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
-                "KILN_REQUIRE_GPU=1 but {reason}"
-            );
-            common::skipped(&format!("{test}: {reason}"));
-            None
-        }
-    }
-}
-
 /// The reflected blocks of the build script's `fixtures/blocks` build, by name.
 fn reflected(name: &str) -> kiln::reflect::UniformBlock {
     let manifest = Manifest::read(&Path::new(env!("OUT_DIR")).join("blocks/kiln")).expect("manifest");
@@ -273,7 +257,7 @@ fn round_trip(device: &wgpu::Device, queue: &wgpu::Queue, structs: &str, blocks:
 
 #[test]
 fn generated_structs_put_every_value_where_the_gpu_reads_it() {
-    let Some((device, queue, adapter)) = gpu("the uniform block round trip") else { return };
+    let Some((device, queue, adapter)) = common::gpu("the uniform block round trip") else { return };
     let (block, shadow, count) = filled();
     let blocks: [(&str, &[u8]); 2] =
         [("blk", bytemuck::bytes_of(&block)), ("shadow", bytemuck::bytes_of(&shadow))];
@@ -284,7 +268,7 @@ fn generated_structs_put_every_value_where_the_gpu_reads_it() {
 
 #[test]
 fn generated_structs_with_f16_members_put_every_value_where_the_gpu_reads_it() {
-    let Some((device, queue, adapter)) = gpu("the f16 uniform block round trip") else { return };
+    let Some((device, queue, adapter)) = common::gpu("the f16 uniform block round trip") else { return };
     if !device.features().contains(wgpu::Features::SHADER_F16) {
         common::skipped(&format!("the f16 round trip: {adapter} has no shader-f16"));
         return;

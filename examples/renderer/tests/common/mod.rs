@@ -6,3 +6,18 @@ pub fn skipped(what: &str) {
     use std::io::Write as _;
     let _ = writeln!(std::io::stderr(), "SKIPPED {what}");
 }
+
+/// Skips (with the reason printed) when there is no adapter, unless CI requires one.
+pub fn gpu(test: &str) -> Option<(wgpu::Device, wgpu::Queue, String)> {
+    match kiln_renderer::device() {
+        Ok(found) => Some(found),
+        Err(reason) => {
+            assert!(
+                std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
+                "KILN_REQUIRE_GPU=1 but {reason}"
+            );
+            skipped(&format!("{test}: {reason}"));
+            None
+        }
+    }
+}
