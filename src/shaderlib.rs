@@ -9,6 +9,23 @@ pub fn file(name: &str) -> Option<&'static str> {
     FILES.iter().find(|(file, _)| *file == name).map(|(_, text)| *text)
 }
 
+/// A digest of the bundled library (every file's name and text), recorded with each build: a
+/// library edited without a new kiln version number (a git dependency, kiln's own development)
+/// still makes the next build compile again instead of passing for a no-op.
+pub fn digest() -> &'static str {
+    static DIGEST: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    DIGEST.get_or_init(|| {
+        let mut hasher = blake3::Hasher::new();
+        for (name, text) in FILES {
+            for part in [name.as_bytes(), text.as_bytes()] {
+                hasher.update(&(part.len() as u64).to_le_bytes());
+                hasher.update(part);
+            }
+        }
+        hasher.finalize().to_hex()[..16].to_string()
+    })
+}
+
 #[cfg(test)]
 mod tests {
     #[test]

@@ -28,10 +28,14 @@ pub(super) fn disk_files(store: &SourceStore) -> impl Iterator<Item = FileId> + 
 const OUTPUT_FORMAT: u32 = 2;
 
 /// Everything a build's outcome depends on: the options, the texts given in memory (global
-/// keywords from a build script; the bundled library is part of kiln's version), and every file
+/// keywords from a build script; the bundled library by its digest), and every file
 /// read from disk (shaders, includes, materials, variant logs, the project file) by its name
 /// relative to the project, in the order read.
 pub(super) fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String {
+    key_with_library(store, options, crate::shaderlib::digest())
+}
+
+fn key_with_library(store: &SourceStore, options: &BuildOptions, library: &str) -> String {
     let mut hasher = blake3::Hasher::new();
     let mut file = |name: &str, bytes: &[u8]| {
         hasher.update(&(name.len() as u64).to_le_bytes());
@@ -47,7 +51,7 @@ pub(super) fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String 
         file(&recorded_name(store, f, options), store.text(f).as_bytes());
     }
     let options = format!(
-        "{:?}{:?}{}{} revision {COMPILER_REVISION} {NAGA_VERSION} output {OUTPUT_FORMAT} manifest {SCHEMA_VERSION}",
+        "{:?}{:?}{}{} library {library} revision {COMPILER_REVISION} {NAGA_VERSION} output {OUTPUT_FORMAT} manifest {SCHEMA_VERSION}",
         options.backends,
         options.unused_shaders,
         options.pretty_manifest,
@@ -118,4 +122,19 @@ pub(super) fn same_inputs(
         }
     }
     inputs_key(store, options) == key
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_inputs_key_follows_the_bundled_library() {
+        let mut store = SourceStore::new();
+        store.add("given.shader", "Shader \"A\" {}");
+        let options = BuildOptions::one_off("out".into(), ".".into(), false);
+        let key = inputs_key(&store, &options);
+        assert_eq!(key, key_with_library(&store, &options, crate::shaderlib::digest()));
+        assert_ne!(key, key_with_library(&store, &options, "0123456789abcdef"), "an edited library");
+    }
 }

@@ -31,7 +31,7 @@ pub struct ServerOptions {
     /// else `$XDG_CACHE_HOME/kiln/lsp-modules`).
     pub cache_dir: Option<PathBuf>,
     /// Where the bundled library's files are written for go-to-definition (default:
-    /// `$XDG_CACHE_HOME/kiln/shaderlib-VERSION`).
+    /// `$XDG_CACHE_HOME/kiln/shaderlib-DIGEST`, the library's [`crate::shaderlib::digest`]).
     pub library_dir: Option<PathBuf>,
 }
 
@@ -100,7 +100,7 @@ pub fn serve(connection: &Connection, options: &ServerOptions) -> Result<(), Lsp
         library: options
             .library_dir
             .clone()
-            .unwrap_or_else(|| user_cache.join(format!("shaderlib-{}", env!("CARGO_PKG_VERSION")))),
+            .unwrap_or_else(|| user_cache.join(format!("shaderlib-{}", crate::shaderlib::digest()))),
     };
     // Without the copy, go-to-definition into the library has nothing to open; nothing else needs it.
     let _ = write_library(&caches.library);

@@ -30,6 +30,11 @@ pub struct Image {
 }
 
 impl Image {
+    /// Each pixel's colour, 0..1 per channel.
+    pub fn colors(&self) -> Vec<[f64; 3]> {
+        self.pixels.chunks_exact(4).map(|p| [0, 1, 2].map(|k| f64::from(p[k]) / 255.0)).collect()
+    }
+
     pub fn write_png(&self, path: &std::path::Path) -> Result<(), Box<dyn std::error::Error>> {
         let file = std::io::BufWriter::new(std::fs::File::create(path)?);
         let mut encoder = png::Encoder::new(file, self.width, self.height);
@@ -55,6 +60,10 @@ fn mat_mul(a: &Mat4, b: &Mat4) -> Mat4 {
 
 fn normalize(v: r::Vec3) -> r::Vec3 {
     r::scale(v, 1.0 / r::dot(v, v).sqrt())
+}
+
+fn sub(a: r::Vec3, b: r::Vec3) -> r::Vec3 {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
 }
 
 fn cross(a: r::Vec3, b: r::Vec3) -> r::Vec3 {
@@ -301,7 +310,7 @@ pub fn render_frames(
 
     // The runtime's default vertex packing of the pass's inputs (position, normal, uv) is the
     // mesh's interleaving.
-    let (vertices, indices) = sphere_mesh(96, 192);
+    let (vertices, indices) = sphere_mesh(SPHERE_RINGS, SPHERE_SEGMENTS);
     let vertex_buffer = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
         label: None,
         contents: bytemuck::cast_slice(&vertices),
@@ -489,10 +498,114 @@ pub fn render_frames(
     Ok((Image { width: scene.width, height: scene.height, pixels }, gpu_time))
 }
 
+/// The spheres' tessellation: rings from pole to pole, segments around.
+pub const SPHERE_RINGS: u32 = 96;
+/// See [`SPHERE_RINGS`].
+pub const SPHERE_SEGMENTS: u32 = 192;
+
+/// What the reference intersects its rays with.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Geometry {
+    /// Exact spheres, with the exact normal at the hit point.
+    Analytic,
+    /// The triangles the GPU draws ([`SPHERE_RINGS`] x [`SPHERE_SEGMENTS`], vertices rounded to
+    /// f32 as in the vertex buffer), with the vertex normals interpolated at the hit point and
+    /// normalised, as rasterisation and the fragment shader do; the lighting is still f64.
+    Tessellated,
+}
+
+/// What the reference blends into.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Target {
+    /// Exact colours between draws.
+    Exact,
+    /// The render target's 8 bits per channel: a blended draw reads the colour below it rounded
+    /// as `Rgba8Unorm` stores it. The last draw's value is left exact, so a comparison with an
+    /// image measures how far the GPU's 8-bit value is from what rounding alone would give.
+    EightBit,
+}
+
 /// The scene drawn on the CPU in f64: analytic spheres, kiln's reference lighting, the same
 /// blending and order. Also returns, per pixel, whether it sits on an object's silhouette, where
 /// a tessellated sphere and an analytic one legitimately differ.
 pub fn reference(scene: &Scene) -> (Vec<[f64; 3]>, Vec<bool>) {
+    let drawn = reference_with(scene, Geometry::Analytic, Target::Exact);
+    (drawn.colors, drawn.edge)
+}
+
+/// The reference image and what each pixel sees.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reference {
+    /// Each pixel's colour (unclamped, as the lighting computes it before the target).
+    pub colors: Vec<[f64; 3]>,
+    /// Whether a pixel sits on a silhouette (analytic geometry).
+    pub edge: Vec<bool>,
+    /// Whether a pixel's colour was blended over another (a faded or transparent object).
+    pub blended: Vec<bool>,
+}
+
+impl Reference {
+    /// A mask for [`difference`] that leaves out the silhouettes and every pixel whose blending
+    /// is not `blended`: the opaque pixels alone, or the blended ones alone.
+    pub fn left_out_unless(&self, blended: bool) -> Vec<bool> {
+        self.edge.iter().zip(&self.blended).map(|(edge, b)| *edge || *b != blended).collect()
+    }
+}
+
+/// Where a ray meets a unit sphere's tessellation near the exact hit `q` (object space), as the
+/// distance along the ray (object space) and the interpolated, normalised normal.
+fn mesh_hit(origin: r::Vec3, ray: r::Vec3, q: r::Vec3) -> Option<(f64, r::Vec3)> {
+    let (rings, segments) = (SPHERE_RINGS as i64, SPHERE_SEGMENTS as i64);
+    let vertex = |ring: i64, segment: i64| -> r::Vec3 {
+        let theta = ring as f64 / rings as f64 * std::f64::consts::PI;
+        let phi = segment as f64 / segments as f64 * std::f64::consts::TAU;
+        // The vertex buffer's f32 values; position and normal are the same vector.
+        [theta.sin() * phi.cos(), theta.cos(), -theta.sin() * phi.sin()].map(|v| f64::from(v as f32))
+    };
+    let theta = q[1].clamp(-1.0, 1.0).acos();
+    let phi = (-q[2]).atan2(q[0]).rem_euclid(std::f64::consts::TAU);
+    let ring = (theta / std::f64::consts::PI * rings as f64).floor() as i64;
+    let segment = (phi / std::f64::consts::TAU * segments as f64).floor() as i64;
+    let mut best: Option<(f64, r::Vec3)> = None;
+    for a in (ring - 1).max(0)..=(ring + 1).min(rings - 1) {
+        for b in segment - 1..=segment + 1 {
+            let b = b.rem_euclid(segments);
+            let corners = [vertex(a, b), vertex(a + 1, b), vertex(a, b + 1), vertex(a + 1, b + 1)];
+            for [i, j, k] in [[0, 1, 2], [2, 1, 3]] {
+                let (p0, p1, p2) = (corners[i], corners[j], corners[k]);
+                // Moeller-Trumbore: the hit's distance and barycentric coordinates.
+                let (e1, e2) = (sub(p1, p0), sub(p2, p0));
+                let h = cross(ray, e2);
+                let det = r::dot(e1, h);
+                if det.abs() < 1e-300 {
+                    continue;
+                }
+                let s = sub(origin, p0);
+                let u = r::dot(s, h) / det;
+                let qv = cross(s, e1);
+                let v = r::dot(ray, qv) / det;
+                let t = r::dot(e2, qv) / det;
+                let inside = (0.0..=1.0).contains(&u) && v >= 0.0 && u + v <= 1.0;
+                if inside && t > 0.0 && best.is_none_or(|(nearest, _)| t < nearest) {
+                    let w = 1.0 - u - v;
+                    let normal = [0, 1, 2].map(|c| p0[c] * w + p1[c] * u + p2[c] * v);
+                    best = Some((t, normalize(normal)));
+                }
+            }
+        }
+    }
+    best
+}
+
+/// [`reference`] with the geometry and the target chosen: the analytic spheres or the triangles
+/// the GPU draws, exact colours or 8-bit ones between draws. Each choice emulates one thing the
+/// GPU does besides the shader's arithmetic, so that its share of the difference can be measured.
+/// The silhouette mask is always the analytic one, so every choice compares the same pixels.
+pub fn reference_with(scene: &Scene, geometry: Geometry, target: Target) -> Reference {
+    let stored = |color: r::Vec3| match target {
+        Target::Exact => color,
+        Target::EightBit => color.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() / 255.0),
+    };
     let view = View::new(scene);
     let lights: Vec<r::Light> =
         scene.lights.iter().map(|l| r::Light { color: l.color, direction: normalize(l.direction) }).collect();
@@ -504,13 +617,22 @@ pub fn reference(scene: &Scene) -> (Vec<[f64; 3]>, Vec<bool>) {
     for y in 0..h {
         for x in 0..w {
             let ray = view.ray(scene, x, y);
-            let hit = |i: usize| -> Option<f64> {
+            // Distance along the ray and the shading normal.
+            let hit = |i: usize| -> Option<(f64, r::Vec3)> {
                 let o = &scene.objects[i];
                 let oc = r::add(view.eye, r::scale(o.position, -1.0));
                 let b = r::dot(oc, ray);
                 let c = r::dot(oc, oc) - o.radius * o.radius;
                 let disc = b * b - c;
-                (disc >= 0.0).then(|| -b - disc.sqrt()).filter(|t| *t > 0.0)
+                let t = (disc >= 0.0).then(|| -b - disc.sqrt()).filter(|t| *t > 0.0)?;
+                let point = r::add(view.eye, r::scale(ray, t));
+                let exact = normalize(sub(point, o.position));
+                match geometry {
+                    Geometry::Analytic => Some((t, exact)),
+                    // Object space is world space scaled by 1/radius: distances scale back.
+                    Geometry::Tessellated => mesh_hit(r::scale(oc, 1.0 / o.radius), ray, exact)
+                        .map(|(t, normal)| (t * o.radius, normal)),
+                }
             };
             let visible = |i: usize| {
                 let m = &scene.objects[i].material;
@@ -520,14 +642,14 @@ pub fn reference(scene: &Scene) -> (Vec<[f64; 3]>, Vec<bool>) {
             let mut depth = f64::INFINITY;
             let mut id = (usize::MAX, 0u64);
             for &i in &order {
-                let Some(t) = hit(i) else { continue };
+                let Some((t, normal)) = hit(i) else { continue };
                 let m = &scene.objects[i].material;
                 if t > depth || !visible(i) {
                     continue;
                 }
                 let point = r::add(view.eye, r::scale(ray, t));
                 let surface = r::Surface {
-                    normal: normalize(r::add(point, r::scale(scene.objects[i].position, -1.0))),
+                    normal,
                     view_direction: normalize(r::add(view.eye, r::scale(point, -1.0))),
                     color: [m.color[0], m.color[1], m.color[2]],
                     alpha: m.color[3],
@@ -537,10 +659,11 @@ pub fn reference(scene: &Scene) -> (Vec<[f64; 3]>, Vec<bool>) {
                 let brdf = r::get_brdf(&surface, m.premultiplies());
                 let lit = r::lighting(&surface, &brdf, &lights).map(|c| c.clamp(0.0, 1.0));
                 let a = surface.alpha.clamp(0.0, 1.0);
+                let below = stored(color);
                 color = if m.premultiplies() {
-                    [0, 1, 2].map(|k| lit[k] + color[k] * (1.0 - a))
+                    [0, 1, 2].map(|k| lit[k] + below[k] * (1.0 - a))
                 } else if m.blends() {
-                    [0, 1, 2].map(|k| lit[k] * a + color[k] * (1.0 - a))
+                    [0, 1, 2].map(|k| lit[k] * a + below[k] * (1.0 - a))
                 } else {
                     depth = t;
                     lit
@@ -570,26 +693,51 @@ pub fn reference(scene: &Scene) -> (Vec<[f64; 3]>, Vec<bool>) {
             })
         })
         .collect();
-    (colors, edge)
+    let blended = ids.iter().map(|id| id.1 != 0).collect();
+    Reference { colors, edge, blended }
+}
+
+/// How far two images are apart, per channel (0..1), over the pixels off the silhouettes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Difference {
+    /// Largest absolute difference.
+    pub max: f64,
+    /// Mean absolute difference.
+    pub mean: f64,
+    /// Pixels compared.
+    pub pixels: usize,
+    /// The pixel (index, row-major) where the largest difference is.
+    pub worst: usize,
+}
+
+/// [`Difference`] between two images given as colours (the reference's are clamped to 0..1, as
+/// a render target clamps).
+pub fn difference(got: &[[f64; 3]], want: &[[f64; 3]], edge: &[bool]) -> Difference {
+    let mut found = Difference { max: 0.0, mean: 0.0, pixels: 0, worst: 0 };
+    let mut sum = 0.0;
+    for (i, (got, want)) in got.iter().zip(want).enumerate() {
+        if edge[i] {
+            continue;
+        }
+        for (g, w) in got.iter().zip(want) {
+            let error = (g.clamp(0.0, 1.0) - w.clamp(0.0, 1.0)).abs();
+            if error > found.max {
+                found.max = error;
+                found.worst = i;
+            }
+            sum += error;
+        }
+        found.pixels += 1;
+    }
+    found.mean = sum / (3 * found.pixels.max(1)) as f64;
+    found
 }
 
 /// Largest and mean absolute per-channel difference (0..1) between the rendered image and the
 /// reference, over the pixels not on a silhouette, and how many pixels were compared.
 pub fn compare(image: &Image, reference: &[[f64; 3]], edge: &[bool]) -> (f64, f64, usize) {
-    let (mut max, mut sum, mut count) = (0.0f64, 0.0, 0usize);
-    for (i, expected) in reference.iter().enumerate() {
-        if edge[i] {
-            continue;
-        }
-        for (k, want) in expected.iter().enumerate() {
-            let got = f64::from(image.pixels[i * 4 + k]) / 255.0;
-            let error = (got - want.clamp(0.0, 1.0)).abs();
-            max = max.max(error);
-            sum += error;
-        }
-        count += 1;
-    }
-    (max, sum / (3 * count.max(1)) as f64, count)
+    let found = difference(&image.colors(), reference, edge);
+    (found.max, found.mean, found.pixels)
 }
 
 /// The reference as an image, for looking at side by side.

@@ -7,7 +7,9 @@
 //! broken edit prints its diagnostics and the last good pipelines stay.
 
 use kiln::runtime::{Reload, Runtime};
-use kiln_renderer::{Scene, compare, device, reference, reference_image, render, render_with};
+use kiln_renderer::{
+    Geometry, Scene, Target, compare, device, difference, reference, reference_image, reference_with, render, render_with,
+};
 use std::path::{Path, PathBuf};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -24,7 +26,28 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (max, mean, pixels) = compare(&image, &colors, &edge);
     println!("rendered {} on {adapter}", output.display());
     println!("against the f64 reference over {pixels} interior pixels: max error {max:.4}, mean {mean:.5}");
+    explain(&scene, &image.colors(), &colors, &edge);
     Ok(())
+}
+
+/// Splits the difference into its parts: the reference on the triangles the GPU draws isolates
+/// tessellation, blending what an 8-bit target stores isolates the target's rounding between
+/// draws, and what is left between the image and that reference is the final rounding to 8 bits
+/// plus the shader's arithmetic (and the rasteriser's and the blender's).
+fn explain(scene: &Scene, image: &[[f64; 3]], analytic: &[[f64; 3]], edge: &[bool]) {
+    let tessellated = reference_with(scene, Geometry::Tessellated, Target::Exact).colors;
+    let stored = reference_with(scene, Geometry::Tessellated, Target::EightBit);
+    let at = |i: usize| format!("pixel ({}, {})", i % scene.width as usize, i / scene.width as usize);
+    let report = |what: &str, d: kiln_renderer::Difference| {
+        println!("  {what}: max {:.4} ({:.4} of an 8-bit step) at {}, mean {:.5}", d.max, d.max * 255.0, at(d.worst), d.mean)
+    };
+    report("tessellation (the drawn triangles against analytic spheres)", difference(&tessellated, analytic, edge));
+    report("8-bit target between draws (blending rounded colours)", difference(&stored.colors, &tessellated, edge));
+    // Rounding to 8 bits alone puts the image at most half a step from this reference.
+    for (what, blended) in [("opaque", false), ("blended", true)] {
+        let d = difference(image, &stored.colors, &stored.left_out_unless(blended));
+        report(&format!("image against the reference with both, {what} pixels"), d);
+    }
 }
 
 fn watch(

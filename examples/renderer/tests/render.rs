@@ -193,3 +193,26 @@ fn buffer_groups_bind_by_name_and_name_what_is_wrong() {
     let no_group = error(5, &[], &mut runtime);
     assert!(no_group.ends_with("the pass has no bind group 5"), "{no_group}");
 }
+
+/// Where the image's difference from the analytic reference comes from: with the reference
+/// drawing the same triangles and blending over 8-bit colours as the target stores them, an
+/// opaque pixel is only the final rounding away (half a step: the shader's f32 arithmetic adds
+/// nothing visible) and a blended one at most a step (the blender's 8-bit arithmetic).
+#[test]
+fn the_rest_is_tessellation_and_the_8_bit_target() {
+    use kiln_renderer::{Geometry, Target, difference, reference_with};
+    let Some((device, queue, adapter)) = common::gpu("the error budget test") else { return };
+    let scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
+    let image = render(&device, &queue, &scene).expect("renders").colors();
+    let emulated = reference_with(&scene, Geometry::Tessellated, Target::EightBit);
+    let step = 1.0 / 255.0;
+    let opaque = difference(&image, &emulated.colors, &emulated.left_out_unless(false));
+    let blended = difference(&image, &emulated.colors, &emulated.left_out_unless(true));
+    println!("{adapter}: opaque {:.4} steps, blended {:.4} steps", opaque.max / step, blended.max / step);
+    assert!(opaque.pixels > 40_000 && blended.pixels > 5_000, "{opaque:?} {blended:?}");
+    assert!(opaque.max <= 0.51 * step, "opaque pixels: {opaque:?}");
+    assert!(blended.max <= 1.01 * step, "blended pixels: {blended:?}");
+    // Against the analytic spheres the same image is further off, by the tessellation.
+    let (analytic, edge) = reference(&scene);
+    assert!(difference(&image, &analytic, &edge).max > 2.0 * step);
+}
