@@ -4,11 +4,15 @@
 //! result per case) or time the formulations compute-bound (many evaluations per invocation,
 //! kept in registers).
 
-use super::{Case, Formulation, Row, Timing, hard_cases, reference, reference_lights, stats};
+use super::{
+    Case, CaseSet, Formulation, HARD_CASE_SETS, Row, TEST_SAMPLES, Timing, hard_case_set, reference,
+    reference_lights, stats,
+};
 use crate::build::{BuildOptions, build};
 use crate::catalog::{CatalogInput, ListedVariant, catalog};
 use crate::preprocess::{IncludeConfig, Includes};
 use crate::source::{SourceStore, Span};
+use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
 use wgpu::util::DeviceExt;
 
@@ -22,103 +26,7 @@ pub type Kernels = BTreeMap<String, (String, Bindings)>;
 const HARNESS_FILE: &str = "accuracy-harness.compute";
 
 /// The harness, a WGSL program in kiln's dialect, declaring what it needs as a pass would.
-const HARNESS: &str = r#"
-#pragma kernel OneLight
-#pragma kernel AllLights
-#pragma kernel TimeOneLight
-#pragma kernel TimeAllLights
-#pragma multi_compile _ _SPECULAR_STABLE _SPECULAR_HALF _SPECULAR_RATIO
-#pragma multi_compile _ _SINGLE_DIRECTIONAL_LIGHT
-#pragma require native16bit : _SPECULAR_HALF
-#if defined(_SPECULAR_HALF)
-enable f16;
-#endif
-#include "Lighting.wgsl"
-
-struct Case {
-    normal: vec4<f32>,
-    view: vec4<f32>,
-    light_direction: vec4<f32>,
-    light_color: vec4<f32>,
-    color: vec4<f32>,
-    // metallic, smoothness, premultiply (0 or 1)
-    params: vec4<f32>,
-}
-
-@group(3) @binding(0) var<storage, read> cases: array<Case>;
-@group(3) @binding(1) var<storage, read_write> results: array<vec4<f32>>;
-
-fn CaseSurface(c: Case) -> Surface {
-    var surface: Surface;
-    surface.normal = c.normal.xyz;
-    surface.viewDirection = c.view.xyz;
-    surface.color = c.color.rgb;
-    surface.alpha = c.color.a;
-    surface.metallic = c.params.x;
-    surface.smoothness = c.params.y;
-    return surface;
-}
-
-fn CaseLight(c: Case) -> Light {
-    var light: Light;
-    light.color = c.light_color.xyz;
-    light.direction = c.light_direction.xyz;
-    return light;
-}
-
-@compute @workgroup_size(64)
-fn OneLight(@builtin(global_invocation_id) id: vec3<u32>) {
-    if (id.x >= arrayLength(&cases)) {
-        return;
-    }
-    let c = cases[id.x];
-    let surface = CaseSurface(c);
-    let brdf = GetBRDF(surface, c.params.z > 0.5);
-    results[id.x] = vec4<f32>(GetLightingForLight(surface, brdf, CaseLight(c)), 0.0);
-}
-
-@compute @workgroup_size(64)
-fn AllLights(@builtin(global_invocation_id) id: vec3<u32>) {
-    if (id.x >= arrayLength(&cases)) {
-        return;
-    }
-    let c = cases[id.x];
-    let surface = CaseSurface(c);
-    let brdf = GetBRDF(surface, c.params.z > 0.5);
-    results[id.x] = vec4<f32>(GetLighting(surface, brdf), 0.0);
-}
-
-// Compute-bound: each invocation evaluates EVALUATIONS inputs, each derived from the last in
-// registers, and writes one value, so memory traffic is 1/EVALUATIONS of the work.
-const EVALUATIONS: u32 = 256u;
-
-@compute @workgroup_size(64)
-fn TimeOneLight(@builtin(global_invocation_id) id: vec3<u32>) {
-    let c = cases[id.x % arrayLength(&cases)];
-    let surface = CaseSurface(c);
-    let brdf = GetBRDF(surface, false);
-    var light = CaseLight(c);
-    var sum = vec3<f32>(0.0);
-    for (var k = 0u; k < EVALUATIONS; k++) {
-        light.direction = SafeNormalize(light.direction + vec3<f32>(1e-3, 0.0, 0.0));
-        sum += GetLightingForLight(surface, brdf, light);
-    }
-    results[id.x] = vec4<f32>(sum, 0.0);
-}
-
-@compute @workgroup_size(64)
-fn TimeAllLights(@builtin(global_invocation_id) id: vec3<u32>) {
-    let c = cases[id.x % arrayLength(&cases)];
-    var surface = CaseSurface(c);
-    let brdf = GetBRDF(surface, false);
-    var sum = vec3<f32>(0.0);
-    for (var k = 0u; k < EVALUATIONS; k++) {
-        surface.viewDirection = SafeNormalize(surface.viewDirection + vec3<f32>(1e-3, 0.0, 0.0));
-        sum += GetLighting(surface, brdf);
-    }
-    results[id.x] = vec4<f32>(sum, 0.0);
-}
-"#;
+const HARNESS: &str = include_str!("harness.compute");
 
 const EVALUATIONS: u32 = 256;
 
@@ -231,6 +139,9 @@ fn light_bytes(lights: &[crate::reference::Light], count: i32) -> Vec<u8> {
     bytes
 }
 
+/// Cases per dispatch: 96 bytes each stays below every adapter's 128 MiB storage binding.
+const CASES_PER_DISPATCH: usize = 1 << 20;
+
 struct Harness<'a> {
     device: &'a wgpu::Device,
     queue: &'a wgpu::Queue,
@@ -239,7 +150,16 @@ struct Harness<'a> {
     built: std::cell::RefCell<HashMap<Vec<String>, Kernels>>,
 }
 
-impl Harness<'_> {
+impl<'a> Harness<'a> {
+    fn new(gpu: &'a Gpu) -> Harness<'a> {
+        Harness {
+            device: &gpu.device,
+            queue: &gpu.queue,
+            timestamps: gpu.timestamps,
+            built: Default::default(),
+        }
+    }
+
     fn pipeline(&self, keywords: &[&str], entry: &str) -> Result<(wgpu::ComputePipeline, Bindings), String> {
         let variant: Vec<String> = keywords.iter().map(|k| k.to_string()).collect();
         if !self.built.borrow().contains_key(&variant) {
@@ -411,11 +331,56 @@ impl Harness<'_> {
     ) -> Result<f64, String> {
         let pipeline = self.pipeline(keywords, entry)?;
         let invocations = timing_invocations();
-        let _ = self.dispatch(&pipeline, cases, light, invocations);
+        // Warm-up for at least 0.2 s, so that a GPU's clocks have risen from idle.
+        let warming = std::time::Instant::now();
+        while warming.elapsed().as_millis() < 200 {
+            let _ = self.dispatch(&pipeline, cases, light, invocations);
+        }
         let mut times: Vec<f64> =
             (0..7).map(|_| self.dispatch(&pipeline, cases, light, invocations).1).collect();
         times.sort_by(f64::total_cmp);
         Ok(times[3] / (f64::from(invocations) * f64::from(EVALUATIONS)))
+    }
+
+    /// Results of a kernel over any number of cases, in dispatches of at most
+    /// [`CASES_PER_DISPATCH`].
+    fn evaluate(
+        &self,
+        pipeline: &(wgpu::ComputePipeline, Bindings),
+        cases: &[Case],
+        light: Option<&[u8]>,
+    ) -> Vec<[f32; 3]> {
+        cases
+            .chunks(CASES_PER_DISPATCH)
+            .flat_map(|chunk| self.dispatch(pipeline, chunk, light, chunk.len() as u32).0)
+            .collect()
+    }
+
+    /// One formulation's results on one set, with their references, for the [`super::counted`]
+    /// cases.
+    fn measure(
+        &self,
+        formulation: Formulation,
+        one: &(wgpu::ComputePipeline, Bindings),
+        all: &(wgpu::ComputePipeline, Bindings),
+        set: &CaseSet,
+    ) -> (Vec<[f32; 3]>, Vec<[f64; 3]>) {
+        let Some((lights, counts)) = &set.lights else {
+            let results = self.evaluate(one, &set.cases, None);
+            return counted_pairs(&set.cases, results, |case| reference(case, formulation));
+        };
+        // One dispatch per light count: the count is a uniform.
+        let mut measured = (Vec::new(), Vec::new());
+        for count in counts.iter().copied().collect::<std::collections::BTreeSet<i32>>() {
+            let cases: Vec<Case> =
+                set.cases.iter().zip(counts).filter(|(_, c)| **c == count).map(|(case, _)| *case).collect();
+            let results = self.evaluate(all, &cases, Some(&light_bytes(lights, count)));
+            let (gpu, references) =
+                counted_pairs(&cases, results, |case| reference_lights(case, lights, count, formulation));
+            measured.0.extend(gpu);
+            measured.1.extend(references);
+        }
+        measured
     }
 }
 
@@ -457,40 +422,41 @@ pub fn device() -> Result<Gpu, String> {
     })
 }
 
-/// Every formulation on every hard-case set, and the timings. The last value says how the times
-/// were taken.
-pub fn run(gpu: &Gpu) -> Result<(Vec<Row>, Vec<Timing>, String), String> {
-    let harness = Harness {
-        device: &gpu.device,
-        queue: &gpu.queue,
-        timestamps: gpu.timestamps,
-        built: Default::default(),
-    };
-    let formulations: Vec<Formulation> =
-        Formulation::ALL.into_iter().filter(|f| gpu.f16 || !f.needs_f16()).collect();
-    let sets = hard_cases();
+/// The results of the [`super::counted`] cases, each with its reference.
+fn counted_pairs(
+    cases: &[Case],
+    results: Vec<[f32; 3]>,
+    reference: impl Fn(&Case) -> [f64; 3] + Sync,
+) -> (Vec<[f32; 3]>, Vec<[f64; 3]>) {
+    cases
+        .par_iter()
+        .zip(results)
+        .filter(|(case, _)| super::counted(case))
+        .map(|(case, result)| (result, reference(case)))
+        .unzip()
+}
+
+/// The formulations the adapter runs (`stable f16` needs `shader-f16`).
+fn formulations(gpu: &Gpu) -> Vec<Formulation> {
+    Formulation::ALL.into_iter().filter(|f| gpu.f16 || !f.needs_f16()).collect()
+}
+
+/// `formulations` on every hard-case set of `samples` cases: one row per formulation and set, by
+/// formulation, then set.
+pub fn error_rows(gpu: &Gpu, formulations: &[Formulation], samples: usize) -> Result<Vec<Row>, String> {
+    let harness = Harness::new(gpu);
+    let pipelines = formulations
+        .iter()
+        .map(|f| {
+            Ok((harness.pipeline(f.keywords(), "OneLight")?, harness.pipeline(f.keywords(), "AllLights")?))
+        })
+        .collect::<Result<Vec<_>, String>>()?;
     let mut rows = Vec::new();
-    for &formulation in &formulations {
-        let one = harness.pipeline(formulation.keywords(), "OneLight")?;
-        let all = harness.pipeline(formulation.keywords(), "AllLights")?;
-        for set in &sets {
-            let (gpu, references): (Vec<[f32; 3]>, Vec<[f64; 3]>) = match &set.lights {
-                None => {
-                    let (results, _) = harness.dispatch(&one, &set.cases, None, set.cases.len() as u32);
-                    (results, set.cases.iter().map(|c| reference(c, formulation)).collect())
-                }
-                Some((lights, counts)) => set
-                    .cases
-                    .iter()
-                    .zip(counts)
-                    .map(|(case, &count)| {
-                        let bytes = light_bytes(lights, count);
-                        let (results, _) =
-                            harness.dispatch(&all, std::slice::from_ref(case), Some(&bytes), 1);
-                        (results[0], reference_lights(case, lights, count, formulation))
-                    })
-                    .unzip(),
-            };
+    // One set at a time: a million cases of each is a few hundred megabytes.
+    for index in 0..HARD_CASE_SETS {
+        let set = hard_case_set(index, samples);
+        for (&formulation, (one, all)) in formulations.iter().zip(&pipelines) {
+            let (gpu, references) = harness.measure(formulation, one, all, &set);
             rows.push(Row {
                 formulation: formulation.name(),
                 set: set.name.clone(),
@@ -498,6 +464,19 @@ pub fn run(gpu: &Gpu) -> Result<(Vec<Row>, Vec<Timing>, String), String> {
             });
         }
     }
+    let order = |name: &str| formulations.iter().position(|f| f.name() == name);
+    rows.sort_by_key(|row| order(row.formulation));
+    Ok(rows)
+}
+
+/// Every formulation on every hard-case set of `samples` cases, and the timings. The last value
+/// says how the times were taken.
+pub fn run(gpu: &Gpu, samples: usize) -> Result<(Vec<Row>, Vec<Timing>, String), String> {
+    let formulations = formulations(gpu);
+    // Timed first: after a million cases per set (hundreds of megabytes moved, the CPU busy with
+    // references) the H100 timed the same kernels 5x slower.
+    let harness = Harness::new(gpu);
+    let sets: Vec<CaseSet> = (0..HARD_CASE_SETS).map(|index| hard_case_set(index, TEST_SAMPLES)).collect();
     // Timing on ordinary inputs (the metallic set: random directions, both metal kinds).
     let ordinary = &sets.iter().find(|s| s.name.starts_with("metallic")).ok_or("no ordinary set")?.cases;
     let light_set = sets.iter().find_map(|s| s.lights.as_ref()).ok_or("no light set")?;
@@ -542,19 +521,15 @@ pub fn run(gpu: &Gpu) -> Result<(Vec<Row>, Vec<Timing>, String), String> {
         },
         timing_invocations()
     );
+    let rows = error_rows(gpu, &formulations, samples)?;
     Ok((rows, timings, method))
 }
 
 /// [`super::search`] for every formulation the adapter runs: the worst input found for each.
 pub fn search(gpu: &Gpu) -> Result<Vec<(Formulation, super::Found)>, String> {
-    let harness = Harness {
-        device: &gpu.device,
-        queue: &gpu.queue,
-        timestamps: gpu.timestamps,
-        built: Default::default(),
-    };
+    let harness = Harness::new(gpu);
     let mut found = Vec::new();
-    for formulation in Formulation::ALL.into_iter().filter(|f| gpu.f16 || !f.needs_f16()) {
+    for formulation in formulations(gpu) {
         let one = harness.pipeline(formulation.keywords(), "OneLight")?;
         let mut evaluate = |cases: &[Case]| harness.dispatch(&one, cases, None, cases.len() as u32).0;
         found.push((formulation, super::search(formulation, &mut evaluate)));

@@ -134,130 +134,183 @@ fn surface(normal: r::Vec3, view: r::Vec3, smoothness: f64, metallic: f64) -> Su
 
 const WHITE: r::Vec3 = [1.0, 1.0, 1.0];
 
-/// Every hard-case set, generated (never hand-picked).
-pub fn hard_cases() -> Vec<CaseSet> {
-    let mut sets = Vec::new();
+/// Samples per hard-case set in the tests and the timing runs; `kiln accuracy` measures
+/// [`REPORT_SAMPLES`].
+pub const TEST_SAMPLES: usize = 64;
+/// Samples per hard-case set `kiln accuracy` measures by default.
+pub const REPORT_SAMPLES: usize = 1_000_000;
+
+/// How many hard-case sets there are ([`hard_case_set`] indices).
+pub const HARD_CASE_SETS: usize = 12;
+
+/// The smoothness of each n·h → 1 set.
+const MIRROR_SMOOTHNESS: [f64; 5] = [0.9, 0.95, 0.99, 0.999, 1.0];
+
+/// Every hard-case set with `samples` cases each (see [`hard_case_set`]).
+pub fn hard_cases(samples: usize) -> Vec<CaseSet> {
+    (0..HARD_CASE_SETS).map(|index| hard_case_set(index, samples)).collect()
+}
+
+/// Hard-case set `index` (below [`HARD_CASE_SETS`]) with `samples` cases, generated, never
+/// hand-picked: the same cases on every machine, each set from its own seed so that one set
+/// can be made without the others. Sweeps (n·h → 1, grazing angles, light colours) cover their
+/// range evenly on a log scale whatever the sample count; directions the sweep leaves free are
+/// random.
+pub fn hard_case_set(index: usize, samples: usize) -> CaseSet {
+    let mut random = Random(0x9e37_79b9_7f4a_7c15 ^ (index as u64 + 1).wrapping_mul(0x2545_f491_4f6c_dd1d));
+    let n = samples.max(2);
+    // Position k of n along a sweep, 0 to 1.
+    let along = |k: usize| k as f64 / (n - 1) as f64;
     let set = |name: String, cases: Vec<Case>| CaseSet {
         name,
         cases: cases.into_iter().map(round_case).collect(),
         lights: None,
     };
     let up = [0.0, 1.0, 0.0];
-    // n.h -> 1: the light approaches the mirror direction of the view, from 1 to 1e-7 radians.
-    for smoothness in [0.9, 0.95, 0.99, 0.999, 1.0] {
-        let a: f64 = 0.5;
-        let view = [a.sin(), a.cos(), 0.0];
-        let cases = (0..64)
-            .map(|k| {
-                let delta = 10f64.powf(-(k as f64) * 7.0 / 63.0);
-                let b = a + delta;
-                let light = Light { color: WHITE, direction: [-b.sin(), b.cos(), 0.0] };
-                Case { surface: surface(up, view, smoothness, 0.0), light, premultiply: false }
-            })
-            .collect();
-        sets.push(set(format!("n.h -> 1, smoothness {smoothness}"), cases));
+    match index {
+        // n.h -> 1: the light approaches the mirror direction of the view, from 1 to 1e-7 radians,
+        // in a plane through the normal at a random azimuth, the view 0.1 to 0.55 radians from the
+        // normal (so the light stays above the horizon).
+        0..=4 => {
+            let smoothness = MIRROR_SMOOTHNESS[index];
+            let cases = (0..n)
+                .map(|k| {
+                    let a = 0.1 + 0.45 * random.next();
+                    let azimuth = std::f64::consts::TAU * random.next();
+                    let (sin, cos) = azimuth.sin_cos();
+                    let turn = |v: r::Vec3| [v[0] * cos, v[1], v[0] * sin];
+                    let b = a + 10f64.powf(-7.0 * along(k));
+                    let view = turn([a.sin(), a.cos(), 0.0]);
+                    let light = Light { color: WHITE, direction: turn([-b.sin(), b.cos(), 0.0]) };
+                    Case { surface: surface(up, view, smoothness, 0.0), light, premultiply: false }
+                })
+                .collect();
+            set(format!("n.h -> 1, smoothness {smoothness}"), cases)
+        }
+        // L = -V: the half vector is zero.
+        5 => {
+            let cases = (0..n)
+                .map(|_| {
+                    let view = random.direction();
+                    let light = Light { color: WHITE, direction: r::scale(view, -1.0) };
+                    Case {
+                        surface: surface(random.direction(), view, random.next(), random.next()),
+                        light,
+                        premultiply: false,
+                    }
+                })
+                .collect();
+            set("L = -V".into(), cases)
+        }
+        // Zero-length and denormal normals.
+        6 => {
+            let normals: [r::Vec3; 6] = [
+                [0.0; 3],
+                [1e-40, 0.0, 0.0],
+                [0.0, 1e-39, 0.0],
+                [1e-20, 1e-20, 0.0],
+                [0.0, 1e-45, 0.0],
+                [1e-38, 1e-38, 1e-38],
+            ];
+            let cases = (0..n)
+                .map(|k| {
+                    let view = random.upper_direction();
+                    let light = Light { color: WHITE, direction: random.upper_direction() };
+                    Case {
+                        surface: surface(normals[k % normals.len()], view, 0.5, 0.0),
+                        light,
+                        premultiply: false,
+                    }
+                })
+                .collect();
+            set("zero and denormal normals".into(), cases)
+        }
+        // Grazing n.l and n.v: elevations from 0.1 down to 1e-7 radians, at random azimuths.
+        7 => {
+            let cases = (0..n)
+                .map(|k| {
+                    let e = 10f64.powf(-1.0 - 6.0 * along(k));
+                    let azimuth = std::f64::consts::TAU * random.next();
+                    let (sin, cos) = azimuth.sin_cos();
+                    let light = Light { color: WHITE, direction: [e.cos() * cos, e.sin(), e.cos() * sin] };
+                    let view = [-(e * 0.5).cos() * 0.6, (e * 0.5).sin(), (e * 0.5).cos() * 0.8];
+                    Case {
+                        surface: surface(up, r::scale(view, 1.0 / r::dot(view, view).sqrt()), 0.8, 0.5),
+                        light,
+                        premultiply: false,
+                    }
+                })
+                .collect();
+            set("grazing n.l and n.v".into(), cases)
+        }
+        // HDR light colours from 1e-6 to 1e5.
+        8 => {
+            let cases = (0..n)
+                .map(|k| {
+                    let intensity = 10f64.powf(-6.0 + 11.0 * along(k));
+                    let light = Light {
+                        color: [intensity, intensity * 0.5, intensity * 0.25],
+                        direction: random.upper_direction(),
+                    };
+                    Case {
+                        surface: surface(up, random.upper_direction(), random.next(), random.next()),
+                        light,
+                        premultiply: false,
+                    }
+                })
+                .collect();
+            set("light colours 1e-6 to 1e5".into(), cases)
+        }
+        // Metallic 0 and 1.
+        9 => {
+            let cases = (0..n)
+                .map(|k| {
+                    let light = Light { color: WHITE, direction: random.upper_direction() };
+                    let metallic = (k % 2) as f64;
+                    Case {
+                        surface: surface(up, random.upper_direction(), random.next(), metallic),
+                        light,
+                        premultiply: false,
+                    }
+                })
+                .collect();
+            set("metallic 0 and 1".into(), cases)
+        }
+        // Alpha 0, premultiplied.
+        10 => {
+            let cases = (0..n)
+                .map(|_| {
+                    let light = Light { color: WHITE, direction: random.upper_direction() };
+                    let mut s = surface(up, random.upper_direction(), random.next(), random.next());
+                    s.alpha = 0.0;
+                    Case { surface: s, light, premultiply: true }
+                })
+                .collect();
+            set("alpha 0 with premultiply".into(), cases)
+        }
+        // Light counts 0 to 5 (one above the maximum) through `GetLighting` and `_CustomLight`,
+        // each count for a sixth of the cases.
+        _ => {
+            let lights: Vec<Light> = (0..4)
+                .map(|i| Light {
+                    color: [1.0, 0.8 - 0.1 * i as f64, 0.5],
+                    direction: random.upper_direction(),
+                })
+                .map(|l| Light { color: l.color.map(f32_exact), direction: l.direction.map(f32_exact) })
+                .collect();
+            let counts: Vec<i32> = (0..n).map(|k| (k % 6) as i32).collect();
+            let cases = counts
+                .iter()
+                .map(|_| Case {
+                    surface: surface(up, random.upper_direction(), 0.7, 0.3),
+                    light: lights[0],
+                    premultiply: false,
+                })
+                .map(round_case)
+                .collect();
+            CaseSet { name: "light counts 0 to 5".into(), cases, lights: Some((lights, counts)) }
+        }
     }
-    let mut random = Random(0x9e37_79b9_7f4a_7c15);
-    // L = -V: the half vector is zero.
-    let cases = (0..64)
-        .map(|_| {
-            let view = random.direction();
-            let light = Light { color: WHITE, direction: r::scale(view, -1.0) };
-            Case {
-                surface: surface(random.direction(), view, random.next(), random.next()),
-                light,
-                premultiply: false,
-            }
-        })
-        .collect();
-    sets.push(set("L = -V".into(), cases));
-    // Zero-length and denormal normals.
-    let normals: [r::Vec3; 6] = [
-        [0.0; 3],
-        [1e-40, 0.0, 0.0],
-        [0.0, 1e-39, 0.0],
-        [1e-20, 1e-20, 0.0],
-        [0.0, 1e-45, 0.0],
-        [1e-38, 1e-38, 1e-38],
-    ];
-    let cases = (0..64)
-        .map(|k| {
-            let view = random.upper_direction();
-            let light = Light { color: WHITE, direction: random.upper_direction() };
-            Case { surface: surface(normals[k % normals.len()], view, 0.5, 0.0), light, premultiply: false }
-        })
-        .collect();
-    sets.push(set("zero and denormal normals".into(), cases));
-    // Grazing n.l and n.v: elevations from 0.1 down to 1e-7 radians.
-    let cases = (0..64)
-        .map(|k| {
-            let e = 10f64.powf(-1.0 - (k as f64) * 6.0 / 63.0);
-            let light = Light { color: WHITE, direction: [e.cos(), e.sin(), 0.0] };
-            let view = [-(e * 0.5).cos() * 0.6, (e * 0.5).sin(), (e * 0.5).cos() * 0.8];
-            Case {
-                surface: surface(up, r::scale(view, 1.0 / r::dot(view, view).sqrt()), 0.8, 0.5),
-                light,
-                premultiply: false,
-            }
-        })
-        .collect();
-    sets.push(set("grazing n.l and n.v".into(), cases));
-    // HDR light colours from 1e-6 to 1e5.
-    let cases = (0..64)
-        .map(|k| {
-            let intensity = 10f64.powf(-6.0 + (k as f64) * 11.0 / 63.0);
-            let light = Light {
-                color: [intensity, intensity * 0.5, intensity * 0.25],
-                direction: random.upper_direction(),
-            };
-            Case {
-                surface: surface(up, random.upper_direction(), random.next(), random.next()),
-                light,
-                premultiply: false,
-            }
-        })
-        .collect();
-    sets.push(set("light colours 1e-6 to 1e5".into(), cases));
-    // Metallic 0 and 1.
-    let cases = (0..64)
-        .map(|k| {
-            let light = Light { color: WHITE, direction: random.upper_direction() };
-            let metallic = (k % 2) as f64;
-            Case {
-                surface: surface(up, random.upper_direction(), random.next(), metallic),
-                light,
-                premultiply: false,
-            }
-        })
-        .collect();
-    sets.push(set("metallic 0 and 1".into(), cases));
-    // Alpha 0, premultiplied.
-    let cases = (0..64)
-        .map(|_| {
-            let light = Light { color: WHITE, direction: random.upper_direction() };
-            let mut s = surface(up, random.upper_direction(), random.next(), random.next());
-            s.alpha = 0.0;
-            Case { surface: s, light, premultiply: true }
-        })
-        .collect();
-    sets.push(set("alpha 0 with premultiply".into(), cases));
-    // Light counts 0..4 and one above the maximum, through `GetLighting` and `_CustomLight`.
-    let lights: Vec<Light> = (0..4)
-        .map(|i| Light { color: [1.0, 0.8 - 0.1 * i as f64, 0.5], direction: random.upper_direction() })
-        .map(|l| Light { color: l.color.map(f32_exact), direction: l.direction.map(f32_exact) })
-        .collect();
-    let counts: Vec<i32> = (0..6).collect();
-    let cases = counts
-        .iter()
-        .map(|_| Case {
-            surface: surface(up, random.upper_direction(), 0.7, 0.3),
-            light: lights[0],
-            premultiply: false,
-        })
-        .map(round_case)
-        .collect();
-    sets.push(CaseSet { name: "light counts 0 to 5".into(), cases, lights: Some((lights, counts)) });
-    sets
 }
 
 /// The f64 reference of what a formulation computes for one case (lit colour of one light).
@@ -384,14 +437,22 @@ pub fn case_error(gpu: [f32; 3], want: r::Vec3) -> f64 {
     difference / scale.max(ABSOLUTE_FLOOR)
 }
 
-/// The search looks where N·L is at least this. Below it the lit colour's error is N·L's own f32
-/// rounding (about 2e-7 absolute, so more than 1e-5 relative below N·L = 0.02) whatever the
-/// BRDF's formula, and searching there finds only that.
-pub const SEARCH_MIN_N_DOT_L: f64 = 0.05;
+/// Below this N·L a lit colour's relative error is N·L's own f32 rounding (about 1e-7 absolute,
+/// so 1e-5 relative at N·L = 0.01 and anything nearer 0) whatever the BRDF's formula: the
+/// statistics and the search leave such cases out unless N·L is exact ([`counted`]).
+pub const MIN_N_DOT_L: f64 = 0.05;
 
-/// [`case_error`] where N·L is at least [`SEARCH_MIN_N_DOT_L`], else 0.
+/// Whether a case's error is counted: N·L is at least [`MIN_N_DOT_L`], or exact in f32 because
+/// the normal lies on a coordinate axis (the grazing set's normal is (0, 1, 0), so its N·L down
+/// to 1e-7 is measured).
+pub fn counted(case: &Case) -> bool {
+    let on_axis = case.surface.normal.iter().filter(|&&c| c == 0.0).count() >= 2;
+    on_axis || r::dot(case.surface.normal, case.light.direction) >= MIN_N_DOT_L
+}
+
+/// [`case_error`] where the case is [`counted`], else 0.
 fn search_error(gpu: [f32; 3], case: &Case, formulation: Formulation) -> f64 {
-    if r::dot(case.surface.normal, case.light.direction) < SEARCH_MIN_N_DOT_L {
+    if !counted(case) {
         return 0.0;
     }
     case_error(gpu, reference(case, formulation))
@@ -455,7 +516,7 @@ impl Random {
 
 /// Searches the whole input space for the input where `evaluate` (a formulation run on an
 /// adapter, cases in, colours out) is worst against `formulation`'s f64 reference (relative
-/// error where N·L >= [`SEARCH_MIN_N_DOT_L`]): random restarts plus local
+/// error over the [`counted`] cases): random restarts plus local
 /// search around the worst inputs so far, at scales from 10^-1 to 10^-7. Deterministic for a
 /// given `evaluate`.
 pub fn search(formulation: Formulation, evaluate: &mut dyn FnMut(&[Case]) -> Vec<[f32; 3]>) -> Found {
@@ -489,7 +550,7 @@ pub fn search(formulation: Formulation, evaluate: &mut dyn FnMut(&[Case]) -> Vec
 /// The worst inputs found, as a table.
 pub fn render_search(found: &[(Formulation, Found)]) -> String {
     let mut out = format!(
-        "\nWorst found by search ({SEARCH_ROUNDS} rounds of {SEARCH_BATCH} inputs per formulation, N.L >= {SEARCH_MIN_N_DOT_L})\n{:<11}{:>11}  input\n",
+        "\nWorst found by search ({SEARCH_ROUNDS} rounds of {SEARCH_BATCH} inputs per formulation, N.L >= {MIN_N_DOT_L})\n{:<11}{:>11}  input\n",
         "formula", "max rel"
     );
     for (formulation, found) in found {

@@ -1,6 +1,7 @@
 //! The speed-against-error picture `kiln accuracy --plot` writes: GPU time per evaluation against
 //! worst relative error (both log scale), one point per formulation, the Pareto front drawn, the
-//! adapter named. SVG through plotters (text as SVG text: no font files needed).
+//! adapter named. SVG through plotters (text as SVG text: no font files needed), and PNG by
+//! rasterising that SVG with resvg (text in the system's fonts).
 
 use super::{Formulation, Found, Row, Timing};
 use plotters::prelude::*;
@@ -70,7 +71,7 @@ pub fn svg(adapter: &str, points: &[Point]) -> Result<String, String> {
             .margin(16)
             .x_label_area_size(44)
             .y_label_area_size(72)
-            .build_cartesian_2d((fast / 1.5..slow * 1.5).log_scale(), (low..high).log_scale())
+            .build_cartesian_2d((fast / 1.5..slow * 3.0).log_scale(), (low..high).log_scale())
             .map_err(|e| e.to_string())?;
         chart
             .configure_mesh()
@@ -125,6 +126,32 @@ pub fn svg(adapter: &str, points: &[Point]) -> Result<String, String> {
     Ok(text)
 }
 
+/// The picture `svg` drew, as PNG bytes at twice its size. Text is set in a sans-serif font the
+/// system has (DejaVu Sans or Liberation Sans where installed); with no font at all the PNG has
+/// the axes, points and front without their words.
+pub fn png(svg: &str) -> Result<Vec<u8>, String> {
+    use resvg::{tiny_skia, usvg};
+    let mut options = usvg::Options::default();
+    let fonts = options.fontdb_mut();
+    fonts.load_system_fonts();
+    let families: Vec<String> =
+        fonts.faces().filter_map(|face| face.families.first().map(|(name, _)| name.clone())).collect();
+    let family = ["DejaVu Sans", "Liberation Sans"]
+        .iter()
+        .find(|wanted| families.iter().any(|f| f == *wanted))
+        .map(|found| found.to_string())
+        .or_else(|| families.first().cloned());
+    if let Some(family) = family {
+        fonts.set_sans_serif_family(family.clone());
+        options.font_family = family;
+    }
+    let tree = usvg::Tree::from_str(svg, &options).map_err(|e| e.to_string())?;
+    let size = tree.size().to_int_size();
+    let mut pixmap = tiny_skia::Pixmap::new(size.width() * 2, size.height() * 2).ok_or("an empty picture")?;
+    resvg::render(&tree, tiny_skia::Transform::from_scale(2.0, 2.0), &mut pixmap.as_mut());
+    pixmap.encode_png().map_err(|e| e.to_string())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -147,5 +174,17 @@ mod tests {
         let svg = svg("test adapter", &points).expect("draws");
         assert!(svg.starts_with("<svg") && svg.contains("test adapter") && svg.contains("stable"), "{svg}");
         assert_eq!(svg.matches("<circle").count(), 3 + 3 + 2, "points, found points and legend marks");
+
+        // The PNG: twice the SVG's 800 x 520, a white page with the blue points and front on it.
+        let png = png(&svg).expect("rasterises");
+        let decoder = ::png::Decoder::new(std::io::Cursor::new(png));
+        let mut reader = decoder.read_info().expect("a PNG");
+        let mut pixels = vec![0; reader.output_buffer_size()];
+        let frame = reader.next_frame(&mut pixels).expect("decodes");
+        assert_eq!((frame.width, frame.height), (1600, 1040));
+        let rgba = &pixels[..frame.buffer_size()];
+        let blue = rgba.chunks(4).filter(|p| p[2] > 200 && p[0] < 60 && p[1] < 60).count();
+        let white = rgba.chunks(4).filter(|p| p[..3] == [255, 255, 255]).count();
+        assert!(blue > 500 && white > rgba.len() / 4 / 2, "blue {blue}, white {white}");
     }
 }

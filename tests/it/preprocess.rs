@@ -131,7 +131,7 @@ const INJECTIONS: &[Injection] = &[
     // A validation error (not a syntax error): the returned type is wrong.
     Injection {
         file: "BRDF.wgsl",
-        needle: "return range - metallic * range;",
+        needle: "return range * (1.0 - metallic);",
         replacement: "return vec2<f32>(range);",
         at: "vec2<f32>(range)",
     },

@@ -8,7 +8,8 @@
 
 use kiln::runtime::{Reload, Runtime};
 use kiln_renderer::{
-    Geometry, Scene, Target, compare, device, difference, reference, reference_image, reference_with, render, render_with,
+    Geometry, Scene, Target, compare, device, difference, reference, reference_image, reference_with, render,
+    render_with,
 };
 use std::path::{Path, PathBuf};
 
@@ -39,15 +40,29 @@ fn explain(scene: &Scene, image: &[[f64; 3]], analytic: &[[f64; 3]], edge: &[boo
     let stored = reference_with(scene, Geometry::Tessellated, Target::EightBit);
     let at = |i: usize| format!("pixel ({}, {})", i % scene.width as usize, i / scene.width as usize);
     let report = |what: &str, d: kiln_renderer::Difference| {
-        println!("  {what}: max {:.4} ({:.4} of an 8-bit step) at {}, mean {:.5}", d.max, d.max * 255.0, at(d.worst), d.mean)
+        println!(
+            "  {what}: max {:.4} ({:.4} of an 8-bit step) at {}, mean {:.5}",
+            d.max,
+            d.max * 255.0,
+            at(d.worst),
+            d.mean
+        )
     };
-    report("tessellation (the drawn triangles against analytic spheres)", difference(&tessellated, analytic, edge));
-    report("8-bit target between draws (blending rounded colours)", difference(&stored.colors, &tessellated, edge));
+    report(
+        "tessellation (the drawn triangles against analytic spheres)",
+        difference(&tessellated, analytic, edge),
+    );
+    report(
+        "8-bit target between draws (blending rounded colours)",
+        difference(&stored.colors, &tessellated, edge),
+    );
     // Rounding to 8 bits alone puts the image at most half a step from this reference.
     for (what, blended) in [("opaque", false), ("blended", true)] {
         let d = difference(image, &stored.colors, &stored.left_out_unless(blended));
         report(&format!("image against the reference with both, {what} pixels"), d);
     }
+    let d = difference(image, &tessellated, &stored.left_out_unless(true));
+    report("image against the drawn triangles blending exact colours, blended pixels", d);
 }
 
 fn watch(

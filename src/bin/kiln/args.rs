@@ -129,9 +129,12 @@ pub enum Command {
     /// the GPU (the speed-against-error table of docs/accuracy.md; needs `--features gpu`).
     Accuracy {
         /// Also draw GPU time against worst error, one point per formulation with the Pareto
-        /// front, as an SVG file.
-        #[arg(long, value_name = "FILE.svg")]
-        plot: Option<PathBuf>,
+        /// front: an SVG file, or a PNG one when FILE ends in `.png` (repeat for both).
+        #[arg(long, value_name = "FILE.svg|FILE.png")]
+        plot: Vec<PathBuf>,
+        /// Cases per hard-case set.
+        #[arg(long, default_value_t = 1_000_000, value_parser = clap::value_parser!(u32).range(2..=16_000_000))]
+        samples: u32,
     },
     /// Serve editors: a language server (LSP over stdin and stdout) with diagnostics, hover,
     /// go-to-definition and completion for the project of each file opened (docs/editor.md).

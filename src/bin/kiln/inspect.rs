@@ -87,7 +87,7 @@ pub fn reflect(shader: PathBuf, pass: Option<String>, keywords: Vec<String>) -> 
 
 /// `kiln accuracy` in a kiln built without the GPU harness.
 #[cfg(not(feature = "gpu"))]
-pub fn accuracy(_plot: Option<PathBuf>) -> ExitCode {
+pub fn accuracy(_plot: Vec<PathBuf>, _samples: usize) -> ExitCode {
     host_failure(
         "this kiln was built without the `gpu` feature, which `kiln accuracy` needs: cargo install --path . --features gpu (or cargo run --features gpu -- accuracy)",
     )
@@ -95,12 +95,12 @@ pub fn accuracy(_plot: Option<PathBuf>) -> ExitCode {
 
 /// `kiln accuracy`.
 #[cfg(feature = "gpu")]
-pub fn accuracy(plot: Option<PathBuf>) -> ExitCode {
+pub fn accuracy(plots: Vec<PathBuf>, samples: usize) -> ExitCode {
     let gpu = match kiln::accuracy::gpu::device() {
         Ok(found) => found,
         Err(reason) => return host_failure(&reason),
     };
-    match kiln::accuracy::gpu::run(&gpu) {
+    match kiln::accuracy::gpu::run(&gpu, samples) {
         Ok((rows, timings, method)) => {
             print_out(&kiln::accuracy::render(&gpu.adapter, &rows, &timings, &method));
             let found = match kiln::accuracy::gpu::search(&gpu) {
@@ -108,14 +108,19 @@ pub fn accuracy(plot: Option<PathBuf>) -> ExitCode {
                 Err(error) => return host_failure(&error),
             };
             print_out(&kiln::accuracy::render_search(&found));
-            let Some(path) = plot else { return ExitCode::SUCCESS };
             let points = kiln::accuracy::plot::points(&rows, &timings, &found);
-            let written = kiln::accuracy::plot::svg(&gpu.adapter, &points)
-                .and_then(|svg| std::fs::write(&path, svg).map_err(|e| e.to_string()));
-            match written {
-                Ok(()) => ExitCode::SUCCESS,
-                Err(error) => host_failure(&format!("cannot write `{}`: {error}", path.display())),
+            for path in plots {
+                let as_png = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"));
+                let written = kiln::accuracy::plot::svg(&gpu.adapter, &points)
+                    .and_then(
+                        |svg| if as_png { kiln::accuracy::plot::png(&svg) } else { Ok(svg.into_bytes()) },
+                    )
+                    .and_then(|bytes| std::fs::write(&path, bytes).map_err(|e| e.to_string()));
+                if let Err(error) = written {
+                    return host_failure(&format!("cannot write `{}`: {error}", path.display()));
+                }
             }
+            ExitCode::SUCCESS
         }
         Err(error) => {
             report(&SourceStore::new(), &[kiln::diagnostics::Diagnostic::host_failure(error.to_string())]);
