@@ -57,24 +57,40 @@ pub struct Diagnostic {
 pub struct Occurrence {
     /// The variants, each as its keywords (`(no keywords)`, `_CLIPPING _FOG`).
     pub variants: Vec<String>,
-    /// What follows them: ` of `S` pass 0, fragment stage`.
-    pub place: String,
+    /// The pass they are variants of.
+    pub pass: PassId,
+    /// Where in the pass, after its name: `, fragment stage`, or nothing for its whole text.
+    pub within: String,
+}
+
+/// A pass, by its shader's name and its index in the shader.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct PassId {
+    /// The shader's name (`Custom RP/Lit`).
+    pub shader: String,
+    /// The pass's index, from 0.
+    pub index: usize,
 }
 
 impl Occurrence {
+    /// What follows the variants: ` of `S` pass 0, fragment stage`.
+    pub fn place(&self) -> String {
+        format!(" of `{}` pass {}{}", self.pass.shader, self.pass.index, self.within)
+    }
+
     /// The note it is shown as.
     pub fn note(&self) -> String {
         const SHOWN: usize = 6;
         let names: Vec<String> = self.variants.iter().map(|n| format!("`{n}`")).collect();
         let shown = match &names[..] {
-            [one] => return format!("in variant {one}{}", self.place),
+            [one] => return format!("in variant {one}{}", self.place()),
             _ if names.len() > SHOWN => {
                 format!("{} and {} more", names[..SHOWN].join(", "), names.len() - SHOWN)
             }
             [first @ .., last] => format!("{} and {last}", first.join(", ")),
             [] => String::new(),
         };
-        format!("in {} variants {shown}{}", names.len(), self.place)
+        format!("in {} variants {shown}{}", names.len(), self.place())
     }
 }
 
@@ -132,9 +148,17 @@ impl Diagnostic {
         self
     }
 
-    /// Says which variant it occurs in (`variant`: its keywords) and where (`place`).
-    pub fn in_variant(mut self, variant: impl Into<String>, place: impl Into<String>) -> Diagnostic {
-        self.occurrence = Some(Occurrence { variants: vec![variant.into()], place: place.into() });
+    /// Says which variant of which pass it occurs in (`variant`: its keywords) and where in it
+    /// (`within`: `, fragment stage`, or nothing).
+    pub fn in_variant(
+        mut self,
+        variant: impl Into<String>,
+        pass: &PassId,
+        within: impl Into<String>,
+    ) -> Diagnostic {
+        let occurrence =
+            Occurrence { variants: vec![variant.into()], pass: pass.clone(), within: within.into() };
+        self.occurrence = Some(occurrence);
         self
     }
 
@@ -202,7 +226,7 @@ pub fn dedup(diagnostics: &mut Vec<Diagnostic>) {
         keep.push(false);
         let more = diagnostics[i].occurrence.clone();
         if let (Some(more), Some(into)) = (more, diagnostics[f].occurrence.as_mut())
-            && more.place == into.place
+            && (&more.pass, &more.within) == (&into.pass, &into.within)
         {
             for variant in more.variants {
                 if !into.variants.contains(&variant) {
@@ -369,8 +393,8 @@ mod tests {
     use super::*;
 
     fn in_variant(variant: &str, stage: &str) -> Diagnostic {
-        Diagnostic::error("K0401", "the same mistake")
-            .in_variant(variant, format!(" of `S` pass 0, {stage} stage"))
+        let pass = PassId { shader: "S".into(), index: 0 };
+        Diagnostic::error("K0401", "the same mistake").in_variant(variant, &pass, format!(", {stage} stage"))
     }
 
     #[test]

@@ -4,7 +4,7 @@
 use super::plan::PassWork;
 use crate::compile::target::Allowed;
 use crate::diagnostics;
-use crate::diagnostics::Diagnostic;
+use crate::diagnostics::{Diagnostic, PassId};
 use crate::keywords::KeywordBits;
 use crate::preprocess::{Includes, SourceMap, Stage, preprocess};
 use crate::shaderlab::pragma::ProgramPragmas;
@@ -24,8 +24,8 @@ pub(super) struct Job<'a> {
     pub allowed: Allowed,
     /// Which variant asked for it first (its keywords), for diagnostics.
     pub variant: String,
-    /// ` of `S` pass N`: the pass, for diagnostics.
-    pub pass_place: String,
+    /// The pass, for diagnostics.
+    pub pass: PassId,
     /// How many stage requests of the pass's variants it serves (for progress).
     pub requests: usize,
 }
@@ -33,13 +33,13 @@ pub(super) struct Job<'a> {
 impl Job<'_> {
     /// A diagnostic about this stage module, said to occur in its variant's stage.
     pub(super) fn in_stage(&self, diagnostic: Diagnostic) -> Diagnostic {
-        diagnostic.in_variant(&self.variant, stage_place(&self.pass_place, self.stage, self.entry))
+        diagnostic.in_variant(&self.variant, &self.pass, stage_within(self.stage, self.entry))
     }
 
     /// A diagnostic about its whole text (a parse error is the text's, not the stage's that
     /// parsed it first), said to occur in its variant.
     pub(super) fn in_text(&self, diagnostic: Diagnostic) -> Diagnostic {
-        diagnostic.in_variant(&self.variant, &self.pass_place)
+        diagnostic.in_variant(&self.variant, &self.pass, "")
     }
 
     /// What the resources a job's module reaches depend on: its text, stage and entry point.
@@ -74,10 +74,10 @@ struct Request<'a> {
     variant: String,
 }
 
-/// Where in its variant a stage is: ` of `S` pass N, fragment stage` (and a kernel's name).
-fn stage_place(pass_place: &str, stage: Stage, entry: &str) -> String {
+/// Where in its pass a stage is: `, fragment stage` (and a kernel's name).
+fn stage_within(stage: Stage, entry: &str) -> String {
     let kernel = if stage == Stage::Compute { format!(" (kernel `{entry}`)") } else { String::new() };
-    format!("{pass_place}, {} stage{kernel}", stage.name())
+    format!(", {} stage{kernel}", stage.name())
 }
 
 /// The distinct stage texts of a pass's variants: each (stage, stage keywords, target) is
@@ -97,7 +97,7 @@ pub(super) fn pass_jobs<'a>(
     let mut request_of: HashMap<(Stage, &str, &KeywordBits, String), usize> = HashMap::new();
     let mut per_variant: Vec<Vec<Option<usize>>> = Vec::with_capacity(work.variants.len());
     let entries = entry_points(&program.pragmas);
-    let pass_place = format!(" of `{}` pass {}", shader.shader.name.value, pass.index);
+    let pass_id = PassId { shader: shader.shader.name.value.clone(), index: pass.index };
     for variant in work.variants.iter() {
         let all: Vec<&str> = program.keywords.keywords(&variant.bits).collect();
         let allowed = Allowed::for_variant(&program.pragmas, &all);
@@ -134,8 +134,9 @@ pub(super) fn pass_jobs<'a>(
     let mut job_of_request: Vec<Option<usize>> = Vec::with_capacity(requests.len());
     for (request, (out, text_hash)) in requests.into_iter().zip(outputs) {
         let failed = diagnostics::has_errors(&out.diagnostics);
-        let place = stage_place(&pass_place, request.stage, &request.entry.value);
-        diagnostics.extend(out.diagnostics.into_iter().map(|d| d.in_variant(&request.variant, &place)));
+        let within = stage_within(request.stage, &request.entry.value);
+        diagnostics
+            .extend(out.diagnostics.into_iter().map(|d| d.in_variant(&request.variant, &pass_id, &within)));
         if failed {
             job_of_request.push(None);
             continue;
@@ -151,7 +152,7 @@ pub(super) fn pass_jobs<'a>(
                 text_hash,
                 allowed: request.allowed,
                 variant: request.variant,
-                pass_place: pass_place.clone(),
+                pass: pass_id.clone(),
                 requests: 0,
             });
             jobs.len() - 1

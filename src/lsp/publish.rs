@@ -129,8 +129,7 @@ fn included_from(analysis: &Analysis, diagnostic: &Diagnostic) -> Vec<lsp::Diagn
 /// variants with those keywords have the problem.
 fn occurrence_line(analysis: &Analysis, occurrence: &Occurrence) -> String {
     let pass = analysis.passes().find(|(_, shader, pass, _)| {
-        let prefix = format!(" of `{}` pass {}", shader.shader.name.value, pass.index);
-        occurrence.place.strip_prefix(&prefix).is_some_and(|rest| rest.is_empty() || rest.starts_with(','))
+        shader.shader.name.value == occurrence.pass.shader && pass.index == occurrence.pass.index
     });
     // A first check of the active variants alone cannot say how many others have it.
     let Some((_, _, _, program)) = pass.filter(|_| !analysis.partial) else { return occurrence.note() };
@@ -146,7 +145,7 @@ fn occurrence_line(analysis: &Analysis, occurrence: &Occurrence) -> String {
         } else {
             format!("all {} variants", all.len())
         };
-        return format!("in {all}{}", occurrence.place);
+        return format!("in {all}{}", occurrence.place());
     }
     let common: Vec<String> =
         listed[0].iter().filter(|k| listed.iter().all(|l| l.contains(k))).cloned().collect();
@@ -158,5 +157,5 @@ fn occurrence_line(analysis: &Analysis, occurrence: &Occurrence) -> String {
         names.join(", ")
     };
     let variants = if all.len() == 1 { "variant" } else { "variants" };
-    format!("in {} of {} {variants}{}: {which}", listed.len(), all.len(), occurrence.place)
+    format!("in {} of {} {variants}{}: {which}", listed.len(), all.len(), occurrence.place())
 }

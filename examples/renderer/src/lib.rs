@@ -151,16 +151,21 @@ fn draw_order(scene: &Scene) -> Vec<usize> {
     opaque.into_iter().chain(blended).collect()
 }
 
+/// A UV sphere's vertex: its position on the unit sphere (also its normal), at `v` (0 to 1, pole to
+/// pole) and `u` (0 to 1, around).
+fn sphere_point(v: f64, u: f64) -> r::Vec3 {
+    let (theta, phi) = (v * std::f64::consts::PI, u * std::f64::consts::TAU);
+    [theta.sin() * phi.cos(), theta.cos(), -theta.sin() * phi.sin()]
+}
+
 /// A UV sphere of radius 1: interleaved position, normal, uv.
 fn sphere_mesh(rings: u32, segments: u32) -> (Vec<f32>, Vec<u32>) {
     let mut vertices = Vec::new();
     for ring in 0..=rings {
         let v = f64::from(ring) / f64::from(rings);
-        let theta = v * std::f64::consts::PI;
         for segment in 0..=segments {
             let u = f64::from(segment) / f64::from(segments);
-            let phi = u * std::f64::consts::TAU;
-            let n = [theta.sin() * phi.cos(), theta.cos(), -theta.sin() * phi.sin()];
+            let n = sphere_point(v, u);
             vertices.extend(to_f32(n));
             vertices.extend(to_f32(n));
             vertices.extend([u as f32, v as f32]);
@@ -556,11 +561,10 @@ impl Reference {
 /// distance along the ray (object space) and the interpolated, normalised normal.
 fn mesh_hit(origin: r::Vec3, ray: r::Vec3, q: r::Vec3) -> Option<(f64, r::Vec3)> {
     let (rings, segments) = (SPHERE_RINGS as i64, SPHERE_SEGMENTS as i64);
+    // The vertex buffer's f32 values; position and normal are the same vector.
     let vertex = |ring: i64, segment: i64| -> r::Vec3 {
-        let theta = ring as f64 / rings as f64 * std::f64::consts::PI;
-        let phi = segment as f64 / segments as f64 * std::f64::consts::TAU;
-        // The vertex buffer's f32 values; position and normal are the same vector.
-        [theta.sin() * phi.cos(), theta.cos(), -theta.sin() * phi.sin()].map(|v| f64::from(v as f32))
+        sphere_point(ring as f64 / rings as f64, segment as f64 / segments as f64)
+            .map(|v| f64::from(v as f32))
     };
     let theta = q[1].clamp(-1.0, 1.0).acos();
     let phi = (-q[2]).atan2(q[0]).rem_euclid(std::f64::consts::TAU);
