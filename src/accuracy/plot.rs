@@ -126,6 +126,15 @@ pub fn svg(adapter: &str, points: &[Point]) -> Result<String, String> {
     Ok(text)
 }
 
+/// The picture for a file at `path`: PNG when its name ends in `.png`, else SVG.
+pub fn picture_for(path: &std::path::Path, adapter: &str, points: &[Point]) -> Result<Vec<u8>, String> {
+    let svg = svg(adapter, points)?;
+    match path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png")) {
+        true => png(&svg),
+        false => Ok(svg.into_bytes()),
+    }
+}
+
 /// The picture `svg` drew, as PNG bytes at twice its size. Text is set in a sans-serif font the
 /// system has (DejaVu Sans or Liberation Sans where installed); with no font at all the PNG has
 /// the axes, points and front without their words.
@@ -176,7 +185,8 @@ mod tests {
         assert_eq!(svg.matches("<circle").count(), 3 + 3 + 2, "points, found points and legend marks");
 
         // The PNG: twice the SVG's 800 x 520, a white page with the blue points and front on it.
-        let png = png(&svg).expect("rasterises");
+        let png =
+            picture_for(std::path::Path::new("speed.PNG"), "test adapter", &points).expect("rasterises");
         let decoder = ::png::Decoder::new(std::io::Cursor::new(png));
         let mut reader = decoder.read_info().expect("a PNG");
         let mut pixels = vec![0; reader.output_buffer_size()];

@@ -110,11 +110,7 @@ pub fn accuracy(plots: Vec<PathBuf>, samples: usize) -> ExitCode {
             print_out(&kiln::accuracy::render_search(&found));
             let points = kiln::accuracy::plot::points(&rows, &timings, &found);
             for path in plots {
-                let as_png = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"));
-                let written = kiln::accuracy::plot::svg(&gpu.adapter, &points)
-                    .and_then(
-                        |svg| if as_png { kiln::accuracy::plot::png(&svg) } else { Ok(svg.into_bytes()) },
-                    )
+                let written = kiln::accuracy::plot::picture_for(&path, &gpu.adapter, &points)
                     .and_then(|bytes| std::fs::write(&path, bytes).map_err(|e| e.to_string()));
                 if let Err(error) = written {
                     return host_failure(&format!("cannot write `{}`: {error}", path.display()));
