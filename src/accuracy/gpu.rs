@@ -23,7 +23,7 @@ pub type Bindings = BTreeMap<String, (u32, u32)>;
 pub type Kernels = BTreeMap<String, (String, Bindings)>;
 
 /// The harness's name, as a compute shader file.
-const HARNESS_FILE: &str = "accuracy-harness.compute";
+const HARNESS_FILE: &str = "accuracy-gpu.compute";
 
 /// The harness, a WGSL program in kiln's dialect, declaring what it needs as a pass would.
 const HARNESS: &str = include_str!("harness.compute");
@@ -142,34 +142,17 @@ fn light_bytes(lights: &[crate::reference::Light], count: i32) -> Vec<u8> {
 /// Cases per dispatch: 96 bytes each stays below every adapter's 128 MiB storage binding.
 const CASES_PER_DISPATCH: usize = 1 << 20;
 
-struct Harness<'a> {
-    device: &'a wgpu::Device,
-    queue: &'a wgpu::Queue,
-    timestamps: bool,
-    /// Each variant's kernels, built once (a formulation's evaluation and timing kernels).
-    built: std::cell::RefCell<HashMap<Vec<String>, Kernels>>,
-}
-
-impl<'a> Harness<'a> {
-    fn new(gpu: &'a Gpu) -> Harness<'a> {
-        Harness {
-            device: &gpu.device,
-            queue: &gpu.queue,
-            timestamps: gpu.timestamps,
-            built: Default::default(),
-        }
-    }
-
+/// The harness on a device: its kernels, dispatches and timings.
+impl Gpu {
     fn pipeline(&self, keywords: &[&str], entry: &str) -> Result<(wgpu::ComputePipeline, Bindings), String> {
         let variant: Vec<String> = keywords.iter().map(|k| k.to_string()).collect();
-        if !self.built.borrow().contains_key(&variant) {
-            let kernels = harness_kernels(keywords)?;
-            self.built.borrow_mut().insert(variant.clone(), kernels);
+        let mut built = self.kernels.lock().map_err(|_| "the harness's kernels are poisoned")?;
+        if !built.contains_key(&variant) {
+            built.insert(variant.clone(), harness_kernels(keywords)?);
         }
-        let (wgsl, bound) = self.built.borrow()[&variant]
-            .get(entry)
-            .cloned()
-            .ok_or(format!("the harness has no kernel `{entry}`"))?;
+        let (wgsl, bound) =
+            built[&variant].get(entry).cloned().ok_or(format!("the harness has no kernel `{entry}`"))?;
+        drop(built);
         let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some(entry),
             source: wgpu::ShaderSource::Wgsl(wgsl.into()),
@@ -194,7 +177,7 @@ impl<'a> Harness<'a> {
         light: Option<&[u8]>,
         invocations: u32,
     ) -> (Vec<[f32; 3]>, f64) {
-        let device = self.device;
+        let device = &self.device;
         let input = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
             label: Some("cases"),
             contents: &case_bytes(cases),
@@ -375,9 +358,9 @@ impl<'a> Harness<'a> {
             let cases: Vec<Case> =
                 set.cases.iter().zip(counts).filter(|(_, c)| **c == count).map(|(case, _)| *case).collect();
             let results = self.evaluate(all, &cases, Some(&light_bytes(lights, count)));
-            let (gpu, references) =
+            let (results, references) =
                 counted_pairs(&cases, results, |case| reference_lights(case, lights, count, formulation));
-            measured.0.extend(gpu);
+            measured.0.extend(results);
             measured.1.extend(references);
         }
         measured
@@ -396,6 +379,9 @@ pub struct Gpu {
     pub timestamps: bool,
     /// `shader-f16`: the f16 formulation runs.
     pub f16: bool,
+    /// The harness's kernels for each variant (formulation keywords), built once per device: the
+    /// error runs, the timings and the search share them.
+    kernels: std::sync::Mutex<HashMap<Vec<String>, Kernels>>,
 }
 
 /// Requests a device with timestamp queries and `shader-f16` where the adapter has them.
@@ -419,6 +405,7 @@ pub fn device() -> Result<Gpu, String> {
         adapter: format!("{} ({:?}, {:?})", info.name, info.device_type, info.backend),
         timestamps: required_features.contains(wgpu::Features::TIMESTAMP_QUERY),
         f16: required_features.contains(wgpu::Features::SHADER_F16),
+        kernels: Default::default(),
     })
 }
 
@@ -444,23 +431,20 @@ fn formulations(gpu: &Gpu) -> Vec<Formulation> {
 /// `formulations` on every hard-case set of `samples` cases: one row per formulation and set, by
 /// formulation, then set.
 pub fn error_rows(gpu: &Gpu, formulations: &[Formulation], samples: usize) -> Result<Vec<Row>, String> {
-    let harness = Harness::new(gpu);
     let pipelines = formulations
         .iter()
-        .map(|f| {
-            Ok((harness.pipeline(f.keywords(), "OneLight")?, harness.pipeline(f.keywords(), "AllLights")?))
-        })
+        .map(|f| Ok((gpu.pipeline(f.keywords(), "OneLight")?, gpu.pipeline(f.keywords(), "AllLights")?)))
         .collect::<Result<Vec<_>, String>>()?;
     let mut rows = Vec::new();
     // One set at a time: a million cases of each is a few hundred megabytes.
     for index in 0..HARD_CASE_SETS {
         let set = hard_case_set(index, samples);
         for (&formulation, (one, all)) in formulations.iter().zip(&pipelines) {
-            let (gpu, references) = harness.measure(formulation, one, all, &set);
+            let (results, references) = gpu.measure(formulation, one, all, &set);
             rows.push(Row {
                 formulation: formulation.name(),
                 set: set.name.clone(),
-                stats: stats(&gpu, &references),
+                stats: stats(&results, &references),
             });
         }
     }
@@ -475,7 +459,6 @@ pub fn run(gpu: &Gpu, samples: usize) -> Result<(Vec<Row>, Vec<Timing>, String),
     let formulations = formulations(gpu);
     // Timed first: after a million cases per set (hundreds of megabytes moved, the CPU busy with
     // references) the H100 timed the same kernels 5x slower.
-    let harness = Harness::new(gpu);
     let sets: Vec<CaseSet> = (0..HARD_CASE_SETS).map(|index| hard_case_set(index, TEST_SAMPLES)).collect();
     // Timing on ordinary inputs (the metallic set: random directions, both metal kinds).
     let ordinary = &sets.iter().find(|s| s.name.starts_with("metallic")).ok_or("no ordinary set")?.cases;
@@ -486,12 +469,7 @@ pub fn run(gpu: &Gpu, samples: usize) -> Result<(Vec<Row>, Vec<Timing>, String),
     for &formulation in &formulations {
         timings.push(Timing {
             what: format!("{}: one light (GetLightingForLight)", formulation.name()),
-            nanoseconds_per_evaluation: harness.time(
-                formulation.keywords(),
-                "TimeOneLight",
-                ordinary,
-                None,
-            )?,
+            nanoseconds_per_evaluation: gpu.time(formulation.keywords(), "TimeOneLight", ordinary, None)?,
         });
     }
     for (what, keywords, bytes) in [
@@ -505,7 +483,7 @@ pub fn run(gpu: &Gpu, samples: usize) -> Result<(Vec<Row>, Vec<Timing>, String),
     ] {
         timings.push(Timing {
             what: what.to_string(),
-            nanoseconds_per_evaluation: harness.time(&keywords, "TimeAllLights", ordinary, Some(bytes))?,
+            nanoseconds_per_evaluation: gpu.time(&keywords, "TimeAllLights", ordinary, Some(bytes))?,
         });
     }
     let f16 = match gpu.f16 {
@@ -527,11 +505,10 @@ pub fn run(gpu: &Gpu, samples: usize) -> Result<(Vec<Row>, Vec<Timing>, String),
 
 /// [`super::search`] for every formulation the adapter runs: the worst input found for each.
 pub fn search(gpu: &Gpu) -> Result<Vec<(Formulation, super::Found)>, String> {
-    let harness = Harness::new(gpu);
     let mut found = Vec::new();
     for formulation in formulations(gpu) {
-        let one = harness.pipeline(formulation.keywords(), "OneLight")?;
-        let mut evaluate = |cases: &[Case]| harness.dispatch(&one, cases, None, cases.len() as u32).0;
+        let one = gpu.pipeline(formulation.keywords(), "OneLight")?;
+        let mut evaluate = |cases: &[Case]| gpu.dispatch(&one, cases, None, cases.len() as u32).0;
         found.push((formulation, super::search(formulation, &mut evaluate)));
     }
     Ok(found)

@@ -120,11 +120,21 @@ impl Random {
         }
     }
 
+    /// A surface facing up (normal (0, 1, 0)) under a white light, the light's and the view's
+    /// directions above it, smoothness and (unless given) metallic random; drawn in that order.
+    fn facing_up(&mut self, metallic: Option<f64>) -> Case {
+        let light = Light { color: WHITE, direction: self.upper_direction() };
+        let view = self.upper_direction();
+        let smoothness = self.next();
+        let metallic = metallic.unwrap_or_else(|| self.next());
+        Case { surface: surface([0.0, 1.0, 0.0], view, smoothness, metallic), light, premultiply: false }
+    }
+
     /// A direction above the surface (y > 0).
     fn upper_direction(&mut self) -> r::Vec3 {
         let d = self.direction();
         let up = [d[0], d[1].abs().max(0.05), d[2]];
-        r::scale(up, 1.0 / r::dot(up, up).sqrt())
+        r::normalize(up)
     }
 }
 
@@ -234,11 +244,7 @@ pub fn hard_case_set(index: usize, samples: usize) -> CaseSet {
                     let (sin, cos) = azimuth.sin_cos();
                     let light = Light { color: WHITE, direction: [e.cos() * cos, e.sin(), e.cos() * sin] };
                     let view = [-(e * 0.5).cos() * 0.6, (e * 0.5).sin(), (e * 0.5).cos() * 0.8];
-                    Case {
-                        surface: surface(up, r::scale(view, 1.0 / r::dot(view, view).sqrt()), 0.8, 0.5),
-                        light,
-                        premultiply: false,
-                    }
+                    Case { surface: surface(up, r::normalize(view), 0.8, 0.5), light, premultiply: false }
                 })
                 .collect();
             set("grazing n.l and n.v".into(), cases)
@@ -248,42 +254,25 @@ pub fn hard_case_set(index: usize, samples: usize) -> CaseSet {
             let cases = (0..n)
                 .map(|k| {
                     let intensity = 10f64.powf(-6.0 + 11.0 * along(k));
-                    let light = Light {
-                        color: [intensity, intensity * 0.5, intensity * 0.25],
-                        direction: random.upper_direction(),
-                    };
-                    Case {
-                        surface: surface(up, random.upper_direction(), random.next(), random.next()),
-                        light,
-                        premultiply: false,
-                    }
+                    let mut case = random.facing_up(None);
+                    case.light.color = [intensity, intensity * 0.5, intensity * 0.25];
+                    case
                 })
                 .collect();
             set("light colours 1e-6 to 1e5".into(), cases)
         }
         // Metallic 0 and 1.
         9 => {
-            let cases = (0..n)
-                .map(|k| {
-                    let light = Light { color: WHITE, direction: random.upper_direction() };
-                    let metallic = (k % 2) as f64;
-                    Case {
-                        surface: surface(up, random.upper_direction(), random.next(), metallic),
-                        light,
-                        premultiply: false,
-                    }
-                })
-                .collect();
+            let cases = (0..n).map(|k| random.facing_up(Some((k % 2) as f64))).collect();
             set("metallic 0 and 1".into(), cases)
         }
         // Alpha 0, premultiplied.
         10 => {
             let cases = (0..n)
                 .map(|_| {
-                    let light = Light { color: WHITE, direction: random.upper_direction() };
-                    let mut s = surface(up, random.upper_direction(), random.next(), random.next());
-                    s.alpha = 0.0;
-                    Case { surface: s, light, premultiply: true }
+                    let mut case = random.facing_up(None);
+                    case.surface.alpha = 0.0;
+                    Case { premultiply: true, ..case }
                 })
                 .collect();
             set("alpha 0 with premultiply".into(), cases)
@@ -496,7 +485,7 @@ impl Random {
     fn nearby(&mut self, case: &Case, scale: f64) -> Case {
         let mut turn = |v: r::Vec3| {
             let moved = r::add(v, r::scale(self.direction(), scale * self.next()));
-            r::scale(moved, 1.0 / r::dot(moved, moved).sqrt())
+            r::normalize(moved)
         };
         let (normal, view, light) =
             (turn(case.surface.normal), turn(case.surface.view_direction), turn(case.light.direction));

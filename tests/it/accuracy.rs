@@ -170,3 +170,30 @@ fn the_search_finds_the_seed_s_cancellation_on_the_gpu() {
     let report = kiln::accuracy::render_search(&found);
     assert!(report.contains("seed") && report.contains("ratio"), "{report}");
 }
+
+/// `kiln accuracy` end to end: a sample count below two is refused before anything runs; the
+/// pictures are written in the format their names ask for; a picture that cannot be written is
+/// an error naming its path (K0007, exit 2), not a silent success.
+#[test]
+fn kiln_accuracy_writes_its_pictures_and_says_what_it_cannot() {
+    let refused = crate::support::kiln(&["accuracy", "--samples", "1"]);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("--samples"));
+    if crate::support::gpu("kiln accuracy's pictures").is_none() {
+        return;
+    }
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (svg, png) = (dir.path().join("speed.svg"), dir.path().join("speed.png"));
+    let args = ["accuracy", "--samples", "2", "--plot", svg.to_str().expect("UTF-8")];
+    let written = crate::support::kiln(&[&args[..], &["--plot", png.to_str().expect("UTF-8")]].concat());
+    assert!(written.status.success(), "{}", String::from_utf8_lossy(&written.stderr));
+    assert!(std::fs::read_to_string(&svg).expect("the SVG").starts_with("<svg"));
+    assert!(std::fs::read(&png).expect("the PNG").starts_with(b"\x89PNG\r\n\x1a\n"));
+
+    let missing = dir.path().join("no such folder/speed.png");
+    let failed =
+        crate::support::kiln(&["accuracy", "--samples", "2", "--plot", missing.to_str().expect("UTF-8")]);
+    let stderr = String::from_utf8_lossy(&failed.stderr);
+    assert_eq!(failed.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("K0007") && stderr.contains("no such folder"), "{stderr}");
+}

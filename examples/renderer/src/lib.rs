@@ -58,18 +58,6 @@ fn mat_mul(a: &Mat4, b: &Mat4) -> Mat4 {
     out
 }
 
-fn normalize(v: r::Vec3) -> r::Vec3 {
-    r::scale(v, 1.0 / r::dot(v, v).sqrt())
-}
-
-fn sub(a: r::Vec3, b: r::Vec3) -> r::Vec3 {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn cross(a: r::Vec3, b: r::Vec3) -> r::Vec3 {
-    [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-}
-
 /// The camera's basis and projection, shared by the GPU and the reference.
 struct View {
     eye: r::Vec3,
@@ -86,9 +74,9 @@ const FAR: f64 = 100.0;
 impl View {
     fn new(scene: &Scene) -> View {
         let eye = scene.camera.position;
-        let forward = normalize(r::add(scene.camera.target, r::scale(eye, -1.0)));
-        let right = normalize(cross(forward, [0.0, 1.0, 0.0]));
-        let up = cross(right, forward);
+        let forward = r::normalize(r::sub(scene.camera.target, eye));
+        let right = r::normalize(r::cross(forward, [0.0, 1.0, 0.0]));
+        let up = r::cross(right, forward);
         View {
             eye,
             forward,
@@ -127,7 +115,7 @@ impl View {
                 r::scale(self.up, ndc_y * self.tan_half_fov),
             ),
         );
-        normalize(d)
+        r::normalize(d)
     }
 }
 
@@ -142,7 +130,7 @@ fn mat_f32(m: &Mat4) -> [[f32; 4]; 4] {
 /// Drawing order: opaque and clipped objects first, then blended ones back to front.
 fn draw_order(scene: &Scene) -> Vec<usize> {
     let distance = |i: usize| {
-        let d = r::add(scene.objects[i].position, r::scale(scene.camera.position, -1.0));
+        let d = r::sub(scene.objects[i].position, scene.camera.position);
         r::dot(d, d)
     };
     let (mut blended, opaque): (Vec<usize>, Vec<usize>) =
@@ -303,7 +291,7 @@ pub fn render_frames(
         ..bytemuck::Zeroable::zeroed()
     };
     for (i, l) in scene.lights.iter().take(4).enumerate() {
-        let d = normalize(l.direction);
+        let d = r::normalize(l.direction);
         light._DirectionalLightColors[i] = to_f32([l.color[0], l.color[1], l.color[2], 0.0]);
         light._DirectionalLightDirections[i] = to_f32([d[0], d[1], d[2], 0.0]);
     }
@@ -578,22 +566,22 @@ fn mesh_hit(origin: r::Vec3, ray: r::Vec3, q: r::Vec3) -> Option<(f64, r::Vec3)>
             for [i, j, k] in [[0, 1, 2], [2, 1, 3]] {
                 let (p0, p1, p2) = (corners[i], corners[j], corners[k]);
                 // Moeller-Trumbore: the hit's distance and barycentric coordinates.
-                let (e1, e2) = (sub(p1, p0), sub(p2, p0));
-                let h = cross(ray, e2);
+                let (e1, e2) = (r::sub(p1, p0), r::sub(p2, p0));
+                let h = r::cross(ray, e2);
                 let det = r::dot(e1, h);
                 if det.abs() < 1e-300 {
                     continue;
                 }
-                let s = sub(origin, p0);
+                let s = r::sub(origin, p0);
                 let u = r::dot(s, h) / det;
-                let qv = cross(s, e1);
+                let qv = r::cross(s, e1);
                 let v = r::dot(ray, qv) / det;
                 let t = r::dot(e2, qv) / det;
                 let inside = (0.0..=1.0).contains(&u) && v >= 0.0 && u + v <= 1.0;
                 if inside && t > 0.0 && best.is_none_or(|(nearest, _)| t < nearest) {
                     let w = 1.0 - u - v;
                     let normal = [0, 1, 2].map(|c| p0[c] * w + p1[c] * u + p2[c] * v);
-                    best = Some((t, normalize(normal)));
+                    best = Some((t, r::normalize(normal)));
                 }
             }
         }
@@ -611,8 +599,11 @@ pub fn reference_with(scene: &Scene, geometry: Geometry, target: Target) -> Refe
         Target::EightBit => color.map(|c| (c.clamp(0.0, 1.0) * 255.0).round() / 255.0),
     };
     let view = View::new(scene);
-    let lights: Vec<r::Light> =
-        scene.lights.iter().map(|l| r::Light { color: l.color, direction: normalize(l.direction) }).collect();
+    let lights: Vec<r::Light> = scene
+        .lights
+        .iter()
+        .map(|l| r::Light { color: l.color, direction: r::normalize(l.direction) })
+        .collect();
     let order = draw_order(scene);
     let (w, h) = (scene.width, scene.height);
     let mut colors = vec![[0.0; 3]; (w * h) as usize];
@@ -624,13 +615,13 @@ pub fn reference_with(scene: &Scene, geometry: Geometry, target: Target) -> Refe
             // Distance along the ray and the shading normal.
             let hit = |i: usize| -> Option<(f64, r::Vec3)> {
                 let o = &scene.objects[i];
-                let oc = r::add(view.eye, r::scale(o.position, -1.0));
+                let oc = r::sub(view.eye, o.position);
                 let b = r::dot(oc, ray);
                 let c = r::dot(oc, oc) - o.radius * o.radius;
                 let disc = b * b - c;
                 let t = (disc >= 0.0).then(|| -b - disc.sqrt()).filter(|t| *t > 0.0)?;
                 let point = r::add(view.eye, r::scale(ray, t));
-                let exact = normalize(sub(point, o.position));
+                let exact = r::normalize(r::sub(point, o.position));
                 match geometry {
                     Geometry::Analytic => Some((t, exact)),
                     // Object space is world space scaled by 1/radius: distances scale back.
@@ -654,7 +645,7 @@ pub fn reference_with(scene: &Scene, geometry: Geometry, target: Target) -> Refe
                 let point = r::add(view.eye, r::scale(ray, t));
                 let surface = r::Surface {
                     normal,
-                    view_direction: normalize(r::add(view.eye, r::scale(point, -1.0))),
+                    view_direction: r::normalize(r::sub(view.eye, point)),
                     color: [m.color[0], m.color[1], m.color[2]],
                     alpha: m.color[3],
                     metallic: m.metallic,

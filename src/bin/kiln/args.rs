@@ -133,8 +133,8 @@ pub enum Command {
         #[arg(long, value_name = "FILE.svg|FILE.png")]
         plot: Vec<PathBuf>,
         /// Cases per hard-case set.
-        #[arg(long, default_value_t = 1_000_000, value_parser = clap::value_parser!(u32).range(2..=16_000_000))]
-        samples: u32,
+        #[arg(long, default_value_t = kiln::accuracy::REPORT_SAMPLES, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(2..=16_000_000))]
+        samples: usize,
     },
     /// Serve editors: a language server (LSP over stdin and stdout) with diagnostics, hover,
     /// go-to-definition and completion for the project of each file opened (docs/editor.md).

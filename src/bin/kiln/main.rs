@@ -22,7 +22,7 @@ fn main() -> ExitCode {
             inspect::preprocess(shader, pass, keywords, stage)
         }
         Command::Reflect { shader, pass, keywords } => inspect::reflect(shader, pass, keywords),
-        Command::Accuracy { plot, samples } => inspect::accuracy(plot, samples as usize),
+        Command::Accuracy { plot, samples } => inspect::accuracy(plot, samples),
         Command::Lsp { cache_dir, stdio: _ } => inspect::lsp(cache_dir),
         Command::Build { project, threads, output, pretty, variants_from, shard, cache_dir } => {
             build::build(project, threads, output, pretty, variants_from, shard, cache_dir)
