@@ -172,8 +172,9 @@ fn the_search_finds_the_seed_s_cancellation_on_the_gpu() {
 }
 
 /// `kiln accuracy` end to end: a sample count below two is refused before anything runs; the
-/// pictures are written in the format their names ask for; a picture that cannot be written is
-/// an error naming its path (K0007, exit 2), not a silent success.
+/// pictures are written (whole, through a temporary file) in the format their names ask for; a
+/// picture that cannot be written is an error naming its path (K0007, exit 2), not a silent
+/// success.
 #[test]
 fn kiln_accuracy_writes_its_pictures_and_says_what_it_cannot() {
     let refused = crate::support::kiln(&["accuracy", "--samples", "1"]);
@@ -190,10 +191,12 @@ fn kiln_accuracy_writes_its_pictures_and_says_what_it_cannot() {
     assert!(std::fs::read_to_string(&svg).expect("the SVG").starts_with("<svg"));
     assert!(std::fs::read(&png).expect("the PNG").starts_with(b"\x89PNG\r\n\x1a\n"));
 
-    let missing = dir.path().join("no such folder/speed.png");
+    // A folder where a file is: the picture cannot be written (missing folders are made).
+    std::fs::write(dir.path().join("a file"), "").expect("write");
+    let missing = dir.path().join("a file/speed.png");
     let failed =
         crate::support::kiln(&["accuracy", "--samples", "2", "--plot", missing.to_str().expect("UTF-8")]);
     let stderr = String::from_utf8_lossy(&failed.stderr);
     assert_eq!(failed.status.code(), Some(2), "{stderr}");
-    assert!(stderr.contains("K0007") && stderr.contains("no such folder"), "{stderr}");
+    assert!(stderr.contains("K0007") && stderr.contains("a file/speed.png"), "{stderr}");
 }

@@ -110,8 +110,10 @@ pub fn accuracy(plots: Vec<PathBuf>, samples: usize) -> ExitCode {
             print_out(&kiln::accuracy::render_search(&found));
             let points = kiln::accuracy::plot::points(&rows, &timings, &found);
             for path in plots {
-                let written = kiln::accuracy::plot::picture_for(&path, &gpu.adapter, &points)
-                    .and_then(|bytes| std::fs::write(&path, bytes).map_err(|e| e.to_string()));
+                let written =
+                    kiln::accuracy::plot::picture_for(&path, &gpu.adapter, &points).and_then(|bytes| {
+                        kiln::store::write_atomically(&path, &bytes).map_err(|e| e.to_string())
+                    });
                 if let Err(error) = written {
                     return host_failure(&format!("cannot write `{}`: {error}", path.display()));
                 }
