@@ -5,7 +5,7 @@
 //! are linked into the output (copied where a link cannot be made), after every module in them
 //! is checked against its hash, so the output is one build's, byte for byte.
 
-use super::emit::{finish, manifest, write_failure};
+use super::emit::{finish, manifest, placed_materials, write_failure};
 use super::error::BuildLayerError;
 use super::noop::{Inputs, same_inputs};
 use super::shard::ShardPass;
@@ -69,7 +69,8 @@ pub(super) fn merge(store: &mut SourceStore, options: &BuildOptions, merge: &Mer
             .filter_map(|((folder, _), pass)| damaged(folder, &pass.view))
             .collect::<Vec<_>>(),
     );
-    let materials = joined_materials(merge, catalogue.materials);
+    let texts = merge.shards.iter().flat_map(|(_, record)| &record.materials);
+    let materials = placed_materials(catalogue.materials, texts);
     if materials.is_none() {
         diagnostics.push(BuildLayerError::CatalogueMissing.into());
     }
@@ -165,27 +166,6 @@ impl PassFiles for RawPass<'_> {
     fn uniform_blocks(&self) -> &[UniformBlock] {
         &self.view.uniform_blocks
     }
-}
-
-/// `materials.json`'s compact text from the shards' materials, each in its place: `None` unless
-/// every place from 0 to `count` is filled exactly once.
-fn joined_materials(merge: &Merge, count: usize) -> Option<Box<RawValue>> {
-    let mut placed: Vec<Option<&RawValue>> = vec![None; count];
-    for (position, text) in merge.shards.iter().flat_map(|(_, record)| &record.materials) {
-        let slot = placed.get_mut(*position)?;
-        if slot.replace(text).is_some() {
-            return None;
-        }
-    }
-    let mut joined = String::from("[");
-    for (i, text) in placed.into_iter().enumerate() {
-        if i > 0 {
-            joined.push(',');
-        }
-        joined.push_str(text?.get());
-    }
-    joined.push(']');
-    RawValue::from_string(joined).ok()
 }
 
 /// The first module of a shard's pass whose bytes are missing or not what its hash says.

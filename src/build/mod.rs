@@ -286,7 +286,7 @@ fn build_passes(
                 .map(|((work, modules), manifest)| shard::ShardPass {
                     key: plan::pass_key(store, options, work),
                     modules,
-                    manifest: emit::json_text(&manifest),
+                    manifest: manifest.into_text(),
                 })
                 .collect();
             // Every shard has the catalogue; the first writes its part for the merge.
@@ -296,7 +296,8 @@ fn build_passes(
             shard::finish(store, options, *shard, parts, summary, diagnostics)
         }
         Part::Whole => {
-            let materials = emit::all_materials(catalog);
+            let materials = emit::material_texts(catalog, |_| true);
+            let materials: Vec<&serde_json::value::RawValue> = materials.iter().map(|(_, m)| &**m).collect();
             let mut catalogue = catalogue();
             let manifest = emit::manifest(std::mem::take(&mut catalogue.shaders), parts);
             let mut result = emit::finish(
@@ -308,7 +309,7 @@ fn build_passes(
                 summary,
                 diagnostics,
             );
-            result.manifest = Some(manifest);
+            result.manifest = Some(emit::parsed(manifest));
             result
         }
     }

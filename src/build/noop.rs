@@ -36,19 +36,29 @@ pub(super) fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String 
 }
 
 fn key_with_library(store: &SourceStore, options: &BuildOptions, library: &str) -> String {
-    let mut hasher = blake3::Hasher::new();
-    let mut file = |name: &str, bytes: &[u8]| {
+    // Each file hashed on its own (in parallel: a project reads tens of thousands), then their
+    // hashes in order.
+    let in_memory =
+        store.ids().filter(|&f| store.path(f).is_none() && !store.name(f).starts_with(LIBRARY_PREFIX));
+    let in_memory: Vec<(String, FileId)> = in_memory.map(|f| (store.name(f).to_string(), f)).collect();
+    let on_disk: Vec<FileId> = disk_files(store).collect();
+    let names = disk_names(store, options);
+    let file_hash = |name: &str, file: Option<FileId>| {
+        let bytes = file.map_or(&[][..], |f| store.text(f).as_bytes());
+        let mut hasher = blake3::Hasher::new();
         hasher.update(&(name.len() as u64).to_le_bytes());
         hasher.update(name.as_bytes());
         hasher.update(&(bytes.len() as u64).to_le_bytes());
         hasher.update(bytes);
+        hasher.finalize()
     };
-    for f in store.ids().filter(|&f| store.path(f).is_none() && !store.name(f).starts_with(LIBRARY_PREFIX)) {
-        file(store.name(f), store.text(f).as_bytes());
-    }
-    file("<read from disk>", &[]);
-    for f in disk_files(store) {
-        file(&recorded_name(store, f, options), store.text(f).as_bytes());
+    let files = (in_memory.par_iter().map(|(name, f)| file_hash(name, Some(*f))))
+        .chain(rayon::iter::once(file_hash("<read from disk>", None)))
+        .chain(names.par_iter().zip(&on_disk).map(|(name, f)| file_hash(name, Some(*f))));
+    let hashes: Vec<blake3::Hash> = files.collect();
+    let mut hasher = blake3::Hasher::new();
+    for hash in &hashes {
+        hasher.update(hash.as_bytes());
     }
     let options = format!(
         "{:?}{:?}{}{} library {library} revision {COMPILER_REVISION} {NAGA_VERSION} output {OUTPUT_FORMAT} manifest {SCHEMA_VERSION}",
@@ -59,6 +69,12 @@ fn key_with_library(store: &SourceStore, options: &BuildOptions, library: &str) 
     );
     hasher.update(options.as_bytes());
     hasher.finalize().to_hex()[..32].to_string()
+}
+
+/// The recorded names ([`recorded_name`]) of the store's files read from disk, in the order read.
+pub(super) fn disk_names(store: &SourceStore, options: &BuildOptions) -> Vec<String> {
+    let files: Vec<FileId> = disk_files(store).collect();
+    files.par_iter().map(|&f| recorded_name(store, f, options)).collect()
 }
 
 /// The no-op check, made before the catalogue is built: `store` holds the files found so far
@@ -105,7 +121,7 @@ pub(super) fn same_inputs(
     inputs: &Inputs,
     key: &str,
 ) -> bool {
-    let found: Vec<String> = disk_files(store).map(|f| recorded_name(store, f, options)).collect();
+    let found = disk_names(store, options);
     if found.len() != inputs.given || inputs.read.get(..found.len()) != Some(&found[..]) {
         return false;
     }

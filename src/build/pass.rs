@@ -2,7 +2,7 @@
 //! each step in parallel over the pass's jobs; then its packs, its entry in the output's cache
 //! and its part of the manifest. Its texts and modules are dropped when it returns.
 
-use super::emit::{pass_manifest, write_failure};
+use super::emit::{BuiltPass, pass_manifest, write_failure};
 use super::jobs::{Job, PassJobs, pass_jobs};
 use super::plan::{PassWork, pass_key};
 use super::session::Session;
@@ -13,7 +13,7 @@ use crate::compile::Mapper;
 use crate::compile::bind::{self, Declared, PassLayout};
 use crate::config::Backend;
 use crate::diagnostics::Diagnostic;
-use crate::manifest::{FileRef, PassManifest};
+use crate::manifest::FileRef;
 use crate::preprocess::Includes;
 use crate::reflect::StageReflection;
 use crate::source::SourceStore;
@@ -66,7 +66,7 @@ type StageOutcome = Option<Result<(Built, String), Diagnostic>>;
 /// What building one pass gives: its part of the manifest, its diagnostics and its share of the
 /// summary.
 pub(super) struct PassBuilt {
-    pub part: PassManifest,
+    pub part: BuiltPass,
     pub diagnostics: Vec<Diagnostic>,
     pub modules: usize,
     pub compiled: usize,
@@ -180,7 +180,7 @@ pub(super) fn build_pass(
         let _ = cache.put_pass_index(&key, &fresh);
     }
     PassBuilt {
-        part: pass_manifest(store, catalog, work, &jobs, &stages, &modules),
+        part: BuiltPass::new(pass_manifest(store, catalog, work, &jobs, &stages, &modules), options),
         diagnostics,
         modules: jobs.len(),
         compiled: compiled_count,

@@ -5,7 +5,7 @@
 //! weight (distinct stage requests, [`super::plan::weights`]), heaviest first, each to the shard
 //! with the least so far, so no shard reads, preprocesses or parses another shard's texts.
 
-use super::emit::{CataloguePart, json_text, listed_materials, material_entry, write_failure, write_json};
+use super::emit::{CataloguePart, material_texts, write_failure, write_json};
 use super::noop::inputs_key;
 use super::plan::PassWork;
 use super::{BuildOptions, BuildResult, BuildSummary};
@@ -69,11 +69,7 @@ impl Shard {
         for (work, owned) in work.iter().zip(owned) {
             first_pass_owned[work.shader_index].get_or_insert(*owned);
         }
-        listed_materials(catalog)
-            .enumerate()
-            .filter(|(_, m)| first_pass_owned[m.shader].unwrap_or(self.index == 0))
-            .map(|(position, m)| (position, json_text(&material_entry(catalog, m))))
-            .collect()
+        material_texts(catalog, |m| first_pass_owned[m.shader].unwrap_or(self.index == 0))
     }
 }
 
