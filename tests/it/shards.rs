@@ -106,6 +106,23 @@ fn four_concurrent_shards_merge_into_the_bytes_of_one_build() {
         ours.len(),
         per_shard.iter().sum::<usize>()
     );
+    // The project named (its files read while the shards' records are), the same bytes; a
+    // project that is not there, no output.
+    let named = dir.path().join("merged_named");
+    let mut args: Vec<String> = ["merge", named.to_str().expect("utf-8")].map(String::from).to_vec();
+    args.extend(shards.iter().map(|s| s.to_string_lossy().into_owned()));
+    let with_project = |project: &Path| {
+        let mut args = args.clone();
+        args.extend(["--project".to_string(), project.to_string_lossy().into_owned()]);
+        kiln(&args.iter().map(String::as_str).collect::<Vec<_>>())
+    };
+    let missing = with_project(&dir.path().join("no_such_project"));
+    assert_eq!(missing.status.code(), Some(2), "{}", text(&missing));
+    assert!(text(&missing).contains("no_such_project` does not exist"), "{}", text(&missing));
+    assert!(!named.exists(), "nothing written");
+    let run = with_project(&project);
+    assert_eq!(run.status.code(), Some(0), "{}", text(&run));
+    assert!(tree(&named) == ours, "a merge naming its project writes the same bytes");
 
     // A second round finds every module in place and compiles nothing; so do fresh shard
     // folders, from the cache the first round shared.
