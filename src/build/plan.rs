@@ -10,6 +10,7 @@ use crate::keywords::Variant;
 use crate::preprocess::{Includes, Stage};
 use crate::source::SourceStore;
 use crate::store::hash;
+use rayon::prelude::*;
 use std::borrow::Cow;
 use std::collections::HashSet;
 
@@ -55,9 +56,9 @@ pub(super) fn plan<'a>(
 
 /// What each pass costs to build, known before preprocessing: its distinct stage requests (a
 /// variant's vertex and fragment keywords; variants that differ only in the other stage's
-/// keywords share a module).
+/// keywords share a module). Every shard weighs every pass: in parallel.
 pub(super) fn weights(work: &[PassWork]) -> Vec<u64> {
-    work.iter()
+    work.par_iter()
         .map(|pass| {
             let mut requests = HashSet::new();
             let entries = super::jobs::entry_points(&pass.program.pragmas);
