@@ -38,9 +38,9 @@ pub(super) fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String 
 fn key_with_library(store: &SourceStore, options: &BuildOptions, library: &str) -> String {
     // Each file hashed on its own (in parallel: a project reads tens of thousands), then their
     // hashes in order.
-    let in_memory =
-        store.ids().filter(|&f| store.path(f).is_none() && !store.name(f).starts_with(LIBRARY_PREFIX));
-    let in_memory: Vec<(String, FileId)> = in_memory.map(|f| (store.name(f).to_string(), f)).collect();
+    let in_memory: Vec<FileId> = (store.ids())
+        .filter(|&f| store.path(f).is_none() && !store.name(f).starts_with(LIBRARY_PREFIX))
+        .collect();
     let on_disk: Vec<FileId> = disk_files(store).collect();
     let names = disk_names(store, options);
     let file_hash = |name: &str, file: Option<FileId>| {
@@ -52,7 +52,7 @@ fn key_with_library(store: &SourceStore, options: &BuildOptions, library: &str) 
         hasher.update(bytes);
         hasher.finalize()
     };
-    let files = (in_memory.par_iter().map(|(name, f)| file_hash(name, Some(*f))))
+    let files = (in_memory.par_iter().map(|&f| file_hash(store.name(f), Some(f))))
         .chain(rayon::iter::once(file_hash("<read from disk>", None)))
         .chain(names.par_iter().zip(&on_disk).map(|(name, f)| file_hash(name, Some(*f))));
     let hashes: Vec<blake3::Hash> = files.collect();
