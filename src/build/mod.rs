@@ -296,13 +296,13 @@ fn build_passes(
             shard::finish(store, options, *shard, parts, summary, diagnostics)
         }
         Part::Whole => {
-            let materials = emit::material_texts(catalog, |_| true);
-            let materials: Vec<&serde_json::value::RawValue> = materials.iter().map(|(_, m)| &**m).collect();
+            let texts = emit::material_texts(catalog, |_| true);
+            let materials: Vec<&serde_json::value::RawValue> = texts.iter().map(|(_, m)| &**m).collect();
             let mut catalogue = catalogue();
             let manifest = emit::manifest(std::mem::take(&mut catalogue.shaders), parts);
             let mut result = emit::finish(
                 options,
-                &noop::inputs_key(store, options),
+                &noop::inputs_key(store, options, &catalogue.read),
                 &catalogue,
                 &materials,
                 &manifest,

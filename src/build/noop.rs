@@ -30,19 +30,20 @@ const OUTPUT_FORMAT: u32 = 2;
 /// Everything a build's outcome depends on: the options, the texts given in memory (global
 /// keywords from a build script; the bundled library by its digest), and every file
 /// read from disk (shaders, includes, materials, variant logs, the project file) by its name
-/// relative to the project, in the order read.
-pub(super) fn inputs_key(store: &SourceStore, options: &BuildOptions) -> String {
-    key_with_library(store, options, crate::shaderlib::digest())
+/// relative to the project, in the order read: `read`, as [`disk_names`] gives them (a caller
+/// that has them already need not name 50,000 files twice).
+pub(super) fn inputs_key(store: &SourceStore, options: &BuildOptions, read: &[String]) -> String {
+    key_with_library(store, options, read, crate::shaderlib::digest())
 }
 
-fn key_with_library(store: &SourceStore, options: &BuildOptions, library: &str) -> String {
+fn key_with_library(store: &SourceStore, options: &BuildOptions, read: &[String], library: &str) -> String {
     // Each file hashed on its own (in parallel: a project reads tens of thousands), then their
     // hashes in order.
     let in_memory: Vec<FileId> = (store.ids())
         .filter(|&f| store.path(f).is_none() && !store.name(f).starts_with(LIBRARY_PREFIX))
         .collect();
     let on_disk: Vec<FileId> = disk_files(store).collect();
-    let names = disk_names(store, options);
+    debug_assert_eq!(read.len(), on_disk.len(), "a name for each file read from disk");
     let file_hash = |name: &str, file: Option<FileId>| {
         let bytes = file.map_or(&[][..], |f| store.text(f).as_bytes());
         let mut hasher = blake3::Hasher::new();
@@ -54,7 +55,7 @@ fn key_with_library(store: &SourceStore, options: &BuildOptions, library: &str) 
     };
     let files = (in_memory.par_iter().map(|&f| file_hash(store.name(f), Some(f))))
         .chain(rayon::iter::once(file_hash("<read from disk>", None)))
-        .chain(names.par_iter().zip(&on_disk).map(|(name, f)| file_hash(name, Some(*f))));
+        .chain(read.par_iter().zip(&on_disk).map(|(name, f)| file_hash(name, Some(*f))));
     let hashes: Vec<blake3::Hash> = files.collect();
     let mut hasher = blake3::Hasher::new();
     for hash in &hashes {
@@ -121,7 +122,7 @@ pub(super) fn same_inputs(
     inputs: &Inputs,
     key: &str,
 ) -> bool {
-    let found = disk_names(store, options);
+    let mut found = disk_names(store, options);
     if found.len() != inputs.given || inputs.read.get(..found.len()) != Some(&found[..]) {
         return false;
     }
@@ -137,7 +138,9 @@ pub(super) fn same_inputs(
             return false;
         }
     }
-    inputs_key(store, options) == key
+    let includes: Vec<FileId> = disk_files(store).skip(found.len()).collect();
+    found.extend(includes.iter().map(|&f| recorded_name(store, f, options)));
+    inputs_key(store, options, &found) == key
 }
 
 #[cfg(test)]
@@ -149,8 +152,9 @@ mod tests {
         let mut store = SourceStore::new();
         store.add("given.shader", "Shader \"A\" {}");
         let options = BuildOptions::one_off("out".into(), ".".into(), false);
-        let key = inputs_key(&store, &options);
-        assert_eq!(key, key_with_library(&store, &options, crate::shaderlib::digest()));
-        assert_ne!(key, key_with_library(&store, &options, "0123456789abcdef"), "an edited library");
+        let read = disk_names(&store, &options);
+        let key = inputs_key(&store, &options, &read);
+        assert_eq!(key, key_with_library(&store, &options, &read, crate::shaderlib::digest()));
+        assert_ne!(key, key_with_library(&store, &options, &read, "0123456789abcdef"), "an edited library");
     }
 }

@@ -6,7 +6,7 @@
 //! with the least so far, so no shard reads, preprocesses or parses another shard's texts.
 
 use super::emit::{CataloguePart, material_texts, write_failure, write_json};
-use super::noop::inputs_key;
+use super::noop::{disk_names, inputs_key};
 use super::plan::PassWork;
 use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::catalog::Catalog;
@@ -142,7 +142,7 @@ pub(super) fn finish(
     if options.write && !diagnostics::has_errors(&diagnostics) {
         let record = ShardRecord {
             kiln_version: env!("CARGO_PKG_VERSION").to_string(),
-            inputs: inputs_key(store, options),
+            inputs: inputs_key(store, options, &disk_names(store, options)),
             shard: shard.index + 1,
             count: shard.count,
             project: options.root.to_string_lossy().replace('\\', "/"),
