@@ -7,7 +7,8 @@
 //! the cold and the no-op build; the manifest's bytes per variant and the generated Rust's size.
 //! `-- generate N DIR` only writes the project of N variants. `-- compute 1000` builds a project of
 //! compute shaders instead (100 variants each, two kernels a variant) against naga alone on the
-//! same kernel texts. Results and how to read them: docs/performance.md.
+//! same kernel texts. Both sides allocate with mimalloc, as the CLI does. Results and how to read
+//! them: docs/performance.md.
 
 use kiln::build::stage_texts;
 use kiln::catalog::catalog;
@@ -21,6 +22,11 @@ use std::time::{Duration, Instant};
 
 #[path = "support/generate.rs"]
 mod generate;
+
+// kiln and naga alone both allocate through the CLI's allocator, as `kiln build` does: on the
+// system allocator, sixteen threads spend part of a build contending for it (docs/performance.md).
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 use generate::{SHARED_INCLUDES, generate};
 
 /// Peak resident memory since the last reset, in MiB (Linux; 0 elsewhere).

@@ -272,7 +272,7 @@ impl Workspace {
     /// the project's `cache_dir`.
     pub fn shared_cache_dir(&self, given: Option<PathBuf>) -> Option<PathBuf> {
         given
-            .or_else(|| std::env::var_os("KILN_CACHE_DIR").map(PathBuf::from))
+            .or_else(|| std::env::var_os(CACHE_DIR_VARIABLE).map(PathBuf::from))
             .or_else(|| self.cache_dir.clone())
     }
 
@@ -441,6 +441,10 @@ pub fn find_shader_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, ProjectError
     }
     find_files(paths, &SHADER_EXTENSIONS)
 }
+
+/// The environment variable naming the shared module cache (after `--cache-dir`, before a
+/// project's `cache_dir`).
+pub const CACHE_DIR_VARIABLE: &str = "KILN_CACHE_DIR";
 
 /// The files a project's shader folders are searched for: `.shader` files and compute shaders.
 pub const SHADER_EXTENSIONS: [&str; 2] = ["shader", crate::shaderlab::compute::EXTENSION];
@@ -747,23 +751,31 @@ pub fn merge_shards(
     project: Option<PathBuf>,
     mode: &BuildMode,
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
-    let check_shards = || crate::build::shard::check_shards(shards);
-    // The shards' records and the project's files are read at once when the project is given
-    // (each is a tenth of a second at 100,000 variants); otherwise the first record names it.
-    let ((records, inputs), given) = match project {
+    let records = || {
+        let (records, inputs) = crate::build::shard::check_shards(shards)?;
+        Ok::<_, ProjectError>(crate::build::Merge {
+            shards: shards.iter().cloned().zip(records).collect(),
+            inputs,
+        })
+    };
+    // The shards and the project are read at once (each takes about a tenth of a second at
+    // 100,000 variants); without a project given, the first record names it.
+    let ((merge, read), given) = match project {
         Some(project) => {
-            let (checked, given) = rayon::join(check_shards, || load_given(store, &[project], mode));
-            (checked?, given?)
+            let read_shards = || records().map(|merge| (merge.read_shards(), merge));
+            let (shards, given) = rayon::join(read_shards, || load_given(store, &[project], mode));
+            let (read, merge) = shards?;
+            ((merge, read), given?)
         }
         None => {
-            let (records, inputs) = check_shards()?;
-            let project = PathBuf::from(&records[0].project);
-            ((records, inputs), load_given(store, &[project], mode)?)
+            let merge = records()?;
+            let project = PathBuf::from(&merge.shards[0].1.project);
+            let (read, given) = rayon::join(|| merge.read_shards(), || load_given(store, &[project], mode));
+            ((merge, read), given?)
         }
     };
-    let merge = crate::build::Merge { shards: shards.iter().cloned().zip(records).collect(), inputs };
     let Given { workspace, mut diagnostics, options, .. } = given;
-    let result = crate::build::merge(store, &options, &merge);
+    let result = crate::build::merge(store, &options, &merge, read);
     // The shards' parts are many small strings: freeing them would hold up the answer for a
     // tenth of a second at 100,000 variants, which a process about to exit need not wait for.
     std::thread::spawn(move || drop(merge));

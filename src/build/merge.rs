@@ -1,11 +1,12 @@
 //! `kiln merge`: the output of one build from the shards' parts, with naga run nowhere, nothing
 //! preprocessed and no catalogue: the first shard's record carries what the manifest takes from
-//! the catalogue. The project must still be what the shards read (its files read again and
-//! hashed). Each pass's part comes from the shard that built it; its packs and its cache entry
-//! are linked into the output (copied where a link cannot be made), after every module in them
-//! is checked against its hash, so the output is one build's, byte for byte.
+//! the catalogue. Each pass's part comes from the shard that built it, and every module in its
+//! packs is checked against its hash ([`read_shards`], which needs no project, so the caller
+//! reads the project meanwhile). The project must still be what the shards read (its files read
+//! again and hashed); then the packs and the cache entries are linked into the output (copied
+//! where a link cannot be made), so the output is one build's, byte for byte.
 
-use super::emit::{finish, manifest, placed_materials, write_failure};
+use super::emit::{CataloguePart, finish, manifest, placed_materials, write_failure};
 use super::error::BuildLayerError;
 use super::noop::{Inputs, same_inputs};
 use super::shard::ShardPass;
@@ -20,10 +21,79 @@ use serde_json::value::RawValue;
 use std::collections::HashMap;
 use std::path::Path;
 
-/// Joins the shards' parts into the output folder (see the module's comment).
-pub(super) fn merge(store: &mut SourceStore, options: &BuildOptions, merge: &Merge) -> BuildResult {
+/// What a merge reads of the shards alone, made while the project is read: where each pass of
+/// the manifest was built, the fields the merge needs of its part, and every module in its packs
+/// checked against its hash.
+#[derive(Default)]
+pub struct ShardsRead {
+    /// Each pass of the catalogue, in manifest order: its shard's index and its place in that
+    /// shard's record (passes no shard built are left out, with a diagnostic).
+    found: Vec<(usize, usize)>,
+    /// What the merge reads of each found pass's part.
+    views: Vec<PassView>,
+    diagnostics: Vec<Diagnostic>,
+}
+
+/// The first shard record's catalogue part (every merge needs it; only the first shard writes it).
+fn catalogue(merge: &Merge) -> Option<&CataloguePart> {
+    merge.shards.iter().find_map(|(_, record)| record.catalogue.as_ref())
+}
+
+/// Reads and checks the shards' parts (see [`ShardsRead`]); a merge without a catalogue part
+/// reads nothing (the merge reports it).
+pub(super) fn read_shards(merge: &Merge) -> ShardsRead {
+    let Some(catalogue) = catalogue(merge) else { return ShardsRead::default() };
+    let built: HashMap<&str, (usize, usize)> = (merge.shards.iter().enumerate())
+        .flat_map(|(s, (_, record))| {
+            record.passes.iter().enumerate().map(move |(p, pass)| (pass.key.as_str(), (s, p)))
+        })
+        .collect();
+    let mut diagnostics = Vec::new();
+    let mut found = Vec::with_capacity(catalogue.counts[1]);
+    for head in &catalogue.shaders {
+        for key in &head.passes {
+            match built.get(key.as_str()) {
+                Some(&place) => found.push(place),
+                None => {
+                    diagnostics.push(BuildLayerError::PassMissing { shader: head.shader.name.clone() }.into())
+                }
+            }
+        }
+    }
+    // What the merge needs of each part is read from its text; the rest is written as it is.
+    let read: Vec<Result<PassView, Diagnostic>> = found
+        .par_iter()
+        .map(|&(s, p)| PassView::read(&merge.shards[s].0, &merge.shards[s].1.passes[p]))
+        .collect();
+    let mut views = Vec::with_capacity(read.len());
+    for view in read {
+        match view {
+            Ok(view) => views.push(view),
+            Err(error) => diagnostics.push(error),
+        }
+    }
+    if views.len() < found.len() {
+        return ShardsRead { diagnostics, ..ShardsRead::default() };
+    }
+    // Every module checked before anything is linked: a damaged shard writes nothing.
+    diagnostics.extend(
+        (found.par_iter().zip(&views))
+            .filter_map(|(&(s, _), view)| damaged(&merge.shards[s].0, view))
+            .collect::<Vec<_>>(),
+    );
+    ShardsRead { found, views, diagnostics }
+}
+
+/// Joins the shards' parts, read by [`read_shards`], into the output folder (see the module's
+/// comment).
+pub(super) fn merge(
+    store: &mut SourceStore,
+    options: &BuildOptions,
+    merge: &Merge,
+    read: ShardsRead,
+) -> BuildResult {
     let mut summary = BuildSummary::default();
-    let Some(catalogue) = merge.shards.iter().find_map(|(_, record)| record.catalogue.as_ref()) else {
+    let Some(catalogue) = catalogue(merge) else {
         return BuildResult::failed(options, summary, vec![BuildLayerError::CatalogueMissing.into()]);
     };
     let inputs = Inputs { given: catalogue.given, read: &catalogue.read, absent: &catalogue.absent };
@@ -32,43 +102,11 @@ pub(super) fn merge(store: &mut SourceStore, options: &BuildOptions, merge: &Mer
     }
     [summary.shaders, summary.passes, summary.variants] = catalogue.counts;
     summary.unused = catalogue.unused.clone();
-    let built: HashMap<&str, (&Path, &ShardPass)> = merge
-        .shards
-        .iter()
-        .flat_map(|(folder, record)| {
-            record.passes.iter().map(move |pass| (pass.key.as_str(), (folder.as_path(), pass)))
-        })
-        .collect();
-    let mut diagnostics = Vec::new();
-    let mut found = Vec::with_capacity(catalogue.counts[1]);
-    for head in &catalogue.shaders {
-        for key in &head.passes {
-            match built.get(key.as_str()) {
-                Some(&(folder, part)) => found.push((folder, part)),
-                None => {
-                    diagnostics.push(BuildLayerError::PassMissing { shader: head.shader.name.clone() }.into())
-                }
-            }
-        }
-    }
-    // What the merge needs of each part is read from its text; the rest is written as it is.
-    let passes: Vec<Result<RawPass, Diagnostic>> =
-        found.par_iter().map(|(folder, part)| RawPass::read(folder, part)).collect();
-    let mut parts = Vec::with_capacity(passes.len());
-    for pass in passes {
-        match pass {
-            Ok(pass) => parts.push(pass),
-            Err(error) => diagnostics.push(error),
-        }
-    }
-    // Every module checked before anything is linked: a damaged shard writes nothing.
-    diagnostics.extend(
-        found
-            .par_iter()
-            .zip(&parts)
-            .filter_map(|((folder, _), pass)| damaged(folder, &pass.view))
-            .collect::<Vec<_>>(),
-    );
+    let ShardsRead { found, views, mut diagnostics } = read;
+    let found: Vec<(&Path, &ShardPass)> =
+        found.iter().map(|&(s, p)| (merge.shards[s].0.as_path(), &merge.shards[s].1.passes[p])).collect();
+    let parts: Vec<RawPass> =
+        found.iter().zip(views).map(|((_, part), view)| RawPass { text: &part.manifest, view }).collect();
     let texts = merge.shards.iter().flat_map(|(_, record)| &record.materials);
     let materials = placed_materials(catalogue.materials, texts);
     if materials.is_none() {
@@ -139,11 +177,10 @@ struct PassView {
     uniform_blocks: Vec<UniformBlock>,
 }
 
-impl<'a> RawPass<'a> {
-    fn read(folder: &Path, part: &'a ShardPass) -> Result<RawPass<'a>, Diagnostic> {
-        let view: PassView = serde_json::from_str(part.manifest.get())
-            .map_err(|_| Diagnostic::from(BuildLayerError::PartDamaged { folder: folder.to_path_buf() }))?;
-        Ok(RawPass { text: &part.manifest, view })
+impl PassView {
+    fn read(folder: &Path, part: &ShardPass) -> Result<PassView, Diagnostic> {
+        serde_json::from_str(part.manifest.get())
+            .map_err(|_| Diagnostic::from(BuildLayerError::PartDamaged { folder: folder.to_path_buf() }))
     }
 }
 

@@ -20,6 +20,7 @@ mod sources;
 
 pub use emit::{CataloguePart, ShaderHead};
 pub use error::BuildLayerError;
+pub use merge::ShardsRead;
 pub use noop::unchanged;
 pub use plan::stage_texts;
 
@@ -217,12 +218,25 @@ pub fn build(
     timed_in_pool(options, || build_passes(store, includes, catalog, options, progress))
 }
 
-/// `kiln merge`: the output of one build of the project from the shards' outputs, compiling
-/// nothing and reading no catalogue. `store` holds the files the project was given (its
-/// `kiln.toml`, shaders, materials, variant logs); the rest the shards read is read here, and
-/// all of it must still be what the shards read (K0413).
-pub fn merge(store: &mut SourceStore, options: &BuildOptions, shards: &Merge) -> BuildResult {
-    timed_in_pool(options, || merge::merge(store, options, shards))
+impl Merge {
+    /// What the merge needs of the shards alone, every module in them checked against its hash:
+    /// needs no project, so a caller can read the project at the same time.
+    pub fn read_shards(&self) -> ShardsRead {
+        merge::read_shards(self)
+    }
+}
+
+/// `kiln merge`: the output of one build of the project from the shards' outputs (`read`:
+/// [`Merge::read_shards`]), compiling nothing and reading no catalogue. `store` holds the files
+/// the project was given (its `kiln.toml`, shaders, materials, variant logs); the rest the
+/// shards read is read here, and all of it must still be what the shards read (K0413).
+pub fn merge(
+    store: &mut SourceStore,
+    options: &BuildOptions,
+    shards: &Merge,
+    read: ShardsRead,
+) -> BuildResult {
+    timed_in_pool(options, || merge::merge(store, options, shards, read))
 }
 
 /// Runs `job` on a pool of `options.threads` (all cores by default; the global pool if one cannot

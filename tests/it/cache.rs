@@ -166,4 +166,30 @@ fn the_cache_folder_comes_from_the_flag_the_environment_or_kiln_toml() {
     assert_eq!(refused.status.code(), Some(2));
     let message = String::from_utf8_lossy(&refused.stderr);
     assert!(message.contains("no cache folder") && message.contains("kiln.toml"), "{message}");
+    // A cache named by the flag or the environment needs no project: run from a folder whose
+    // kiln.toml is broken, neither opens it.
+    let elsewhere = dir.path().join("elsewhere");
+    std::fs::create_dir_all(&elsewhere).expect("mkdir");
+    std::fs::write(elsewhere.join("kiln.toml"), "shaders = [").expect("write");
+    let in_elsewhere = |command: &mut Command| command.current_dir(&elsewhere).output().expect("kiln runs");
+    let broken = in_elsewhere(
+        Command::new(env!("CARGO_BIN_EXE_kiln")).args(["cache", "stats"]).env_remove("KILN_CACHE_DIR"),
+    );
+    assert_eq!(broken.status.code(), Some(1), "the broken kiln.toml is read when it is needed");
+    let flag = in_elsewhere(
+        Command::new(env!("CARGO_BIN_EXE_kiln")).args(["cache", "stats", "--cache-dir"]).arg(&from_flag),
+    );
+    assert_eq!(
+        String::from_utf8_lossy(&flag.stdout),
+        stats(&from_flag),
+        "{}",
+        String::from_utf8_lossy(&flag.stderr)
+    );
+    let env = in_elsewhere(
+        Command::new(env!("CARGO_BIN_EXE_kiln"))
+            .args(["cache", "gc", "--max-size", "0"])
+            .env("KILN_CACHE_DIR", &from_flag),
+    );
+    assert_eq!(env.status.code(), Some(0), "{}", String::from_utf8_lossy(&env.stderr));
+    assert_eq!(bytes(&stats(&from_flag)), 0);
 }

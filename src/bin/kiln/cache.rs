@@ -13,21 +13,30 @@ pub fn run(command: CacheCommand) -> ExitCode {
             (project.clone().unwrap_or_else(kiln::project::default_project), cache_dir.clone())
         }
     };
-    let mut store = SourceStore::new();
-    let (workspace, problems) =
-        match kiln::project::open_workspace(&mut store, std::slice::from_ref(&project)) {
-            Ok(opened) => opened,
-            Err(error) => return host_failure(&error.to_string()),
-        };
-    report(&store, &problems);
-    if diagnostics::has_errors(&problems) {
-        return ExitCode::from(1);
-    }
-    let Some(dir) = workspace.shared_cache_dir(given) else {
-        return host_failure(&format!(
-            "no cache folder: give --cache-dir, set KILN_CACHE_DIR, or set `cache_dir` in {}",
-            project.join(kiln::config::FILE_NAME).display()
-        ));
+    // A cache named by the flag or the environment needs no project: none is opened (opening
+    // one finds its files, and without a kiln.toml that is every file under this folder).
+    let named = given.or_else(|| std::env::var_os(kiln::project::CACHE_DIR_VARIABLE).map(Into::into));
+    let dir = match named {
+        Some(dir) => dir,
+        None => {
+            let mut store = SourceStore::new();
+            let (workspace, problems) =
+                match kiln::project::open_workspace(&mut store, std::slice::from_ref(&project)) {
+                    Ok(opened) => opened,
+                    Err(error) => return host_failure(&error.to_string()),
+                };
+            report(&store, &problems);
+            if diagnostics::has_errors(&problems) {
+                return ExitCode::from(1);
+            }
+            let Some(dir) = workspace.shared_cache_dir(None) else {
+                return host_failure(&format!(
+                    "no cache folder: give --cache-dir, set KILN_CACHE_DIR, or set `cache_dir` in {}",
+                    project.join(kiln::config::FILE_NAME).display()
+                ));
+            };
+            dir
+        }
     };
     if !dir.is_dir() {
         return host_failure(&format!("no cache at `{}`: the folder does not exist", dir.display()));
