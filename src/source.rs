@@ -204,7 +204,13 @@ fn read_file(path: &Path, overlay: Option<&Overlay>) -> Result<SourceFile, LoadE
         return Err(LoadError::TooLarge { path: path.to_path_buf(), size });
     }
     let mut bytes = Vec::with_capacity(size as usize);
-    std::io::Read::read_to_end(&mut file, &mut bytes).map_err(io)?;
+    // Through `take`, which also stops a file that grows while it is read: `File`'s own
+    // `read_to_end` asks the size and the position again first (two more system calls a file).
+    std::io::Read::read_to_end(&mut std::io::Read::take(&mut file, MAX_FILE_SIZE + 1), &mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > MAX_FILE_SIZE {
+        return Err(LoadError::TooLarge { path: path.to_path_buf(), size: bytes.len() as u64 });
+    }
     let (text, problems) = decode(path, bytes)?;
     let name = path.to_string_lossy().replace('\\', "/");
     Ok(SourceFile { problems, ..SourceFile::new(name, Some(path.to_path_buf()), text) })

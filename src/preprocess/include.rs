@@ -53,6 +53,9 @@ pub struct Includes {
     on_disk: HashMap<PathBuf, usize>,
     in_library: HashMap<String, usize>,
     blocks: HashMap<(FileId, u32), usize>,
+    /// Where each path looked at resolved to (`None`: no file there), asked of the file system
+    /// once: every shader of a project names the same includes from the same folder.
+    looked_up: HashMap<PathBuf, Option<PathBuf>>,
 }
 
 /// One pass's program: its blocks (include blocks first), as scanned units, and the
@@ -80,6 +83,7 @@ impl Includes {
             on_disk: HashMap::new(),
             in_library: HashMap::new(),
             blocks: HashMap::new(),
+            looked_up: HashMap::new(),
         }
     }
 
@@ -199,7 +203,8 @@ impl Includes {
         folders.extend(self.config.include_paths.iter().cloned());
         for folder in folders.iter() {
             let candidate = normalize_lexically(&folder.join(name));
-            if let Some(canonical) = store.canonical_file(&candidate) {
+            let looked_up = self.looked_up.entry(candidate.clone());
+            if let Some(canonical) = looked_up.or_insert_with(|| store.canonical_file(&candidate)).clone() {
                 return self.disk_unit(store, candidate, canonical, name, span, diagnostics);
             }
             let shown = folder.to_string_lossy().replace('\\', "/");
