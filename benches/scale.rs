@@ -22,12 +22,12 @@ use std::time::{Duration, Instant};
 
 #[path = "support/generate.rs"]
 mod generate;
+use generate::{SHARED_INCLUDES, generate};
 
 // kiln and naga alone both allocate through the CLI's allocator, as `kiln build` does: on the
 // system allocator, sixteen threads spend part of a build contending for it (docs/performance.md).
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
-use generate::{SHARED_INCLUDES, generate};
 
 /// Peak resident memory since the last reset, in MiB (Linux; 0 elsewhere).
 fn peak_mib() -> f64 {
