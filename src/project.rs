@@ -271,9 +271,7 @@ impl Workspace {
     /// The shared module cache a command uses: the folder given, else `KILN_CACHE_DIR`, else
     /// the project's `cache_dir`.
     pub fn shared_cache_dir(&self, given: Option<PathBuf>) -> Option<PathBuf> {
-        given
-            .or_else(|| std::env::var_os(CACHE_DIR_VARIABLE).map(PathBuf::from))
-            .or_else(|| self.cache_dir.clone())
+        named_cache_dir(given).or_else(|| self.cache_dir.clone())
     }
 
     /// What the catalogue is built from: the loaded shader and material files, with this
@@ -442,9 +440,11 @@ pub fn find_shader_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, ProjectError
     find_files(paths, &SHADER_EXTENSIONS)
 }
 
-/// The environment variable naming the shared module cache (after `--cache-dir`, before a
-/// project's `cache_dir`).
-pub const CACHE_DIR_VARIABLE: &str = "KILN_CACHE_DIR";
+/// The shared module cache named without a project: the folder given, else `KILN_CACHE_DIR`
+/// (a project's `cache_dir` comes after both: [`Workspace::shared_cache_dir`]).
+pub fn named_cache_dir(given: Option<PathBuf>) -> Option<PathBuf> {
+    given.or_else(|| std::env::var_os("KILN_CACHE_DIR").map(PathBuf::from))
+}
 
 /// The files a project's shader folders are searched for: `.shader` files and compute shaders.
 pub const SHADER_EXTENSIONS: [&str; 2] = ["shader", crate::shaderlab::compute::EXTENSION];

@@ -3,7 +3,7 @@
 
 use super::error::BuildLayerError;
 use super::jobs::Job;
-use super::noop::{disk_names, recorded_name};
+use super::noop::recorded_name;
 use super::plan::{PassWork, pass_key};
 use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::catalog::{Catalog, CatalogShader, property_references};
@@ -50,13 +50,15 @@ pub struct ShaderHead {
     pub passes: Vec<String>,
 }
 
-/// The catalogue's part of a build's output.
+/// The catalogue's part of a build's output; `read`: the files read from disk, by their recorded
+/// names ([`super::noop::disk_names`]).
 pub(super) fn catalogue_part(
     store: &SourceStore,
     catalog: &Catalog,
     options: &BuildOptions,
     work: &[PassWork],
     summary: &BuildSummary,
+    read: Vec<String>,
 ) -> CataloguePart {
     let mut shaders: Vec<(&CatalogShader, ShaderHead)> = Vec::new();
     for pass in work {
@@ -84,7 +86,7 @@ pub(super) fn catalogue_part(
         counts: [summary.shaders, summary.passes, summary.variants],
         unused: summary.unused.clone(),
         given: options.given_files,
-        read: disk_names(store, options),
+        read,
         absent: absent.into_iter().collect(),
     }
 }

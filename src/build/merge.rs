@@ -137,8 +137,7 @@ pub(super) fn merge(
     }
     summary.modules = found.iter().map(|(_, part)| part.modules).sum();
     summary.reused = summary.modules;
-    let mut catalogue = catalogue.clone();
-    let heads = std::mem::take(&mut catalogue.shaders);
+    let heads = catalogue.shaders.clone();
     if options.pretty_manifest {
         // Indented, the parts cannot be copied as they are: parsed, and written as a build does.
         let parsed: Result<Vec<PassManifest>, BuildLayerError> = (parts.iter().zip(&found))
@@ -150,13 +149,13 @@ pub(super) fn merge(
         match parsed {
             Ok(parsed) => {
                 let manifest = manifest(heads, parsed);
-                finish(options, &merge.inputs, &catalogue, &materials, &manifest, summary, diagnostics)
+                finish(options, &merge.inputs, catalogue, &materials, &manifest, summary, diagnostics)
             }
             Err(error) => BuildResult::failed(options, summary, vec![error.into()]),
         }
     } else {
         let manifest = manifest(heads, parts);
-        finish(options, &merge.inputs, &catalogue, &materials, &manifest, summary, diagnostics)
+        finish(options, &merge.inputs, catalogue, &materials, &manifest, summary, diagnostics)
     }
 }
 

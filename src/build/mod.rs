@@ -293,7 +293,10 @@ fn build_passes(
         diagnostics.extend(pass.diagnostics);
         parts.push(pass.part);
     }
-    let catalogue = || emit::catalogue_part(store, catalog, options, &work, &summary);
+    // The files read, named once: the inputs key hashes them and the catalogue's part lists them.
+    let read = noop::disk_names(store, options);
+    let inputs = noop::inputs_key(store, options, &read);
+    let catalogue = |read| emit::catalogue_part(store, catalog, options, &work, &summary, read);
     match &options.part {
         Part::Shard(shard) => {
             let passes = (mine.iter().zip(modules).zip(parts))
@@ -304,25 +307,18 @@ fn build_passes(
                 })
                 .collect();
             // Every shard has the catalogue; the first writes its part for the merge.
-            let catalogue = (shard.index == 0).then(catalogue);
+            let catalogue = (shard.index == 0).then(|| catalogue(read));
             let materials = shard.materials(catalog, &work, &owned);
             let parts = shard::ShardParts { catalogue, materials, passes };
-            shard::finish(store, options, *shard, parts, summary, diagnostics)
+            shard::finish(options, *shard, inputs, parts, summary, diagnostics)
         }
         Part::Whole => {
             let texts = emit::material_texts(catalog, |_| true);
             let materials: Vec<&serde_json::value::RawValue> = texts.iter().map(|(_, m)| &**m).collect();
-            let mut catalogue = catalogue();
+            let mut catalogue = catalogue(read);
             let manifest = emit::manifest(std::mem::take(&mut catalogue.shaders), parts);
-            let mut result = emit::finish(
-                options,
-                &noop::inputs_key(store, options, &catalogue.read),
-                &catalogue,
-                &materials,
-                &manifest,
-                summary,
-                diagnostics,
-            );
+            let mut result =
+                emit::finish(options, &inputs, &catalogue, &materials, &manifest, summary, diagnostics);
             result.manifest = Some(emit::parsed(manifest));
             result
         }

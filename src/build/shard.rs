@@ -6,12 +6,10 @@
 //! with the least so far, so no shard reads, preprocesses or parses another shard's texts.
 
 use super::emit::{CataloguePart, material_texts, write_failure, write_json};
-use super::noop::{disk_names, inputs_key};
 use super::plan::PassWork;
 use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::catalog::Catalog;
 use crate::diagnostics::{self, Diagnostic};
-use crate::source::SourceStore;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use serde_json::value::RawValue;
@@ -129,11 +127,12 @@ pub(super) struct ShardParts {
     pub passes: Vec<ShardPass>,
 }
 
-/// What a shard leaves once its passes are built: `shard.json`, with their parts of the manifest.
+/// What a shard leaves once its passes are built: `shard.json`, with their parts of the manifest
+/// and the inputs key (`inputs`) the merge checks the shards against each other by.
 pub(super) fn finish(
-    store: &SourceStore,
     options: &BuildOptions,
     shard: Shard,
+    inputs: String,
     parts: ShardParts,
     summary: BuildSummary,
     mut diagnostics: Vec<Diagnostic>,
@@ -142,7 +141,7 @@ pub(super) fn finish(
     if options.write && !diagnostics::has_errors(&diagnostics) {
         let record = ShardRecord {
             kiln_version: env!("CARGO_PKG_VERSION").to_string(),
-            inputs: inputs_key(store, options, &disk_names(store, options)),
+            inputs,
             shard: shard.index + 1,
             count: shard.count,
             project: options.root.to_string_lossy().replace('\\', "/"),

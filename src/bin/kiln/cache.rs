@@ -4,6 +4,7 @@ use crate::args::CacheCommand;
 use crate::output::{host_failure, report};
 use kiln::diagnostics;
 use kiln::source::SourceStore;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// `kiln cache stats` and `kiln cache gc`.
@@ -15,28 +16,12 @@ pub fn run(command: CacheCommand) -> ExitCode {
     };
     // A cache named by the flag or the environment needs no project: none is opened (opening
     // one finds its files, and without a kiln.toml that is every file under this folder).
-    let named = given.or_else(|| std::env::var_os(kiln::project::CACHE_DIR_VARIABLE).map(Into::into));
-    let dir = match named {
+    let dir = match kiln::project::named_cache_dir(given) {
         Some(dir) => dir,
-        None => {
-            let mut store = SourceStore::new();
-            let (workspace, problems) =
-                match kiln::project::open_workspace(&mut store, std::slice::from_ref(&project)) {
-                    Ok(opened) => opened,
-                    Err(error) => return host_failure(&error.to_string()),
-                };
-            report(&store, &problems);
-            if diagnostics::has_errors(&problems) {
-                return ExitCode::from(1);
-            }
-            let Some(dir) = workspace.shared_cache_dir(None) else {
-                return host_failure(&format!(
-                    "no cache folder: give --cache-dir, set KILN_CACHE_DIR, or set `cache_dir` in {}",
-                    project.join(kiln::config::FILE_NAME).display()
-                ));
-            };
-            dir
-        }
+        None => match project_cache_dir(&project) {
+            Ok(dir) => dir,
+            Err(code) => return code,
+        },
     };
     if !dir.is_dir() {
         return host_failure(&format!("no cache at `{}`: the folder does not exist", dir.display()));
@@ -69,4 +54,21 @@ pub fn run(command: CacheCommand) -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => host_failure(&message),
     }
+}
+
+/// The cache the project's `kiln.toml` names, or the exit code after saying why there is none.
+fn project_cache_dir(project: &Path) -> Result<PathBuf, ExitCode> {
+    let mut store = SourceStore::new();
+    let (workspace, problems) = kiln::project::open_workspace(&mut store, &[project.to_path_buf()])
+        .map_err(|error| host_failure(&error.to_string()))?;
+    report(&store, &problems);
+    if diagnostics::has_errors(&problems) {
+        return Err(ExitCode::from(1));
+    }
+    workspace.shared_cache_dir(None).ok_or_else(|| {
+        host_failure(&format!(
+            "no cache folder: give --cache-dir, set KILN_CACHE_DIR, or set `cache_dir` in {}",
+            project.join(kiln::config::FILE_NAME).display()
+        ))
+    })
 }
