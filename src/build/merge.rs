@@ -12,7 +12,9 @@ use super::noop::{Inputs, same_inputs};
 use super::shard::ShardPass;
 use super::{BuildOptions, BuildResult, BuildSummary, Merge};
 use crate::diagnostics::Diagnostic;
-use crate::manifest::{BindGroup, ModuleManifest, PassFiles, PassManifest, StageInterface, UniformBlock};
+use crate::manifest::{
+    BindGroup, ModuleManifest, PassFiles, PassManifest, StageInterface, UniformBlock, modules_in_range,
+};
 use crate::source::SourceStore;
 use crate::store::{hash, link_or_copy, pass_index_path};
 use rayon::prelude::*;
@@ -177,9 +179,12 @@ struct PassView {
 }
 
 impl PassView {
+    /// A part that does not parse, or whose modules name interfaces or packs it does not list, is
+    /// damaged.
     fn read(folder: &Path, part: &ShardPass) -> Result<PassView, Diagnostic> {
-        serde_json::from_str(part.manifest.get())
-            .map_err(|_| Diagnostic::from(BuildLayerError::PartDamaged { folder: folder.to_path_buf() }))
+        let view: Option<PassView> = serde_json::from_str(part.manifest.get()).ok();
+        view.filter(|view| modules_in_range(&view.modules, view.interfaces.len(), view.packs.len()))
+            .ok_or_else(|| BuildLayerError::PartDamaged { folder: folder.to_path_buf() }.into())
     }
 }
 

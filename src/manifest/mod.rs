@@ -38,11 +38,39 @@ pub struct Manifest<P = PassManifest> {
     pub shaders: Vec<ShaderManifest<P>>,
 }
 
+/// Why a text is not a manifest kiln could use.
+#[derive(Debug, thiserror::Error)]
+pub enum ManifestError {
+    /// Not JSON of the schema.
+    #[error("{0}")]
+    Json(#[from] serde_json::Error),
+    /// A pass whose indices point outside its own lists (a manifest damaged since kiln wrote it).
+    #[error("`{shader}` pass {pass} refers to a module, interface, pack or uniform block it does not list")]
+    DanglingIndex {
+        /// The shader's name.
+        shader: String,
+        /// The pass's place in the shader's `passes`.
+        pass: usize,
+    },
+}
+
 impl Manifest {
-    /// Reads `manifest.json` from an output folder.
+    /// Reads `manifest.json` from an output folder ([`Manifest::parse`]).
     pub fn read(output: &Path) -> std::io::Result<Manifest> {
         let bytes = std::fs::read(output.join(FILE_NAME))?;
-        serde_json::from_slice(&bytes).map_err(std::io::Error::other)
+        Manifest::parse(&bytes).map_err(std::io::Error::other)
+    }
+
+    /// `manifest.json`'s text, parsed, and refused when an index in it points nowhere: every
+    /// lookup of a module, interface or block would otherwise panic on a damaged manifest.
+    pub fn parse(bytes: &[u8]) -> Result<Manifest, ManifestError> {
+        let manifest: Manifest = serde_json::from_slice(bytes)?;
+        for shader in &manifest.shaders {
+            if let Some(pass) = shader.passes.iter().position(|pass| !pass.indices_in_range()) {
+                return Err(ManifestError::DanglingIndex { shader: shader.name.clone(), pass });
+            }
+        }
+        Ok(manifest)
     }
 
     /// Every pass of every shader.
@@ -226,10 +254,23 @@ impl PassManifest {
     /// A module of the pass with its interface and files resolved.
     ///
     /// # Panics
-    /// When `module` or the indices it holds are out of range (a manifest kiln did not write).
+    /// When `module` or the indices it holds are out of range (a manifest kiln did not write;
+    /// [`Manifest::parse`] refuses those).
     pub fn stage(&self, module: usize) -> StageView<'_> {
         let m = &self.modules[module];
         StageView { pass: self, index: module, module: m, interface: &self.interfaces[m.interface] }
+    }
+
+    /// Whether every index the pass holds is one of its lists' (see [`modules_in_range`]).
+    fn indices_in_range(&self) -> bool {
+        let stages = self
+            .variants
+            .iter()
+            .flat_map(|v| [v.vertex, v.fragment].into_iter().chain(v.kernels.iter().copied()));
+        let blocks = self.interfaces.iter().flat_map(|i| &i.uniform_blocks);
+        modules_in_range(&self.modules, self.interfaces.len(), self.packs.len())
+            && stages.flatten().all(|m| m < self.modules.len())
+            && blocks.into_iter().all(|&b| b < self.uniform_blocks.len())
     }
 
     /// Its `dynamic_branch` sets.
@@ -381,6 +422,15 @@ pub struct ModuleManifest {
     pub wgsl: Option<ModuleFile>,
     /// Its SPIR-V, if that back end was written.
     pub spirv: Option<ModuleFile>,
+}
+
+/// Whether each module's interface index is below `interfaces` and its files' pack indices below
+/// `packs` (the lengths of its pass's lists).
+pub fn modules_in_range(modules: &[ModuleManifest], interfaces: usize, packs: usize) -> bool {
+    modules.iter().all(|module| {
+        let mut files = [&module.wgsl, &module.spirv].into_iter().flatten();
+        module.interface < interfaces && files.all(|file| file.pack < packs)
+    })
 }
 
 /// A module's bytes: `size` bytes at `offset` of one of the pass's `packs`.

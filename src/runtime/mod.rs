@@ -135,7 +135,7 @@ impl Library {
             let path = output.join(name);
             std::fs::read(&path).map_err(|e| RuntimeError::Read { path, message: e.to_string() })
         };
-        let manifest: Manifest = serde_json::from_slice(&read(FILE_NAME)?)
+        let manifest = Manifest::parse(&read(FILE_NAME)?)
             .map_err(|e| RuntimeError::Read { path: output.join(FILE_NAME), message: e.to_string() })?;
         let materials = serde_json::from_slice(&read(MATERIALS_FILE)?)
             .map_err(|e| RuntimeError::Read { path: output.join(MATERIALS_FILE), message: e.to_string() })?;
@@ -154,12 +154,12 @@ impl Library {
         materials: &str,
         packs: &[(&str, &'static [u8])],
     ) -> Result<Library, RuntimeError> {
-        let embedded = |what: &str, e: serde_json::Error| RuntimeError::Read {
+        let embedded = |what: &str, e: &dyn std::fmt::Display| RuntimeError::Read {
             path: PathBuf::from(format!("<embedded {what}>")),
             message: e.to_string(),
         };
-        let manifest = serde_json::from_str(manifest).map_err(|e| embedded(FILE_NAME, e))?;
-        let materials = serde_json::from_str(materials).map_err(|e| embedded(MATERIALS_FILE, e))?;
+        let manifest = Manifest::parse(manifest.as_bytes()).map_err(|e| embedded(FILE_NAME, &e))?;
+        let materials = serde_json::from_str(materials).map_err(|e| embedded(MATERIALS_FILE, &e))?;
         let packs = packs.iter().map(|(path, bytes)| (path.to_string(), Cow::Borrowed(*bytes))).collect();
         Ok(Library::new(manifest, materials, packs))
     }

@@ -293,6 +293,36 @@ fn a_material_file_read_at_run_time_resolves_as_the_build_resolved_it() {
 }
 
 #[test]
+fn a_manifest_whose_indices_point_nowhere_is_refused_where_it_is_read_not_a_panic() {
+    let output = tempfile::tempdir().expect("temp dir");
+    built(&root().join("fixtures/project"), output.path());
+    let path = output.path().join("manifest.json");
+    let good = std::fs::read_to_string(&path).expect("manifest");
+    // One digit more in a variant's module, a module's interface or pack, an interface's block:
+    // still JSON of the schema, and the same length class of damage a no-op check cannot see.
+    for field in ["\"vertex\":", "\"fragment\":", "\"interface\":", "\"pack\":", "\"uniform_blocks\":["] {
+        let (at, _) = (good.match_indices(field))
+            .find(|(at, _)| good[at + field.len()..].starts_with(|c: char| c.is_ascii_digit()))
+            .unwrap_or_else(|| panic!("{field} with a number"));
+        let damaged = format!("{}9{}", &good[..at + field.len()], &good[at + field.len()..]);
+        std::fs::write(&path, &damaged).expect("write");
+        let opened = Library::open(output.path()).map(drop).expect_err(field);
+        assert!(
+            opened
+                .to_string()
+                .contains("refers to a module, interface, pack or uniform block it does not list"),
+            "{field}: {opened}"
+        );
+        let embedded = Library::embedded(&damaged, "[]", &[]).map(drop).expect_err(field);
+        assert!(embedded.to_string().contains("<embedded manifest.json>"), "{embedded}");
+        // What a build script's no-op build generates its module from.
+        kiln::manifest::Manifest::read(output.path()).expect_err(field);
+    }
+    std::fs::write(&path, &good).expect("write");
+    Library::open(output.path()).expect("the manifest as built opens");
+}
+
+#[test]
 fn a_running_program_swaps_in_a_rebuilt_shader_and_keeps_the_last_good_one_on_errors() {
     let Some(gpu) = gpu("the hot reload test") else { return };
     let project = tempfile::tempdir().expect("temp dir");

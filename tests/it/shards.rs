@@ -253,25 +253,48 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     // Another kiln.
     let record_path = shards[2].join("shard.json");
     let record = std::fs::read_to_string(&record_path).expect("record");
-    std::fs::write(&record_path, record.replace(env!("CARGO_PKG_VERSION"), "0.0.1-other")).expect("write");
+    std::fs::write(
+        &record_path,
+        sealed_again(&record, |r| r.replace(env!("CARGO_PKG_VERSION"), "0.0.1-other")),
+    )
+    .expect("write");
     refused(&shards, "kiln 0.0.1-other");
-    // A record edited to claim shard 0 holds no shard of the merge (not a crash).
+    // A record that claims shard 0 holds no shard of the merge (not a crash).
     assert!(record.contains("\"shard\":3,"), "{record}");
-    std::fs::write(&record_path, record.replace("\"shard\":3,", "\"shard\":0,")).expect("write");
+    std::fs::write(&record_path, sealed_again(&record, |r| r.replace("\"shard\":3,", "\"shard\":0,")))
+        .expect("write");
     refused(&shards, "shard 3/3 is missing");
     // A record that is not JSON any more.
     std::fs::write(&record_path, &record[..record.len() / 2]).expect("write");
     refused(&shards, "shard.json` is damaged");
     std::fs::write(&record_path, record).expect("write");
-    // A pass's part that does not read: the merge names the shard and writes nothing.
+    // A record that still parses but is not what the shard wrote (its parts would go into the
+    // manifest as they are): refused by its hash, whatever changed.
     let first_record = shards[0].join("shard.json");
     let first = std::fs::read_to_string(&first_record).expect("record");
     assert!(first.contains("\"interfaces\""), "the first shard holds the pass");
-    std::fs::write(&first_record, first.replace("\"interfaces\"", "\"interfacez\"")).expect("write");
+    for (field, edited) in [("\"shard\":1,", "\"shard\":0,"), ("\"size\":", "\"size\":1")] {
+        assert!(first.contains(field), "{field}");
+        std::fs::write(&first_record, first.replacen(field, edited, 1)).expect("write");
+        refused(&shards, "shard.json` is damaged: it is not the text the shard wrote");
+    }
+    // A pass's part that does not read: the merge names the shard and writes nothing.
+    std::fs::write(&first_record, sealed_again(&first, |r| r.replace("\"interfaces\"", "\"interfacez\"")))
+        .expect("write");
     let run = merge(&dir.path().join("merged"), &shards);
     assert_eq!(run.status.code(), Some(1), "{}", text(&run));
     assert!(text(&run).starts_with("error[K0412]: a pass's part in "), "{}", text(&run));
     assert!(!dir.path().join("merged/manifest.json").exists());
+    // A part that reads but names a pack or an interface it does not list is damaged too (a pack
+    // index out of range made the merge panic).
+    for (field, edited) in [("\"pack\":1", "\"pack\":7"), ("\"interface\":0", "\"interface\":9")] {
+        assert!(first.contains(field), "{field}");
+        std::fs::write(&first_record, sealed_again(&first, |r| r.replacen(field, edited, 1))).expect("write");
+        let run = merge(&dir.path().join("merged"), &shards);
+        assert_eq!(run.status.code(), Some(1), "{}", text(&run));
+        assert!(text(&run).starts_with("error[K0412]: a pass's part in "), "{}", text(&run));
+        assert!(!dir.path().join("merged/manifest.json").exists());
+    }
     std::fs::write(&first_record, first).expect("write");
 
     // The project changed since the shards were built: an error, and nothing written.
@@ -304,6 +327,18 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     let shown = diagnostics(&run);
     assert!(shown.starts_with("error[K0412]: no shard holds the "), "{shown}");
     assert!(!dir.path().join("merged/manifest.json").exists());
+}
+
+/// `shard.json`'s text with `edit` applied to its record and the record sealed again, as a shard
+/// that wrote the edited record would have written it.
+fn sealed_again(text: &str, edit: impl Fn(&str) -> String) -> String {
+    #[derive(serde::Deserialize)]
+    struct Sealed {
+        record: Box<serde_json::value::RawValue>,
+    }
+    let sealed: Sealed = serde_json::from_str(text).expect("a sealed record");
+    let record = edit(sealed.record.get());
+    format!("{{\"blake3\":\"{}\",\"record\":{record}}}\n", kiln::store::hash(record.as_bytes()))
 }
 
 /// The diagnostics of a run, without its closing summary line (which has timings).
