@@ -5,7 +5,7 @@
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{KeywordBits, MAX_VARIANTS_PER_PASS, PassKeywords, Variant};
 use crate::material::{Material, ShaderEntries, ShaderEntry, load_material};
-use crate::preprocess::{Includes, Program, load_pass};
+use crate::preprocess::{Includes, Program, finish_pass};
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
 use crate::shaderlab::parse_shader;
 use crate::shaderlab::pragma::{
@@ -245,21 +245,25 @@ pub fn catalog(
 ) -> (Catalog, Vec<Diagnostic>) {
     let mut diagnostics = Vec::new();
     let mut shaders = Vec::new();
-    // Parsing reads only its own file: in parallel. Programs load includes into the store: serial.
+    // Parsing reads only its own file: in parallel. Programs load includes into the store: serial;
+    // what they say (pragmas, keywords) is only read: in parallel again (`finish_programs`).
     let store_view: &SourceStore = store;
     let parsed: Vec<_> =
         input.shaders.par_iter().map(|&file| (file, parse_shader(store_view, file))).collect();
     let mut failed = Vec::new();
+    let mut unfinished = Vec::new();
     for (file, parsed) in parsed {
         diagnostics.extend(parsed.diagnostics);
         match parsed.shader {
             Some(shader) => {
-                let passes = passes(store, includes, &shader, &mut diagnostics);
+                let loading = Loading { shader: shaders.len(), unfinished: &mut unfinished };
+                let passes = passes(store, includes, &shader, loading, &mut diagnostics);
                 shaders.push(CatalogShader { file, shader, passes });
             }
             None => failed.extend(crate::shaderlab::declared_name(store.text(file))),
         }
     }
+    finish_programs(store, includes, &mut shaders, unfinished, &mut diagnostics);
 
     diagnostics.extend(too_many_global_keywords(&shaders));
 
@@ -415,6 +419,7 @@ fn passes(
     store: &mut SourceStore,
     includes: &mut Includes,
     shader: &Shader,
+    mut loading: Loading,
     diagnostics: &mut Vec<Diagnostic>,
 ) -> Vec<CatalogPass> {
     let mut passes = Vec::new();
@@ -429,22 +434,25 @@ fn passes(
                 name: None,
                 tags: tags(&sub.state),
                 item: None,
-                program: Some(load_program(
+                program: loading.load(
                     store,
                     includes,
-                    shader,
-                    sub,
-                    std::slice::from_ref(program),
+                    (shader, sub, std::slice::from_ref(program)),
+                    passes.len(),
                     diagnostics,
-                )),
+                ),
             });
         }
         let first_pass = surface_programs.count();
         for (pi, item) in sub.passes.iter().enumerate() {
             let (kind, name, tags, program) = match item {
                 PassItem::Pass(pass) => {
-                    let program = (!pass.programs.is_empty())
-                        .then(|| load_program(store, includes, shader, sub, &pass.programs, diagnostics));
+                    let program = if pass.programs.is_empty() {
+                        None
+                    } else {
+                        let programs = (shader, sub, &pass.programs[..]);
+                        loading.load(store, includes, programs, passes.len(), diagnostics)
+                    };
                     (
                         PassKind::Pass,
                         pass.state.name.as_ref().map(|n| n.value.clone()),
@@ -474,25 +482,91 @@ fn passes(
     passes
 }
 
-fn load_program(
-    store: &mut SourceStore,
-    includes: &mut Includes,
-    shader: &Shader,
-    sub: &SubShader,
-    programs: &[ProgramBlock],
-    diagnostics: &mut Vec<Diagnostic>,
-) -> CatalogProgram {
-    let blocks = program_blocks(shader, sub, programs);
-    let language = programs.first().map_or(ProgramLanguage::Wgsl, |p| p.language);
-    let (pragmas, wgsl) = if language == ProgramLanguage::Wgsl {
-        let (pass, found) = load_pass(includes, store, &blocks);
+/// Where a shader's pass programs go while the catalogue loads them: WGSL programs wait in
+/// `unfinished` for [`finish_programs`].
+struct Loading<'a> {
+    shader: usize,
+    unfinished: &'a mut Vec<Unfinished>,
+}
+
+/// A WGSL pass program with its blocks and includes loaded, its pragmas and keywords not yet read.
+struct Unfinished {
+    shader: usize,
+    pass: usize,
+    program: Program,
+    /// Where a diagnostic about the whole program points (its first block).
+    span: Span,
+    /// How many diagnostics the catalogue had when it was loaded: its own go there.
+    at: usize,
+}
+
+impl Loading<'_> {
+    /// Loads the program of pass `pass` from its blocks: other languages' whole, WGSL's blocks and
+    /// includes (which adds units to `includes`, so one pass after another), the rest left for
+    /// [`finish_programs`] (`None` until then).
+    fn load(
+        &mut self,
+        store: &mut SourceStore,
+        includes: &mut Includes,
+        (shader, sub, programs): (&Shader, &SubShader, &[ProgramBlock]),
+        pass: usize,
+        diagnostics: &mut Vec<Diagnostic>,
+    ) -> Option<CatalogProgram> {
+        let blocks = program_blocks(shader, sub, programs);
+        let language = programs.first().map_or(ProgramLanguage::Wgsl, |p| p.language);
+        if language != ProgramLanguage::Wgsl {
+            let (pragmas, errors) = collect_pragmas(blocks.into_iter().map(PragmaSource::from));
+            diagnostics.extend(errors);
+            let keywords = pass_keywords(&pragmas, programs[0].span, diagnostics);
+            return Some(CatalogProgram { language, pragmas, wgsl: None, keywords, variants: Vec::new() });
+        }
+        let spans: Vec<Span> = blocks.iter().map(|b| b.body_span).collect();
+        let (program, found) = includes.load_program(store, &spans);
         diagnostics.extend(found);
-        (pass.pragmas, Some(pass.program))
-    } else {
-        let (pragmas, errors) = collect_pragmas(blocks.into_iter().map(PragmaSource::from));
-        diagnostics.extend(errors);
-        (pragmas, None)
-    };
+        let at = diagnostics.len();
+        self.unfinished.push(Unfinished { shader: self.shader, pass, program, span: programs[0].span, at });
+        None
+    }
+}
+
+/// Reads the loaded WGSL programs' pragmas and keywords, in parallel (nothing is loaded any
+/// more), and places each one's diagnostics where loading it left off: the order is a serial
+/// catalogue's.
+fn finish_programs(
+    store: &SourceStore,
+    includes: &Includes,
+    shaders: &mut [CatalogShader],
+    unfinished: Vec<Unfinished>,
+    diagnostics: &mut Vec<Diagnostic>,
+) {
+    let finished: Vec<_> = unfinished
+        .into_par_iter()
+        .map(|Unfinished { shader, pass, program, span, at }| {
+            let (program, mut found) = finish_pass(includes, store, program);
+            let keywords = pass_keywords(&program.pragmas, span, &mut found);
+            let language = ProgramLanguage::Wgsl;
+            let wgsl = Some(program.program);
+            let program =
+                CatalogProgram { language, pragmas: program.pragmas, wgsl, keywords, variants: Vec::new() };
+            (shader, pass, at, program, found)
+        })
+        .collect();
+    let mut placed = Vec::with_capacity(diagnostics.len());
+    let mut before = std::mem::take(diagnostics).into_iter();
+    let mut taken = 0;
+    for (shader, pass, at, program, found) in finished {
+        shaders[shader].passes[pass].program = Some(program);
+        placed.extend(before.by_ref().take(at - taken));
+        taken = at;
+        placed.extend(found);
+    }
+    placed.extend(before);
+    *diagnostics = placed;
+}
+
+/// A pass's keywords from its pragmas; more than a pass may have is an error (K0212) at the first
+/// keyword over the limit (or at `span`).
+fn pass_keywords(pragmas: &ProgramPragmas, span: Span, diagnostics: &mut Vec<Diagnostic>) -> PassKeywords {
     let keywords = PassKeywords::new(pragmas.variant_sets());
     if keywords.names().len() > MAX_KEYWORDS_PER_PASS {
         // Point at the first keyword over the limit.
@@ -501,7 +575,7 @@ fn load_program(
             .iter()
             .flat_map(|s| s.options.iter().filter(|o| o.keyword.is_some()))
             .nth(MAX_KEYWORDS_PER_PASS)
-            .map_or(programs[0].span, |o| o.span);
+            .map_or(span, |o| o.span);
         diagnostics.push(
             Diagnostic::error("K0212", format!("the pass declares {} keywords", keywords.names().len()))
                 .at(
@@ -514,7 +588,7 @@ fn load_program(
                 .help("split the pass, or make run-time choices `dynamic_branch` keywords"),
         );
     }
-    CatalogProgram { language, pragmas, wgsl, keywords, variants: Vec::new() }
+    keywords
 }
 
 fn tags(state: &StateBlock) -> Vec<(String, String)> {

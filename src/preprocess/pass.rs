@@ -34,10 +34,22 @@ pub fn load_pass_text(
     store: &mut SourceStore,
     spans: &[Span],
 ) -> (PassProgram, Vec<Diagnostic>) {
-    let (mut program, mut diagnostics) = includes.load_program(store, spans);
-    let (pragmas, errors) = collect_pragmas(pragma_sources(includes, store, &program));
+    let (program, mut diagnostics) = includes.load_program(store, spans);
+    let (pass, found) = finish_pass(includes, store, program);
+    diagnostics.extend(found);
+    (pass, diagnostics)
+}
+
+/// What [`load_pass`] does once the program's blocks and includes are loaded: the pragmas that
+/// count for it and the keyword warnings about it. It only reads, so a catalogue loads its passes'
+/// programs one after another (loading adds units to `includes`) and finishes them in parallel.
+pub fn finish_pass(
+    includes: &Includes,
+    store: &SourceStore,
+    mut program: Program,
+) -> (PassProgram, Vec<Diagnostic>) {
+    let (pragmas, mut diagnostics) = collect_pragmas(pragma_sources(includes, store, &program));
     program.dynamic_keywords = DynamicKeyword::of(&pragmas);
-    diagnostics.extend(errors);
     diagnostics.extend(analyze_keywords(includes, &program, &pragmas));
     (PassProgram { program, pragmas }, diagnostics)
 }
