@@ -5,12 +5,12 @@
 //! weight (distinct stage requests, [`super::plan::weights`]), heaviest first, each to the shard
 //! with the least so far, so no shard reads, preprocesses or parses another shard's texts.
 
-use super::emit::{CataloguePart, material_texts, write_failure, write_json};
+use super::emit::{CataloguePart, material_texts, write_failure};
 use super::plan::PassWork;
 use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::catalog::Catalog;
 use crate::diagnostics::{self, Diagnostic};
-use crate::store::hash;
+use crate::store::{sealed, unsealed, write_atomically};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use serde_json::value::RawValue;
@@ -111,34 +111,17 @@ pub struct ShardPass {
     pub manifest: Box<RawValue>,
 }
 
-/// `shard.json` as written: the record's JSON text and its BLAKE3. A merge writes the record's
-/// parts into the manifest as they are, so a record damaged on its way from the shard (a digit
-/// changed in a layout still parses) must be refused by its hash, not by its syntax.
-#[derive(Serialize, Deserialize)]
-struct Sealed<R> {
-    blake3: String,
-    record: R,
-}
-
 impl ShardRecord {
-    /// The record in a shard's output folder, refused when it is not the text the shard wrote.
+    /// The record in a shard's output folder, refused when it is not the text the shard wrote:
+    /// a merge writes the record's parts into the manifest as they are, so a record damaged on
+    /// its way from the shard (a digit of a layout changed still parses) must be caught by its
+    /// hash, not by its syntax.
     pub fn read(folder: &Path) -> Result<ShardRecord, ShardError> {
         let path = folder.join(SHARD_FILE);
         let bytes = std::fs::read(&path)
             .map_err(|source| ShardError::NotShardOutput { folder: folder.to_path_buf(), source })?;
-        let damaged = |source| ShardError::Damaged { path: path.clone(), source };
-        let sealed: Sealed<Box<RawValue>> = serde_json::from_slice(&bytes).map_err(damaged)?;
-        if hash(sealed.record.get().as_bytes()) != sealed.blake3 {
-            return Err(ShardError::NotAsWritten { path });
-        }
-        serde_json::from_str(sealed.record.get()).map_err(damaged)
-    }
-
-    /// Writes the record, sealed with its hash, to `shard.json` in `folder`.
-    fn write(&self, folder: &Path) -> std::io::Result<()> {
-        let record = serde_json::value::to_raw_value(self).map_err(std::io::Error::other)?;
-        let sealed = Sealed { blake3: hash(record.get().as_bytes()), record };
-        write_json(&folder.join(SHARD_FILE), &sealed, false).map(drop)
+        let Some(json) = unsealed(&bytes) else { return Err(ShardError::NotAsWritten { path }) };
+        serde_json::from_slice(json).map_err(|source| ShardError::Damaged { path, source })
     }
 }
 
@@ -172,7 +155,9 @@ pub(super) fn finish(
             catalogue: parts.catalogue,
             materials: parts.materials,
         };
-        if let Err(error) = record.write(&options.output) {
+        let written =
+            sealed(&record).and_then(|bytes| write_atomically(&options.output.join(SHARD_FILE), &bytes));
+        if let Err(error) = written {
             diagnostics.push(write_failure(&options.output, error));
         }
     }

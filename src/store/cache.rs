@@ -93,23 +93,14 @@ impl Cache {
     /// no longer matches) is a miss, and the work is redone, never trusted.
     fn read<T: for<'de> Deserialize<'de>>(&self, kind: &str, key: &str) -> Option<T> {
         let bytes = std::fs::read(self.entry(kind, key)).ok()?;
-        let split = bytes.iter().position(|&b| b == b'\n')?;
-        let (recorded, json) = (&bytes[..split], &bytes[split + 1..]);
-        if recorded != hash(json).as_bytes() {
-            return None;
-        }
-        serde_json::from_slice(json).ok()
+        serde_json::from_slice(unsealed(&bytes)?).ok()
     }
 
     fn put<T: Serialize>(&self, kind: &str, key: &str, value: &T) -> std::io::Result<()> {
         if !self.write {
             return Ok(());
         }
-        let json = serde_json::to_vec(value).map_err(std::io::Error::other)?;
-        let mut bytes = hash(&json).into_bytes();
-        bytes.push(b'\n');
-        bytes.extend(json);
-        write_atomically(&self.entry(kind, key), &bytes)
+        write_atomically(&self.entry(kind, key), &sealed(value)?)
     }
 
     /// What the last build of a pass left: one file per pass, read once and written once, so
@@ -259,6 +250,23 @@ pub fn write_atomically_with(
         let _ = std::fs::remove_file(&temporary);
     }
     kept
+}
+
+/// `value` as JSON after a line with the JSON's hash, so that a reader can tell the bytes from
+/// damaged ones that still parse ([`unsealed`]): cache entries and shard records.
+pub fn sealed<T: Serialize>(value: &T) -> std::io::Result<Vec<u8>> {
+    let json = serde_json::to_vec(value).map_err(std::io::Error::other)?;
+    let mut bytes = hash(&json).into_bytes();
+    bytes.push(b'\n');
+    bytes.extend(json);
+    Ok(bytes)
+}
+
+/// The JSON of [`sealed`] bytes, if it is what was sealed.
+pub fn unsealed(bytes: &[u8]) -> Option<&[u8]> {
+    let split = bytes.iter().position(|&b| b == b'\n')?;
+    let (recorded, json) = (&bytes[..split], &bytes[split + 1..]);
+    (recorded == hash(json).as_bytes()).then_some(json)
 }
 
 /// A writer that only hashes and counts what it is given.

@@ -7,5 +7,5 @@ pub mod shared;
 
 pub use cache::{
     Cache, CachedStage, Digest, Hashed, ModuleBytes, PassIndex, Recorded, hash, link_or_copy,
-    pass_index_path, write_atomically, write_atomically_with,
+    pass_index_path, sealed, unsealed, write_atomically, write_atomically_with,
 };
