@@ -267,10 +267,10 @@ impl PassManifest {
             .variants
             .iter()
             .flat_map(|v| [v.vertex, v.fragment].into_iter().chain(v.kernels.iter().copied()));
-        let blocks = self.interfaces.iter().flat_map(|i| &i.uniform_blocks);
+        let mut blocks = self.interfaces.iter().flat_map(|i| &i.uniform_blocks);
         modules_in_range(&self.modules, self.interfaces.len(), self.packs.len())
             && stages.flatten().all(|m| m < self.modules.len())
-            && blocks.into_iter().all(|&b| b < self.uniform_blocks.len())
+            && blocks.all(|&b| b < self.uniform_blocks.len())
     }
 
     /// Its `dynamic_branch` sets.
