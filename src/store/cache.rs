@@ -253,7 +253,8 @@ pub fn write_atomically_with(
 }
 
 /// `value` as JSON after a line with the JSON's hash, so that a reader can tell the bytes from
-/// damaged ones that still parse ([`unsealed`]): cache entries and shard records.
+/// damaged ones that still parse ([`unsealed`]): cache entries, the shared cache's layouts, shard
+/// records.
 pub fn sealed<T: Serialize>(value: &T) -> std::io::Result<Vec<u8>> {
     let json = serde_json::to_vec(value).map_err(std::io::Error::other)?;
     let mut bytes = hash(&json).into_bytes();

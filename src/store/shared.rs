@@ -4,7 +4,7 @@
 //! Entries are published by a rename (never seen half written), verified on every read (a damaged
 //! one is a miss), and an entry's modification time is its last use, for `kiln cache gc`.
 
-use super::cache::{ModuleBytes, hash, write_atomically};
+use super::cache::{ModuleBytes, hash, sealed, unsealed, write_atomically};
 use crate::compile::bind::Declared;
 use crate::reflect::StageReflection;
 use serde::{Deserialize, Serialize};
@@ -99,12 +99,7 @@ fn layouts_path(folder: &Path, pass: &str) -> PathBuf {
 /// damaged).
 pub fn read_layouts(folder: &Path, pass: &str) -> std::collections::BTreeMap<String, Vec<Declared>> {
     let path = layouts_path(folder, pass);
-    let read = || {
-        let bytes = std::fs::read(&path).ok()?;
-        let split = bytes.iter().position(|&b| b == b'\n')?;
-        let json = &bytes[split + 1..];
-        (bytes[..split] == *hash(json).as_bytes()).then(|| serde_json::from_slice(json).ok())?
-    };
+    let read = || serde_json::from_slice(unsealed(&std::fs::read(&path).ok()?)?).ok();
     let found = read().unwrap_or_default();
     touch(&path);
     found
@@ -126,10 +121,7 @@ pub fn publish_layouts(
     if all.len() == before && before > 0 {
         return;
     }
-    let Ok(json) = serde_json::to_vec(&all) else { return };
-    let mut bytes = hash(&json).into_bytes();
-    bytes.push(b'\n');
-    bytes.extend(json);
+    let Ok(bytes) = sealed(&all) else { return };
     let _ = write_atomically(&layouts_path(folder, pass), &bytes);
 }
 
