@@ -276,11 +276,25 @@ fn build_passes(
     let mine: Vec<&plan::PassWork> = work.iter().zip(&owned).filter(|(_, o)| **o).map(|(w, _)| w).collect();
     let total = mine.iter().map(|w| w.variants.len()).sum();
     let session = session::Session::new(options, progress, total);
-    let built: Vec<pass::PassBuilt> = mine
-        .par_iter()
-        .with_max_len(1)
-        .map(|work| pass::build_pass(work, store, includes, catalog, options, &session))
-        .collect();
+    // What needs no compiled pass is made while the passes compile: the files read, named once
+    // (the inputs key hashes them and the catalogue's part lists them; nothing is read while
+    // passes compile, the store is only shared), the inputs key, the materials' texts.
+    let (built, (read, inputs, materials)) = rayon::join(
+        || -> Vec<pass::PassBuilt> {
+            (mine.par_iter().with_max_len(1))
+                .map(|work| pass::build_pass(work, store, includes, catalog, options, &session))
+                .collect()
+        },
+        || {
+            let read = noop::disk_names(store, options);
+            let inputs = noop::inputs_key(store, options, &read);
+            let materials = match &options.part {
+                Part::Shard(shard) => shard.materials(catalog, &work, &owned),
+                Part::Whole => emit::material_texts(catalog, |_| true),
+            };
+            (read, inputs, materials)
+        },
+    );
     let mut parts = Vec::with_capacity(built.len());
     let mut modules = Vec::with_capacity(built.len());
     for pass in built {
@@ -293,9 +307,6 @@ fn build_passes(
         diagnostics.extend(pass.diagnostics);
         parts.push(pass.part);
     }
-    // The files read, named once: the inputs key hashes them and the catalogue's part lists them.
-    let read = noop::disk_names(store, options);
-    let inputs = noop::inputs_key(store, options, &read);
     let catalogue = |read| emit::catalogue_part(store, catalog, options, &work, &summary, read);
     match &options.part {
         Part::Shard(shard) => {
@@ -308,13 +319,11 @@ fn build_passes(
                 .collect();
             // Every shard has the catalogue; the first writes its part for the merge.
             let catalogue = (shard.index == 0).then(|| catalogue(read));
-            let materials = shard.materials(catalog, &work, &owned);
             let parts = shard::ShardParts { catalogue, materials, passes };
             shard::finish(options, *shard, inputs, parts, summary, diagnostics)
         }
         Part::Whole => {
-            let texts = emit::material_texts(catalog, |_| true);
-            let materials: Vec<&serde_json::value::RawValue> = texts.iter().map(|(_, m)| &**m).collect();
+            let materials: Vec<&serde_json::value::RawValue> = materials.iter().map(|(_, m)| &**m).collect();
             let mut catalogue = catalogue(read);
             let manifest = emit::manifest(std::mem::take(&mut catalogue.shaders), parts);
             let mut result =
