@@ -278,7 +278,8 @@ fn build_passes(
     let session = session::Session::new(options, progress, total);
     // What needs no compiled pass is made while the passes compile: the files read, named once
     // (the inputs key hashes them and the catalogue's part lists them; nothing is read while
-    // passes compile, the store is only shared), the inputs key, the materials' texts.
+    // passes compile, the store is only shared), the inputs key, the materials' texts. Only what
+    // is written needs them: a check (the language server's, on every edit) makes none.
     let (built, (read, inputs, materials)) = rayon::join(
         || -> Vec<pass::PassBuilt> {
             (mine.par_iter().with_max_len(1))
@@ -286,6 +287,9 @@ fn build_passes(
                 .collect()
         },
         || {
+            if !options.write {
+                return Default::default();
+            }
             let read = noop::disk_names(store, options);
             let inputs = noop::inputs_key(store, options, &read);
             let materials = match &options.part {

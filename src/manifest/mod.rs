@@ -42,7 +42,7 @@ pub struct Manifest<P = PassManifest> {
 #[derive(Debug, thiserror::Error)]
 pub enum ManifestError {
     /// Not JSON of the schema.
-    #[error("{0}")]
+    #[error(transparent)]
     Json(#[from] serde_json::Error),
     /// A pass whose indices point outside its own lists (a manifest damaged since kiln wrote it).
     #[error("`{shader}` pass {pass} refers to a module, interface, pack or uniform block it does not list")]

@@ -329,12 +329,13 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     assert!(!dir.path().join("merged/manifest.json").exists());
 }
 
-/// `shard.json`'s text with `edit` applied to its record and the record sealed again (the hash
-/// of its JSON on the first line), as a shard that wrote the edited record would have written it.
+/// `shard.json`'s text with `edit` applied to its record and the record sealed again, as a shard
+/// that wrote the edited record would have written it.
 fn sealed_again(text: &str, edit: impl Fn(&str) -> String) -> String {
-    let (_, record) = text.split_once('\n').expect("a sealed record");
-    let record = edit(record);
-    format!("{}\n{record}", kiln::store::hash(record.as_bytes()))
+    let record = kiln::store::unsealed(text.as_bytes()).expect("a sealed record");
+    let edited = edit(std::str::from_utf8(record).expect("utf-8"));
+    let raw = serde_json::value::RawValue::from_string(edited).expect("still JSON");
+    String::from_utf8(kiln::store::sealed(&raw).expect("sealed")).expect("utf-8")
 }
 
 /// The diagnostics of a run, without its closing summary line (which has timings).
