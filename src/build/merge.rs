@@ -80,7 +80,9 @@ pub(super) fn read_shards(merge: &Merge) -> ShardsRead {
     // Every module checked before anything is linked: a damaged shard writes nothing.
     diagnostics.extend(
         (found.par_iter().zip(&views))
-            .filter_map(|(&(s, _), view)| damaged(&merge.shards[s].0, view))
+            .filter_map(|(&(s, p), view)| {
+                damaged(&merge.shards[s].0, view, &merge.shards[s].1.passes[p].packs)
+            })
             .collect::<Vec<_>>(),
     );
     ShardsRead { found, views, diagnostics }
@@ -209,22 +211,25 @@ impl PassFiles for RawPass<'_> {
     }
 }
 
-/// The first module of a shard's pass whose bytes are missing or not what its hash says.
-fn damaged(folder: &Path, manifest: &PassView) -> Option<Diagnostic> {
-    let packs: Vec<Option<Vec<u8>>> =
-        manifest.packs.iter().map(|p| std::fs::read(folder.join(p)).ok()).collect();
-    for module in &manifest.modules {
+/// The first module of a shard's pass whose pack is missing, not what its shard wrote (its hash
+/// differs from the one the shard recorded, `hashes`), or too short to hold it. The modules'
+/// places and hashes come from the sealed record: a pack is checked whole, not module by module.
+fn damaged(folder: &Path, view: &PassView, hashes: &[String]) -> Option<Diagnostic> {
+    let lengths: Vec<Option<u64>> = (view.packs.iter().enumerate())
+        .map(|(i, pack)| {
+            let bytes = std::fs::read(folder.join(pack)).ok()?;
+            (hashes.get(i) == Some(&hash(&bytes))).then_some(bytes.len() as u64)
+        })
+        .collect();
+    for module in &view.modules {
         for file in [&module.wgsl, &module.spirv].into_iter().flatten() {
-            let bytes = packs
-                .get(file.pack)
-                .and_then(|pack| pack.as_ref())
-                .and_then(|pack| pack.get(file.offset as usize..(file.offset + file.size) as usize));
-            if bytes.is_none_or(|bytes| hash(bytes) != file.hash) {
-                let interface = &manifest.interfaces[module.interface];
+            // In range and addressable: the part was read through `modules_in_range`.
+            if lengths[file.pack].is_none_or(|length| file.offset + file.size > length) {
+                let interface = &view.interfaces[module.interface];
                 let error = BuildLayerError::ModuleDamaged {
                     stage: interface.stage.clone(),
                     entry: interface.entry_point.clone(),
-                    pack: folder.join(&manifest.packs[file.pack]),
+                    pack: folder.join(&view.packs[file.pack]),
                 };
                 return Some(error.into());
             }

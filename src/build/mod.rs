@@ -314,13 +314,15 @@ fn build_passes(
     let catalogue = |read| emit::catalogue_part(store, catalog, options, &work, &summary, read);
     match &options.part {
         Part::Shard(shard) => {
-            let passes = (mine.iter().zip(modules).zip(parts))
-                .map(|((work, modules), manifest)| shard::ShardPass {
-                    key: plan::pass_key(store, options, work),
-                    modules,
-                    manifest: manifest.into_text(),
+            let passes = (mine.par_iter().zip(modules).zip(parts))
+                .map(|((work, modules), part)| {
+                    shard::ShardPass::new(plan::pass_key(store, options, work), modules, part, options)
                 })
-                .collect();
+                .collect::<std::io::Result<Vec<_>>>()
+                .unwrap_or_else(|error| {
+                    diagnostics.push(emit::write_failure(&options.output, error));
+                    Vec::new()
+                });
             // Every shard has the catalogue; the first writes its part for the merge.
             let catalogue = (shard.index == 0).then(|| catalogue(read));
             let parts = shard::ShardParts { catalogue, materials, passes };

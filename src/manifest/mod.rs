@@ -44,8 +44,11 @@ pub enum ManifestError {
     /// Not JSON of the schema.
     #[error(transparent)]
     Json(#[from] serde_json::Error),
-    /// A pass whose indices point outside its own lists (a manifest damaged since kiln wrote it).
-    #[error("`{shader}` pass {pass} refers to a module, interface, pack or uniform block it does not list")]
+    /// A pass whose indices point outside its own lists, or whose module ends past what an offset
+    /// can address (a manifest damaged since kiln wrote it).
+    #[error(
+        "`{shader}` pass {pass} refers to a module, interface, pack or uniform block it does not list, or to bytes past any pack's end"
+    )]
     DanglingIndex {
         /// The shader's name.
         shader: String,
@@ -424,12 +427,14 @@ pub struct ModuleManifest {
     pub spirv: Option<ModuleFile>,
 }
 
-/// Whether each module's interface index is below `interfaces` and its files' pack indices below
-/// `packs` (the lengths of its pass's lists).
+/// Whether each module's interface index is below `interfaces`, its files' pack indices below
+/// `packs` (the lengths of its pass's lists), and their ends addressable (every reader adds a
+/// file's offset and size).
 pub fn modules_in_range(modules: &[ModuleManifest], interfaces: usize, packs: usize) -> bool {
     modules.iter().all(|module| {
         let mut files = [&module.wgsl, &module.spirv].into_iter().flatten();
-        module.interface < interfaces && files.all(|file| file.pack < packs)
+        module.interface < interfaces
+            && files.all(|file| file.pack < packs && file.offset.checked_add(file.size).is_some())
     })
 }
 

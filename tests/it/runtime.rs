@@ -318,6 +318,14 @@ fn a_manifest_whose_indices_point_nowhere_is_refused_where_it_is_read_not_a_pani
         // What a build script's no-op build generates its module from.
         kiln::manifest::Manifest::read(output.path()).expect_err(field);
     }
+    // A module whose end is past what an offset can address (every reader adds offset and size).
+    let at = good.find("\"pack\":0,\"offset\":").expect("a module's place") + "\"pack\":0,\"offset\":".len();
+    let damaged =
+        format!("{}18446744073709551615{}", &good[..at], good[at..].trim_start_matches(char::is_numeric));
+    std::fs::write(&path, &damaged).expect("write");
+    let opened = Library::open(output.path()).map(drop).expect_err("an offset past any pack");
+    assert!(opened.to_string().contains("past"), "{opened}");
+    kiln::manifest::Manifest::read(output.path()).expect_err("an offset past any pack");
     std::fs::write(&path, &good).expect("write");
     Library::open(output.path()).expect("the manifest as built opens");
 }

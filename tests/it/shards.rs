@@ -285,14 +285,36 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     assert_eq!(run.status.code(), Some(1), "{}", text(&run));
     assert!(text(&run).starts_with("error[K0412]: a pass's part in "), "{}", text(&run));
     assert!(!dir.path().join("merged/manifest.json").exists());
-    // A part that reads but names a pack or an interface it does not list is damaged too (a pack
-    // index out of range made the merge panic).
-    for (field, edited) in [("\"pack\":1", "\"pack\":7"), ("\"interface\":0", "\"interface\":9")] {
+    // A part that reads but names a pack or an interface it does not list, or a module whose end
+    // no offset can address, is damaged too (a pack index out of range made the merge panic).
+    let past_any_pack = ("\"pack\":0,\"offset\":0,", "\"pack\":0,\"offset\":18446744073709551615,");
+    for (field, edited) in
+        [("\"pack\":1", "\"pack\":7"), ("\"interface\":0", "\"interface\":9"), past_any_pack]
+    {
         assert!(first.contains(field), "{field}");
         std::fs::write(&first_record, sealed_again(&first, |r| r.replacen(field, edited, 1))).expect("write");
         let run = merge(&dir.path().join("merged"), &shards);
         assert_eq!(run.status.code(), Some(1), "{}", text(&run));
         assert!(text(&run).starts_with("error[K0412]: a pass's part in "), "{}", text(&run));
+        assert!(!dir.path().join("merged/manifest.json").exists());
+    }
+    // A part whose module lies past its pack's end, or whose pack's recorded hash is not the
+    // pack's: the merge finds no module of that pack intact.
+    let other_hash = |r: &str| {
+        let at = r.find("\"packs\":[\"").expect("the first pass's pack hashes") + "\"packs\":[\"".len();
+        format!("{}{}{}", &r[..at], "0".repeat(32), &r[at + 32..])
+    };
+    let edits: [&dyn Fn(&str) -> String; 2] = [
+        &|r| r.replacen("\"pack\":0,\"offset\":0,\"size\":", "\"pack\":0,\"offset\":0,\"size\":99999999", 1),
+        &other_hash,
+    ];
+    for edit in edits {
+        let edited = sealed_again(&first, edit);
+        assert_ne!(edited, first);
+        std::fs::write(&first_record, edited).expect("write");
+        let run = merge(&dir.path().join("merged"), &shards);
+        assert_eq!(run.status.code(), Some(1), "{}", text(&run));
+        assert!(text(&run).starts_with("error[K0412]: no shard holds the "), "{}", text(&run));
         assert!(!dir.path().join("merged/manifest.json").exists());
     }
     std::fs::write(&first_record, first).expect("write");
@@ -315,18 +337,30 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     assert!(text(&run).starts_with("error[K0413]"), "{}", text(&run));
     std::fs::remove_file(&added).expect("remove");
 
-    // A shard's module damaged or gone: the merge names what is missing, and writes nothing.
+    // A shard's pack with a byte changed (its length kept), cut short, or gone: the merge names a
+    // module it cannot find intact, and writes nothing.
     let victim = shards
         .iter()
         .flat_map(|shard| walkdir::WalkDir::new(shard.join("modules")).into_iter().flatten())
         .find(|e| e.file_type().is_file())
-        .expect("a pack");
-    std::fs::write(victim.path(), b"damaged").expect("damage");
-    let run = merge(&dir.path().join("merged"), &shards);
-    assert_eq!(run.status.code(), Some(1), "{}", text(&run));
-    let shown = diagnostics(&run);
-    assert!(shown.starts_with("error[K0412]: no shard holds the "), "{shown}");
-    assert!(!dir.path().join("merged/manifest.json").exists());
+        .expect("a pack")
+        .into_path();
+    let intact = std::fs::read(&victim).expect("pack");
+    let mut changed = intact.clone();
+    changed[intact.len() / 2] ^= 1;
+    for damaged in [Some(changed), Some(intact[..intact.len() - 1].to_vec()), None] {
+        match damaged {
+            Some(bytes) => std::fs::write(&victim, bytes).expect("damage"),
+            None => std::fs::remove_file(&victim).expect("remove"),
+        }
+        let run = merge(&dir.path().join("merged"), &shards);
+        assert_eq!(run.status.code(), Some(1), "{}", text(&run));
+        let shown = diagnostics(&run);
+        assert!(shown.starts_with("error[K0412]: no shard holds the "), "{shown}");
+        let name = victim.file_name().expect("name").to_string_lossy().into_owned();
+        assert!(shown.contains(&name), "{shown}");
+        assert!(!dir.path().join("merged/manifest.json").exists());
+    }
 }
 
 /// `shard.json`'s text with `edit` applied to its record and the record sealed again, as a shard
