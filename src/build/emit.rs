@@ -114,7 +114,9 @@ pub(super) fn manifest<P: PassFiles>(heads: Vec<ShaderHead>, parts: Vec<P>) -> M
 
 /// Writes what a whole build (or a merge) leaves once its passes are built: the manifest, the
 /// materials (each one's compact text, in order), and the record of a clean build (`inputs`: the
-/// inputs key, [`super::noop::inputs_key`]).
+/// inputs key, [`super::noop::inputs_key`]). `alongside` runs while the two files are written (a
+/// merge links the shards' packs then; it returns the bytes it copied): neither file replaces
+/// the old one unless both are written and `alongside` succeeded.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn finish<P: PassFiles + Serialize + Sync>(
     options: &BuildOptions,
@@ -124,23 +126,42 @@ pub(super) fn finish<P: PassFiles + Serialize + Sync>(
     manifest: &Manifest<P>,
     mut summary: BuildSummary,
     mut diagnostics: Vec<Diagnostic>,
+    alongside: impl FnOnce() -> std::io::Result<u64> + Send,
 ) -> BuildResult {
     let mut files = Vec::new();
     if options.write && !diagnostics::has_errors(&diagnostics) {
         files = pack_ends(manifest.shaders.iter().flat_map(|s| &s.passes)).into_iter().collect();
         // The two largest files (35 and 14 MB at 100,000 variants), each on a thread of its own.
-        let (materials, manifest) = rayon::join(
-            || write_materials(&options.output.join(MATERIALS_FILE), materials, options),
-            || write_json(&options.output.join(FILE_NAME), manifest, options.pretty_manifest),
+        let ((materials, manifest), alongside) = rayon::join(
+            || {
+                rayon::join(
+                    || stage_materials(&options.output.join(MATERIALS_FILE), materials, options),
+                    || stage_json(&options.output.join(FILE_NAME), manifest, options.pretty_manifest),
+                )
+            },
+            alongside,
         );
-        let written = [(MATERIALS_FILE, materials), (FILE_NAME, manifest)];
-        for (name, result) in written {
-            match result {
-                Ok((len, written)) => {
-                    summary.bytes_written += if written { len } else { 0 };
-                    files.push((name.to_string(), len));
+        let staged = [(MATERIALS_FILE, materials), (FILE_NAME, manifest)];
+        let failed = staged.iter().filter_map(|(_, staged)| staged.as_ref().err()).count();
+        match alongside {
+            Ok(copied) if failed == 0 => {
+                summary.bytes_written += copied;
+                for (name, staged) in staged {
+                    match staged.and_then(StagedJson::commit) {
+                        Ok((len, written)) => {
+                            summary.bytes_written += if written { len } else { 0 };
+                            files.push((name.to_string(), len));
+                        }
+                        Err(error) => diagnostics.push(write_failure(&options.output, error)),
+                    }
                 }
-                Err(error) => diagnostics.push(write_failure(&options.output, error)),
+            }
+            // Nothing replaced: the staged files are dropped.
+            alongside => {
+                let errors = staged.into_iter().filter_map(|(_, staged)| staged.err());
+                for error in alongside.err().into_iter().chain(errors) {
+                    diagnostics.push(write_failure(&options.output, error));
+                }
             }
         }
     }
@@ -164,34 +185,38 @@ pub(super) fn finish<P: PassFiles + Serialize + Sync>(
 
 /// `materials.json`: the materials' compact texts as they are, or indented as a whole build
 /// indents them.
-fn write_materials(
+fn stage_materials(
     path: &std::path::Path,
     materials: &[&RawValue],
     options: &BuildOptions,
-) -> std::io::Result<(u64, bool)> {
+) -> std::io::Result<StagedJson> {
     if options.pretty_manifest {
         let materials: Vec<MaterialManifest> = (materials.iter())
             .map(|m| serde_json::from_str(m.get()))
             .collect::<Result<_, _>>()
             .map_err(std::io::Error::other)?;
-        write_json(path, &materials, true)
+        stage_json(path, &materials, true)
     } else {
-        write_json(path, &materials, false)
+        stage_json(path, &materials, false)
     }
 }
 
-/// Writes JSON (the manifest, the materials) streamed, so that a million variants' manifest is
-/// never a string in memory, and hashed as it goes when a file is there already: one that holds
-/// exactly these bytes is left as it is, so that a rebuild that compiles nothing touches nothing.
-/// Returns its length and whether it was written.
-pub(super) fn write_json(
+/// JSON (the manifest, the materials) written beside its file and not yet in its place, with
+/// what was written: its length, and its hash when there is an old file to compare with.
+struct StagedJson {
+    staged: crate::store::Staged,
+    digest: Digest,
+}
+
+/// Writes JSON streamed, so that a million variants' manifest is never a string in memory, and
+/// hashed as it goes when a file is there already (see [`StagedJson::commit`]).
+fn stage_json(
     path: &std::path::Path,
     value: &impl serde::Serialize,
     pretty: bool,
-) -> std::io::Result<(u64, bool)> {
+) -> std::io::Result<StagedJson> {
     use std::io::Write as _;
-    // What was written, for the comparison with the old file once it is all written.
-    let digest = std::cell::RefCell::new(Digest::default());
+    let mut digest = Digest::default();
     // Nothing to compare with, nothing to hash (a digest that saw nothing matches no old file).
     let hash = path.exists();
     let serialize = |out: &mut dyn std::io::Write| {
@@ -209,18 +234,27 @@ pub(super) fn write_json(
             out.write_all(b"\n")?;
             out.flush()?;
         }
-        digest.replace(hashed.digest);
+        digest = hashed.digest;
         Ok(())
     };
-    let changed = |old: &std::path::Path| {
-        let new = digest.borrow();
-        let same = std::fs::metadata(old).is_ok_and(|m| m.len() == new.len)
-            && Digest::of_file(old).is_ok_and(|old| old.finish() == new.finish());
-        !same
-    };
-    let written = crate::store::write_atomically_with(path, serialize, changed)?;
-    let len = digest.borrow().len;
-    Ok((len, written))
+    let staged = crate::store::stage(path, serialize)?;
+    Ok(StagedJson { staged, digest })
+}
+
+impl StagedJson {
+    /// Puts the JSON in its place, unless the file there holds exactly these bytes already (so
+    /// that a rebuild that compiles nothing touches nothing). Returns its length and whether it
+    /// was written.
+    fn commit(self) -> std::io::Result<(u64, bool)> {
+        let StagedJson { staged, digest } = self;
+        let changed = |old: &std::path::Path| {
+            let same = std::fs::metadata(old).is_ok_and(|m| m.len() == digest.len)
+                && Digest::of_file(old).is_ok_and(|old| old.finish() == digest.finish());
+            !same
+        };
+        let written = staged.commit(changed)?;
+        Ok((digest.len, written))
+    }
 }
 
 pub(super) fn write_failure(output: &std::path::Path, error: std::io::Error) -> Diagnostic {

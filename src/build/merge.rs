@@ -6,7 +6,7 @@
 //! again and hashed); then the packs and the cache entries are linked into the output (copied
 //! where a link cannot be made), so the output is one build's, byte for byte.
 
-use super::emit::{CataloguePart, finish, manifest, placed_materials, write_failure};
+use super::emit::{CataloguePart, finish, manifest, placed_materials};
 use super::error::BuildLayerError;
 use super::noop::{Inputs, same_inputs};
 use super::shard::ShardPass;
@@ -21,7 +21,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use serde_json::value::RawValue;
 use std::collections::HashMap;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// What a merge reads of the shards alone, made while the project is read: where each pass of
 /// the manifest was built, the fields the merge needs of its part, and every module in its packs
@@ -119,26 +119,18 @@ pub(super) fn merge(
     let (Some(materials), true) = (materials, diagnostics.is_empty()) else {
         return BuildResult::failed(options, summary, diagnostics);
     };
-    if options.write {
-        let linked: std::io::Result<Vec<u64>> = found
-            .par_iter()
-            .zip(&parts)
-            .map(|((folder, part), pass)| {
-                let mut copied = 0;
-                let cache_entry = pass_index_path(&part.key);
-                for path in pass.view.packs.iter().chain([&cache_entry]) {
-                    copied += link_or_copy(&folder.join(path), &options.output.join(path))?;
-                }
-                Ok(copied)
-            })
-            .collect();
-        match linked {
-            Ok(copied) => summary.bytes_written += copied.iter().sum::<u64>(),
-            Err(error) => {
-                return BuildResult::failed(options, summary, vec![write_failure(&options.output, error)]);
-            }
-        }
-    }
+    // Every pass's packs and cache entry, from its shard's folder into the output: linked while
+    // the manifest and the materials are written, which replace nothing unless every link is made.
+    let links: Vec<(PathBuf, PathBuf)> = (found.iter().zip(&parts))
+        .flat_map(|((folder, part), pass)| {
+            let files = pass.view.packs.iter().cloned().chain([pass_index_path(&part.key)]);
+            files.map(|file| (folder.join(&file), options.output.join(&file)))
+        })
+        .collect();
+    let link = || {
+        let copied = links.par_iter().map(|(from, to)| link_or_copy(from, to));
+        copied.collect::<std::io::Result<Vec<u64>>>().map(|copied| copied.iter().sum())
+    };
     summary.modules = found.iter().map(|(_, part)| part.modules).sum();
     summary.reused = summary.modules;
     let heads = catalogue.shaders.clone();
@@ -153,13 +145,13 @@ pub(super) fn merge(
         match parsed {
             Ok(parsed) => {
                 let manifest = manifest(heads, parsed);
-                finish(options, &merge.inputs, catalogue, &materials, &manifest, summary, diagnostics)
+                finish(options, &merge.inputs, catalogue, &materials, &manifest, summary, diagnostics, link)
             }
             Err(error) => BuildResult::failed(options, summary, vec![error.into()]),
         }
     } else {
         let manifest = manifest(heads, parts);
-        finish(options, &merge.inputs, catalogue, &materials, &manifest, summary, diagnostics)
+        finish(options, &merge.inputs, catalogue, &materials, &manifest, summary, diagnostics, link)
     }
 }
 

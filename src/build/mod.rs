@@ -332,8 +332,16 @@ fn build_passes(
             let materials: Vec<&serde_json::value::RawValue> = materials.iter().map(|(_, m)| &**m).collect();
             let mut catalogue = catalogue(read);
             let manifest = emit::manifest(std::mem::take(&mut catalogue.shaders), parts);
-            let mut result =
-                emit::finish(options, &inputs, &catalogue, &materials, &manifest, summary, diagnostics);
+            let mut result = emit::finish(
+                options,
+                &inputs,
+                &catalogue,
+                &materials,
+                &manifest,
+                summary,
+                diagnostics,
+                || Ok(0),
+            );
             result.manifest = Some(emit::parsed(manifest));
             result
         }

@@ -221,35 +221,55 @@ static WRITES: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::
 /// Writes through a temporary file in the same folder and a rename, so a reader never sees half a
 /// file and a failed or interrupted write leaves the old one.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    write_atomically_with(path, |file| file.write_all(bytes), |_| true).map(drop)
+    stage(path, |file| file.write_all(bytes))?.commit(|_| true).map(drop)
 }
 
-/// [`write_atomically`], with the bytes streamed by `write` (buffered), so that a large file is
-/// never whole in memory. `keep` sees the old file, if any, once the new bytes are all written:
-/// when it says no, the old file stays and the new bytes are dropped.
-pub fn write_atomically_with(
+/// A file's new bytes under a temporary name beside it, not yet in its place: [`Staged::commit`]
+/// puts them there; dropped uncommitted, they are removed and the old file stays.
+pub struct Staged {
+    temporary: PathBuf,
+    path: PathBuf,
+    committed: bool,
+}
+
+/// Writes `path`'s new bytes, streamed by `write` (buffered, so a large file is never whole in
+/// memory), under a temporary name in the same folder (see [`Staged`]).
+pub fn stage(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
-    keep: impl FnOnce(&Path) -> bool,
-) -> std::io::Result<bool> {
+) -> std::io::Result<Staged> {
     let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
     std::fs::create_dir_all(folder)?;
     let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
     let unique = WRITES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let temporary = folder.join(format!(".{name}.{}.{unique}.tmp", std::process::id()));
-    let written = std::fs::File::create(&temporary).and_then(|file| {
-        let mut buffered = std::io::BufWriter::new(file);
-        write(&mut buffered)?;
-        buffered.into_inner().map(drop).map_err(std::io::IntoInnerError::into_error)
-    });
-    let kept = written.and_then(|()| {
-        let kept = keep(path);
-        if kept { std::fs::rename(&temporary, path).map(|()| true) } else { Ok(false) }
-    });
-    if !matches!(kept, Ok(true)) {
-        let _ = std::fs::remove_file(&temporary);
+    let staged = Staged { temporary, path: path.to_path_buf(), committed: false };
+    let file = std::fs::File::create(&staged.temporary)?;
+    let mut buffered = std::io::BufWriter::new(file);
+    write(&mut buffered)?;
+    buffered.into_inner().map_err(std::io::IntoInnerError::into_error)?;
+    Ok(staged)
+}
+
+impl Staged {
+    /// Renames the new bytes into place, unless `keep`, shown the old file (if any), says no:
+    /// then the old file stays and the new bytes are dropped. Returns whether they were put there.
+    pub fn commit(mut self, keep: impl FnOnce(&Path) -> bool) -> std::io::Result<bool> {
+        if !keep(&self.path) {
+            return Ok(false);
+        }
+        std::fs::rename(&self.temporary, &self.path)?;
+        self.committed = true;
+        Ok(true)
     }
-    kept
+}
+
+impl Drop for Staged {
+    fn drop(&mut self) {
+        if !self.committed {
+            let _ = std::fs::remove_file(&self.temporary);
+        }
+    }
 }
 
 /// `value` as JSON after a line with the JSON's hash, so that a reader can tell the bytes from

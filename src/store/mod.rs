@@ -6,6 +6,6 @@ mod cache;
 pub mod shared;
 
 pub use cache::{
-    Cache, CachedStage, Digest, Hashed, ModuleBytes, PassIndex, Recorded, hash, link_or_copy,
-    pass_index_path, sealed, unsealed, write_atomically, write_atomically_with,
+    Cache, CachedStage, Digest, Hashed, ModuleBytes, PassIndex, Recorded, Staged, hash, link_or_copy,
+    pass_index_path, sealed, stage, unsealed, write_atomically,
 };

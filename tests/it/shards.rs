@@ -363,6 +363,47 @@ fn merge_refuses_shards_that_do_not_belong_together() {
     }
 }
 
+#[test]
+fn a_merge_that_cannot_link_a_pack_replaces_neither_manifest_nor_materials() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    synthetic_project(&project, 16);
+    let shards: Vec<PathBuf> = (1..=2).map(|i| dir.path().join(format!("shard{i}"))).collect();
+    build_shards(&project, &shards, None);
+    // An earlier build's files in the output, and a folder where one of the packs must go: the
+    // manifest and the materials are written while the packs are linked, and must stay unused.
+    let merged = dir.path().join("merged");
+    std::fs::create_dir_all(&merged).expect("mkdir");
+    for name in ["manifest.json", "materials.json"] {
+        std::fs::write(merged.join(name), "an earlier build's\n").expect("write");
+    }
+    let pack = shards
+        .iter()
+        .flat_map(|shard| walkdir::WalkDir::new(shard.join("modules")).into_iter().flatten())
+        .find(|e| e.file_type().is_file())
+        .expect("a pack");
+    let in_the_way = merged.join("modules").join(pack.file_name()).join("in the way");
+    std::fs::create_dir_all(&in_the_way).expect("mkdir");
+    let run = merge(&merged, &shards);
+    assert_eq!(run.status.code(), Some(1), "{}", text(&run));
+    assert!(text(&run).contains("error[K0410]: cannot write to "), "{}", text(&run));
+    for name in ["manifest.json", "materials.json"] {
+        assert_eq!(std::fs::read_to_string(merged.join(name)).expect("read"), "an earlier build's\n");
+    }
+    let left: Vec<String> = std::fs::read_dir(&merged)
+        .expect("list")
+        .flatten()
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|name| name.ends_with(".tmp"))
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
+    // Out of the way, the same merge writes one build's output.
+    std::fs::remove_dir_all(merged.join("modules").join(pack.file_name())).expect("remove");
+    let run = merge(&merged, &shards);
+    assert_eq!(run.status.code(), Some(0), "{}", text(&run));
+    assert_ne!(std::fs::read_to_string(merged.join("manifest.json")).expect("read"), "an earlier build's\n");
+}
+
 /// `shard.json`'s text with `edit` applied to its record and the record sealed again, as a shard
 /// that wrote the edited record would have written it.
 fn sealed_again(text: &str, edit: impl Fn(&str) -> String) -> String {
