@@ -1,6 +1,11 @@
 //! What a project declares, gathered once for every job (`list`, `check`, `build`): shaders with
 //! their passes and programs (WGSL ones loaded with their includes), materials resolved against
 //! them, and each pass's keywords and used variants.
+//!
+//! Long because it is one walk over the project whose steps share the catalogue's types: shaders
+//! parsed, their programs loaded (one after another: loading adds to the store) and finished in
+//! parallel, materials resolved, global keywords checked, variants enumerated and listed ones
+//! added.
 
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{KeywordBits, MAX_VARIANTS_PER_PASS, PassKeywords, Variant};
