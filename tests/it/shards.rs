@@ -67,6 +67,25 @@ fn project_of_1024_variants(project: &Path) {
     }
 }
 
+/// The synthetic project (16 variants of one pass) under `dir`, built as `count` shards.
+fn synthetic_shards(dir: &Path, count: usize) -> (PathBuf, Vec<PathBuf>) {
+    let project = dir.join("project");
+    synthetic_project(&project, 16);
+    let shards: Vec<PathBuf> = (1..=count).map(|i| dir.join(format!("shard{i}"))).collect();
+    build_shards(&project, &shards, None);
+    (project, shards)
+}
+
+/// The first pack file in the shards' folders.
+fn first_pack(shards: &[PathBuf]) -> PathBuf {
+    shards
+        .iter()
+        .flat_map(|shard| walkdir::WalkDir::new(shard.join("modules")).into_iter().flatten())
+        .find(|e| e.file_type().is_file())
+        .expect("a pack")
+        .into_path()
+}
+
 fn merge(out: &Path, shards: &[PathBuf]) -> Output {
     let mut args = vec!["merge".to_string(), out.to_string_lossy().into_owned()];
     args.extend(shards.iter().map(|s| s.to_string_lossy().into_owned()));
@@ -209,10 +228,7 @@ fn text_of(path: &Path) -> &str {
 #[test]
 fn merge_refuses_shards_that_do_not_belong_together() {
     let dir = tempfile::tempdir().expect("temp dir");
-    let project = dir.path().join("project");
-    synthetic_project(&project, 16);
-    let shards: Vec<PathBuf> = (1..=3).map(|i| dir.path().join(format!("shard{i}"))).collect();
-    build_shards(&project, &shards, None);
+    let (project, shards) = synthetic_shards(dir.path(), 3);
     let refused = |shards: &[PathBuf], expected: &str| {
         let run = merge(&dir.path().join("merged"), shards);
         assert_eq!(run.status.code(), Some(2), "{}", text(&run));
@@ -339,12 +355,7 @@ fn merge_refuses_shards_that_do_not_belong_together() {
 
     // A shard's pack with a byte changed (its length kept), cut short, or gone: the merge names a
     // module it cannot find intact, and writes nothing.
-    let victim = shards
-        .iter()
-        .flat_map(|shard| walkdir::WalkDir::new(shard.join("modules")).into_iter().flatten())
-        .find(|e| e.file_type().is_file())
-        .expect("a pack")
-        .into_path();
+    let victim = first_pack(&shards);
     let intact = std::fs::read(&victim).expect("pack");
     let mut changed = intact.clone();
     changed[intact.len() / 2] ^= 1;
@@ -366,10 +377,7 @@ fn merge_refuses_shards_that_do_not_belong_together() {
 #[test]
 fn a_merge_that_cannot_link_a_pack_replaces_neither_manifest_nor_materials() {
     let dir = tempfile::tempdir().expect("temp dir");
-    let project = dir.path().join("project");
-    synthetic_project(&project, 16);
-    let shards: Vec<PathBuf> = (1..=2).map(|i| dir.path().join(format!("shard{i}"))).collect();
-    build_shards(&project, &shards, None);
+    let (_, shards) = synthetic_shards(dir.path(), 2);
     // An earlier build's files in the output, and a folder where one of the packs must go: the
     // manifest and the materials are written while the packs are linked, and must stay unused.
     let merged = dir.path().join("merged");
@@ -377,12 +385,9 @@ fn a_merge_that_cannot_link_a_pack_replaces_neither_manifest_nor_materials() {
     for name in ["manifest.json", "materials.json"] {
         std::fs::write(merged.join(name), "an earlier build's\n").expect("write");
     }
-    let pack = shards
-        .iter()
-        .flat_map(|shard| walkdir::WalkDir::new(shard.join("modules")).into_iter().flatten())
-        .find(|e| e.file_type().is_file())
-        .expect("a pack");
-    let in_the_way = merged.join("modules").join(pack.file_name()).join("in the way");
+    let pack = first_pack(&shards);
+    let pack = pack.file_name().expect("a name");
+    let in_the_way = merged.join("modules").join(pack).join("in the way");
     std::fs::create_dir_all(&in_the_way).expect("mkdir");
     let run = merge(&merged, &shards);
     assert_eq!(run.status.code(), Some(1), "{}", text(&run));
@@ -398,7 +403,7 @@ fn a_merge_that_cannot_link_a_pack_replaces_neither_manifest_nor_materials() {
         .collect();
     assert!(left.is_empty(), "{left:?}");
     // Out of the way, the same merge writes one build's output.
-    std::fs::remove_dir_all(merged.join("modules").join(pack.file_name())).expect("remove");
+    std::fs::remove_dir_all(merged.join("modules").join(pack)).expect("remove");
     let run = merge(&merged, &shards);
     assert_eq!(run.status.code(), Some(0), "{}", text(&run));
     assert_ne!(std::fs::read_to_string(merged.join("manifest.json")).expect("read"), "an earlier build's\n");
