@@ -190,7 +190,8 @@ pub type Overlay = HashMap<PathBuf, String>;
 /// threads of their own, each with its own table of open files: every open and close takes the
 /// table's lock, so threads sharing one read no faster than four do (50,000 materials on a
 /// 16-core host: 0.054 s on 16 threads sharing it, 0.018 s with tables of their own; see
-/// docs/performance.md).
+/// docs/performance.md). Where the system refuses a thread its own table (a container's filter
+/// of system calls), the threads share the process's, as rayon's would.
 #[cfg(target_os = "linux")]
 fn read_in_parallel<T: Send>(paths: &[PathBuf], read: impl Fn(&Path) -> T + Sync) -> Vec<T> {
     use std::sync::atomic::{AtomicUsize, Ordering};
