@@ -1,10 +1,11 @@
 //! `kiln merge`: the output of one build from the shards' parts, with naga run nowhere, nothing
 //! preprocessed and no catalogue: the first shard's record carries what the manifest takes from
-//! the catalogue. Each pass's part comes from the shard that built it, and every module in its
-//! packs is checked against its hash ([`read_shards`], which needs no project, so the caller
-//! reads the project meanwhile). The project must still be what the shards read (its files read
-//! again and hashed); then the packs and the cache entries are linked into the output (copied
-//! where a link cannot be made), so the output is one build's, byte for byte.
+//! the catalogue. Each pass's part comes from the shard that built it, and each of its packs is
+//! checked whole against the hash the shard recorded ([`read_shards`], which needs no project, so
+//! the caller reads the project meanwhile). The project must still be what the shards read (its
+//! files read again and hashed); then the packs and the cache entries are linked into the output
+//! (copied where a link cannot be made) while the manifest and the materials are written, so the
+//! output is one build's, byte for byte.
 
 use super::emit::{CataloguePart, finish, manifest, placed_materials};
 use super::error::BuildLayerError;
@@ -24,8 +25,8 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 /// What a merge reads of the shards alone, made while the project is read: where each pass of
-/// the manifest was built, the fields the merge needs of its part, and every module in its packs
-/// checked against its hash.
+/// the manifest was built, the fields the merge needs of its part, and its packs checked against
+/// their shard's hashes.
 #[derive(Default)]
 pub struct ShardsRead {
     /// Each pass of the catalogue, in manifest order: its shard's index and its place in that
@@ -77,7 +78,7 @@ pub(super) fn read_shards(merge: &Merge) -> ShardsRead {
     if views.len() < found.len() {
         return ShardsRead { diagnostics, ..ShardsRead::default() };
     }
-    // Every module checked before anything is linked: a damaged shard writes nothing.
+    // Every pack checked before anything is linked: a damaged shard writes nothing.
     diagnostics.extend(
         (found.par_iter().zip(&views))
             .filter_map(|(&(s, p), view)| {
