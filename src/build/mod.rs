@@ -219,7 +219,7 @@ pub fn build(
 }
 
 impl Merge {
-    /// What the merge needs of the shards alone, every module in them checked against its hash:
+    /// What the merge needs of the shards alone, their packs checked against the hashes they recorded:
     /// needs no project, so a caller can read the project at the same time.
     pub fn read_shards(&self) -> ShardsRead {
         merge::read_shards(self)
