@@ -10,7 +10,7 @@
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{KeywordBits, MAX_VARIANTS_PER_PASS, PassKeywords, Variant};
 use crate::material::{Material, ShaderEntries, ShaderEntry, load_material};
-use crate::preprocess::{Includes, Program, finish_pass};
+use crate::preprocess::{Includes, Program, finish_pass, load_blocks};
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
 use crate::shaderlab::parse_shader;
 use crate::shaderlab::pragma::{
@@ -522,11 +522,9 @@ impl Loading<'_> {
         if language != ProgramLanguage::Wgsl {
             let (pragmas, errors) = collect_pragmas(blocks.into_iter().map(PragmaSource::from));
             diagnostics.extend(errors);
-            let keywords = pass_keywords(&pragmas, programs[0].span, diagnostics);
-            return Some(CatalogProgram { language, pragmas, wgsl: None, keywords, variants: Vec::new() });
+            return Some(finished_program(language, pragmas, None, programs[0].span, diagnostics));
         }
-        let spans: Vec<Span> = blocks.iter().map(|b| b.body_span).collect();
-        let (program, found) = includes.load_program(store, &spans);
+        let (program, found) = load_blocks(includes, store, &blocks);
         diagnostics.extend(found);
         let at = diagnostics.len();
         self.unfinished.push(Unfinished { shader: self.shader, pass, program, span: programs[0].span, at });
@@ -547,12 +545,9 @@ fn finish_programs(
     let finished: Vec<_> = unfinished
         .into_par_iter()
         .map(|Unfinished { shader, pass, program, span, at }| {
-            let (program, mut found) = finish_pass(includes, store, program);
-            let keywords = pass_keywords(&program.pragmas, span, &mut found);
-            let language = ProgramLanguage::Wgsl;
-            let wgsl = Some(program.program);
-            let program =
-                CatalogProgram { language, pragmas: program.pragmas, wgsl, keywords, variants: Vec::new() };
+            let (loaded, mut found) = finish_pass(includes, store, program);
+            let wgsl = Some(loaded.program);
+            let program = finished_program(ProgramLanguage::Wgsl, loaded.pragmas, wgsl, span, &mut found);
             (shader, pass, at, program, found)
         })
         .collect();
@@ -569,9 +564,15 @@ fn finish_programs(
     *diagnostics = placed;
 }
 
-/// A pass's keywords from its pragmas; more than a pass may have is an error (K0212) at the first
-/// keyword over the limit (or at `span`).
-fn pass_keywords(pragmas: &ProgramPragmas, span: Span, diagnostics: &mut Vec<Diagnostic>) -> PassKeywords {
+/// A pass's program once its pragmas are read, with its keywords; more than a pass may have is an
+/// error (K0212) at the first keyword over the limit (or at `span`).
+fn finished_program(
+    language: ProgramLanguage,
+    pragmas: ProgramPragmas,
+    wgsl: Option<Program>,
+    span: Span,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> CatalogProgram {
     let keywords = PassKeywords::new(pragmas.variant_sets());
     if keywords.names().len() > MAX_KEYWORDS_PER_PASS {
         // Point at the first keyword over the limit.
@@ -593,7 +594,7 @@ fn pass_keywords(pragmas: &ProgramPragmas, span: Span, diagnostics: &mut Vec<Dia
                 .help("split the pass, or make run-time choices `dynamic_branch` keywords"),
         );
     }
-    keywords
+    CatalogProgram { language, pragmas, wgsl, keywords, variants: Vec::new() }
 }
 
 fn tags(state: &StateBlock) -> Vec<(String, String)> {

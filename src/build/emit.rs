@@ -141,13 +141,11 @@ pub(super) fn finish<P: PassFiles + Serialize + Sync>(
             },
             alongside,
         );
-        let staged = [(MATERIALS_FILE, materials), (FILE_NAME, manifest)];
-        let failed = staged.iter().filter_map(|(_, staged)| staged.as_ref().err()).count();
-        match alongside {
-            Ok(copied) if failed == 0 => {
+        match (materials, manifest, alongside) {
+            (Ok(materials), Ok(manifest), Ok(copied)) => {
                 summary.bytes_written += copied;
-                for (name, staged) in staged {
-                    match staged.and_then(StagedJson::commit) {
+                for (name, staged) in [(MATERIALS_FILE, materials), (FILE_NAME, manifest)] {
+                    match staged.commit() {
                         Ok((len, written)) => {
                             summary.bytes_written += if written { len } else { 0 };
                             files.push((name.to_string(), len));
@@ -157,11 +155,9 @@ pub(super) fn finish<P: PassFiles + Serialize + Sync>(
                 }
             }
             // Nothing replaced: the staged files are dropped.
-            alongside => {
-                let errors = staged.into_iter().filter_map(|(_, staged)| staged.err());
-                for error in alongside.err().into_iter().chain(errors) {
-                    diagnostics.push(write_failure(&options.output, error));
-                }
+            (materials, manifest, alongside) => {
+                let errors = [materials.err(), manifest.err(), alongside.err()].into_iter().flatten();
+                diagnostics.extend(errors.map(|error| write_failure(&options.output, error)));
             }
         }
     }

@@ -10,14 +10,14 @@
 use super::emit::{CataloguePart, finish, manifest, placed_materials};
 use super::error::BuildLayerError;
 use super::noop::{Inputs, same_inputs};
-use super::shard::ShardPass;
+use super::shard::{ShardPass, pack_hash};
 use super::{BuildOptions, BuildResult, BuildSummary, Merge};
 use crate::diagnostics::Diagnostic;
 use crate::manifest::{
     BindGroup, ModuleManifest, PassFiles, PassManifest, StageInterface, UniformBlock, modules_in_range,
 };
 use crate::source::SourceStore;
-use crate::store::{hash, link_or_copy, pass_index_path};
+use crate::store::{link_or_copy, pass_index_path};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use serde_json::value::RawValue;
@@ -210,8 +210,8 @@ impl PassFiles for RawPass<'_> {
 fn damaged(folder: &Path, view: &PassView, hashes: &[String]) -> Option<Diagnostic> {
     let lengths: Vec<Option<u64>> = (view.packs.iter().enumerate())
         .map(|(i, pack)| {
-            let bytes = std::fs::read(folder.join(pack)).ok()?;
-            (hashes.get(i) == Some(&hash(&bytes))).then_some(bytes.len() as u64)
+            let (hash, length) = pack_hash(&folder.join(pack)).ok()?;
+            (hashes.get(i) == Some(&hash)).then_some(length)
         })
         .collect();
     for module in &view.modules {

@@ -124,14 +124,20 @@ impl ShardPass {
         part: BuiltPass,
         options: &BuildOptions,
     ) -> std::io::Result<ShardPass> {
-        let read = |pack: &String| std::fs::read(options.output.join(pack)).map(|bytes| hash(&bytes));
+        let hashed = |pack: &String| pack_hash(&options.output.join(pack)).map(|(hash, _)| hash);
         let packs = if options.write {
-            part.packs().iter().map(read).collect::<std::io::Result<_>>()?
+            part.packs().iter().map(hashed).collect::<std::io::Result<_>>()?
         } else {
             Vec::new()
         };
         Ok(ShardPass { key, modules, packs, manifest: part.into_text() })
     }
+}
+
+/// A pack's hash as its shard records it and the merge checks it, and its length.
+pub(super) fn pack_hash(path: &Path) -> std::io::Result<(String, u64)> {
+    let bytes = std::fs::read(path)?;
+    Ok((hash(&bytes), bytes.len() as u64))
 }
 
 impl ShardRecord {

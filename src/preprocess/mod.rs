@@ -19,7 +19,7 @@ mod source_map;
 pub use error::PreprocessError;
 pub use include::{IncludeConfig, Includes, LIBRARY_PREFIX, Program};
 pub(crate) use macros::{Kind, lex};
-pub use pass::{DynamicKeyword, PassProgram, finish_pass, load_pass, load_pass_text};
+pub use pass::{DynamicKeyword, PassProgram, finish_pass, load_blocks, load_pass, load_pass_text};
 pub use run::MAX_INCLUDE_DEPTH;
 pub use run::Skipped;
 pub use scan::MAX_CONDITIONAL_DEPTH;

@@ -24,8 +24,21 @@ pub fn load_pass(
     store: &mut SourceStore,
     blocks: &[&ProgramBlock],
 ) -> (PassProgram, Vec<Diagnostic>) {
+    let (program, mut diagnostics) = load_blocks(includes, store, blocks);
+    let (pass, found) = finish_pass(includes, store, program);
+    diagnostics.extend(found);
+    (pass, diagnostics)
+}
+
+/// The first half of [`load_pass`]: the blocks and everything they include, loaded (which adds
+/// units to `includes`); [`finish_pass`] reads the rest.
+pub fn load_blocks(
+    includes: &mut Includes,
+    store: &mut SourceStore,
+    blocks: &[&ProgramBlock],
+) -> (Program, Vec<Diagnostic>) {
     let spans: Vec<Span> = blocks.iter().map(|b| b.body_span).collect();
-    load_pass_text(includes, store, &spans)
+    includes.load_program(store, &spans)
 }
 
 /// [`load_pass`] for program text that is no ShaderLab block (the accuracy harness).

@@ -214,6 +214,13 @@ pub struct ModuleBytes {
     pub hash: String,
 }
 
+/// The folder `path` goes in (`.` for a bare name), made if missing.
+fn folder_made_for(path: &Path) -> std::io::Result<&Path> {
+    let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    std::fs::create_dir_all(folder)?;
+    Ok(folder)
+}
+
 /// Makes temporary names unique per write: two jobs may store the same content-addressed file
 /// at once.
 static WRITES: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
@@ -238,12 +245,7 @@ pub fn stage(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
 ) -> std::io::Result<Staged> {
-    let folder = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    std::fs::create_dir_all(folder)?;
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let unique = WRITES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let temporary = folder.join(format!(".{name}.{}.{unique}.tmp", std::process::id()));
-    let staged = Staged { temporary, path: path.to_path_buf(), committed: false };
+    let staged = Staged::beside(path)?;
     let file = std::fs::File::create(&staged.temporary)?;
     let mut buffered = std::io::BufWriter::new(file);
     write(&mut buffered)?;
@@ -252,6 +254,16 @@ pub fn stage(
 }
 
 impl Staged {
+    /// A temporary name beside `path`, unique to this write (two jobs may store the same
+    /// content-addressed file at once), in a folder made if missing; nothing written there yet.
+    fn beside(path: &Path) -> std::io::Result<Staged> {
+        let folder = folder_made_for(path)?;
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let unique = WRITES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let temporary = folder.join(format!(".{name}.{}.{unique}.tmp", std::process::id()));
+        Ok(Staged { temporary, path: path.to_path_buf(), committed: false })
+    }
+
     /// Renames the new bytes into place, unless `keep`, shown the old file (if any), says no:
     /// then the old file stays and the new bytes are dropped. Returns whether they were put there.
     pub fn commit(mut self, keep: impl FnOnce(&Path) -> bool) -> std::io::Result<bool> {
@@ -362,22 +374,16 @@ pub fn link_or_copy(from: &Path, to: &Path) -> std::io::Result<u64> {
     {
         return Ok(0);
     }
-    let folder = to.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    std::fs::create_dir_all(folder)?;
     // A link appears whole, so where nothing is in the way it is made under its own name (half
     // the folder operations: a merge links thousands of packs into one folder).
-    if existing.is_none() && std::fs::hard_link(from, to).is_ok() {
+    if existing.is_none() && folder_made_for(to).is_ok_and(|_| std::fs::hard_link(from, to).is_ok()) {
         return Ok(0);
     }
-    let name = to.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let unique = WRITES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let temporary = folder.join(format!(".{name}.{}.{unique}.tmp", std::process::id()));
-    let copied = match std::fs::hard_link(from, &temporary) {
+    let staged = Staged::beside(to)?;
+    let copied = match std::fs::hard_link(from, &staged.temporary) {
         Ok(()) => 0,
-        Err(_) => std::fs::copy(from, &temporary)?,
+        Err(_) => std::fs::copy(from, &staged.temporary)?,
     };
-    std::fs::rename(&temporary, to).inspect_err(|_| {
-        let _ = std::fs::remove_file(&temporary);
-    })?;
+    staged.commit(|_| true)?;
     Ok(copied)
 }
