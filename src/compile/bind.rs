@@ -43,7 +43,7 @@ pub fn group_for(name: &str, names: &GroupNames) -> u32 {
 }
 
 /// A resource a module declares, with where (in the preprocessed text) it is declared.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct Declared {
     /// The resource's global variable name.
     pub name: String,

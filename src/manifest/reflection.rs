@@ -15,7 +15,7 @@ pub struct Attribute {
 }
 
 /// What a binding holds.
-#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 // Each variant's fields are named in its comment.
 #[allow(missing_docs)]
@@ -36,7 +36,7 @@ pub enum Resource {
 
 /// A uniform or storage buffer's contents, laid out by naga: a struct, or (for a storage buffer
 /// holding a bare array) one member named after the buffer.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct UniformBlock {
     /// The global variable's name (`_CustomLight`).
     pub name: String,
@@ -54,7 +54,7 @@ pub struct UniformBlock {
 }
 
 /// A struct member, with its offset in the struct that holds it.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct Member {
     /// Its name.
     pub name: String,

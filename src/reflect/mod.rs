@@ -11,7 +11,7 @@ use naga::{
 use serde::{Deserialize, Serialize};
 
 /// What one stage module exposes. Stored in the build cache, so a rebuild needs no naga.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct StageReflection {
     /// The entry point's name.
     pub entry_point: String,
@@ -38,7 +38,7 @@ pub struct StageReflection {
 }
 
 /// One resource the module uses, where it is bound.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct BindingInfo {
     /// Its bind group.
     pub group: u32,

@@ -1,12 +1,11 @@
 //! The build's files: content-addressed packs of stage modules, the cache that lets an unchanged
 //! variant skip naga entirely, and atomic writes (a temporary file and a rename) for all of them.
 
-use crate::compile::bind::Declared;
+use super::pass_index::{CachedStage, PassIndex};
 use crate::manifest::FileRef;
-use crate::reflect::StageReflection;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
-use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::collections::{BTreeSet, HashMap};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -14,16 +13,6 @@ use std::path::{Path, PathBuf};
 pub fn hash(bytes: &[u8]) -> String {
     let digest = blake3::hash(bytes);
     digest.to_hex()[..32].to_string()
-}
-
-/// A pass's cache: the resources each stage text declares (by text hash), and each compiled stage
-/// module (by its full key).
-#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
-pub struct PassIndex {
-    /// The resources each stage text declares, by text hash, stage and entry point.
-    pub front: BTreeMap<String, Vec<Declared>>,
-    /// Each compiled stage module, by its content key.
-    pub stage: BTreeMap<String, CachedStage>,
 }
 
 /// The last clean build: its inputs' hash, its counts, the files it left (packs and the
@@ -50,24 +39,6 @@ pub struct Recorded {
     pub read: Vec<String>,
     /// Paths looked for in vain.
     pub absent: Vec<String>,
-}
-
-/// What the cache remembers of a compiled stage module.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct CachedStage {
-    /// Its WGSL, in a pack.
-    pub wgsl: Option<FileRef>,
-    /// Its SPIR-V, in a pack.
-    pub spirv: Option<FileRef>,
-    /// Its reflection.
-    pub reflection: StageReflection,
-}
-
-impl CachedStage {
-    /// Its modules, one per backend written.
-    pub fn files(&self) -> impl Iterator<Item = &FileRef> {
-        [&self.wgsl, &self.spirv].into_iter().flatten()
-    }
 }
 
 /// An output folder's cache and packs.

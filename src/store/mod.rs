@@ -3,9 +3,11 @@
 //! and verified on read, so damage costs a recompile, never a wrong module.
 
 mod cache;
+mod pass_index;
 pub mod shared;
 
 pub use cache::{
-    Cache, CachedStage, Digest, Hashed, ModuleBytes, PassIndex, Recorded, Staged, hash, link_or_copy,
-    pass_index_path, sealed, stage, unsealed, write_atomically,
+    Cache, Digest, Hashed, ModuleBytes, Recorded, Staged, hash, link_or_copy, pass_index_path, sealed, stage,
+    unsealed, write_atomically,
 };
+pub use pass_index::{CachedStage, PassIndex};

@@ -1,0 +1,211 @@
+//! A pass's cache entry: what a pass's stage texts declare and where its compiled modules are,
+//! kept on disk with what its stages share written once.
+
+use crate::compile::bind::Declared;
+use crate::manifest::FileRef;
+use crate::reflect::StageReflection;
+use serde::{Deserialize, Serialize};
+use std::borrow::Cow;
+use std::collections::{BTreeMap, HashMap};
+
+/// A pass's cache: the resources each stage text declares (by text hash), and each compiled stage
+/// module (by its full key). Kept on disk in a form of its own, `StoredPassIndex`.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct PassIndex {
+    /// The resources each stage text declares, by text hash, stage and entry point.
+    pub front: BTreeMap<String, Vec<Declared>>,
+    /// Each compiled stage module, by its content key.
+    pub stage: BTreeMap<String, CachedStage>,
+}
+
+/// A [`PassIndex`] on disk: each distinct list of declarations, reflection and pack once, and
+/// every entry naming its own by number. The stages of a pass mostly share all three; written
+/// out per stage, they made the pass indexes eight times the manifest's size.
+#[derive(Serialize, Deserialize)]
+struct StoredPassIndex<'a> {
+    declarations: Vec<Cow<'a, [Declared]>>,
+    front: BTreeMap<Cow<'a, str>, usize>,
+    reflections: Vec<Cow<'a, StageReflection>>,
+    packs: Vec<Cow<'a, str>>,
+    stage: BTreeMap<Cow<'a, str>, StoredStage<'a>>,
+}
+
+#[derive(Serialize, Deserialize)]
+struct StoredStage<'a> {
+    wgsl: Option<StoredFile<'a>>,
+    spirv: Option<StoredFile<'a>>,
+    reflection: usize,
+}
+
+/// A [`FileRef`] whose pack is a number.
+#[derive(Serialize, Deserialize)]
+struct StoredFile<'a> {
+    pack: usize,
+    offset: u64,
+    size: u64,
+    hash: Cow<'a, str>,
+}
+
+impl<'a> StoredFile<'a> {
+    fn of(file: &'a Option<FileRef>, packs: &mut Numbered<'a, str>) -> Option<StoredFile<'a>> {
+        file.as_ref().map(|f| StoredFile {
+            pack: packs.number(f.path.as_str()),
+            offset: f.offset,
+            size: f.size,
+            hash: Cow::from(f.hash.as_str()),
+        })
+    }
+}
+
+/// Distinct values, numbered in the order first met.
+struct Numbered<'a, T: ?Sized + ToOwned> {
+    values: Vec<Cow<'a, T>>,
+    numbers: HashMap<&'a T, usize>,
+}
+
+impl<'a, T: ?Sized + ToOwned + Eq + std::hash::Hash> Numbered<'a, T> {
+    fn new() -> Self {
+        Numbered { values: Vec::new(), numbers: HashMap::new() }
+    }
+
+    fn number(&mut self, value: &'a T) -> usize {
+        *self.numbers.entry(value).or_insert_with(|| {
+            self.values.push(Cow::Borrowed(value));
+            self.values.len() - 1
+        })
+    }
+}
+
+/// The value numbered `n`, owned; a number with no value is damage.
+fn numbered<T: ?Sized + ToOwned, E: serde::de::Error>(values: &[Cow<T>], n: usize) -> Result<T::Owned, E> {
+    let value = values.get(n).ok_or_else(|| E::custom(format!("nothing numbered {n}")))?;
+    Ok(value.clone().into_owned())
+}
+
+impl Serialize for PassIndex {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let (mut declarations, mut reflections, mut packs) =
+            (Numbered::new(), Numbered::new(), Numbered::new());
+        let front =
+            self.front.iter().map(|(key, d)| (Cow::from(key.as_str()), declarations.number(d.as_slice())));
+        let front = front.collect();
+        let stage = self.stage.iter().map(|(key, stage)| {
+            let (wgsl, spirv) =
+                (StoredFile::of(&stage.wgsl, &mut packs), StoredFile::of(&stage.spirv, &mut packs));
+            (
+                Cow::from(key.as_str()),
+                StoredStage { wgsl, spirv, reflection: reflections.number(&stage.reflection) },
+            )
+        });
+        let stage = stage.collect();
+        let (declarations, reflections, packs) = (declarations.values, reflections.values, packs.values);
+        StoredPassIndex { declarations, front, reflections, packs, stage }.serialize(serializer)
+    }
+}
+
+impl<'de> Deserialize<'de> for PassIndex {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let stored = StoredPassIndex::deserialize(deserializer)?;
+        let front = stored
+            .front
+            .into_iter()
+            .map(|(key, n)| Ok((key.into_owned(), numbered(&stored.declarations, n)?)));
+        let file = |file: Option<StoredFile>| {
+            let Some(f) = file else { return Ok(None) };
+            let path = numbered(&stored.packs, f.pack)?;
+            Ok(Some(FileRef { path, offset: f.offset, size: f.size, hash: f.hash.into_owned() }))
+        };
+        let stage = stored.stage.into_iter().map(|(key, stage)| {
+            let (wgsl, spirv) = (file(stage.wgsl)?, file(stage.spirv)?);
+            let reflection = numbered(&stored.reflections, stage.reflection)?;
+            Ok((key.into_owned(), CachedStage { wgsl, spirv, reflection }))
+        });
+        let front = front.collect::<Result<_, D::Error>>()?;
+        Ok(PassIndex { front, stage: stage.collect::<Result<_, D::Error>>()? })
+    }
+}
+
+/// What the cache remembers of a compiled stage module.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CachedStage {
+    /// Its WGSL, in a pack.
+    pub wgsl: Option<FileRef>,
+    /// Its SPIR-V, in a pack.
+    pub spirv: Option<FileRef>,
+    /// Its reflection.
+    pub reflection: StageReflection,
+}
+
+impl CachedStage {
+    /// Its modules, one per backend written.
+    pub fn files(&self) -> impl Iterator<Item = &FileRef> {
+        [&self.wgsl, &self.spirv].into_iter().flatten()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn reflection(entry_point: &str) -> StageReflection {
+        let json = serde_json::json!({
+            "entry_point": entry_point, "inputs": [], "outputs": [], "bindings": [], "uniform_blocks": []
+        });
+        serde_json::from_value(json).expect("a reflection")
+    }
+
+    fn file(pack: &str, offset: u64) -> Option<FileRef> {
+        Some(FileRef { path: pack.to_string(), offset, size: 10, hash: format!("{offset:032}") })
+    }
+
+    fn declared(name: &str) -> Vec<Declared> {
+        vec![Declared { name: name.to_string(), explicit: None, range: (3, 9) }]
+    }
+
+    fn stage(offset: u64, reflection: StageReflection) -> CachedStage {
+        CachedStage {
+            wgsl: file("modules/a.wgsl.pack", offset),
+            spirv: file("modules/a.spv.pack", offset),
+            reflection,
+        }
+    }
+
+    /// Three stages, two of them sharing a reflection, all sharing their packs; three texts, two
+    /// declaring the same.
+    fn index() -> PassIndex {
+        let front =
+            [("t1", declared("UnityPerFrame")), ("t2", declared("UnityPerFrame")), ("t3", declared("_Own"))];
+        let stages = [
+            ("k1", stage(0, reflection("SharedEntry"))),
+            ("k2", stage(10, reflection("SharedEntry"))),
+            ("k3", stage(20, reflection("OwnEntry"))),
+        ];
+        PassIndex {
+            front: front.into_iter().map(|(k, v)| (k.to_string(), v)).collect(),
+            stage: stages.into_iter().map(|(k, v)| (k.to_string(), v)).collect(),
+        }
+    }
+
+    #[test]
+    fn a_pass_index_keeps_what_its_stages_share_once_and_reads_back_whole() {
+        let index = index();
+        let json = serde_json::to_string(&index).expect("serializes");
+        for once in ["SharedEntry", "OwnEntry", "UnityPerFrame", "modules/a.wgsl.pack", "modules/a.spv.pack"]
+        {
+            assert_eq!(json.matches(once).count(), 1, "{once} in {json}");
+        }
+        assert_eq!(serde_json::from_str::<PassIndex>(&json).expect("reads back"), index);
+    }
+
+    #[test]
+    fn a_pass_index_numbering_what_it_does_not_hold_is_refused() {
+        let json = serde_json::to_string(&index()).expect("serializes");
+        for (held, missing) in
+            [("\"reflection\":1", "\"reflection\":2"), ("\"pack\":1", "\"pack\":2"), ("\"t3\":1", "\"t3\":2")]
+        {
+            assert!(json.contains(held), "{held} in {json}");
+            let damaged = json.replace(held, missing);
+            assert!(serde_json::from_str::<PassIndex>(&damaged).is_err(), "{missing} refused");
+        }
+    }
+}
