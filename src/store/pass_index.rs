@@ -20,7 +20,7 @@ pub struct PassIndex {
 
 /// A [`PassIndex`] on disk: each distinct list of declarations, reflection and pack once, and
 /// every entry naming its own by number. The stages of a pass mostly share all three; written
-/// out per stage, they made the pass indexes eight times the manifest's size.
+/// out per stage, they made the pass indexes 7.5 times the manifest's size.
 #[derive(Serialize, Deserialize)]
 struct StoredPassIndex<'a> {
     declarations: Vec<Cow<'a, [Declared]>>,
