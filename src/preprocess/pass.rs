@@ -24,10 +24,7 @@ pub fn load_pass(
     store: &mut SourceStore,
     blocks: &[&ProgramBlock],
 ) -> (PassProgram, Vec<Diagnostic>) {
-    let (program, mut diagnostics) = load_blocks(includes, store, blocks);
-    let (pass, found) = finish_pass(includes, store, program);
-    diagnostics.extend(found);
-    (pass, diagnostics)
+    load_pass_text(includes, store, &body_spans(blocks))
 }
 
 /// The first half of [`load_pass`]: the blocks and everything they include, loaded (which adds
@@ -37,8 +34,11 @@ pub fn load_blocks(
     store: &mut SourceStore,
     blocks: &[&ProgramBlock],
 ) -> (Program, Vec<Diagnostic>) {
-    let spans: Vec<Span> = blocks.iter().map(|b| b.body_span).collect();
-    includes.load_program(store, &spans)
+    includes.load_program(store, &body_spans(blocks))
+}
+
+fn body_spans(blocks: &[&ProgramBlock]) -> Vec<Span> {
+    blocks.iter().map(|b| b.body_span).collect()
 }
 
 /// [`load_pass`] for program text that is no ShaderLab block (the accuracy harness).
