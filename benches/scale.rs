@@ -245,7 +245,7 @@ fn main() {
         let noop_memory = peak_mib();
         let manifest_bytes = std::fs::metadata(output.join("manifest.json")).expect("manifest").len();
         let manifest = kiln::manifest::Manifest::read(&output).expect("manifest");
-        let rust_bytes = kiln::codegen::generate(&manifest, "kiln").len();
+        let rust_bytes = kiln::codegen::generate(&manifest, "kiln").expect("names do not clash").len();
         drop(manifest);
         assert!(noops.iter().all(|(noop, _)| noop.compiled == 0));
         let noop_time = median(noops.into_iter().map(|(_, time)| time).collect());

@@ -5,7 +5,7 @@
 //! [`Build::run`] is the one place in the library that prints: to stdout, for cargo.
 
 use crate::build::BuildSummary;
-use crate::diagnostics::{self, Severity, render_plain};
+use crate::diagnostics::{self, Diagnostic, Severity, render_plain};
 use crate::manifest::{FILE_NAME, Manifest};
 use crate::project::{BuildMode, ProjectError, build_project};
 use crate::source::SourceStore;
@@ -172,10 +172,13 @@ impl Build {
         };
         let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
         problems.extend(result.diagnostics);
-        let mut cargo_lines: Vec<String> = watched(store.files_read(), store.searched(), &out_dir)
-            .iter()
-            .map(|path| format!("cargo:rerun-if-changed={}", path.display()))
-            .collect();
+        let mut cargo_lines = Vec::new();
+        for path in watched(store.files_read(), store.searched(), &out_dir) {
+            match rerun_if_changed(&path) {
+                Ok(line) => cargo_lines.push(line),
+                Err(refused) => problems.push(refused),
+            }
+        }
         for warning in problems.iter().filter(|d| d.severity == Severity::Warning) {
             // cargo shows one line per warning; the rendered form spans several.
             for line in
@@ -189,7 +192,7 @@ impl Build {
         }
         cargo_lines.extend(unoptimised_warning(result.summary.compiled, env!("KILN_OPT_LEVEL")));
         if let Some(prebuilt) = &self.prebuilt {
-            let from = prebuilt.display();
+            let from = prebuilt.display().to_string().escape_debug().to_string();
             cargo_lines.push(match result.summary.compiled {
                 0 => format!("cargo:warning=kiln: shaders from the prebuilt build in `{from}`: nothing compiled"),
                 n => format!(
@@ -204,7 +207,14 @@ impl Build {
                 .map_err(|source| BuildError::Read { path: output.join(FILE_NAME), source })?,
         };
         let module = out_dir.join("kiln_shaders.rs");
-        let text = crate::codegen::generate(&manifest, &relative_to(&output, &out_dir));
+        let text =
+            crate::codegen::generate(&manifest, &relative_to(&output, &out_dir)).map_err(|clashes| {
+                let clashes: Vec<_> = clashes.iter().map(|c| c.to_diagnostic()).collect();
+                BuildError::Diagnostics {
+                    rendered: render_plain(&store, &clashes),
+                    cargo_lines: cargo_lines.clone(),
+                }
+            })?;
         // Unchanged, it is not rewritten, so cargo has nothing to recompile.
         if std::fs::read(&module).ok().as_deref() != Some(text.as_bytes()) {
             crate::store::write_atomically(&module, text.as_bytes())
@@ -212,6 +222,22 @@ impl Build {
         }
         Ok(BuildOutput { module, manifest, summary: result.summary, cargo_lines })
     }
+}
+
+/// The line that has cargo watch `path`. Cargo's build-script protocol is one directive a line
+/// with no escapes, so a path with a line break (or any other control character) cannot be
+/// watched, and printing it would let the rest of its name speak to cargo: it is refused.
+fn rerun_if_changed(path: &Path) -> Result<String, Diagnostic> {
+    let text = path.to_string_lossy();
+    if text.contains(char::is_control) || matches!(text, std::borrow::Cow::Owned(_)) {
+        return Err(Diagnostic::error(
+            "K0420",
+            format!("cargo cannot watch `{}`: its name holds a control character or is not UTF-8", text.escape_debug()),
+        )
+        .note("a build script's lines to cargo have no escapes: a line break in a path would end its `cargo:rerun-if-changed` line and start another directive")
+        .help("rename the file or folder, or build it with the `kiln` command, which has no such limit"));
+    }
+    Ok(format!("cargo:rerun-if-changed={text}"))
 }
 
 /// What cargo should watch: every file the build read and every folder it searched (so that a

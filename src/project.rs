@@ -311,6 +311,22 @@ fn bind_group_names(
     diagnostics
 }
 
+/// A `kiln.toml` path that leads out of the project folder, at the place the file names it.
+fn outside_the_project(store: &SourceStore, file: FileId, folder: &Path) -> Diagnostic {
+    let written = folder.to_string_lossy();
+    let text = store.text(file);
+    let at = ['"', '\'']
+        .iter()
+        .find_map(|quote| text.find(&format!("{quote}{written}{quote}")))
+        .map_or(0..0, |at| at..at + written.len() + 2);
+    Diagnostic::error("K0011", format!("`{}` is outside the project", written.escape_debug()))
+        .at(Span::new(file, at), "this path leads out of the project folder")
+        .note(
+            "kiln reads a project's shaders, materials, includes and usage logs only from inside its folder",
+        )
+        .help("move or link the files into the project, or give the folder to kiln as a path of its own")
+}
+
 /// Gathers the shaders, materials and include settings of `paths` (see [`Workspace`]); a
 /// malformed `kiln.toml` is a diagnostic, its defaults used instead.
 pub fn open_workspace(
@@ -335,8 +351,10 @@ pub fn open_workspace(
             continue;
         }
         let config_path = path.join(crate::config::FILE_NAME);
+        let mut config_file = None;
         let config = if config_path.is_file() {
             let file = store.load(&config_path)?;
+            config_file = Some(file);
             diagnostics.extend(crate::diagnostics::text_warnings(store, file));
             let (config, problems) = crate::config::parse_config(store, file);
             diagnostics.extend(problems);
@@ -365,27 +383,39 @@ pub fn open_workspace(
         } else {
             ProjectConfig::default()
         };
-        let under = |folders: &[PathBuf]| -> Vec<PathBuf> {
-            folders.iter().map(|f| crate::source::normalize_lexically(&path.join(f))).collect()
+        // Every path the file names is confined to the project folder, as includes are: a
+        // project (one cloned from anywhere) must not make `kiln check` read and quote other files.
+        let root = std::fs::canonicalize(path).unwrap_or_else(|_| path.clone());
+        let mut under = |folders: &[PathBuf]| -> Vec<PathBuf> {
+            let mut inside = Vec::new();
+            for folder in folders {
+                let joined = crate::source::normalize_lexically(&path.join(folder));
+                let resolved = std::fs::canonicalize(&joined)
+                    .unwrap_or_else(|_| crate::source::normalize_lexically(&root.join(folder)));
+                if resolved.starts_with(&root) {
+                    inside.push(joined);
+                } else if let Some(file) = config_file {
+                    diagnostics.push(outside_the_project(store, file, folder));
+                }
+            }
+            inside
         };
-        workspace.shaders.extend(find_files(&under(&config.shaders), &SHADER_EXTENSIONS)?);
-        workspace.materials.extend(find_files(&under(&config.materials), &["mat"])?);
-        for folder in under(&config.shaders)
-            .into_iter()
-            .chain(under(&config.materials))
-            .chain(under(&config.include_paths))
-        {
-            store.record_searched(folder);
+        let (shader_folders, material_folders) = (under(&config.shaders), under(&config.materials));
+        let (include_folders, variant_logs) = (under(&config.include_paths), under(&config.variant_logs));
+        workspace.shaders.extend(find_files(&shader_folders, &SHADER_EXTENSIONS)?);
+        workspace.materials.extend(find_files(&material_folders, &["mat"])?);
+        for folder in shader_folders.iter().chain(&material_folders).chain(&include_folders) {
+            store.record_searched(folder.clone());
         }
         shader_sources += config.shaders.len();
         material_sources += config.materials.len();
-        include_paths.extend(under(&config.include_paths));
+        include_paths.extend(include_folders);
         if workspace.output.as_os_str().is_empty() {
             workspace.output = crate::source::normalize_lexically(&path.join(&config.output));
             workspace.backends = config.backends.clone();
         }
         workspace.always_include.extend(config.always_include);
-        workspace.variant_logs.extend(under(&config.variant_logs));
+        workspace.variant_logs.extend(variant_logs);
         if workspace.cache_dir.is_none() {
             workspace.cache_dir =
                 config.cache_dir.as_ref().map(|c| crate::source::normalize_lexically(&path.join(c)));

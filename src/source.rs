@@ -167,6 +167,9 @@ struct SourceFile {
     /// spaces of the same byte length, so that snippets never send a terminal a control code and
     /// every offset still points at the same place.
     display: Option<String>,
+    /// The name as diagnostics show it, when it holds control characters: escaped (`\n`), so a
+    /// file name cannot end a line of a log and forge the next.
+    display_name: Option<String>,
 }
 
 impl SourceFile {
@@ -178,7 +181,8 @@ impl SourceFile {
                 .map(|c| if shown_raw(c) { c.to_string() } else { " ".repeat(c.len_utf8()) })
                 .collect()
         });
-        SourceFile { name, path, text, line_starts, problems: Vec::new(), display }
+        let display_name = name.contains(char::is_control).then(|| name.escape_debug().to_string());
+        SourceFile { name, path, text, line_starts, problems: Vec::new(), display, display_name }
     }
 }
 
@@ -407,7 +411,7 @@ impl<'a> codespan_reporting::files::Files<'a> for SourceStore {
     fn name(&'a self, id: FileId) -> Result<&'a str, codespan_reporting::files::Error> {
         self.files
             .get(id.0 as usize)
-            .map(|f| f.name.as_str())
+            .map(|f| f.display_name.as_deref().unwrap_or(&f.name))
             .ok_or(codespan_reporting::files::Error::FileMissing)
     }
 

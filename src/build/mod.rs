@@ -44,6 +44,12 @@ const NAGA_VERSION: &str = "naga 30";
 /// same version filled is not taken for current.
 const COMPILER_REVISION: u32 = 3;
 
+/// What compiled a module, as the shared cache records it beside each object: kiln's version and
+/// revision and naga's.
+pub(crate) fn compiler_id() -> String {
+    format!("kiln {} revision {COMPILER_REVISION} {NAGA_VERSION}", env!("CARGO_PKG_VERSION"))
+}
+
 /// The most worker threads a build starts.
 pub const MAX_THREADS: usize = 1024;
 
@@ -239,13 +245,25 @@ pub fn merge(
     timed_in_pool(options, || merge::merge(store, options, shards, read))
 }
 
+/// The worker threads for a build asked for `requested` (`--threads`), else `RAYON_NUM_THREADS`,
+/// else one per core; never more than [`MAX_THREADS`]: far more threads than cores only costs
+/// memory, and a mistyped count, from either place, must not exhaust it.
+pub fn thread_count(requested: Option<usize>) -> usize {
+    let from_environment = || {
+        std::env::var("RAYON_NUM_THREADS")
+            .ok()
+            .and_then(|n| n.trim().parse::<usize>().ok())
+            .filter(|&n| n > 0)
+    };
+    let cores = || std::thread::available_parallelism().map_or(1, usize::from);
+    requested.filter(|&n| n > 0).or_else(from_environment).unwrap_or_else(cores).min(MAX_THREADS)
+}
+
 /// Runs `job` on a pool of `options.threads` (all cores by default; the global pool if one cannot
 /// be made), its summary timed.
 fn timed_in_pool(options: &BuildOptions, job: impl FnOnce() -> BuildResult + Send) -> BuildResult {
     let started = Instant::now();
-    // Far more threads than cores only costs memory; a mistyped count must not exhaust it.
-    let threads = options.threads.unwrap_or(0).min(MAX_THREADS);
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build();
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(thread_count(options.threads)).build();
     let mut result = match pool {
         Ok(pool) => pool.install(job),
         Err(_) => job(),

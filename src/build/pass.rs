@@ -154,7 +154,13 @@ pub(super) fn build_pass(
                     Built::Compiled(_) => {
                         compiled_count += 1;
                         if let Some(dir) = &options.cache_dir {
-                            shared::publish_object(dir, &key, &module.modules, &module.reflection);
+                            shared::publish_object(
+                                dir,
+                                &key,
+                                &super::compiler_id(),
+                                &module.modules,
+                                &module.reflection,
+                            );
                         }
                     }
                     Built::Shared(_) => shared += 1,

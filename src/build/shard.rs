@@ -149,7 +149,7 @@ impl ShardRecord {
         let path = folder.join(SHARD_FILE);
         let bytes = std::fs::read(&path)
             .map_err(|source| ShardError::NotShardOutput { folder: folder.to_path_buf(), source })?;
-        let Some(json) = unsealed(&bytes) else { return Err(ShardError::NotAsWritten { path }) };
+        let Some(json) = unsealed(SHARD_FILE, &bytes) else { return Err(ShardError::NotAsWritten { path }) };
         serde_json::from_slice(json).map_err(|source| ShardError::Damaged { path, source })
     }
 }
@@ -184,8 +184,8 @@ pub(super) fn finish(
             catalogue: parts.catalogue,
             materials: parts.materials,
         };
-        let written =
-            sealed(&record).and_then(|bytes| write_atomically(&options.output.join(SHARD_FILE), &bytes));
+        let written = sealed(SHARD_FILE, &record)
+            .and_then(|bytes| write_atomically(&options.output.join(SHARD_FILE), &bytes));
         if let Err(error) = written {
             diagnostics.push(write_failure(&options.output, error));
         }

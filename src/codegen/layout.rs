@@ -2,6 +2,7 @@
 //! them, and `const` assertions that their size and every member offset match naga's layout: if
 //! they ever disagree, the renderer does not compile.
 
+use super::names::{Case, Scope, doc_text, stem};
 use crate::manifest::ShaderManifest;
 use crate::reflect::Member;
 use std::fmt::Write as _;
@@ -42,12 +43,6 @@ fn array_element(wgsl: &str) -> Option<&str> {
     Some(inner.rsplit_once(',').map_or(inner, |(element, _)| element).trim())
 }
 
-fn field_name(name: &str) -> String {
-    const KEYWORDS: [&str; 12] =
-        ["type", "fn", "struct", "match", "loop", "move", "ref", "self", "mod", "use", "impl", "where"];
-    if KEYWORDS.contains(&name) { format!("r#{name}") } else { name.to_string() }
-}
-
 /// A WGSL struct type as laid out in one place: what makes two generated Rust structs one.
 #[derive(Clone, PartialEq)]
 struct StructLayout<'a> {
@@ -56,16 +51,19 @@ struct StructLayout<'a> {
     members: &'a [Member],
 }
 
-/// The Rust structs of one shader module: one per distinct WGSL struct layout, by name.
-#[derive(Default)]
-struct Structs<'a> {
+/// The Rust structs of one shader module: one per distinct WGSL struct layout, by name, each
+/// named in the shader module's namespace.
+struct Structs<'a, 's> {
     emitted: Vec<(String, StructLayout<'a>)>,
+    scope: &'s mut Scope,
+    /// The shader, for messages.
+    place: &'s str,
 }
 
 /// Emits one `#[repr(C)]` struct per distinct WGSL struct type the shader's uniform and storage
 /// blocks use (nested structs and array elements first), deduplicated by name and layout.
-pub(super) fn uniform_structs(out: &mut String, shader: &ShaderManifest) {
-    let mut structs = Structs::default();
+pub(super) fn uniform_structs(out: &mut String, shader: &ShaderManifest, scope: &mut Scope, place: &str) {
+    let mut structs = Structs { emitted: Vec::new(), scope, place };
     for block in shader.passes.iter().flat_map(|p| &p.uniform_blocks) {
         if let ([only], 0) = (block.members.as_slice(), block.size) {
             // A storage buffer that is one runtime-sized array: only its element needs a type.
@@ -76,7 +74,7 @@ pub(super) fn uniform_structs(out: &mut String, shader: &ShaderManifest) {
         let doc = format!(
             "The {} block `{}` ({} bytes, aligned to {}).",
             if block.storage { "storage" } else { "uniform" },
-            block.name,
+            doc_text(&block.name),
             block.size,
             block.alignment
         );
@@ -84,7 +82,7 @@ pub(super) fn uniform_structs(out: &mut String, shader: &ShaderManifest) {
     }
 }
 
-impl<'a> Structs<'a> {
+impl<'a> Structs<'a, '_> {
     /// The Rust name of a struct layout, emitting it (and what it uses) the first time.
     fn emit(&mut self, out: &mut String, layout: StructLayout<'a>, doc: &str) -> String {
         if let Some((name, _)) = self.emitted.iter().find(|(_, l)| *l == layout) {
@@ -92,25 +90,31 @@ impl<'a> Structs<'a> {
         }
         // A type laid out differently elsewhere (another variant's `#if`) gets its own name.
         let clashes = self.emitted.iter().filter(|(_, l)| l.type_name == layout.type_name).count();
-        let base = rust_identifier(layout.type_name);
-        let name = if clashes == 0 { base } else { format!("{base}_{clashes}") };
+        let place = format!("a WGSL struct of {}", self.place);
+        let base = self.scope.claim(layout.type_name, Case::AsIs, &place);
+        let name =
+            if clashes == 0 { base } else { self.scope.fresh(&format!("{}_", stem(&base)), Some(clashes)) };
         self.emitted.push((name.clone(), layout.clone()));
 
+        // Members first, so that padding takes names no member has.
+        let mut names = Scope::new(format!("struct `{name}`"), &[]);
+        let member_place = format!("a member of `{}` in {}", layout.type_name, self.place);
+        let fields_named: Vec<String> =
+            layout.members.iter().map(|m| names.claim(&m.name, Case::AsIs, &member_place)).collect();
         let mut fields = String::new();
         let mut helpers = String::new();
         let mut asserts = Vec::new();
         let mut cursor = 0;
         let mut pads = 0;
-        for member in layout.members {
-            let field = field_name(&member.name);
+        for (member, field) in layout.members.iter().zip(fields_named) {
             if member.array_stride.is_some() && member.array_length.is_none() {
                 // A runtime-sized array has no Rust field: the buffer continues past the struct.
                 let element = self.element_type(out, &name, member).map(|(rust, _)| rust);
                 let _ = writeln!(
                     fields,
                     "        // `{}`: {} from offset {}, stride {}{}: not a field (its length is the buffer's).",
-                    member.name,
-                    member.ty,
+                    doc_text(&member.name),
+                    doc_text(&member.ty),
                     member.offset,
                     member.array_stride.unwrap_or_default(),
                     element.map(|e| format!(", elements `{e}`")).unwrap_or_default()
@@ -118,15 +122,21 @@ impl<'a> Structs<'a> {
                 continue;
             }
             if member.offset > cursor {
-                let _ = writeln!(fields, "        pub _pad{pads}: [u8; {}],", member.offset - cursor);
+                let pad = names.fresh("_pad", Some(pads));
+                let _ = writeln!(fields, "        pub {pad}: [u8; {}],", member.offset - cursor);
                 pads += 1;
             }
             let (ty, why_opaque) = match self.member_type(out, &name, member, &mut helpers) {
                 Some(ty) => (ty, None),
                 None => (format!("[u8; {}]", member.size), Some("no Rust type has this layout exactly")),
             };
-            let _ =
-                writeln!(fields, "        /// `{}`: {} at offset {}.", member.name, member.ty, member.offset);
+            let _ = writeln!(
+                fields,
+                "        /// `{}`: {} at offset {}.",
+                doc_text(&member.name),
+                doc_text(&member.ty),
+                member.offset
+            );
             if let Some(why) = why_opaque {
                 let _ = writeln!(fields, "        /// Raw bytes: {why}.");
             }
@@ -135,18 +145,20 @@ impl<'a> Structs<'a> {
             cursor = member.offset + member.size;
         }
         if layout.size > cursor {
-            let _ = writeln!(fields, "        pub _pad{pads}: [u8; {}],", layout.size - cursor);
+            let pad = names.fresh("_pad", Some(pads));
+            let _ = writeln!(fields, "        pub {pad}: [u8; {}],", layout.size - cursor);
         }
+        self.scope.clashes.extend(names.clashes);
         out.push_str(&helpers);
         let _ = writeln!(out, "    /// {doc}");
         out.push_str(DERIVES);
         let _ = writeln!(out, "    pub struct {name} {{\n{fields}    }}");
         let _ =
-            writeln!(out, "    const _: () = assert!(core::mem::size_of::<{name}>() == {});", layout.size);
+            writeln!(out, "    const _: () = assert!(::core::mem::size_of::<{name}>() == {});", layout.size);
         for (field, offset) in asserts {
             let _ = writeln!(
                 out,
-                "    const _: () = assert!(core::mem::offset_of!({name}, {field}) == {offset});"
+                "    const _: () = assert!(::core::mem::offset_of!({name}, {field}) == {offset});"
             );
         }
         name
@@ -164,7 +176,7 @@ impl<'a> Structs<'a> {
             if !member.members.is_empty() {
                 let layout =
                     StructLayout { type_name: &member.ty, size: member.size, members: &member.members };
-                let doc = format!("The struct `{}` ({} bytes).", member.ty, member.size);
+                let doc = format!("The struct `{}` ({} bytes).", doc_text(&member.ty), member.size);
                 return Some(self.emit(out, layout, &doc));
             }
             return rust_type(&member.ty).filter(|(_, size)| *size == member.size).map(|(rust, _)| rust);
@@ -174,8 +186,15 @@ impl<'a> Structs<'a> {
             return Some(format!("[{rust}; {length}]"));
         }
         // An element shorter than its stride (`vec3` in an array): wrap it with its padding.
-        let wrapper = format!("{owner}_{}_Element", member.name);
-        let _ = writeln!(helpers, "    /// An element of `{owner}::{}`, padded to its stride.", member.name);
+        let wrapper = self.scope.fresh(
+            &format!("{}_{}_Element", stem(owner), stem(&super::names::mangle(&member.name, Case::AsIs))),
+            None,
+        );
+        let _ = writeln!(
+            helpers,
+            "    /// An element of `{owner}::{}`, padded to its stride.",
+            doc_text(&member.name)
+        );
         helpers.push_str(DERIVES);
         let _ = writeln!(
             helpers,
@@ -202,15 +221,14 @@ impl<'a> Structs<'a> {
         // A struct's size is a multiple of its alignment, so an array of structs has no gaps.
         let size = member.array_stride?;
         let layout = StructLayout { type_name: element, size, members: &member.members };
-        let doc = format!("The struct `{element}` ({size} bytes), an element of `{owner}::{}`.", member.name);
+        let doc = format!(
+            "The struct `{}` ({size} bytes), an element of `{owner}::{}`.",
+            doc_text(element),
+            doc_text(&member.name)
+        );
         Some((self.emit(out, layout, &doc), size))
     }
 }
 
 const DERIVES: &str =
-    "    #[repr(C)]\n    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]\n";
-
-/// A WGSL type name as a Rust type name (WGSL allows what Rust does, bar a leading `__`).
-fn rust_identifier(name: &str) -> String {
-    name.chars().map(|c| if c.is_alphanumeric() || c == '_' { c } else { '_' }).collect()
-}
+    "    #[repr(C)]\n    #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]\n";

@@ -9,9 +9,13 @@
 
 mod handles;
 mod layout;
+mod names;
+
+pub use names::NameClash;
 
 use crate::manifest::{Manifest, ModuleFile, PassManifest, ShaderManifest};
 use crate::reflect::Resource;
+use names::{Case, PRELUDE_NAMES, Scope, doc_text, string_literal};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -23,7 +27,7 @@ compile_error!("kiln embeds SPIR-V as little-endian words");
 /// derives `Pod` with its `min_const_generics` feature. Without it this names what to add:
 /// `bytemuck = { version = "1", features = ["derive", "min_const_generics"] }`.
 const _: fn() = || {
-    fn bytemuck_needs_its_min_const_generics_feature<T: bytemuck::Pod>() {}
+    fn bytemuck_needs_its_min_const_generics_feature<T: ::bytemuck::Pod>() {}
     bytemuck_needs_its_min_const_generics_feature::<[u8; 33]>();
 };
 
@@ -90,8 +94,8 @@ impl Variant {
     }
 }
 
-impl core::fmt::Debug for Variant {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+impl ::core::fmt::Debug for Variant {
+    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
         f.debug_struct("Variant")
             .field("shader", &self.pass.shader)
             .field("pass", &self.pass.index)
@@ -150,8 +154,8 @@ pub struct Pass {
     kernel_modules: &'static [u32],
 }
 
-impl core::fmt::Debug for Pass {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+impl ::core::fmt::Debug for Pass {
+    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
         f.debug_struct("Pass")
             .field("shader", &self.shader)
             .field("index", &self.index)
@@ -174,8 +178,8 @@ pub struct MissingVariant {
     pub built: Vec<Vec<&'static str>>,
 }
 
-impl core::fmt::Display for MissingVariant {
-    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+impl ::core::fmt::Display for MissingVariant {
+    fn fmt(&self, f: &mut ::core::fmt::Formatter<'_>) -> ::core::fmt::Result {
         const SHOWN: usize = 8;
         write!(f, "`{}` pass {} has no variant with keywords [{}]", self.shader, self.pass, self.requested.join(" "))?;
         if !self.undeclared.is_empty() {
@@ -190,7 +194,7 @@ impl core::fmt::Display for MissingVariant {
     }
 }
 
-impl std::error::Error for MissingVariant {}
+impl ::std::error::Error for MissingVariant {}
 
 #[allow(dead_code)]
 impl Pass {
@@ -210,9 +214,9 @@ impl Pass {
             while low < high {
                 let middle = (low + high) / 2;
                 match self.key(middle).cmp(&key[..]) {
-                    core::cmp::Ordering::Less => low = middle + 1,
-                    core::cmp::Ordering::Greater => high = middle,
-                    core::cmp::Ordering::Equal => return Ok(self.variant_at(middle)),
+                    ::core::cmp::Ordering::Less => low = middle + 1,
+                    ::core::cmp::Ordering::Greater => high = middle,
+                    ::core::cmp::Ordering::Equal => return Ok(self.variant_at(middle)),
                 }
             }
         }
@@ -258,7 +262,7 @@ impl Pass {
         };
         let spirv: &'static [u32] = match row[4] {
             NONE => &[],
-            pack => bytemuck::cast_slice(&SPIRV_PACKS[pack as usize].0[row[5] as usize..row[6] as usize]),
+            pack => ::bytemuck::cast_slice(&SPIRV_PACKS[pack as usize].0[row[5] as usize..row[6] as usize]),
         };
         Some(Stage {
             entry_point: interface.entry_point,
@@ -275,8 +279,9 @@ impl Pass {
 
 /// The generated module's text. `packs_folder` is the output folder as seen from the generated
 /// file's folder (`kiln` for `OUT_DIR/kiln`), so the module embeds packs by relative paths and
-/// stays the same wherever the build happens.
-pub fn generate(manifest: &Manifest, packs_folder: &str) -> String {
+/// stays the same wherever the build happens. Every name from the project enters the text through
+/// `names`; names that would become one identifier are refused, each clash once.
+pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<NameClash>> {
     let mut out = String::new();
     let _ = writeln!(
         out,
@@ -300,55 +305,47 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> String {
             *index = n as u32;
         }
     }
-    let include = |path: &str| format!("{packs_folder}/{path}");
+    let include = |path: &str| string_literal(&format!("{packs_folder}/{path}"));
     let _ = writeln!(out, "\n/// Every WGSL pack: a pass's compiled modules, concatenated.");
     let _ = writeln!(out, "static WGSL_PACKS: [&str; {}] = [", packs[0].len());
     for path in packs[0].keys() {
-        let _ = writeln!(out, "    include_str!({:?}),", include(path));
+        let _ = writeln!(out, "    include_str!({}),", include(path));
     }
     let _ = writeln!(out, "];\n\n/// Every SPIR-V pack, aligned so that its modules read as words.");
     let _ = writeln!(out, "static SPIRV_PACKS: [&Aligned<[u8]>; {}] = [", packs[1].len());
     for path in packs[1].keys() {
-        let _ = writeln!(out, "    &Aligned(*include_bytes!({:?})),", include(path));
+        let _ = writeln!(out, "    &Aligned(*include_bytes!({})),", include(path));
     }
     out.push_str("];\n");
     let _ = writeln!(
         out,
         "\n/// The build's manifest and materials, for `kiln::runtime::Library::embedded`.\n\
-         pub static MANIFEST_JSON: &str = include_str!({:?});\npub static MATERIALS_JSON: &str = include_str!({:?});",
+         pub static MANIFEST_JSON: &str = include_str!({});\npub static MATERIALS_JSON: &str = include_str!({});",
         include(crate::manifest::FILE_NAME),
         include(crate::manifest::MATERIALS_FILE)
     );
     let _ = writeln!(out, "\n/// Every pack by its path in the manifest.");
     let _ = writeln!(out, "pub static PACKS: [(&str, &[u8]); {}] = [", packs[0].len() + packs[1].len());
     for (n, path) in packs[0].keys().enumerate() {
-        let _ = writeln!(out, "    ({path:?}, WGSL_PACKS[{n}].as_bytes()),");
+        let _ = writeln!(out, "    ({}, WGSL_PACKS[{n}].as_bytes()),", string_literal(path));
     }
     for (n, path) in packs[1].keys().enumerate() {
-        let _ = writeln!(out, "    ({path:?}, &SPIRV_PACKS[{n}].0),");
+        let _ = writeln!(out, "    ({}, &SPIRV_PACKS[{n}].0),", string_literal(path));
     }
     out.push_str("];\n");
+    let mut top = Scope::new("the top level", PRELUDE_NAMES);
+    let mut clashes = Vec::new();
     for shader in &manifest.shaders {
-        shader_module(&mut out, shader, &packs);
+        let place = format!("shader `{}` in `{}`", shader.name, shader.file);
+        let module = top.claim(&shader.name, Case::Snake, &place);
+        clashes.extend(shader_module(&mut out, shader, &module, &packs));
     }
-    out
-}
-
-/// `Custom RP/Lit` becomes `custom_rp_lit`.
-pub fn module_name(shader: &str) -> String {
-    let mut name: String = shader
-        .chars()
-        .map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_lowercase() } else { '_' })
-        .collect();
-    while name.contains("__") {
-        name = name.replace("__", "_");
-    }
-    let name = name.trim_matches('_').to_string();
-    if name.is_empty() || name.starts_with(|c: char| c.is_ascii_digit()) {
-        format!("shader_{name}")
-    } else {
-        name
-    }
+    clashes.extend(top.clashes);
+    // Two names that clash as one item clash as the items made from it too (a kernel's constant
+    // and its workgroup size): said once.
+    let mut said = std::collections::HashSet::new();
+    clashes.retain(|c| said.insert((c.first.0.clone(), c.second.0.clone())));
+    if clashes.is_empty() { Ok(out) } else { Err(clashes) }
 }
 
 /// A variant as the generated module lists it: its key, its vertex and fragment modules, and a
@@ -358,36 +355,53 @@ type VariantRow<'a> = (Vec<u64>, [Option<usize>; 2], &'a [Option<usize>]);
 /// The generated module's pack numbers, WGSL and SPIR-V, by path.
 type PackNumbers<'a> = [BTreeMap<&'a str, u32>; 2];
 
-fn shader_module(out: &mut String, shader: &ShaderManifest, packs: &PackNumbers) {
-    let _ = writeln!(out, "\n/// `{}` ({})", shader.name, shader.file);
+/// A shader's module, named `module`; returns the names that clash inside it.
+fn shader_module(
+    out: &mut String,
+    shader: &ShaderManifest,
+    module: &str,
+    packs: &PackNumbers,
+) -> Vec<NameClash> {
+    let _ = writeln!(out, "\n/// `{}` ({})", doc_text(&shader.name), doc_text(&shader.file));
     let _ = writeln!(
         out,
         "#[allow(non_snake_case, non_camel_case_types, non_upper_case_globals, dead_code, clippy::all)]"
     );
-    let _ = writeln!(out, "pub mod {} {{", module_name(&shader.name));
-    let _ = writeln!(out, "    pub const NAME: &str = {:?};", shader.name);
-    handles::handles(out, shader);
+    let _ = writeln!(out, "pub mod {module} {{");
+    let _ = writeln!(out, "    pub const NAME: &str = {};", string_literal(&shader.name));
+    let place = format!("shader `{}` in `{}`", shader.name, shader.file);
+    let mut scope = Scope::new(format!("module `{module}`"), PRELUDE_NAMES);
     for pass in &shader.passes {
-        pass_static(out, pass, packs);
+        scope.reserve(&format!("PASS_{}", pass.index));
+        scope.reserve(&format!("Pass{}Overrides", pass.index));
     }
-    layout::uniform_structs(out, shader);
+    let mut clashes = handles::handles(out, shader, module, &mut scope, &place);
+    for pass in &shader.passes {
+        clashes.extend(pass_static(out, pass, packs, &mut scope, &place));
+    }
+    layout::uniform_structs(out, shader, &mut scope, &place);
+    clashes.extend(scope.clashes);
     out.push_str("}\n");
+    clashes
 }
 
-fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
-    let quoted = |names: &[String]| names.iter().map(|k| format!("{k:?}")).collect::<Vec<_>>().join(", ");
+fn pass_static(
+    out: &mut String,
+    pass: &PassManifest,
+    packs: &PackNumbers,
+    scope: &mut Scope,
+    place: &str,
+) -> Vec<NameClash> {
+    let quoted = |names: &[String]| names.iter().map(|k| string_literal(k)).collect::<Vec<_>>().join(", ");
     let _ = writeln!(
         out,
         "\n    /// Pass {}{}.",
         pass.index,
-        pass.name.as_ref().map(|n| format!(" `{n}`")).unwrap_or_default()
+        pass.name.as_ref().map(|n| format!(" `{}`", doc_text(n))).unwrap_or_default()
     );
     let _ = writeln!(out, "    pub static PASS_{}: super::Pass = super::Pass {{", pass.index);
-    let _ = writeln!(
-        out,
-        "        shader: NAME,\n        index: {},\n        name: {:?},",
-        pass.index, pass.name
-    );
+    let name = pass.name.as_ref().map_or("None".to_string(), |n| format!("Some({})", string_literal(n)));
+    let _ = writeln!(out, "        shader: NAME,\n        index: {},\n        name: {name},", pass.index);
     let _ = writeln!(out, "        keywords: &[{}],", quoted(&pass.keywords));
     let _ = writeln!(out, "        kernels: &[{}],", quoted(&pass.kernels));
     let dynamic: Vec<String> =
@@ -409,15 +423,16 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
                 }
                 Resource::Sampler { comparison } => format!("Sampler {{ comparison: {comparison} }}"),
                 Resource::Other { description } => {
-                    format!("Uniform {{ size: 0 }} /* unsupported: {description} */")
+                    let _ = writeln!(out, "            // Unsupported: {}.", doc_text(description));
+                    "Uniform { size: 0 }".to_string()
                 }
             };
             let _ = writeln!(
                 out,
-                "            super::BindingEntry {{ group: {}, binding: {}, name: {:?}, vertex: {}, fragment: {}, kind: super::BindingKind::{kind} }},",
+                "            super::BindingEntry {{ group: {}, binding: {}, name: {}, vertex: {}, fragment: {}, kind: super::BindingKind::{kind} }},",
                 group.group,
                 entry.binding,
-                entry.name,
+                string_literal(&entry.name),
                 entry.visibility.iter().any(|v| v == "vertex"),
                 entry.visibility.iter().any(|v| v == "fragment"),
             );
@@ -425,13 +440,17 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
     }
     out.push_str("        ],\n        interfaces: &[\n");
     let pairs = |attributes: &[crate::reflect::Attribute]| {
-        attributes.iter().map(|a| format!("({}, {:?})", a.location, a.format)).collect::<Vec<_>>().join(", ")
+        attributes
+            .iter()
+            .map(|a| format!("({}, {})", a.location, string_literal(&a.format)))
+            .collect::<Vec<_>>()
+            .join(", ")
     };
     for interface in &pass.interfaces {
         let _ = writeln!(
             out,
-            "            super::Interface {{ entry_point: {:?}, inputs: &[{}], outputs: &[{}], workgroup_size: {:?} }},",
-            interface.entry_point,
+            "            super::Interface {{ entry_point: {}, inputs: &[{}], outputs: &[{}], workgroup_size: {:?} }},",
+            string_literal(&interface.entry_point),
             pairs(&interface.inputs),
             pairs(&interface.outputs),
             interface.workgroup_size.unwrap_or_default()
@@ -487,13 +506,13 @@ fn pass_static(out: &mut String, pass: &PassManifest, packs: &PackNumbers) {
         let _ = writeln!(out, "            {},", modules.join(", "));
     }
     out.push_str("        ],\n    };\n");
-    handles::kernel_constants(out, pass);
-    overrides_struct(out, pass);
+    handles::kernel_constants(out, pass, scope, place);
+    overrides_struct(out, pass, place)
 }
 
 /// `PassNOverrides`: the pass's own `override` constants (its `dynamic_branch` keywords are set
 /// through keywords), typed, with their defaults, and the list a pipeline takes.
-fn overrides_struct(out: &mut String, pass: &PassManifest) {
+fn overrides_struct(out: &mut String, pass: &PassManifest, place: &str) -> Vec<NameClash> {
     let mut constants: Vec<&crate::manifest::OverrideConstant> = Vec::new();
     for constant in pass.interfaces.iter().flat_map(|i| &i.overrides) {
         if !pass.is_dynamic(&constant.name) && !constants.iter().any(|c| c.name == constant.name) {
@@ -501,7 +520,7 @@ fn overrides_struct(out: &mut String, pass: &PassManifest) {
         }
     }
     if constants.is_empty() {
-        return;
+        return Vec::new();
     }
     let rust_type = |ty: &str| match ty {
         "bool" => "bool",
@@ -509,9 +528,15 @@ fn overrides_struct(out: &mut String, pass: &PassManifest) {
         "u32" => "u32",
         _ => "f32",
     };
-    let field =
-        |name: &str| if RUST_KEYWORDS.contains(&name) { format!("r#{name}") } else { name.to_string() };
     let name = format!("Pass{}Overrides", pass.index);
+    let mut fields = Scope::new(format!("struct `{name}`"), &[]);
+    let names: Vec<String> = constants
+        .iter()
+        .map(|c| fields.claim(&c.name, Case::AsIs, &format!("an `override` of {place}")))
+        .collect();
+    let field = |c: &crate::manifest::OverrideConstant| {
+        names[constants.iter().position(|k| k.name == c.name).unwrap_or_default()].clone()
+    };
     let _ = writeln!(
         out,
         "\n    /// The `override` constants of pass {}'s modules (`f16` ones as `f32`), for\n    \
@@ -520,7 +545,7 @@ fn overrides_struct(out: &mut String, pass: &PassManifest) {
     );
     let _ = writeln!(out, "    #[derive(Debug, Clone, Copy, PartialEq)]\n    pub struct {name} {{");
     for c in &constants {
-        let _ = writeln!(out, "        pub {}: {},", field(&c.name), rust_type(&c.ty));
+        let _ = writeln!(out, "        pub {}: {},", field(c), rust_type(&c.ty));
     }
     out.push_str("    }\n");
     let literal = |c: &crate::manifest::OverrideConstant, value: f64| match c.ty.as_str() {
@@ -528,10 +553,8 @@ fn overrides_struct(out: &mut String, pass: &PassManifest) {
         "i32" | "u32" => format!("{value}"),
         _ => format!("{value:?}_f32"),
     };
-    let defaults: Option<Vec<String>> = constants
-        .iter()
-        .map(|c| c.default.map(|v| format!("{}: {}", field(&c.name), literal(c, v))))
-        .collect();
+    let defaults: Option<Vec<String>> =
+        constants.iter().map(|c| c.default.map(|v| format!("{}: {}", field(c), literal(c, v)))).collect();
     // Only constants that all have defaults make a `Default`: a required one must be chosen.
     if let Some(defaults) = defaults {
         let _ = writeln!(
@@ -544,10 +567,10 @@ fn overrides_struct(out: &mut String, pass: &PassManifest) {
         .iter()
         .map(|c| {
             let value = match c.ty.as_str() {
-                "bool" => format!("f64::from(u8::from(self.{}))", field(&c.name)),
-                _ => format!("f64::from(self.{})", field(&c.name)),
+                "bool" => format!("f64::from(u8::from(self.{}))", field(c)),
+                _ => format!("f64::from(self.{})", field(c)),
             };
-            format!("({:?}, {value})", c.key())
+            format!("({}, {value})", string_literal(&c.key()))
         })
         .collect();
     let _ = writeln!(
@@ -557,10 +580,5 @@ fn overrides_struct(out: &mut String, pass: &PassManifest) {
         values.len(),
         values.join(", ")
     );
+    fields.clashes
 }
-
-/// Rust's keywords, which a WGSL identifier may be: such a field is written as a raw identifier.
-const RUST_KEYWORDS: [&str; 20] = [
-    "as", "async", "await", "box", "crate", "dyn", "extern", "impl", "in", "match", "mod", "move", "mut",
-    "pub", "ref", "self", "static", "trait", "type", "where",
-];

@@ -340,9 +340,10 @@ fn resolve(
 /// The value a TOML value gives a property, or what was expected instead.
 fn property_value(property: &EntryProperty, value: &toml::Value) -> Result<MaterialValue, String> {
     use toml::Value as V;
+    // TOML's `inf` and `nan` are numbers no uniform block should get: refused where written.
     let number = |v: &V| match v {
         V::Integer(i) => Some(*i as f64),
-        V::Float(f) => Some(*f),
+        V::Float(f) if f.is_finite() => Some(*f),
         _ => None,
     };
     match property.ty {
@@ -360,11 +361,13 @@ fn property_value(property: &EntryProperty, value: &toml::Value) -> Result<Mater
                             let guess = closest(s, names.iter().copied())
                                 .map(|g| format!(" (did you mean `{g}`?)"))
                                 .unwrap_or_default();
-                            format!("a number or one of {}{guess}", crate::shaderlab::one_of(&names))
+                            format!("a finite number or one of {}{guess}", crate::shaderlab::one_of(&names))
                         }
-                        None => "a number".to_string(),
+                        None => "a finite number".to_string(),
                     }),
-                other => number(other).map(MaterialValue::Number).ok_or_else(|| "a number".to_string()),
+                other => {
+                    number(other).map(MaterialValue::Number).ok_or_else(|| "a finite number".to_string())
+                }
             }
         }
         PropertyType::Color | PropertyType::Vector => {
@@ -377,7 +380,7 @@ fn property_value(property: &EntryProperty, value: &toml::Value) -> Result<Mater
                     }
                     Ok(MaterialValue::Vector(c))
                 }
-                _ => Err(format!("an array of {} to 4 numbers", allowed.start())),
+                _ => Err(format!("an array of {} to 4 finite numbers", allowed.start())),
             }
         }
         PropertyType::Texture(_) => value

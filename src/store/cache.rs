@@ -64,14 +64,14 @@ impl Cache {
     /// no longer matches) is a miss, and the work is redone, never trusted.
     fn read<T: for<'de> Deserialize<'de>>(&self, kind: &str, key: &str) -> Option<T> {
         let bytes = std::fs::read(self.entry(kind, key)).ok()?;
-        serde_json::from_slice(unsealed(&bytes)?).ok()
+        serde_json::from_slice(unsealed(&entry_path(kind, key), &bytes)?).ok()
     }
 
     fn put<T: Serialize>(&self, kind: &str, key: &str, value: &T) -> std::io::Result<()> {
         if !self.write {
             return Ok(());
         }
-        write_atomically(&self.entry(kind, key), &sealed(value)?)
+        write_atomically(&self.entry(kind, key), &sealed(&entry_path(kind, key), value)?)
     }
 
     /// What the last build of a pass left: one file per pass, read once and written once, so
@@ -192,10 +192,6 @@ fn folder_made_for(path: &Path) -> std::io::Result<&Path> {
     Ok(folder)
 }
 
-/// Makes temporary names unique per write: two jobs may store the same content-addressed file
-/// at once.
-static WRITES: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-
 /// Writes through a temporary file in the same folder and a rename, so a reader never sees half a
 /// file and a failed or interrupted write leaves the old one.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
@@ -216,8 +212,7 @@ pub fn stage(
     path: &Path,
     write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
 ) -> std::io::Result<Staged> {
-    let staged = Staged::beside(path)?;
-    let file = std::fs::File::create(&staged.temporary)?;
+    let (staged, file) = Staged::beside(path)?;
     let mut buffered = std::io::BufWriter::new(file);
     write(&mut buffered)?;
     buffered.into_inner().map_err(std::io::IntoInnerError::into_error)?;
@@ -225,14 +220,28 @@ pub fn stage(
 }
 
 impl Staged {
-    /// A temporary name beside `path`, unique to this write (two jobs may store the same
-    /// content-addressed file at once), in a folder made if missing; nothing written there yet.
-    fn beside(path: &Path) -> std::io::Result<Staged> {
+    /// A new, empty temporary file beside `path`, in a folder made if missing. Its name is random
+    /// and it is created exclusively (`O_CREAT | O_EXCL`, which follows no symbolic link), so that
+    /// nobody who can write the folder (a shared cache) can plant a file or link where a write
+    /// will go; two jobs storing the same content-addressed file at once get two names.
+    fn beside(path: &Path) -> std::io::Result<(Staged, std::fs::File)> {
+        use std::hash::{BuildHasher, Hasher};
         let folder = folder_made_for(path)?;
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        let unique = WRITES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-        let temporary = folder.join(format!(".{name}.{}.{unique}.tmp", std::process::id()));
-        Ok(Staged { temporary, path: path.to_path_buf(), committed: false })
+        let mut tries = 0;
+        loop {
+            // `RandomState` is seeded from the system's randomness, anew for every hasher.
+            let mut hasher = std::collections::hash_map::RandomState::new().build_hasher();
+            hasher.write_u32(std::process::id());
+            let temporary = folder.join(format!(".{name}.{:016x}.tmp", hasher.finish()));
+            match std::fs::File::options().write(true).create_new(true).open(&temporary) {
+                Ok(file) => {
+                    return Ok((Staged { temporary, path: path.to_path_buf(), committed: false }, file));
+                }
+                Err(error) if error.kind() == std::io::ErrorKind::AlreadyExists && tries < 16 => tries += 1,
+                Err(error) => return Err(error),
+            }
+        }
     }
 
     /// Renames the new bytes into place, unless `keep`, shown the old file (if any), says no:
@@ -255,22 +264,32 @@ impl Drop for Staged {
     }
 }
 
-/// `value` as JSON after a line with the JSON's hash, so that a reader can tell the bytes from
-/// damaged ones that still parse ([`unsealed`]): cache entries, the shared cache's layouts, shard
-/// records.
-pub fn sealed<T: Serialize>(value: &T) -> std::io::Result<Vec<u8>> {
+/// The seal of `body` stored under `key`: a hash of both, so that bytes moved to another key (two
+/// entries swapped) fail it as damaged ones do.
+pub fn seal(key: &str, body: &[u8]) -> String {
+    let mut hasher = blake3::Hasher::new();
+    hasher.update(&(key.len() as u64).to_le_bytes());
+    hasher.update(key.as_bytes());
+    hasher.update(body);
+    hasher.finalize().to_hex()[..32].to_string()
+}
+
+/// `value` as JSON after a line with its [`seal`] under `key`, so that a reader can tell the
+/// bytes from damaged or misplaced ones that still parse ([`unsealed`]): cache entries, the shared
+/// cache's layouts, shard records.
+pub fn sealed<T: Serialize>(key: &str, value: &T) -> std::io::Result<Vec<u8>> {
     let json = serde_json::to_vec(value).map_err(std::io::Error::other)?;
-    let mut bytes = hash(&json).into_bytes();
+    let mut bytes = seal(key, &json).into_bytes();
     bytes.push(b'\n');
     bytes.extend(json);
     Ok(bytes)
 }
 
-/// The JSON of [`sealed`] bytes, if it is what was sealed.
-pub fn unsealed(bytes: &[u8]) -> Option<&[u8]> {
+/// The JSON of bytes [`sealed`] under `key`, if it is what was sealed there.
+pub fn unsealed<'a>(key: &str, bytes: &'a [u8]) -> Option<&'a [u8]> {
     let split = bytes.iter().position(|&b| b == b'\n')?;
     let (recorded, json) = (&bytes[..split], &bytes[split + 1..]);
-    (recorded == hash(json).as_bytes()).then_some(json)
+    (recorded == seal(key, json).as_bytes()).then_some(json)
 }
 
 /// A writer that only hashes and counts what it is given.
@@ -350,10 +369,17 @@ pub fn link_or_copy(from: &Path, to: &Path) -> std::io::Result<u64> {
     if existing.is_none() && folder_made_for(to).is_ok_and(|_| std::fs::hard_link(from, to).is_ok()) {
         return Ok(0);
     }
-    let staged = Staged::beside(to)?;
+    // The random name is the link's, or the copy's: both refuse a name that is there already,
+    // so neither goes through a file or link someone else made.
+    let (staged, file) = Staged::beside(to)?;
+    drop(file);
+    std::fs::remove_file(&staged.temporary)?;
     let copied = match std::fs::hard_link(from, &staged.temporary) {
         Ok(()) => 0,
-        Err(_) => std::fs::copy(from, &staged.temporary)?,
+        Err(_) => {
+            let mut file = std::fs::File::options().write(true).create_new(true).open(&staged.temporary)?;
+            std::io::copy(&mut std::fs::File::open(from)?, &mut file)?
+        }
     };
     staged.commit(|_| true)?;
     Ok(copied)

@@ -1,10 +1,13 @@
 //! The module cache builds share (`cache_dir`): stage modules as objects, one file per content
 //! key (a JSON line with the reflection and each backend's size and hash, then the bytes), and
 //! each pass's parsed resources, in a folder that builds, processes and machines use at once.
-//! Entries are published by a rename (never seen half written), verified on every read (a damaged
-//! one is a miss), and an entry's modification time is its last use, for `kiln cache gc`.
+//! Entries are published by a rename (never seen half written), sealed to their key (header,
+//! reflection and bytes under one hash with the key and the compiler inside) and verified on every
+//! read: a damaged, misplaced or other compiler's entry is a miss. An entry's modification time is
+//! its last use, for `kiln cache gc`. The trust model is in docs/security.md: whoever may write the
+//! folder is trusted as much as the build's own compiler.
 
-use super::cache::{ModuleBytes, hash, sealed, unsealed, write_atomically};
+use super::cache::{ModuleBytes, hash, seal, sealed, unsealed, write_atomically};
 use crate::compile::bind::Declared;
 use crate::reflect::StageReflection;
 use serde::{Deserialize, Serialize};
@@ -13,11 +16,14 @@ use std::path::{Path, PathBuf};
 /// Where objects are, in a shard's output folder or the shared cache.
 const OBJECTS: &str = "objects";
 
-/// A stage module as an object: one file per key, a JSON line (reflection, and each
-/// backend's size and hash) and then the modules' bytes. Written whole or not at all; a file
-/// whose bytes do not match their hashes is not a module.
+/// A stage module as an object: one file per key, a line with the [`seal`] of the rest under
+/// the key, a JSON line (the key, the compiler, the reflection, and each backend's size and hash)
+/// and then the modules' bytes. Written whole or not at all; a file whose seal, key or compiler
+/// does not match is not the module asked for.
 #[derive(Serialize, Deserialize)]
 struct ObjectHeader {
+    key: String,
+    compiler: String,
     reflection: StageReflection,
     modules: [Option<(u64, String)>; 2],
 }
@@ -29,27 +35,46 @@ fn object_path(folder: &Path, key: &str) -> PathBuf {
 fn write_object(
     folder: &Path,
     key: &str,
+    compiler: &str,
     modules: &[Option<ModuleBytes>; 2],
     reflection: &StageReflection,
 ) -> std::io::Result<u64> {
     let header = ObjectHeader {
+        key: key.to_string(),
+        compiler: compiler.to_string(),
         reflection: reflection.clone(),
         modules: [0, 1].map(|i| modules[i].as_ref().map(|m| (m.bytes.len() as u64, m.hash.clone()))),
     };
-    let mut bytes = serde_json::to_vec(&header).map_err(std::io::Error::other)?;
-    bytes.push(b'\n');
+    let mut body = serde_json::to_vec(&header).map_err(std::io::Error::other)?;
+    body.push(b'\n');
     for module in modules.iter().flatten() {
-        bytes.extend_from_slice(&module.bytes);
+        body.extend_from_slice(&module.bytes);
     }
+    let mut bytes = seal(key, &body).into_bytes();
+    bytes.push(b'\n');
+    bytes.extend(body);
     write_atomically(&object_path(folder, key), &bytes)?;
     Ok(bytes.len() as u64)
 }
 
-/// A stored module, or `None` when there is none or it is damaged.
-fn read_object(folder: &Path, key: &str) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
-    let bytes = std::fs::read(object_path(folder, key)).ok()?;
+/// A stored module, or `None` when there is none, or it is damaged, another key's or (given
+/// `compiler`) another compiler's.
+fn read_object(
+    folder: &Path,
+    key: &str,
+    compiler: Option<&str>,
+) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
+    let file = std::fs::read(object_path(folder, key)).ok()?;
+    let sealed_at = file.iter().position(|&b| b == b'\n')?;
+    let bytes = &file[sealed_at + 1..];
+    if file[..sealed_at] != *seal(key, bytes).as_bytes() {
+        return None;
+    }
     let split = bytes.iter().position(|&b| b == b'\n')?;
     let header: ObjectHeader = serde_json::from_slice(&bytes[..split]).ok()?;
+    if header.key != key || compiler.is_some_and(|c| c != header.compiler) {
+        return None;
+    }
     let mut at = split + 1;
     let mut modules: [Option<ModuleBytes>; 2] = [None, None];
     for (slot, entry) in header.modules.iter().enumerate() {
@@ -64,9 +89,14 @@ fn read_object(folder: &Path, key: &str) -> Option<([Option<ModuleBytes>; 2], St
     (at == bytes.len()).then_some((modules, header.reflection))
 }
 
-/// A module from the shared cache, marked as used now (for `kiln cache gc`), or `None`.
-pub fn fetch_object(folder: &Path, key: &str) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
-    let found = read_object(folder, key)?;
+/// A module from the shared cache, stored under `key` by `compiler` (kiln's version and revision,
+/// naga's), marked as used now (for `kiln cache gc`), or `None`.
+pub fn fetch_object(
+    folder: &Path,
+    key: &str,
+    compiler: &str,
+) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
+    let found = read_object(folder, key, Some(compiler))?;
     touch(&object_path(folder, key));
     Some(found)
 }
@@ -75,12 +105,14 @@ pub fn fetch_object(folder: &Path, key: &str) -> Option<([Option<ModuleBytes>; 2
 pub fn publish_object(
     folder: &Path,
     key: &str,
+    compiler: &str,
     modules: &[Option<ModuleBytes>; 2],
     reflection: &StageReflection,
 ) {
-    if !object_path(folder, key).is_file() {
+    // One there already is replaced only when it is not this key's (damaged, misplaced).
+    if read_object(folder, key, Some(compiler)).is_none() {
         // A cache that cannot be written only costs speed.
-        let _ = write_object(folder, key, modules, reflection);
+        let _ = write_object(folder, key, compiler, modules, reflection);
     }
 }
 
@@ -95,11 +127,16 @@ fn layouts_path(folder: &Path, pass: &str) -> PathBuf {
     folder.join("layouts").join(format!("{pass}.json"))
 }
 
+/// What a pass's layouts are sealed under.
+fn layouts_key(pass: &str) -> String {
+    format!("layouts/{pass}")
+}
+
 /// A pass's parsed resources from the shared cache (empty when there are none or they are
 /// damaged).
 pub fn read_layouts(folder: &Path, pass: &str) -> std::collections::BTreeMap<String, Vec<Declared>> {
     let path = layouts_path(folder, pass);
-    let read = || serde_json::from_slice(unsealed(&std::fs::read(&path).ok()?)?).ok();
+    let read = || serde_json::from_slice(unsealed(&layouts_key(pass), &std::fs::read(&path).ok()?)?).ok();
     let found = read().unwrap_or_default();
     touch(&path);
     found
@@ -121,7 +158,7 @@ pub fn publish_layouts(
     if all.len() == before && before > 0 {
         return;
     }
-    let Ok(bytes) = sealed(&all) else { return };
+    let Ok(bytes) = sealed(&layouts_key(pass), &all) else { return };
     let _ = write_atomically(&layouts_path(folder, pass), &bytes);
 }
 
@@ -134,7 +171,8 @@ pub struct CacheStats {
     pub layouts: usize,
     /// Bytes in all.
     pub bytes: u64,
-    /// Modules whose bytes no longer match their hashes (misses until gc removes them).
+    /// Modules that are not what their key names: bytes or header damaged, or moved from another
+    /// key (misses until gc removes them).
     pub damaged: usize,
 }
 
@@ -168,7 +206,7 @@ pub fn cache_stats(folder: &Path) -> std::io::Result<CacheStats> {
         if path.starts_with(folder.join(OBJECTS)) {
             stats.modules += 1;
             let key = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-            stats.damaged += usize::from(read_object(folder, &key).is_none());
+            stats.damaged += usize::from(read_object(folder, &key, None).is_none());
         } else {
             stats.layouts += 1;
         }
@@ -177,18 +215,30 @@ pub fn cache_stats(folder: &Path) -> std::io::Result<CacheStats> {
 }
 
 /// Removes damaged modules, then the least recently used entries until the cache holds at most
-/// `limit` bytes. Returns how many were removed and the bytes left. A build running meanwhile
-/// loses nothing but the entries' use: an entry gone is a miss, and it is compiled again.
+/// `limit` bytes. Returns how many were removed and the bytes left, counting only what was really
+/// removed; an entry that could not be removed (a read-only cache) is an error naming it, after the
+/// rest is done. A build running meanwhile loses nothing but the entries' use: an entry gone is a
+/// miss, and it is compiled again.
 pub fn cache_gc(folder: &Path, limit: u64) -> std::io::Result<(usize, u64)> {
     let mut all = entries(folder)?;
     let mut removed = 0;
+    let mut failed: Option<(PathBuf, std::io::Error)> = None;
+    let mut remove = |path: &Path| match std::fs::remove_file(path) {
+        Ok(()) => {
+            removed += 1;
+            true
+        }
+        // Another gc removed it first.
+        Err(error) if error.kind() == std::io::ErrorKind::NotFound => true,
+        Err(error) => {
+            failed.get_or_insert((path.to_path_buf(), error));
+            false
+        }
+    };
     all.retain(|(path, _, _)| {
         let key = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        let damaged = path.starts_with(folder.join(OBJECTS)) && read_object(folder, &key).is_none();
-        if damaged && std::fs::remove_file(path).is_ok() {
-            removed += 1;
-        }
-        !damaged
+        let damaged = path.starts_with(folder.join(OBJECTS)) && read_object(folder, &key, None).is_none();
+        !(damaged && remove(path))
     });
     all.sort_by_key(|(_, _, used)| *used);
     let mut total: u64 = all.iter().map(|(_, size, _)| size).sum();
@@ -196,13 +246,17 @@ pub fn cache_gc(folder: &Path, limit: u64) -> std::io::Result<(usize, u64)> {
         if total <= limit {
             break;
         }
-        // Another gc may have removed it first.
-        if std::fs::remove_file(&path).is_ok() {
-            removed += 1;
+        if remove(&path) {
+            total -= size;
         }
-        total -= size;
     }
-    Ok((removed, total))
+    match failed {
+        Some((path, error)) => Err(std::io::Error::new(
+            error.kind(),
+            format!("removed {removed} entries but not `{}` ({error}); {total} bytes left", path.display()),
+        )),
+        None => Ok((removed, total)),
+    }
 }
 
 /// `500M`, `2G`, `64K` or a number of bytes.

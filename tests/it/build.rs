@@ -298,10 +298,10 @@ fn the_generated_module_asserts_every_uniform_layout() {
     let module = std::fs::read_to_string(&output.module).expect("generated");
     for line in [
         "pub mod custom_rp_lit {",
-        "const _: () = assert!(core::mem::size_of::<CustomLight>() == 144);",
-        "const _: () = assert!(core::mem::offset_of!(CustomLight, _DirectionalLightCount) == 0);",
-        "const _: () = assert!(core::mem::offset_of!(CustomLight, _DirectionalLightColors) == 16);",
-        "const _: () = assert!(core::mem::offset_of!(CustomLight, _DirectionalLightDirections) == 80);",
+        "const _: () = assert!(::core::mem::size_of::<CustomLight>() == 144);",
+        "const _: () = assert!(::core::mem::offset_of!(CustomLight, _DirectionalLightCount) == 0);",
+        "const _: () = assert!(::core::mem::offset_of!(CustomLight, _DirectionalLightColors) == 16);",
+        "const _: () = assert!(::core::mem::offset_of!(CustomLight, _DirectionalLightDirections) == 80);",
         "pub _DirectionalLightColors: [[f32; 4]; 4],",
         "pub _pad0: [u8; 12],",
     ] {
@@ -370,7 +370,7 @@ fn nested_uniform_and_storage_blocks_are_reflected_and_generated_in_full() {
         light.iter().map(|m| (m.name.as_str(), m.offset)).collect::<Vec<_>>(),
         [("color", 0), ("intensity", 12), ("dir", 16)]
     );
-    let generated = kiln::codegen::generate(&manifest, "kiln");
+    let generated = kiln::codegen::generate(&manifest, "kiln").expect("names do not clash");
     let structs = &generated[generated.find("    /// The struct").expect("structs")..];
     expect_file![root().join("tests/golden/build/blocks.rs")].assert_eq(structs);
 

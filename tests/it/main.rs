@@ -12,6 +12,7 @@ mod cpp;
 mod docs;
 mod dynamic;
 mod gpu;
+mod hostile;
 mod integrity;
 mod layouts;
 mod list;

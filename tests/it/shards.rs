@@ -412,10 +412,10 @@ fn a_merge_that_cannot_link_a_pack_replaces_neither_manifest_nor_materials() {
 /// `shard.json`'s text with `edit` applied to its record and the record sealed again, as a shard
 /// that wrote the edited record would have written it.
 fn sealed_again(text: &str, edit: impl Fn(&str) -> String) -> String {
-    let record = kiln::store::unsealed(text.as_bytes()).expect("a sealed record");
+    let record = kiln::store::unsealed("shard.json", text.as_bytes()).expect("a sealed record");
     let edited = edit(std::str::from_utf8(record).expect("utf-8"));
     let raw = serde_json::value::RawValue::from_string(edited).expect("still JSON");
-    String::from_utf8(kiln::store::sealed(&raw).expect("sealed")).expect("utf-8")
+    String::from_utf8(kiln::store::sealed("shard.json", &raw).expect("sealed")).expect("utf-8")
 }
 
 /// The diagnostics of a run, without its closing summary line (which has timings).

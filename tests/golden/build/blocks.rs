@@ -1,6 +1,6 @@
     /// The struct `Inner` (32 bytes).
     #[repr(C)]
-    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+    #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Inner {
         /// `x`: f32 at offset 0.
         pub x: f32,
@@ -9,12 +9,12 @@
         pub y: [f32; 3],
         pub _pad1: [u8; 4],
     }
-    const _: () = assert!(core::mem::size_of::<Inner>() == 32);
-    const _: () = assert!(core::mem::offset_of!(Inner, x) == 0);
-    const _: () = assert!(core::mem::offset_of!(Inner, y) == 16);
+    const _: () = assert!(::core::mem::size_of::<Inner>() == 32);
+    const _: () = assert!(::core::mem::offset_of!(Inner, x) == 0);
+    const _: () = assert!(::core::mem::offset_of!(Inner, y) == 16);
     /// The struct `Light` (32 bytes), an element of `Block::lights`.
     #[repr(C)]
-    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+    #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Light {
         /// `color`: vec3<f32> at offset 0.
         pub color: [f32; 3],
@@ -24,20 +24,20 @@
         pub dir: [f32; 3],
         pub _pad0: [u8; 4],
     }
-    const _: () = assert!(core::mem::size_of::<Light>() == 32);
-    const _: () = assert!(core::mem::offset_of!(Light, color) == 0);
-    const _: () = assert!(core::mem::offset_of!(Light, intensity) == 12);
-    const _: () = assert!(core::mem::offset_of!(Light, dir) == 16);
+    const _: () = assert!(::core::mem::size_of::<Light>() == 32);
+    const _: () = assert!(::core::mem::offset_of!(Light, color) == 0);
+    const _: () = assert!(::core::mem::offset_of!(Light, intensity) == 12);
+    const _: () = assert!(::core::mem::offset_of!(Light, dir) == 16);
     /// An element of `Block::v3s`, padded to its stride.
     #[repr(C)]
-    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+    #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Block_v3s_Element {
         pub value: [f32; 3],
         pub _pad: [u8; 4],
     }
     /// The uniform block `blk` (336 bytes, aligned to 16).
     #[repr(C)]
-    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+    #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Block {
         /// `a`: vec3<f32> at offset 0.
         pub a: [f32; 3],
@@ -60,19 +60,19 @@
         /// `v3s`: array<vec3<f32>, 2> at offset 304.
         pub v3s: [Block_v3s_Element; 2],
     }
-    const _: () = assert!(core::mem::size_of::<Block>() == 336);
-    const _: () = assert!(core::mem::offset_of!(Block, a) == 0);
-    const _: () = assert!(core::mem::offset_of!(Block, b) == 12);
-    const _: () = assert!(core::mem::offset_of!(Block, c) == 16);
-    const _: () = assert!(core::mem::offset_of!(Block, d) == 64);
-    const _: () = assert!(core::mem::offset_of!(Block, e) == 112);
-    const _: () = assert!(core::mem::offset_of!(Block, f) == 128);
-    const _: () = assert!(core::mem::offset_of!(Block, g) == 160);
-    const _: () = assert!(core::mem::offset_of!(Block, lights) == 176);
-    const _: () = assert!(core::mem::offset_of!(Block, v3s) == 304);
+    const _: () = assert!(::core::mem::size_of::<Block>() == 336);
+    const _: () = assert!(::core::mem::offset_of!(Block, a) == 0);
+    const _: () = assert!(::core::mem::offset_of!(Block, b) == 12);
+    const _: () = assert!(::core::mem::offset_of!(Block, c) == 16);
+    const _: () = assert!(::core::mem::offset_of!(Block, d) == 64);
+    const _: () = assert!(::core::mem::offset_of!(Block, e) == 112);
+    const _: () = assert!(::core::mem::offset_of!(Block, f) == 128);
+    const _: () = assert!(::core::mem::offset_of!(Block, g) == 160);
+    const _: () = assert!(::core::mem::offset_of!(Block, lights) == 176);
+    const _: () = assert!(::core::mem::offset_of!(Block, v3s) == 304);
     /// The struct `Cascade` (80 bytes), an element of `Shadow::cascades`.
     #[repr(C)]
-    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+    #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Cascade {
         /// `view_proj`: mat4x4<f32> at offset 0.
         pub view_proj: [[f32; 4]; 4],
@@ -83,14 +83,14 @@
         /// `flags`: i32 at offset 76.
         pub flags: i32,
     }
-    const _: () = assert!(core::mem::size_of::<Cascade>() == 80);
-    const _: () = assert!(core::mem::offset_of!(Cascade, view_proj) == 0);
-    const _: () = assert!(core::mem::offset_of!(Cascade, split) == 64);
-    const _: () = assert!(core::mem::offset_of!(Cascade, index) == 72);
-    const _: () = assert!(core::mem::offset_of!(Cascade, flags) == 76);
+    const _: () = assert!(::core::mem::size_of::<Cascade>() == 80);
+    const _: () = assert!(::core::mem::offset_of!(Cascade, view_proj) == 0);
+    const _: () = assert!(::core::mem::offset_of!(Cascade, split) == 64);
+    const _: () = assert!(::core::mem::offset_of!(Cascade, index) == 72);
+    const _: () = assert!(::core::mem::offset_of!(Cascade, flags) == 76);
     /// The uniform block `shadow` (224 bytes, aligned to 16).
     #[repr(C)]
-    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+    #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Shadow {
         /// `uv`: mat2x2<f32> at offset 0.
         pub uv: [[f32; 2]; 2],
@@ -103,15 +103,15 @@
         /// `inner`: Inner at offset 192.
         pub inner: Inner,
     }
-    const _: () = assert!(core::mem::size_of::<Shadow>() == 224);
-    const _: () = assert!(core::mem::offset_of!(Shadow, uv) == 0);
-    const _: () = assert!(core::mem::offset_of!(Shadow, cascades) == 16);
-    const _: () = assert!(core::mem::offset_of!(Shadow, counts) == 176);
-    const _: () = assert!(core::mem::offset_of!(Shadow, bias) == 188);
-    const _: () = assert!(core::mem::offset_of!(Shadow, inner) == 192);
+    const _: () = assert!(::core::mem::size_of::<Shadow>() == 224);
+    const _: () = assert!(::core::mem::offset_of!(Shadow, uv) == 0);
+    const _: () = assert!(::core::mem::offset_of!(Shadow, cascades) == 16);
+    const _: () = assert!(::core::mem::offset_of!(Shadow, counts) == 176);
+    const _: () = assert!(::core::mem::offset_of!(Shadow, bias) == 188);
+    const _: () = assert!(::core::mem::offset_of!(Shadow, inner) == 192);
     /// The struct `Particle` (32 bytes), an element of `Particles::items`.
     #[repr(C)]
-    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+    #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Particle {
         /// `position`: vec3<f32> at offset 0.
         pub position: [f32; 3],
@@ -121,13 +121,13 @@
         pub velocity: [f32; 3],
         pub _pad0: [u8; 4],
     }
-    const _: () = assert!(core::mem::size_of::<Particle>() == 32);
-    const _: () = assert!(core::mem::offset_of!(Particle, position) == 0);
-    const _: () = assert!(core::mem::offset_of!(Particle, age) == 12);
-    const _: () = assert!(core::mem::offset_of!(Particle, velocity) == 16);
+    const _: () = assert!(::core::mem::size_of::<Particle>() == 32);
+    const _: () = assert!(::core::mem::offset_of!(Particle, position) == 0);
+    const _: () = assert!(::core::mem::offset_of!(Particle, age) == 12);
+    const _: () = assert!(::core::mem::offset_of!(Particle, velocity) == 16);
     /// The storage block `particles` (16 bytes, aligned to 16).
     #[repr(C)]
-    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+    #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Particles {
         /// `count`: u32 at offset 0.
         pub count: u32,
@@ -136,9 +136,9 @@
         pub scale: [f32; 2],
         // `items`: array<Particle> from offset 16, stride 32, elements `Particle`: not a field (its length is the buffer's).
     }
-    const _: () = assert!(core::mem::size_of::<Particles>() == 16);
-    const _: () = assert!(core::mem::offset_of!(Particles, count) == 0);
-    const _: () = assert!(core::mem::offset_of!(Particles, scale) == 8);
+    const _: () = assert!(::core::mem::size_of::<Particles>() == 16);
+    const _: () = assert!(::core::mem::offset_of!(Particles, count) == 0);
+    const _: () = assert!(::core::mem::offset_of!(Particles, scale) == 8);
 }
 
 /// `Test/HalfBlocks` (HalfBlocks.shader)
@@ -176,7 +176,7 @@ pub mod test_halfblocks {
     };
     /// The struct `HalfPair` (16 bytes).
     #[repr(C)]
-    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+    #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct HalfPair {
         /// `a`: f16 at offset 0.
         pub a: u16,
@@ -185,12 +185,12 @@ pub mod test_halfblocks {
         pub b: [u16; 3],
         pub _pad1: [u8; 2],
     }
-    const _: () = assert!(core::mem::size_of::<HalfPair>() == 16);
-    const _: () = assert!(core::mem::offset_of!(HalfPair, a) == 0);
-    const _: () = assert!(core::mem::offset_of!(HalfPair, b) == 8);
+    const _: () = assert!(::core::mem::size_of::<HalfPair>() == 16);
+    const _: () = assert!(::core::mem::offset_of!(HalfPair, a) == 0);
+    const _: () = assert!(::core::mem::offset_of!(HalfPair, b) == 8);
     /// The uniform block `halves` (56 bytes, aligned to 8).
     #[repr(C)]
-    #[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+    #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Halves {
         /// `h`: f16 at offset 0.
         pub h: u16,
@@ -211,12 +211,12 @@ pub mod test_halfblocks {
         pub last: u16,
         pub _pad3: [u8; 6],
     }
-    const _: () = assert!(core::mem::size_of::<Halves>() == 56);
-    const _: () = assert!(core::mem::offset_of!(Halves, h) == 0);
-    const _: () = assert!(core::mem::offset_of!(Halves, v2) == 4);
-    const _: () = assert!(core::mem::offset_of!(Halves, v3) == 8);
-    const _: () = assert!(core::mem::offset_of!(Halves, v4) == 16);
-    const _: () = assert!(core::mem::offset_of!(Halves, tail) == 24);
-    const _: () = assert!(core::mem::offset_of!(Halves, pair) == 32);
-    const _: () = assert!(core::mem::offset_of!(Halves, last) == 48);
+    const _: () = assert!(::core::mem::size_of::<Halves>() == 56);
+    const _: () = assert!(::core::mem::offset_of!(Halves, h) == 0);
+    const _: () = assert!(::core::mem::offset_of!(Halves, v2) == 4);
+    const _: () = assert!(::core::mem::offset_of!(Halves, v3) == 8);
+    const _: () = assert!(::core::mem::offset_of!(Halves, v4) == 16);
+    const _: () = assert!(::core::mem::offset_of!(Halves, tail) == 24);
+    const _: () = assert!(::core::mem::offset_of!(Halves, pair) == 32);
+    const _: () = assert!(::core::mem::offset_of!(Halves, last) == 48);
 }
