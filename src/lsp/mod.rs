@@ -12,6 +12,7 @@ mod complete;
 mod navigate;
 mod publish;
 mod text;
+mod transport;
 mod variants;
 
 use analysis::{Analysis, Caches, project_of, write_library};
@@ -54,11 +55,13 @@ pub const COMMANDS: [&str; 2] = ["kiln.nextVariant", "kiln.selectVariant"];
 
 /// Serves one client on stdin and stdout until it sends `exit`.
 pub fn serve_stdio(options: &ServerOptions) -> Result<(), LspError> {
-    let (connection, threads) = Connection::stdio();
-    serve(&connection, options)?;
+    let (connection, threads) = transport::stdio();
+    let served = serve(&connection, options);
     drop(connection);
+    // A message the transport refused ends the session: that is the reason to give, not the
+    // disconnection the server saw.
     threads.join()?;
-    Ok(())
+    served
 }
 
 /// Serves one client on `connection` (stdio, or in memory for tests and fuzzing) until `exit`.

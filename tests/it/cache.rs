@@ -193,3 +193,131 @@ fn the_cache_folder_comes_from_the_flag_the_environment_or_kiln_toml() {
     assert_eq!(env.status.code(), Some(0), "{}", String::from_utf8_lossy(&env.stderr));
     assert_eq!(bytes(&stats(&from_flag)), 0);
 }
+
+/// Every object of the shared cache, as (path, bytes), in path order.
+fn objects(cache: &Path) -> Vec<(PathBuf, Vec<u8>)> {
+    let mut found: Vec<(PathBuf, Vec<u8>)> = walkdir::WalkDir::new(cache.join("objects"))
+        .into_iter()
+        .map(|e| e.expect("walk"))
+        .filter(|e| e.file_type().is_file())
+        .map(|e| (e.path().to_path_buf(), std::fs::read(e.path()).expect("read")))
+        .collect();
+    found.sort();
+    found
+}
+
+#[test]
+fn swapped_or_edited_objects_are_misses_that_stats_counts_never_shipped() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (project, cache) = (dir.path().join("project"), dir.path().join("cache"));
+    synthetic_project(&project, 8);
+    let first = dir.path().join("first");
+    finished(build(&project, &first, Some(&cache)).output().expect("kiln runs"));
+    let all = objects(&cache);
+    assert!(all.len() >= 3, "{} objects", all.len());
+
+    // Two whole, valid objects of one project swapped: each is the other key's.
+    let (a, b) = (&all[0], &all[1]);
+    std::fs::write(&a.0, &b.1).expect("swap");
+    std::fs::write(&b.0, &a.1).expect("swap");
+    // One digit of a uniform member's offset edited in a third object's header: its modules'
+    // bytes and their hashes are untouched.
+    let (c_path, c_bytes) = &all[2];
+    let text = String::from_utf8_lossy(c_bytes).into_owned();
+    let at = text.find("\"offset\":").expect("a member offset in the header") + "\"offset\":".len();
+    let digit = text.as_bytes()[at];
+    let mut edited = c_bytes.clone();
+    edited[at] = if digit == b'9' { b'8' } else { digit + 1 };
+    std::fs::write(c_path, &edited).expect("edit");
+    assert!(stats(&cache).contains("3 damaged"), "{}", stats(&cache));
+
+    let again = dir.path().join("again");
+    let summary = finished(build(&project, &again, Some(&cache)).output().expect("kiln runs"));
+    assert_eq!(compiled(&summary), 3, "the three are compiled again, none reused: {summary}");
+    assert_eq!(tree(&again), tree(&first), "what ships is a clean build's");
+    assert!(!stats(&cache).contains("damaged"), "rewritten: {}", stats(&cache));
+}
+
+#[cfg(unix)]
+#[test]
+fn links_planted_in_the_cache_are_replaced_never_written_through() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (project, cache) = (dir.path().join("project"), dir.path().join("cache"));
+    synthetic_project(&project, 8);
+    finished(build(&project, &dir.path().join("first"), Some(&cache)).output().expect("kiln runs"));
+    // Another user of the cache replaces every object with a link to a file of the victim's.
+    let victim = dir.path().join("victim.txt");
+    std::fs::write(&victim, "the victim's file\n").expect("write");
+    let planted = objects(&cache);
+    for (path, _) in &planted {
+        std::fs::remove_file(path).expect("remove");
+        std::os::unix::fs::symlink(&victim, path).expect("link");
+    }
+    let summary =
+        finished(build(&project, &dir.path().join("again"), Some(&cache)).output().expect("kiln runs"));
+    assert_eq!(compiled(&summary), planted.len(), "{summary}");
+    assert_eq!(std::fs::read_to_string(&victim).expect("read"), "the victim's file\n");
+    for (path, _) in &planted {
+        assert!(!std::fs::symlink_metadata(path).expect("there").is_symlink(), "{} replaced", path.display());
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn gc_of_a_cache_it_cannot_change_fails_and_says_what_is_left() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (project, cache) = (dir.path().join("project"), dir.path().join("cache"));
+    synthetic_project(&project, 4);
+    finished(build(&project, &dir.path().join("first"), Some(&cache)).output().expect("kiln runs"));
+    let before = objects(&cache).len();
+    let folders: Vec<PathBuf> = std::iter::once(dir.path().to_path_buf())
+        .chain(
+            walkdir::WalkDir::new(&cache)
+                .into_iter()
+                .map(|e| e.expect("walk"))
+                .filter(|e| e.file_type().is_dir())
+                .map(|e| e.into_path()),
+        )
+        .collect();
+    // Read-only for whoever runs gc: the folders for this user, or, where this user is root
+    // (whom permissions do not stop), the whole cache for another user that gc runs as.
+    let as_root = running_as_root();
+    for folder in &folders {
+        std::fs::set_permissions(
+            folder,
+            std::fs::Permissions::from_mode(if as_root { 0o755 } else { 0o555 }),
+        )
+        .expect("permissions");
+    }
+    let limit = ["--max-size", "0", "--cache-dir", cache.to_str().expect("utf-8")];
+    let run = if as_root {
+        Command::new("setpriv")
+            .args([
+                "--reuid=65534",
+                "--regid=65534",
+                "--clear-groups",
+                env!("CARGO_BIN_EXE_kiln"),
+                "cache",
+                "gc",
+            ])
+            .args(limit)
+            .output()
+            .expect("setpriv (util-linux) runs")
+    } else {
+        kiln(&[&["cache", "gc"][..], &limit[..]].concat())
+    };
+    for folder in &folders {
+        std::fs::set_permissions(folder, std::fs::Permissions::from_mode(0o755)).expect("writable");
+    }
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("removed 0 entries but not"), "{stderr}");
+    assert_eq!(objects(&cache).len(), before, "everything is still there, as it says");
+}
+
+/// Whether this process runs as root (uid 0), from `/proc/self/status`.
+fn running_as_root() -> bool {
+    std::fs::read_to_string("/proc/self/status")
+        .is_ok_and(|s| s.lines().any(|l| l.starts_with("Uid:") && l.split_whitespace().nth(1) == Some("0")))
+}

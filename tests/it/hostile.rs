@@ -195,3 +195,24 @@ fn project_paths_that_leave_the_project_are_refused_and_nothing_outside_is_quote
     expect_test::expect_file![crate::support::root().join("tests/golden/cli/outside_the_project.stderr")]
         .assert_eq(&refused);
 }
+
+#[test]
+fn the_language_server_refuses_a_message_larger_than_its_limit_before_reading_it() {
+    use std::io::Write as _;
+    let mut server = std::process::Command::new(env!("CARGO_BIN_EXE_kiln"))
+        .arg("lsp")
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("kiln lsp runs");
+    // The header alone, and the input kept open: the server must not wait for 4 GB, nor make room.
+    let mut stdin = server.stdin.take().expect("stdin");
+    stdin.write_all(b"Content-Length: 4000000000\r\n\r\n").expect("write");
+    stdin.flush().expect("flush");
+    let run = crate::support::output_within_a_minute(server, "kiln lsp");
+    drop(stdin);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_ne!(run.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("4000000000 bytes") && stderr.contains("limit"), "{stderr}");
+}
