@@ -307,6 +307,23 @@ impl NameClash {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// Any name, in any case, becomes what Rust's grammar (syn's parser, which refuses
+        /// keywords) takes for one identifier; doc text never holds a line break.
+        #[test]
+        fn any_name_mangles_to_an_identifier_rust_parses(name in any::<String>()) {
+            for case in [Case::Snake, Case::UpperSnake, Case::AsIs] {
+                let identifier = mangle(&name, case);
+                prop_assert!(syn::parse_str::<syn::Ident>(&identifier).is_ok(), "{name:?} as {case:?}: {identifier}");
+                prop_assert!(identifier.is_ascii());
+            }
+            prop_assert!(!doc_text(&name).contains(['\n', '\r']));
+            let literal: syn::LitStr = syn::parse_str(&string_literal(&name)).expect("a string literal");
+            prop_assert_eq!(literal.value(), name);
+        }
+    }
 
     #[test]
     fn names_become_identifiers_in_each_case() {
