@@ -82,6 +82,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0328", "`dynamic_branch` keyword tested by the preprocessor"),
     ("K0329", "`__VA_ARGS__` or `__VA_OPT__` misused"),
     ("K0330", "`defined` from a macro in `#if` (warning)"),
+    ("K0331", "preprocessed text too large"),
     ("K0401", "WGSL syntax error"),
     ("K0402", "WGSL validation error"),
     ("K0403", "entry point not found"),

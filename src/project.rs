@@ -637,6 +637,8 @@ pub fn build_part(
     let Given { workspace, mut includes, input, mut diagnostics, mut options } =
         load_given(store, paths, mode)?;
     options.part = part;
+    // Held until the build is done: another build into the folder waits.
+    let _lock = mode.write.then(|| crate::store::OutputLock::acquire(&options.output));
     if diagnostics.is_empty()
         && !matches!(options.part, Part::Shard(_))
         && let Some(result) = crate::build::unchanged(store, &options)

@@ -14,7 +14,7 @@ use crate::reflect::{Resource, UniformBlock};
 use crate::shaderlab::ast::Property;
 use crate::shaderlab::pragma::{KeywordKind, KeywordScope};
 use crate::source::{SourceStore, relative_to};
-use crate::store::{Cache, CachedStage, Digest, Hashed, Recorded};
+use crate::store::{Cache, CachedStage, Digest, Hashed, Recorded, RecordedFile};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use serde_json::value::RawValue;
@@ -109,7 +109,12 @@ pub(super) fn manifest<P: PassFiles>(heads: Vec<ShaderHead>, parts: Vec<P>) -> M
             shader
         })
         .collect();
-    Manifest { schema_version: SCHEMA_VERSION, kiln_version: env!("CARGO_PKG_VERSION").to_string(), shaders }
+    Manifest {
+        schema_version: SCHEMA_VERSION,
+        kiln_version: env!("CARGO_PKG_VERSION").to_string(),
+        shaders,
+        materials_hash: None,
+    }
 }
 
 /// Writes what a whole build (or a merge) leaves once its passes are built: the manifest, the
@@ -117,51 +122,65 @@ pub(super) fn manifest<P: PassFiles>(heads: Vec<ShaderHead>, parts: Vec<P>) -> M
 /// inputs key, [`super::noop::inputs_key`]). `alongside` runs while the two files are written (a
 /// merge links the shards' packs then; it returns the bytes it copied): neither file replaces
 /// the old one unless both are written and `alongside` succeeded.
+///
+/// The folder's commit point: the materials are staged first and the manifest names their hash
+/// (so a reader tells a torn pair); the last build's record is removed before either file is
+/// replaced (so a build stopped between the two renames is no no-op's), and written again, with
+/// both files' hashes, only once both are in place.
 #[allow(clippy::too_many_arguments)]
-pub(super) fn finish<P: PassFiles + Serialize + Sync>(
+pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
     options: &BuildOptions,
     inputs: &str,
     catalogue: &CataloguePart,
     materials: &[&RawValue],
-    manifest: &Manifest<P>,
+    manifest: &mut Manifest<P>,
     mut summary: BuildSummary,
     mut diagnostics: Vec<Diagnostic>,
     alongside: impl FnOnce() -> std::io::Result<u64> + Send,
 ) -> BuildResult {
     let mut files = Vec::new();
     if options.write && !diagnostics::has_errors(&diagnostics) {
-        files = pack_ends(manifest.shaders.iter().flat_map(|s| &s.passes)).into_iter().collect();
-        // The two largest files (35 and 14 MB at 100,000 variants), each on a thread of its own.
-        let ((materials, manifest), alongside) = rayon::join(
+        files = (pack_ends(manifest.shaders.iter().flat_map(|s| &s.passes)).into_iter())
+            .map(|(path, len)| RecordedFile { path, len, hash: None })
+            .collect();
+        // The materials, then the manifest that names their hash, while `alongside` runs.
+        let (staged, alongside) = rayon::join(
             || {
-                rayon::join(
-                    || stage_materials(&options.output.join(MATERIALS_FILE), materials, options),
-                    || stage_json(&options.output.join(FILE_NAME), manifest, options.pretty_manifest),
-                )
+                let materials = stage_materials(&options.output.join(MATERIALS_FILE), materials, options)?;
+                manifest.materials_hash = Some(materials.hash());
+                let manifest =
+                    stage_json(&options.output.join(FILE_NAME), &*manifest, options.pretty_manifest)?;
+                Ok((materials, manifest))
             },
             alongside,
         );
-        match (materials, manifest, alongside) {
-            (Ok(materials), Ok(manifest), Ok(copied)) => {
+        let cache = Cache::new(&options.output, true);
+        match (staged, alongside.and_then(|copied| cache.forget_inputs().map(|()| copied))) {
+            (Ok((materials, manifest)), Ok(copied)) => {
                 summary.bytes_written += copied;
                 for (name, staged) in [(MATERIALS_FILE, materials), (FILE_NAME, manifest)] {
+                    let hash = staged.hash();
                     match staged.commit() {
                         Ok((len, written)) => {
                             summary.bytes_written += if written { len } else { 0 };
-                            files.push((name.to_string(), len));
+                            files.push(RecordedFile { path: name.to_string(), len, hash: Some(hash) });
                         }
                         Err(error) => diagnostics.push(write_failure(&options.output, error)),
                     }
                 }
             }
             // Nothing replaced: the staged files are dropped.
-            (materials, manifest, alongside) => {
-                let errors = [materials.err(), manifest.err(), alongside.err()].into_iter().flatten();
+            (staged, alongside) => {
+                let errors = [staged.err(), alongside.err()].into_iter().flatten();
                 diagnostics.extend(errors.map(|error| write_failure(&options.output, error)));
             }
         }
     }
     diagnostics::dedup(&mut diagnostics);
+    if options.write && !diagnostics::has_errors(&diagnostics) {
+        let packs = files.iter().filter(|f| f.hash.is_none()).map(|f| f.path.clone()).collect();
+        Cache::new(&options.output, true).sweep(&packs);
+    }
     if options.write && options.record && diagnostics.is_empty() {
         // Only costs a full build next time if it cannot be written.
         let _ = Cache::new(&options.output, true).record_inputs(&Recorded {
@@ -213,8 +232,9 @@ fn stage_json(
 ) -> std::io::Result<StagedJson> {
     use std::io::Write as _;
     let mut digest = Digest::default();
-    // Nothing to compare with, nothing to hash (a digest that saw nothing matches no old file).
-    let hash = path.exists();
+    // Hashed always: the record of a clean build names both files' hashes, and the manifest the
+    // materials'.
+    let hash = true;
     let serialize = |out: &mut dyn std::io::Write| {
         let mut hashed = Hashed { out, digest: Digest::default(), hash };
         {
@@ -238,6 +258,11 @@ fn stage_json(
 }
 
 impl StagedJson {
+    /// The hash of what was written, as [`crate::store::hash`] gives it.
+    fn hash(&self) -> String {
+        self.digest.finish().to_hex()[..32].to_string()
+    }
+
     /// Puts the JSON in its place, unless the file there holds exactly these bytes already (so
     /// that a rebuild that compiles nothing touches nothing). Returns its length and whether it
     /// was written.
@@ -304,7 +329,7 @@ impl PassFiles for BuiltPass {
 
 /// The parsed manifest of a build's written one.
 pub(super) fn parsed(manifest: Manifest<BuiltPass>) -> Manifest {
-    let Manifest { schema_version, kiln_version, shaders } = manifest;
+    let Manifest { schema_version, kiln_version, shaders, materials_hash } = manifest;
     let shaders = shaders
         .into_iter()
         .map(|s| ShaderManifest {
@@ -315,7 +340,7 @@ pub(super) fn parsed(manifest: Manifest<BuiltPass>) -> Manifest {
             passes: s.passes.into_iter().map(|p| p.part).collect(),
         })
         .collect();
-    Manifest { schema_version, kiln_version, shaders }
+    Manifest { schema_version, kiln_version, shaders, materials_hash }
 }
 
 /// A pass's part of the manifest: each module once, each distinct interface, uniform block and

@@ -145,14 +145,23 @@ pub(super) fn merge(
             .collect();
         match parsed {
             Ok(parsed) => {
-                let manifest = manifest(heads, parsed);
-                finish(options, &merge.inputs, catalogue, &materials, &manifest, summary, diagnostics, link)
+                let mut manifest = manifest(heads, parsed);
+                finish(
+                    options,
+                    &merge.inputs,
+                    catalogue,
+                    &materials,
+                    &mut manifest,
+                    summary,
+                    diagnostics,
+                    link,
+                )
             }
             Err(error) => BuildResult::failed(options, summary, vec![error.into()]),
         }
     } else {
-        let manifest = manifest(heads, parts);
-        finish(options, &merge.inputs, catalogue, &materials, &manifest, summary, diagnostics, link)
+        let mut manifest = manifest(heads, parts);
+        finish(options, &merge.inputs, catalogue, &materials, &mut manifest, summary, diagnostics, link)
     }
 }
 

@@ -50,6 +50,12 @@ pub(crate) fn compiler_id() -> String {
     format!("kiln {} revision {COMPILER_REVISION} {NAGA_VERSION}", env!("CARGO_PKG_VERSION"))
 }
 
+/// Each worker thread's stack. naga's front end, validator and back ends recurse once per level
+/// of an expression (a sum of 5,000 terms is 5,000 levels), past what rayon's default 2 MiB holds,
+/// and a stack overflow aborts the process where a panic would have been a diagnostic (K0416). The
+/// memory is reserved, not used: a thread touches only what it recurses into.
+pub const WORKER_STACK: usize = 256 << 20;
+
 /// The most worker threads a build starts.
 pub const MAX_THREADS: usize = 1024;
 
@@ -263,7 +269,10 @@ pub fn thread_count(requested: Option<usize>) -> usize {
 /// be made), its summary timed.
 fn timed_in_pool(options: &BuildOptions, job: impl FnOnce() -> BuildResult + Send) -> BuildResult {
     let started = Instant::now();
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(thread_count(options.threads)).build();
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(thread_count(options.threads))
+        .stack_size(WORKER_STACK)
+        .build();
     let mut result = match pool {
         Ok(pool) => pool.install(job),
         Err(_) => job(),
@@ -349,13 +358,13 @@ fn build_passes(
         Part::Whole => {
             let materials: Vec<&serde_json::value::RawValue> = materials.iter().map(|(_, m)| &**m).collect();
             let mut catalogue = catalogue(read);
-            let manifest = emit::manifest(std::mem::take(&mut catalogue.shaders), parts);
+            let mut manifest = emit::manifest(std::mem::take(&mut catalogue.shaders), parts);
             let mut result = emit::finish(
                 options,
                 &inputs,
                 &catalogue,
                 &materials,
-                &manifest,
+                &mut manifest,
                 summary,
                 diagnostics,
                 || Ok(0),

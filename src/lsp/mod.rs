@@ -45,6 +45,9 @@ pub enum LspError {
     /// The connection's threads failed.
     #[error("language server I/O: {0}")]
     Io(#[from] std::io::Error),
+    /// A message the transport refused (over the size limit, not the protocol's form).
+    #[error("language server protocol: {0}")]
+    Refused(String),
     /// The client closed the connection without `exit`.
     #[error("the client closed the connection")]
     Disconnected,
@@ -60,7 +63,10 @@ pub fn serve_stdio(options: &ServerOptions) -> Result<(), LspError> {
     drop(connection);
     // A message the transport refused ends the session: that is the reason to give, not the
     // disconnection the server saw.
-    threads.join()?;
+    threads.join().map_err(|error| match error.kind() {
+        std::io::ErrorKind::InvalidData => LspError::Refused(error.to_string()),
+        _ => LspError::Io(error),
+    })?;
     served
 }
 

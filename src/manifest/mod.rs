@@ -15,7 +15,7 @@ use serde::{Deserialize, Serialize};
 use std::path::Path;
 
 /// Raised whenever a field changes meaning or is removed (adding fields keeps it).
-pub const SCHEMA_VERSION: u32 = 6;
+pub const SCHEMA_VERSION: u32 = 7;
 
 /// The manifest's file name, at the top of the output folder.
 pub const FILE_NAME: &str = "manifest.json";
@@ -36,6 +36,11 @@ pub struct Manifest<P = PassManifest> {
     pub kiln_version: String,
     /// The built shaders, in catalogue order.
     pub shaders: Vec<ShaderManifest<P>>,
+    /// The BLAKE3 hash (32 hex digits) of the `materials.json` written with it: the two files
+    /// are replaced one after the other, so a reader tells a torn pair (a build stopped between
+    /// them) by this. Last, so that a manifest is streamed while the materials are hashed.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub materials_hash: Option<String>,
 }
 
 /// Why a text is not a manifest kiln could use.

@@ -25,6 +25,10 @@ pub enum PreprocessError {
         span: Span,
         limit: usize,
     },
+    ExpandedTooLarge {
+        span: Span,
+        what: String,
+    },
     IncludeOutsideRoots {
         span: Span,
         name: String,
@@ -185,6 +189,12 @@ impl From<PreprocessError> for Diagnostic {
                 .at(span, "this include leads back to a file that is still being included")
                 .note(format!("the cycle: {}", chain.join(" -> ")))
                 .help("break the cycle, or guard the file with `#pragma once`"),
+            ExpandedTooLarge { span, what } => {
+                Diagnostic::error("K0331", format!("a stage's preprocessing {what}"))
+                    .at(span, "here; nothing after it is read")
+                    .note("files included many times over (each including the next twice, say) or macros that expand to many copies of one another multiply what they are given")
+                    .help("guard the headers (`#pragma once` or `#ifndef` guards) so each is read once")
+            }
             IncludeTooDeep { span, limit } => {
                 Diagnostic::error("K0303", format!("includes nested deeper than {limit} levels"))
                     .at(span, "this include is one level too deep")

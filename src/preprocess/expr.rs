@@ -12,11 +12,18 @@ use std::borrow::Cow;
 /// nothing).
 pub(super) const MAX_NESTING: usize = 64;
 
+/// How deep `?:` may nest (`0 ? 0 : 0 ? 0 : ...`): each level is a few frames of this parser's
+/// recursion, so 30,000 of them overflowed a thread's stack; a chain far longer than any real
+/// header's is refused like parentheses past [`MAX_NESTING`].
+const MAX_CONDITIONALS: usize = 256;
+
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub(super) enum ExprError {
-    /// Parentheses nested past [`MAX_NESTING`].
+    /// Parentheses nested past [`MAX_NESTING`], or `?:` past [`MAX_CONDITIONALS`].
     NestedTooDeep {
         offset: usize,
+        /// What was expected instead.
+        limit: &'static str,
     },
     /// The expression is not well formed; `expected` says what should have come at `offset`.
     Malformed {
@@ -67,7 +74,7 @@ pub(super) fn evaluate<'a>(text: &'a str, expander: &mut Expander<'_, 'a>) -> Re
         .into_iter()
         .map(|t| Ok((operand(&t)?, t.at)))
         .collect::<Result<Vec<(Tok, usize)>, ExprError>>()?;
-    let mut parser = Parser { tokens, at: 0, end: text.len(), depth: 0, dead: 0 };
+    let mut parser = Parser { tokens, at: 0, end: text.len(), depth: 0, conditionals: 0, dead: 0 };
     let value = parser.comma()?;
     match parser.tokens.get(parser.at) {
         None => Ok(value.is_true()),
@@ -155,6 +162,8 @@ struct Parser {
     at: usize,
     end: usize,
     depth: usize,
+    /// `?:` operators being read, one inside another.
+    conditionals: usize,
     /// Inside an operand that is not evaluated (the right of `0 &&`, say): no arithmetic errors.
     dead: usize,
 }
@@ -213,15 +222,28 @@ impl Parser {
         if !self.eat("?") {
             return Ok(condition);
         }
+        if self.conditionals >= MAX_CONDITIONALS {
+            let limit = "at most 256 `?:` nested in one another (kiln's limit)";
+            return Err(ExprError::NestedTooDeep { offset: self.offset(), limit });
+        }
+        self.conditionals += 1;
+        let branches = self.branches(condition);
+        self.conditionals -= 1;
+        let (then, otherwise) = branches?;
+        // The result has the common type of both branches, evaluated or not.
+        let unsigned = then.unsigned || otherwise.unsigned;
+        let chosen = if condition.is_true() { then } else { otherwise };
+        Ok(Value { bits: chosen.bits, unsigned })
+    }
+
+    /// The two operands after a `?`.
+    fn branches(&mut self, condition: Value) -> Result<(Value, Value), ExprError> {
         let then = self.operand_of(condition.is_true(), Parser::comma)?;
         if !self.eat(":") {
             return Err(ExprError::Malformed { offset: self.offset(), expected: "`:`" });
         }
         let otherwise = self.operand_of(!condition.is_true(), Parser::conditional)?;
-        // The result has the common type of both branches, evaluated or not.
-        let unsigned = then.unsigned || otherwise.unsigned;
-        let chosen = if condition.is_true() { then } else { otherwise };
-        Ok(Value { bits: chosen.bits, unsigned })
+        Ok((then, otherwise))
     }
 
     fn logical_or(&mut self) -> Result<Value, ExprError> {
@@ -337,7 +359,8 @@ impl Parser {
     fn primary(&mut self) -> Result<Value, ExprError> {
         if self.eat("(") {
             if self.depth >= MAX_NESTING {
-                return Err(ExprError::NestedTooDeep { offset: self.offset() });
+                let limit = "at most 64 nested parentheses (kiln's limit; C guarantees 63)";
+                return Err(ExprError::NestedTooDeep { offset: self.offset(), limit });
             }
             self.depth += 1;
             let value = self.comma();
@@ -481,6 +504,12 @@ mod tests {
         assert_eq!(eval(&format!("{}1", "- ".repeat(10_001))), Ok(true));
         let fine = format!("{}1{}", "(".repeat(60), ")".repeat(60));
         assert_eq!(eval(&fine), Ok(true));
+        // `?:` chains, either way, past 256: refused, not a stack overflow.
+        let chain = format!("{}1", "0 ? 0 : ".repeat(30_000));
+        assert!(matches!(eval(&chain), Err(ExprError::NestedTooDeep { .. })));
+        let nested = format!("{}1{}", "1 ? ".repeat(30_000), " : 0".repeat(30_000));
+        assert!(matches!(eval(&nested), Err(ExprError::NestedTooDeep { .. })));
+        assert_eq!(eval(&format!("{}1", "0 ? 0 : ".repeat(200))), Ok(true));
     }
 
     proptest::proptest! {

@@ -19,6 +19,13 @@ use std::collections::HashSet;
 /// Includes nested deeper than this are refused.
 pub const MAX_INCLUDE_DEPTH: usize = 64;
 
+/// The most text one stage's preprocessing may make (four times the largest file kiln reads), and
+/// the most inclusions it may make: a diamond of 31 headers each including the next twice is 1.5
+/// KB of files and 2^30 inclusions, so depth alone bounds nothing.
+pub(super) const MAX_STAGE_BYTES: usize = 64 << 20;
+/// See [`MAX_STAGE_BYTES`].
+pub(super) const MAX_INCLUSIONS: usize = 1 << 16;
+
 pub(super) fn run<'a>(
     includes: &'a Includes,
     store: &'a SourceStore,
@@ -58,6 +65,8 @@ pub(super) fn run_recording<'a>(
         stack: Vec::new(),
         once: HashSet::new(),
         diagnostics: Vec::new(),
+        inclusions: 0,
+        over_budget: false,
     };
     runner.macros.insert(stage.macro_name(), MacroDef::object("1"));
     for keyword in keywords {
@@ -103,6 +112,10 @@ struct Runner<'a> {
     diagnostics: Vec<Diagnostic>,
     /// What skipped groups held, when asked for (builds skip a group in one jump).
     skipped: Option<Skipped>,
+    /// Files included so far.
+    inclusions: usize,
+    /// Past [`MAX_STAGE_BYTES`] or [`MAX_INCLUSIONS`]: reported, and nothing more is read.
+    over_budget: bool,
 }
 
 impl<'a> Runner<'a> {
@@ -123,7 +136,7 @@ impl<'a> Runner<'a> {
         // Whether some branch of each open conditional was taken.
         let mut taken: Vec<bool> = Vec::new();
         let mut i = 0;
-        while i < unit.items.len() {
+        while i < unit.items.len() && !self.over_budget {
             match &unit.items[i] {
                 Item::Text { start, end, idents, spliced, .. } => {
                     let run =
@@ -290,6 +303,7 @@ impl<'a> Runner<'a> {
         if self.out.len() > before {
             self.map.expanded(before, Span::new(file, start..consumed), definition, inclusion);
         }
+        self.within_budget(Span::new(file, start..consumed), inclusion);
         for error in errors {
             let error = self.expand_error(error, file, 0, definition);
             self.report(error, inclusion);
@@ -373,10 +387,9 @@ impl<'a> Runner<'a> {
                             ExprError::Malformed { offset, expected } => {
                                 PreprocessError::MalformedExpression { span: at(offset, 1), expected }
                             }
-                            ExprError::NestedTooDeep { offset } => PreprocessError::MalformedExpression {
-                                span: at(offset, 1),
-                                expected: "at most 64 nested parentheses (kiln's limit; C guarantees 63)",
-                            },
+                            ExprError::NestedTooDeep { offset, limit } => {
+                                PreprocessError::MalformedExpression { span: at(offset, 1), expected: limit }
+                            }
                             ExprError::DivisionByZero { offset } => {
                                 PreprocessError::DivisionByZero { span: at(offset, 1) }
                             }
@@ -392,7 +405,26 @@ impl<'a> Runner<'a> {
         }
     }
 
+    /// Whether the stage is still within [`MAX_STAGE_BYTES`] and [`MAX_INCLUSIONS`]; the first
+    /// time it is not, that is reported at `span` (with its include chain) and the run stops.
+    fn within_budget(&mut self, span: Span, inclusion: u32) -> bool {
+        if !self.over_budget && (self.out.len() > MAX_STAGE_BYTES || self.inclusions > MAX_INCLUSIONS) {
+            self.over_budget = true;
+            let what = if self.out.len() > MAX_STAGE_BYTES {
+                format!("made more than {} MiB of text", MAX_STAGE_BYTES >> 20)
+            } else {
+                format!("included files more than {MAX_INCLUSIONS} times")
+            };
+            self.report(PreprocessError::ExpandedTooLarge { span, what }, inclusion);
+        }
+        !self.over_budget
+    }
+
     fn include(&mut self, target: &Target, span: Span, inclusion: u32) {
+        self.inclusions += 1;
+        if !self.within_budget(span, inclusion) {
+            return;
+        }
         let id = match target {
             Target::Unit(id) => *id,
             Target::Failed(error) => return self.report(error.clone(), inclusion),

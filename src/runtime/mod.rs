@@ -30,6 +30,17 @@ use std::borrow::Cow;
 use std::collections::{BTreeSet, HashMap};
 use std::path::{Path, PathBuf};
 
+/// Whether `materials` (the bytes of `materials.json`) are the ones written with `manifest`: a
+/// build writes the two one after the other, and one stopped between them leaves a torn pair.
+fn same_build(manifest: &Manifest, materials: &[u8]) -> Result<(), String> {
+    match &manifest.materials_hash {
+        Some(expected) if blake3::hash(materials).to_hex()[..32] != *expected => Err(format!(
+            "`{MATERIALS_FILE}` is not the one written with `{FILE_NAME}` (a build stopped between the two?): build again"
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// Why the runtime could not do what was asked.
 #[derive(Debug, thiserror::Error)]
 // Variant fields are named in each variant's message.
@@ -137,12 +148,34 @@ impl Library {
         };
         let manifest = Manifest::parse(&read(FILE_NAME)?)
             .map_err(|e| RuntimeError::Read { path: output.join(FILE_NAME), message: e.to_string() })?;
-        let materials = serde_json::from_slice(&read(MATERIALS_FILE)?)
+        let materials_bytes = read(MATERIALS_FILE)?;
+        same_build(&manifest, &materials_bytes)
+            .map_err(|message| RuntimeError::Read { path: output.join(MATERIALS_FILE), message })?;
+        let materials = serde_json::from_slice(&materials_bytes)
             .map_err(|e| RuntimeError::Read { path: output.join(MATERIALS_FILE), message: e.to_string() })?;
         let mut packs = HashMap::new();
         for path in manifest.packs().into_keys() {
             let bytes = read(&path)?;
             packs.insert(path, Cow::Owned(bytes));
+        }
+        // Every module is the bytes the manifest names: a pack changed since the build is refused
+        // here, never handed to the driver.
+        let damaged = {
+            use rayon::prelude::*;
+            manifest.files().into_par_iter().find_any(|file| {
+                let bytes = packs.get(&file.path).and_then(|pack| file.slice(pack));
+                bytes.is_none_or(|bytes| blake3::hash(bytes).to_hex()[..32] != file.hash)
+            })
+        };
+        if let Some(file) = damaged {
+            return Err(RuntimeError::Read {
+                path: output.join(&file.path),
+                message: format!(
+                    "the module at bytes {}..{} is not what the manifest names (its hash differs): the build was changed since; build again",
+                    file.offset,
+                    file.end()
+                ),
+            });
         }
         Ok(Library::new(manifest, materials, packs))
     }
@@ -159,6 +192,7 @@ impl Library {
             message: e.to_string(),
         };
         let manifest = Manifest::parse(manifest.as_bytes()).map_err(|e| embedded(FILE_NAME, &e))?;
+        same_build(&manifest, materials.as_bytes()).map_err(|e| embedded(MATERIALS_FILE, &e))?;
         let materials = serde_json::from_str(materials).map_err(|e| embedded(MATERIALS_FILE, &e))?;
         let packs = packs.iter().map(|(path, bytes)| (path.to_string(), Cow::Borrowed(*bytes))).collect();
         Ok(Library::new(manifest, materials, packs))

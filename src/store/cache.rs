@@ -33,12 +33,25 @@ pub struct Recorded {
     pub variants: usize,
     /// Distinct stage modules.
     pub modules: usize,
-    /// Files written (relative to the output folder), with their lengths.
-    pub files: Vec<(String, u64)>,
+    /// Files written (relative to the output folder).
+    pub files: Vec<RecordedFile>,
     /// Files read, relative to the project, in the order read.
     pub read: Vec<String>,
     /// Paths looked for in vain.
     pub absent: Vec<String>,
+}
+
+/// A file a clean build left: a pack, with the length it must have at least (its modules' end),
+/// or the manifest or the materials, with their exact length and hash.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RecordedFile {
+    /// Relative to the output folder.
+    pub path: String,
+    /// Its length (at least, without a hash).
+    pub len: u64,
+    /// Its [`hash`], where the no-op check verifies its bytes.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub hash: Option<String>,
 }
 
 /// An output folder's cache and packs.
@@ -109,14 +122,29 @@ impl Cache {
         self.put("pass", pass, index)
     }
 
-    /// Whether every file the recorded build wrote is still in place (the manifest is not read:
-    /// each file's length is checked, in parallel).
+    /// Whether every file the recorded build wrote is still in place (the manifest is not
+    /// parsed): the manifest and the materials are the bytes recorded (their hashes), each pack
+    /// holds its modules' range (its length), checked in parallel.
     pub fn files_in_place(&self, recorded: &Recorded) -> bool {
-        !recorded.files.is_empty()
-            && recorded
-                .files
-                .par_iter()
-                .all(|(path, end)| std::fs::metadata(self.output.join(path)).is_ok_and(|m| m.len() >= *end))
+        let in_place = |file: &RecordedFile| {
+            let path = self.output.join(&file.path);
+            match &file.hash {
+                Some(expected) => Digest::of_file(&path)
+                    .is_ok_and(|d| d.len == file.len && d.finish().to_hex()[..32] == *expected),
+                None => std::fs::metadata(&path).is_ok_and(|m| m.len() >= file.len),
+            }
+        };
+        recorded.files.iter().filter(|f| f.hash.is_some()).count() == 2
+            && recorded.files.par_iter().all(in_place)
+    }
+
+    /// Removes the record of the last clean build, before a build replaces what it names: a
+    /// build stopped after that leaves no record a no-op could trust.
+    pub fn forget_inputs(&self) -> std::io::Result<()> {
+        match std::fs::remove_file(self.entry("build", "inputs")) {
+            Err(error) if error.kind() != std::io::ErrorKind::NotFound => Err(error),
+            _ => Ok(()),
+        }
     }
 
     /// What the last clean build recorded.
@@ -165,6 +193,74 @@ impl Cache {
         };
         Ok((files.into_iter().map(file).collect(), written))
     }
+}
+
+/// An output folder held by one build (or merge) at a time, for as long as this lives: two
+/// builds into one folder take turns rather than interleave their renames, and the sweep after a
+/// build never removes what another build is writing.
+pub struct OutputLock {
+    _file: Option<std::fs::File>,
+}
+
+impl OutputLock {
+    /// Waits for the folder `output` (made if missing) to be free and holds it. Where the
+    /// folder cannot be made or its file system has no locks, the build runs unlocked, as before
+    /// (its writes report what is wrong).
+    pub fn acquire(output: &Path) -> OutputLock {
+        let file = std::fs::create_dir_all(output.join(".cache")).ok().and_then(|()| {
+            let file = std::fs::File::options()
+                .create(true)
+                .truncate(false)
+                .write(true)
+                .open(output.join(".cache").join("lock"))
+                .ok()?;
+            lock_exclusively(&file).ok()?;
+            Some(file)
+        });
+        OutputLock { _file: file }
+    }
+}
+
+impl Cache {
+    /// Removes what the last clean build does not name: packs under `modules/` not in `packs`,
+    /// and temporaries a killed build left (`.NAME.RANDOM.tmp`) there, in the folder and in its
+    /// cache, so that an output folder (`kiln watch`'s, a build script's) holds only what ships.
+    /// Called with the folder's [`OutputLock`] held, after the build's files are in place.
+    /// Returns the files removed. (Pass indices stay: their modules are verified when read.)
+    pub fn sweep(&self, packs: &BTreeSet<String>) -> usize {
+        let mut removed = 0;
+        for folder in ["modules", ".", ".cache/pass", ".cache/build"] {
+            let Ok(entries) = std::fs::read_dir(self.output.join(folder)) else { continue };
+            for entry in entries.flatten() {
+                let name = entry.file_name().to_string_lossy().into_owned();
+                let temporary = name.starts_with('.') && name.ends_with(".tmp");
+                let stale = folder == "modules" && !packs.contains(&format!("modules/{name}"));
+                let file = entry.file_type().is_ok_and(|t| t.is_file() || t.is_symlink());
+                if file && (temporary || stale) && std::fs::remove_file(entry.path()).is_ok() {
+                    removed += 1;
+                }
+            }
+        }
+        removed
+    }
+}
+
+/// Waits for an exclusive `flock` on `file` (released when it closes).
+#[cfg(target_os = "linux")]
+fn lock_exclusively(file: &std::fs::File) -> std::io::Result<()> {
+    use std::os::fd::AsRawFd;
+    // SAFETY: `flock` takes a descriptor `file` keeps open for the call and touches no memory.
+    match unsafe { libc::flock(file.as_raw_fd(), libc::LOCK_EX) } {
+        0 => Ok(()),
+        _ => Err(std::io::Error::last_os_error()),
+    }
+}
+
+/// Elsewhere builds into one folder are not serialized (`std`'s `File::lock` is newer than the
+/// crate's minimum Rust).
+#[cfg(not(target_os = "linux"))]
+fn lock_exclusively(_: &std::fs::File) -> std::io::Result<()> {
+    Ok(())
 }
 
 /// Where the cache keeps an entry, relative to the output folder.

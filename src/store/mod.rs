@@ -7,7 +7,7 @@ mod pass_index;
 pub mod shared;
 
 pub use cache::{
-    Cache, Digest, Hashed, ModuleBytes, Recorded, Staged, hash, link_or_copy, pass_index_path, seal, sealed,
-    stage, unsealed, write_atomically,
+    Cache, Digest, Hashed, ModuleBytes, OutputLock, Recorded, RecordedFile, Staged, hash, link_or_copy,
+    pass_index_path, seal, sealed, stage, unsealed, write_atomically,
 };
 pub use pass_index::{CachedStage, PassIndex};

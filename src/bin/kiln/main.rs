@@ -19,9 +19,12 @@ use std::process::ExitCode;
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 fn main() -> ExitCode {
-    // Rayon's global pool would take `RAYON_NUM_THREADS` as it is; it gets the same bound a
-    // build's pool has.
-    let _ = rayon::ThreadPoolBuilder::new().num_threads(kiln::build::thread_count(None)).build_global();
+    // Rayon's global pool would take `RAYON_NUM_THREADS` as it is, and 2 MiB stacks: it gets a
+    // build pool's bound and stacks.
+    let _ = rayon::ThreadPoolBuilder::new()
+        .num_threads(kiln::build::thread_count(None))
+        .stack_size(kiln::build::WORKER_STACK)
+        .build_global();
     match Cli::parse().command {
         Command::List { paths, format, materials } => inspect::list(paths, format, materials),
         Command::Preprocess { shader, pass, keywords, stage } => {
