@@ -165,9 +165,58 @@ fn compute_scale(variants: usize) {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `-- open N`: what checking every module's hash costs `Library::open` of an N-variant build:
+/// rounds of the whole open and of the hashing alone (the same work as `open`'s check), interleaved,
+/// with their medians and ranges.
+fn open_cost(variants: usize) {
+    let dir: PathBuf = tempfile::tempdir().expect("temp dir").keep();
+    let project = dir.join("project");
+    generate(&project, variants);
+    let output = dir.join("out");
+    kiln_build(&project, &output, true);
+    let manifest = kiln::manifest::Manifest::read(&output).expect("manifest");
+    let files = manifest.files();
+    let packs: std::collections::HashMap<String, Vec<u8>> = manifest
+        .packs()
+        .into_keys()
+        .map(|path| (path.clone(), std::fs::read(output.join(&path)).expect("pack")))
+        .collect();
+    let (mut opens, mut hashes) = (Vec::new(), Vec::new());
+    for _ in 0..7 {
+        let started = Instant::now();
+        drop(kiln::runtime::Library::open(&output).expect("opens"));
+        opens.push(started.elapsed());
+        let started = Instant::now();
+        let intact = files.par_iter().all(|file| {
+            let bytes = packs.get(&file.path).and_then(|pack| file.slice(pack)).expect("in its pack");
+            blake3::hash(bytes).to_hex()[..32] == file.hash
+        });
+        hashes.push(started.elapsed());
+        assert!(intact);
+    }
+    let range = |times: &[Duration]| {
+        let (low, high) = (times.iter().min().expect("rounds"), times.iter().max().expect("rounds"));
+        format!("{:.1}-{:.1} ms", low.as_secs_f64() * 1e3, high.as_secs_f64() * 1e3)
+    };
+    let (open_range, hash_range) = (range(&opens), range(&hashes));
+    let (open, hash) = (median(opens), median(hashes));
+    println!(
+        "{variants} variants, {} modules, {} threads: Library::open {:.1} ms ({open_range}), of which the module check {:.1} ms ({hash_range}): {:.1}%",
+        files.len(),
+        rayon::current_num_threads(),
+        open.as_secs_f64() * 1e3,
+        hash.as_secs_f64() * 1e3,
+        100.0 * hash.as_secs_f64() / open.as_secs_f64()
+    );
+}
+
 fn main() {
     // `-- generate N DIR` only writes the project, for one-off runs of the CLI on it.
     let args: Vec<String> = std::env::args().collect();
+    if let Some(at) = args.iter().position(|a| a == "open") {
+        open_cost(args.get(at + 1).and_then(|n| n.parse().ok()).unwrap_or(10_000));
+        return;
+    }
     if let Some(at) = args.iter().position(|a| a == "compute") {
         let size = args.get(at + 1).and_then(|n| n.parse().ok()).unwrap_or(1000);
         compute_scale(size);

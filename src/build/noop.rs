@@ -92,6 +92,11 @@ pub fn unchanged(store: &mut SourceStore, options: &BuildOptions) -> Option<Buil
     if !same_inputs(store, options, &inputs, &recorded.key) || !cache.files_in_place(&recorded) {
         return None;
     }
+    if options.write {
+        // What a build stopped since left (its packs, its temporaries) goes, as after any build.
+        let packs = recorded.files.iter().filter(|f| f.hash.is_none()).map(|f| f.path.clone()).collect();
+        Cache::new(&options.output, true).sweep(&packs);
+    }
     let summary = BuildSummary {
         shaders: recorded.shaders,
         passes: recorded.passes,

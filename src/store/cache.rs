@@ -346,6 +346,7 @@ impl Staged {
         if !keep(&self.path) {
             return Ok(false);
         }
+        crash_point();
         std::fs::rename(&self.temporary, &self.path)?;
         self.committed = true;
         Ok(true)
@@ -368,6 +369,21 @@ pub fn seal(key: &str, body: &[u8]) -> String {
     hasher.update(key.as_bytes());
     hasher.update(body);
     hasher.finalize().to_hex()[..32].to_string()
+}
+
+/// Debug builds only, for the crash tests: `KILN_KILL_AT=N` ends the process as a kill would
+/// (abort: no destructor runs, temporaries stay) just before its N-th rename or link into place,
+/// counted from 1 over the whole process. Every file a build puts in place goes through here.
+fn crash_point() {
+    if cfg!(debug_assertions) {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        static PLACED: AtomicUsize = AtomicUsize::new(0);
+        static AT: std::sync::OnceLock<Option<usize>> = std::sync::OnceLock::new();
+        let at = *AT.get_or_init(|| std::env::var("KILN_KILL_AT").ok().and_then(|n| n.parse().ok()));
+        if at.is_some_and(|at| PLACED.fetch_add(1, Ordering::SeqCst) + 1 == at) {
+            std::process::abort();
+        }
+    }
 }
 
 /// `value` as JSON after a line with its [`seal`] under `key`, so that a reader can tell the
@@ -462,7 +478,12 @@ pub fn link_or_copy(from: &Path, to: &Path) -> std::io::Result<u64> {
     }
     // A link appears whole, so where nothing is in the way it is made under its own name (half
     // the folder operations: a merge links thousands of packs into one folder).
-    if existing.is_none() && folder_made_for(to).is_ok_and(|_| std::fs::hard_link(from, to).is_ok()) {
+    if existing.is_none()
+        && folder_made_for(to).is_ok_and(|_| {
+            crash_point();
+            std::fs::hard_link(from, to).is_ok()
+        })
+    {
         return Ok(0);
     }
     // The random name is the link's, or the copy's: both refuse a name that is there already,

@@ -107,3 +107,120 @@ fn a_damaged_module_in_a_pack_is_recompiled_though_its_cache_entry_is_intact() {
     assert!(second.compiled >= 1 && second.compiled <= users && second.compiled < first.compiled);
     verified_manifest(&output);
 }
+
+/// What a build ships: every file of the output folder but its cache (which may keep entries of
+/// other states: they are verified when read).
+fn shipped(output: &std::path::Path) -> std::collections::BTreeMap<std::path::PathBuf, Vec<u8>> {
+    let mut files = crate::support::tree(output);
+    files.retain(|path, _| !path.starts_with(".cache"));
+    files
+}
+
+/// `kiln build PROJECT --output OUTPUT`, killed (debug builds: `KILN_KILL_AT`) just before its
+/// `kill_at`-th rename or link when given; whether it ran to its end.
+fn build_killed_at(project: &std::path::Path, output: &std::path::Path, kill_at: Option<usize>) -> bool {
+    let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_kiln"));
+    command.args(["build", project.to_str().expect("utf-8"), "--output", output.to_str().expect("utf-8")]);
+    if let Some(n) = kill_at {
+        command.env("KILN_KILL_AT", n.to_string());
+    }
+    let run = command.output().expect("kiln runs");
+    match run.status.code() {
+        Some(0) => true,
+        None => false,
+        Some(code) => panic!("exit {code}: {}", String::from_utf8_lossy(&run.stderr)),
+    }
+}
+
+/// The crash sweep: for every rename and link a build makes, a build of state B killed just before
+/// it over a folder holding state A's build. The folder then holds A's or B's output whole (what
+/// the run time opens is one build's, or it refuses a torn pair), and a build of A, then of B, is
+/// byte for byte a clean build of each, never a no-op over the wrong files.
+#[test]
+fn a_kill_before_any_rename_or_link_leaves_nothing_a_later_build_trusts_wrongly() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = crate::support::example_project_copy(dir.path());
+    let pass = project.join("shaders/UnlitPass.wgsl");
+    let state_a = std::fs::read_to_string(&pass).expect("read");
+    let state_b = state_a.replace("return base;", "return base * vec4<f32>(0.5, 0.5, 0.5, 1.0);");
+    assert_ne!(state_a, state_b);
+    let clean = |state: &str, name: &str| {
+        std::fs::write(&pass, state).expect("write");
+        let output = dir.path().join(name);
+        assert!(build_killed_at(&project, &output, None));
+        shipped(&output)
+    };
+    let (clean_a, clean_b) = (clean(&state_a, "clean_a"), clean(&state_b, "clean_b"));
+    assert_ne!(clean_a, clean_b);
+    let manifest = |files: &std::collections::BTreeMap<std::path::PathBuf, Vec<u8>>| {
+        files.get(std::path::Path::new("manifest.json")).cloned().expect("a manifest")
+    };
+    let mut kill_at = 1;
+    loop {
+        let output = dir.path().join(format!("out{kill_at}"));
+        std::fs::write(&pass, &state_a).expect("write");
+        assert!(build_killed_at(&project, &output, None));
+        std::fs::write(&pass, &state_b).expect("write");
+        if build_killed_at(&project, &output, Some(kill_at)) {
+            break;
+        }
+        // What a renderer would load now: one build's files, or a refusal.
+        if let Ok(library) = kiln::runtime::Library::open(&output) {
+            let opened = serde_json::to_vec(library.manifest()).expect("json");
+            let as_a: Manifest = serde_json::from_slice(&manifest(&clean_a)).expect("manifest");
+            let as_b: Manifest = serde_json::from_slice(&manifest(&clean_b)).expect("manifest");
+            assert!(
+                opened == serde_json::to_vec(&as_a).expect("json")
+                    || opened == serde_json::to_vec(&as_b).expect("json"),
+                "killed at {kill_at}: the run time opened a manifest of neither build"
+            );
+        }
+        for (state, clean) in [(&state_a, &clean_a), (&state_b, &clean_b)] {
+            std::fs::write(&pass, state).expect("write");
+            assert!(build_killed_at(&project, &output, None));
+            assert!(shipped(&output) == *clean, "killed at {kill_at}: a later build is not a clean one's");
+        }
+        kill_at += 1;
+    }
+    // Two packs, the pass index, the manifest and the record (the materials are the same in both).
+    assert_eq!(kill_at - 1, 5, "the renames and links of a build of state B");
+}
+
+/// A build stopped between its two renames leaves new materials beside the old manifest (or the
+/// reverse): the run time tells, by the hash the manifest names, and refuses the pair.
+#[test]
+fn the_run_time_refuses_materials_and_a_manifest_of_two_builds() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = crate::support::example_project_copy(dir.path());
+    let (first, second) = (dir.path().join("first"), dir.path().join("second"));
+    assert!(build_killed_at(&project, &first, None));
+    let material = project.join("materials/LitOpaque.mat");
+    let text = std::fs::read_to_string(&material).expect("read");
+    assert!(text.contains("_Smoothness = 0.5"), "{text}");
+    std::fs::write(&material, text.replace("_Smoothness = 0.5", "_Smoothness = 0.25")).expect("write");
+    assert!(build_killed_at(&project, &second, None));
+    assert!(kiln::runtime::Library::open(&first).is_ok());
+    std::fs::copy(second.join("materials.json"), first.join("materials.json")).expect("copy");
+    let error = kiln::runtime::Library::open(&first).err().expect("a torn pair is refused");
+    assert!(error.to_string().contains("is not the one written with `manifest.json`"), "{error}");
+}
+
+/// A pack changed after the build (one byte) is refused where a renderer opens the build, not
+/// handed to the driver.
+#[test]
+fn the_run_time_refuses_a_module_whose_bytes_are_not_the_manifest_s() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = crate::support::example_project_copy(dir.path());
+    let output = dir.path().join("out");
+    assert!(build_killed_at(&project, &output, None));
+    let library = kiln::runtime::Library::open(&output).expect("opens");
+    let file =
+        library.manifest().files().into_iter().find(|f| f.path.ends_with(".spv.pack")).expect("a module");
+    drop(library);
+    let path = output.join(&file.path);
+    let mut bytes = std::fs::read(&path).expect("read");
+    bytes[file.offset as usize + 20] ^= 0x40;
+    std::fs::write(&path, bytes).expect("write");
+    let error = kiln::runtime::Library::open(&output).err().expect("a damaged module is refused");
+    assert!(error.to_string().contains("is not what the manifest names"), "{error}");
+}
