@@ -247,20 +247,86 @@ pub fn promote_warnings(diagnostics: &mut [Diagnostic]) {
     }
 }
 
-fn to_codespan(d: &Diagnostic) -> cs::Diagnostic<crate::source::FileId> {
+/// Diagnostics of one code in one file shown before the rest are summed up in a line: a file that
+/// repeats one mistake ten thousand times gets ten, and a count.
+const SHOWN_PER_CODE_AND_FILE: usize = 10;
+
+/// A source line longer than this is not quoted: its place is said instead (a 60 KB line quoted
+/// by each of 10,000 warnings was a gigabyte of output).
+const LONGEST_QUOTED_LINE: usize = 1_000;
+
+/// `diagnostics` as they are shown: after [`SHOWN_PER_CODE_AND_FILE`] of one code in one file,
+/// the rest of them become one line that counts them, where the last shown one was.
+fn summarized(diagnostics: &[Diagnostic]) -> Vec<std::borrow::Cow<'_, Diagnostic>> {
+    use std::borrow::Cow;
+    use std::collections::HashMap;
+    let group = |d: &Diagnostic| (d.code, d.primary.as_ref().map(|p| p.span.file));
+    let mut totals: HashMap<_, usize> = HashMap::new();
+    for d in diagnostics {
+        *totals.entry(group(d)).or_default() += 1;
+    }
+    let mut seen: HashMap<_, usize> = HashMap::new();
+    let mut shown = Vec::with_capacity(diagnostics.len().min(1024));
+    for d in diagnostics {
+        let key = group(d);
+        let count = seen.entry(key).or_default();
+        *count += 1;
+        if *count <= SHOWN_PER_CODE_AND_FILE {
+            shown.push(Cow::Borrowed(d));
+        }
+        let total = totals[&key];
+        if *count == SHOWN_PER_CODE_AND_FILE + 1 {
+            let mut more = Diagnostic::remark(
+                d.code,
+                format!("{} more like the last, not shown", total - SHOWN_PER_CODE_AND_FILE),
+            );
+            more.severity = d.severity;
+            shown.push(Cow::Owned(more));
+        }
+    }
+    shown
+}
+
+fn to_codespan(store: &SourceStore, d: &Diagnostic) -> cs::Diagnostic<crate::source::FileId> {
     let severity = match d.severity {
         Severity::Error => cs::Severity::Error,
         Severity::Warning => cs::Severity::Warning,
         Severity::Note => cs::Severity::Note,
     };
     let mut labels = Vec::new();
-    if let Some(p) = &d.primary {
-        labels.push(cs::Label::primary(p.span.file, p.span.range()).with_message(&p.message));
+    let mut places = Vec::new();
+    let quoted = |label: &Label| {
+        let text = store.text(label.span.file);
+        let start = (label.span.start as usize).min(text.len());
+        // A span off a character boundary is the reporting stage's bug: codespan says so.
+        let (Some(before), Some(after)) = (text.get(..start), text.get(start..)) else { return true };
+        let line_start = before.rfind('\n').map_or(0, |at| at + 1);
+        let line_end = after.find('\n').map_or(text.len(), |at| start + at);
+        line_end - line_start <= LONGEST_QUOTED_LINE
+    };
+    for (label, primary) in d.primary.iter().map(|p| (p, true)).chain(d.secondary.iter().map(|l| (l, false)))
+    {
+        if quoted(label) {
+            let range = label.span.range();
+            let made = if primary {
+                cs::Label::primary(label.span.file, range)
+            } else {
+                cs::Label::secondary(label.span.file, range)
+            };
+            labels.push(made.with_message(&label.message));
+        } else {
+            let at = store.line_col(label.span.file, label.span.start as usize);
+            places.push(format!(
+                "at {}:{}:{}: {} (the line is over {LONGEST_QUOTED_LINE} bytes: not quoted)",
+                store.display_name(label.span.file),
+                at.line,
+                at.column,
+                label.message
+            ));
+        }
     }
-    for l in &d.secondary {
-        labels.push(cs::Label::secondary(l.span.file, l.span.range()).with_message(&l.message));
-    }
-    let mut notes: Vec<String> = d.shown_notes().iter().map(|n| format!("note: {n}")).collect();
+    let mut notes: Vec<String> = places;
+    notes.extend(d.shown_notes().iter().map(|n| format!("note: {n}")));
     if let Some(h) = &d.help {
         notes.push(format!("help: {h}"));
     }
@@ -275,9 +341,9 @@ fn to_codespan(d: &Diagnostic) -> cs::Diagnostic<crate::source::FileId> {
 pub fn render_plain(store: &SourceStore, diagnostics: &[Diagnostic]) -> String {
     let config = term::Config::default();
     let mut out = String::new();
-    for d in diagnostics {
+    for d in summarized(diagnostics) {
         // A span pointing outside its file is a bug in the reporting stage; show the message anyway.
-        match term::emit_into_string(&config, store, &to_codespan(d)) {
+        match term::emit_into_string(&config, store, &to_codespan(store, &d)) {
             Ok(text) => out.push_str(&text),
             Err(_) => out.push_str(&format!("{:?}[{}]: {}\n", d.severity, d.code, d.message)),
         }
@@ -298,9 +364,9 @@ pub fn render_to(
     let config = term::Config::default();
     let styles = term::Styles::default();
     let mut buffer = term::termcolor::Buffer::ansi();
-    for d in diagnostics {
+    for d in summarized(diagnostics) {
         let mut writer = term::StylesWriter::new(&mut buffer, &styles);
-        if term::emit_to_write_style(&mut writer, &config, store, &to_codespan(d)).is_err() {
+        if term::emit_to_write_style(&mut writer, &config, store, &to_codespan(store, &d)).is_err() {
             return stream.write_all(render_plain(store, diagnostics).as_bytes());
         }
     }

@@ -373,6 +373,12 @@ impl SourceStore {
         &self.files[file.0 as usize].name
     }
 
+    /// The name as diagnostics show it: [`SourceStore::name`] with control characters escaped.
+    pub fn display_name(&self, file: FileId) -> &str {
+        let f = &self.files[file.0 as usize];
+        f.display_name.as_deref().unwrap_or(&f.name)
+    }
+
     /// The path a file was read from (`None` for text added in memory).
     pub fn path(&self, file: FileId) -> Option<&Path> {
         self.files[file.0 as usize].path.as_deref()

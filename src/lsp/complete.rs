@@ -120,8 +120,10 @@ fn include_names(analysis: &Analysis, path: &Path, typed: &str) -> Vec<String> {
         folders.extend(include.include_paths.iter().cloned());
     }
     let mut names = BTreeSet::new();
-    for folder in folders {
-        let Ok(entries) = std::fs::read_dir(folder.join(sub)) else { continue };
+    // Only folders kiln may read includes from: completion must not list `/etc`.
+    let may_read = |folder: &Path| analysis.checked.as_ref().is_some_and(|c| c.includes.may_read(folder));
+    for folder in folders.into_iter().map(|folder| folder.join(sub)).filter(|folder| may_read(folder)) {
+        let Ok(entries) = std::fs::read_dir(&folder) else { continue };
         for entry in entries.flatten() {
             let name = entry.file_name().to_string_lossy().into_owned();
             let is_dir = entry.file_type().is_ok_and(|t| t.is_dir());

@@ -224,19 +224,28 @@ impl Includes {
     }
 
     /// The file name nearest `name` in the folders searched and the bundled library, for a
-    /// "did you mean" (read only when an include was not found).
+    /// "did you mean" (read only when an include was not found). Only folders inside the project
+    /// are listed: a suggestion must not reveal names kiln may not read (`#include "/etc/hostnam"`).
     fn closest_include(&self, name: &str, folders: &[PathBuf]) -> Option<String> {
         let wanted = Path::new(name);
         let (parent, file) = (wanted.parent().unwrap_or(Path::new("")), wanted.file_name()?.to_str()?);
         let on_disk: Vec<String> = folders
             .iter()
-            .filter_map(|folder| std::fs::read_dir(folder.join(parent)).ok())
+            .map(|folder| folder.join(parent))
+            .filter(|folder| self.may_read(folder))
+            .filter_map(|folder| std::fs::read_dir(folder).ok())
             .flatten()
             .filter_map(|entry| entry.ok()?.file_name().into_string().ok())
             .collect();
         let library = self.config.library.iter().map(|(n, _)| n.as_str());
         let found = crate::material::closest(file, on_disk.iter().map(String::as_str).chain(library))?;
         Some(parent.join(found).to_string_lossy().replace('\\', "/"))
+    }
+
+    /// Whether `path` is inside the project (its canonical path under an include root).
+    pub fn may_read(&self, path: &Path) -> bool {
+        std::fs::canonicalize(path)
+            .is_ok_and(|canonical| self.allowed.iter().any(|root| canonical.starts_with(root)))
     }
 
     fn disk_unit(

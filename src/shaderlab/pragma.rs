@@ -610,20 +610,19 @@ fn keyword_set(
     errors: &mut Vec<PragmaError>,
 ) {
     let mut options: Vec<KeywordOption> = Vec::new();
+    // Each keyword's first place, so that a pragma of 10,000 keywords is not 50 million comparisons.
+    let mut first_at: std::collections::HashMap<Option<String>, Span> = std::collections::HashMap::new();
     for arg in &line.args {
         if !is_keyword_name(&arg.value) {
             errors.push(PragmaError::InvalidKeyword { span: arg.span, found: arg.value.clone() });
             continue;
         }
         let keyword = (!is_none_name(&arg.value)).then(|| arg.value.clone());
-        if let Some(first) = options.iter().find(|o| o.keyword == keyword) {
-            errors.push(PragmaError::DuplicateKeyword {
-                span: arg.span,
-                first: first.span,
-                keyword: arg.value.clone(),
-            });
+        if let Some(&first) = first_at.get(&keyword) {
+            errors.push(PragmaError::DuplicateKeyword { span: arg.span, first, keyword: arg.value.clone() });
             continue;
         }
+        first_at.insert(keyword.clone(), arg.span);
         options.push(KeywordOption { keyword, span: arg.span });
     }
     if options.is_empty() {

@@ -216,3 +216,53 @@ fn the_language_server_refuses_a_message_larger_than_its_limit_before_reading_it
     assert_ne!(run.status.code(), Some(0), "{stderr}");
     assert!(stderr.contains("4000000000 bytes") && stderr.contains("limit"), "{stderr}");
 }
+
+#[test]
+fn a_missing_include_outside_the_project_gets_no_suggestion_naming_what_is_there() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    let outside = shader("Plain", "_A", "S", "last: f32,").replace(
+        "            #pragma vertex",
+        "            #include \"/etc/hostnam\"\n            #pragma vertex",
+    );
+    write(&project, "shaders/a.shader", &outside);
+    write(&project, "shaders/Tint.wgsl", "fn tint() -> f32 { return 1.0; }\n");
+    let with_typo = shader("Typo", "_B", "S", "last: f32,").replace(
+        "            #pragma vertex",
+        "            #include \"Tnt.wgsl\"\n            #pragma vertex",
+    );
+    write(&project, "shaders/b.shader", &with_typo);
+    let run = crate::support::kiln_in(&project, &["check", "."]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("`/etc/hostnam`"), "{stderr}");
+    assert!(!stderr.contains("hostname"), "a name outside the project was suggested: {stderr}");
+    // Inside the project the suggestion stays.
+    assert!(stderr.contains("did you mean `Tint.wgsl`"), "{stderr}");
+}
+
+#[test]
+fn ten_thousand_warnings_on_one_long_line_are_a_few_lines_of_output() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    // One pragma of 10,000 keywords (a 90 KB line): each is declared and never tested (K0320).
+    // And 80,000 properties, which took 12.5 s to check for duplicates one against another.
+    let keywords: Vec<String> = (0..10_000).map(|k| format!("_K{k}")).collect();
+    let properties: String = (0..80_000).map(|p| format!("        _P{p} (\"P\", Float) = 0\n")).collect();
+    let text = shader("Many", &keywords.join(" "), "S", "last: f32,")
+        .replace("#pragma multi_compile _ ", "#pragma shader_feature _ ")
+        .replace(
+            "Shader \"Many\" {\n",
+            &format!("Shader \"Many\" {{\n    Properties {{\n{properties}    }}\n"),
+        );
+    write(&project, "shaders/many.shader", &text);
+    let run = crate::support::kiln_in(&project, &["list", "."]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(stderr.len() < 64 << 10, "{} bytes of diagnostics", stderr.len());
+    assert!(stderr.contains("9990 more like the last, not shown"), "{}", &stderr[..stderr.len().min(4000)]);
+    assert!(
+        stderr.contains("(the line is over 1000 bytes: not quoted)"),
+        "{}",
+        &stderr[..stderr.len().min(4000)]
+    );
+}
