@@ -201,7 +201,7 @@ fn the_run_time_refuses_materials_and_a_manifest_of_two_builds() {
     assert!(build_killed_at(&project, &second, None));
     assert!(kiln::runtime::Library::open(&first).is_ok());
     std::fs::copy(second.join("materials.json"), first.join("materials.json")).expect("copy");
-    let error = kiln::runtime::Library::open(&first).err().expect("a torn pair is refused");
+    let Err(error) = kiln::runtime::Library::open(&first) else { panic!("a torn pair is refused") };
     assert!(error.to_string().contains("is not the one written with `manifest.json`"), "{error}");
 }
 
@@ -221,6 +221,6 @@ fn the_run_time_refuses_a_module_whose_bytes_are_not_the_manifest_s() {
     let mut bytes = std::fs::read(&path).expect("read");
     bytes[file.offset as usize + 20] ^= 0x40;
     std::fs::write(&path, bytes).expect("write");
-    let error = kiln::runtime::Library::open(&output).err().expect("a damaged module is refused");
+    let Err(error) = kiln::runtime::Library::open(&output) else { panic!("a damaged module is refused") };
     assert!(error.to_string().contains("is not what the manifest names"), "{error}");
 }
