@@ -807,6 +807,8 @@ pub fn merge_shards(
         }
     };
     let Given { workspace, mut diagnostics, options, .. } = given;
+    // As a build holds its output folder: another build or merge into it waits.
+    let _lock = crate::store::OutputLock::acquire(&options.output);
     let result = crate::build::merge(store, &options, &merge, read);
     // The shards' parts are many small strings: freeing them would hold up the answer for a
     // tenth of a second at 100,000 variants, which a process about to exit need not wait for.

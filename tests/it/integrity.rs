@@ -205,8 +205,8 @@ fn the_run_time_refuses_materials_and_a_manifest_of_two_builds() {
     assert!(error.to_string().contains("is not the one written with `manifest.json`"), "{error}");
 }
 
-/// A pack changed after the build (one byte) is refused where a renderer opens the build, not
-/// handed to the driver.
+/// A pack changed after the build (one byte) is refused where a renderer opens the build with the
+/// module check, not handed to the driver.
 #[test]
 fn the_run_time_refuses_a_module_whose_bytes_are_not_the_manifest_s() {
     let dir = tempfile::tempdir().expect("temp dir");
@@ -221,6 +221,9 @@ fn the_run_time_refuses_a_module_whose_bytes_are_not_the_manifest_s() {
     let mut bytes = std::fs::read(&path).expect("read");
     bytes[file.offset as usize + 20] ^= 0x40;
     std::fs::write(&path, bytes).expect("write");
-    let Err(error) = kiln::runtime::Library::open(&output) else { panic!("a damaged module is refused") };
+    assert!(kiln::runtime::Library::open(&output).is_ok(), "without the check, the bytes are not read");
+    let Err(error) = kiln::runtime::Library::open_verified(&output) else {
+        panic!("a damaged module is refused")
+    };
     assert!(error.to_string().contains("is not what the manifest names"), "{error}");
 }
