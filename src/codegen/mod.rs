@@ -338,7 +338,7 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
     for shader in &manifest.shaders {
         let place = format!("shader `{}` in `{}`", shader.name, shader.file);
         let module = top.claim(&shader.name, Case::Snake, &place);
-        clashes.extend(shader_module(&mut out, shader, &module, &packs));
+        clashes.extend(shader_module(&mut out, shader, &module, &place, &packs));
     }
     clashes.extend(top.clashes);
     // Two names that clash as one item clash as the items made from it too (a kernel's constant
@@ -355,11 +355,13 @@ type VariantRow<'a> = (Vec<u64>, [Option<usize>; 2], &'a [Option<usize>]);
 /// The generated module's pack numbers, WGSL and SPIR-V, by path.
 type PackNumbers<'a> = [BTreeMap<&'a str, u32>; 2];
 
-/// A shader's module, named `module`; returns the names that clash inside it.
+/// A shader's module, named `module` (the shader, for messages: `place`); returns the names that
+/// clash inside it.
 fn shader_module(
     out: &mut String,
     shader: &ShaderManifest,
     module: &str,
+    place: &str,
     packs: &PackNumbers,
 ) -> Vec<NameClash> {
     let _ = writeln!(out, "\n/// `{}` ({})", doc_text(&shader.name), doc_text(&shader.file));
@@ -369,17 +371,16 @@ fn shader_module(
     );
     let _ = writeln!(out, "pub mod {module} {{");
     let _ = writeln!(out, "    pub const NAME: &str = {};", string_literal(&shader.name));
-    let place = format!("shader `{}` in `{}`", shader.name, shader.file);
     let mut scope = Scope::new(format!("module `{module}`"), PRELUDE_NAMES);
     for pass in &shader.passes {
         scope.reserve(&format!("PASS_{}", pass.index));
         scope.reserve(&format!("Pass{}Overrides", pass.index));
     }
-    let mut clashes = handles::handles(out, shader, module, &mut scope, &place);
+    let mut clashes = handles::handles(out, shader, module, &mut scope, place);
     for pass in &shader.passes {
-        clashes.extend(pass_static(out, pass, packs, &mut scope, &place));
+        clashes.extend(pass_static(out, pass, packs, &mut scope, place));
     }
-    layout::uniform_structs(out, shader, &mut scope, &place);
+    layout::uniform_structs(out, shader, &mut scope, place);
     clashes.extend(scope.clashes);
     out.push_str("}\n");
     clashes
@@ -530,13 +531,10 @@ fn overrides_struct(out: &mut String, pass: &PassManifest, place: &str) -> Vec<N
     };
     let name = format!("Pass{}Overrides", pass.index);
     let mut fields = Scope::new(format!("struct `{name}`"), &[]);
-    let names: Vec<String> = constants
-        .iter()
-        .map(|c| fields.claim(&c.name, Case::AsIs, &format!("an `override` of {place}")))
+    let constants: Vec<(&crate::manifest::OverrideConstant, String)> = constants
+        .into_iter()
+        .map(|c| (c, fields.claim(&c.name, Case::AsIs, &format!("an `override` of {place}"))))
         .collect();
-    let field = |c: &crate::manifest::OverrideConstant| {
-        names[constants.iter().position(|k| k.name == c.name).unwrap_or_default()].clone()
-    };
     let _ = writeln!(
         out,
         "\n    /// The `override` constants of pass {}'s modules (`f16` ones as `f32`), for\n    \
@@ -544,8 +542,8 @@ fn overrides_struct(out: &mut String, pass: &PassManifest, place: &str) -> Vec<N
         pass.index
     );
     let _ = writeln!(out, "    #[derive(Debug, Clone, Copy, PartialEq)]\n    pub struct {name} {{");
-    for c in &constants {
-        let _ = writeln!(out, "        pub {}: {},", field(c), rust_type(&c.ty));
+    for (c, field) in &constants {
+        let _ = writeln!(out, "        pub {field}: {},", rust_type(&c.ty));
     }
     out.push_str("    }\n");
     let literal = |c: &crate::manifest::OverrideConstant, value: f64| match c.ty.as_str() {
@@ -554,7 +552,7 @@ fn overrides_struct(out: &mut String, pass: &PassManifest, place: &str) -> Vec<N
         _ => format!("{value:?}_f32"),
     };
     let defaults: Option<Vec<String>> =
-        constants.iter().map(|c| c.default.map(|v| format!("{}: {}", field(c), literal(c, v)))).collect();
+        constants.iter().map(|(c, field)| c.default.map(|v| format!("{field}: {}", literal(c, v)))).collect();
     // Only constants that all have defaults make a `Default`: a required one must be chosen.
     if let Some(defaults) = defaults {
         let _ = writeln!(
@@ -565,10 +563,10 @@ fn overrides_struct(out: &mut String, pass: &PassManifest, place: &str) -> Vec<N
     }
     let values: Vec<String> = constants
         .iter()
-        .map(|c| {
+        .map(|(c, field)| {
             let value = match c.ty.as_str() {
-                "bool" => format!("f64::from(u8::from(self.{}))", field(c)),
-                _ => format!("f64::from(self.{})", field(c)),
+                "bool" => format!("f64::from(u8::from(self.{field}))"),
+                _ => format!("f64::from(self.{field})"),
             };
             format!("({}, {value})", string_literal(&c.key()))
         })

@@ -200,6 +200,9 @@ pub(super) const PRELUDE_NAMES: &[&str] = &[
     "NAME",
 ];
 
+/// The owner of the identifiers kiln's own code uses, as a [`Scope`] records it.
+const KILN: &str = "kiln's generated code";
+
 /// One namespace of the generated module (its top, a shader's module, a struct's fields): the
 /// identifiers given out, each with the name and place it was made from.
 pub(super) struct Scope {
@@ -226,10 +229,8 @@ pub struct NameClash {
 impl Scope {
     /// An empty namespace; `reserved` names are given out already (to the generated code).
     pub(super) fn new(what: impl Into<String>, reserved: &[&str]) -> Scope {
-        let taken = reserved
-            .iter()
-            .map(|name| (name.to_string(), (name.to_string(), "kiln's generated code".to_string())))
-            .collect();
+        let taken =
+            reserved.iter().map(|name| (name.to_string(), (name.to_string(), KILN.to_string()))).collect();
         Scope { what: what.into(), taken, clashes: Vec::new() }
     }
 
@@ -242,7 +243,7 @@ impl Scope {
 
     /// [`Scope::claim`] for an identifier already made from `name` (`DOUBLE_WORKGROUP_SIZE`).
     pub(super) fn claim_identifier(&mut self, name: &str, mut identifier: String, place: &str) -> String {
-        while self.taken.get(&identifier).is_some_and(|(_, owner)| owner == "kiln's generated code") {
+        while self.taken.get(&identifier).is_some_and(|(_, owner)| owner == KILN) {
             identifier.push('_');
         }
         match self.taken.get(&identifier) {
@@ -276,7 +277,7 @@ impl Scope {
 
     /// Marks an identifier kiln's own code uses here, so that no name is given it.
     pub(super) fn reserve(&mut self, identifier: &str) {
-        self.taken.insert(identifier.to_string(), (identifier.to_string(), "kiln's generated code".into()));
+        self.taken.insert(identifier.to_string(), (identifier.to_string(), KILN.into()));
     }
 }
 
