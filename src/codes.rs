@@ -102,6 +102,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0418", "`override` expression naga cannot write"),
     ("K0419", "names that clash in the generated Rust"),
     ("K0420", "path cargo cannot watch"),
+    ("K0421", "expression too long"),
     ("K0501", "invalid material file"),
     ("K0502", "unknown shader"),
     ("K0503", "unknown property"),

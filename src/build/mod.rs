@@ -255,14 +255,14 @@ pub fn merge(
 /// else one per core; never more than [`MAX_THREADS`]: far more threads than cores only costs
 /// memory, and a mistyped count, from either place, must not exhaust it.
 pub fn thread_count(requested: Option<usize>) -> usize {
-    let from_environment = || {
-        std::env::var("RAYON_NUM_THREADS")
-            .ok()
-            .and_then(|n| n.trim().parse::<usize>().ok())
-            .filter(|&n| n > 0)
-    };
-    let cores = || std::thread::available_parallelism().map_or(1, usize::from);
-    requested.filter(|&n| n > 0).or_else(from_environment).unwrap_or_else(cores).min(MAX_THREADS)
+    let cores = std::thread::available_parallelism().map_or(1, usize::from);
+    threads_for(requested, std::env::var("RAYON_NUM_THREADS").ok().as_deref(), cores)
+}
+
+/// [`thread_count`] from what it reads: the request, `RAYON_NUM_THREADS`'s text, the cores.
+fn threads_for(requested: Option<usize>, environment: Option<&str>, cores: usize) -> usize {
+    let from_environment = environment.and_then(|n| n.trim().parse::<usize>().ok()).filter(|&n| n > 0);
+    requested.filter(|&n| n > 0).or(from_environment).unwrap_or(cores).min(MAX_THREADS)
 }
 
 /// Runs `job` on a pool of `options.threads` (all cores by default; the global pool if one cannot
@@ -372,5 +372,19 @@ fn build_passes(
             result.manifest = Some(emit::parsed(manifest));
             result
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn threads_come_from_the_request_then_the_environment_then_the_cores_and_are_bounded() {
+        use super::{MAX_THREADS, threads_for};
+        assert_eq!(threads_for(Some(3), Some("7"), 16), 3);
+        assert_eq!(threads_for(None, Some("7"), 16), 7);
+        assert_eq!(threads_for(None, Some("100000"), 16), MAX_THREADS, "RAYON_NUM_THREADS is bounded too");
+        assert_eq!(threads_for(Some(100_000), None, 16), MAX_THREADS);
+        assert_eq!(threads_for(None, Some("lots"), 16), 16);
+        assert_eq!(threads_for(Some(0), Some("0"), 16), 16);
     }
 }

@@ -46,12 +46,83 @@ pub fn check(preprocessed: &Preprocessed, store: &SourceStore) -> Result<Checked
 }
 
 pub(crate) fn parse(text: &str, mapper: &Mapper) -> Result<naga::Module, Diagnostic> {
+    if let Some((statement, operators)) = longest_statement(text).filter(|(_, n)| *n > MAX_OPERATORS) {
+        let blank = text[statement.clone()].len() - text[statement.clone()].trim_start().len();
+        let span = naga::Span::new((statement.start + blank) as u32, statement.end as u32);
+        let message = format!("a statement of {operators} operators, past kiln's limit of {MAX_OPERATORS}");
+        let mut diagnostic = mapper.diagnostic("K0421", message, vec![(span, "this statement".to_string())]);
+        diagnostic.notes.push(
+            "naga recurses once per operator of an expression, and one this long would overflow the stack"
+                .into(),
+        );
+        return Err(diagnostic);
+    }
     naga::front::wgsl::parse_str(text).map_err(|error| {
         let labels = error.labels().map(|(span, message)| (span, message.to_string()));
         let mut diagnostic = mapper.diagnostic("K0401", error.message().to_string(), labels.collect());
         diagnostic.notes.extend(error.notes().map(str::to_string));
         diagnostic
     })
+}
+
+/// The most operators one statement may have: naga's front end, validator and back ends recurse
+/// once per level of an expression (some 600 bytes of stack each), and a worker's stack
+/// (`build::WORKER_STACK`, 256 MiB) holds this many levels with room to spare.
+const MAX_OPERATORS: usize = 100_000;
+
+/// The statement of `text` with the most operators (binary ones, member accesses and indexing:
+/// what nests an expression one level deeper), with their count. A token-level scan: `;`, `{` and
+/// `}` end a statement, comments are skipped, and a `-` or `!` that starts an operand counts for
+/// nothing (a table of negative numbers is one level deep).
+fn longest_statement(text: &str) -> Option<(std::ops::Range<usize>, usize)> {
+    let bytes = text.as_bytes();
+    let (mut longest, mut start, mut count) = (None, 0, 0usize);
+    let mut operand_before = false;
+    let mut at = 0;
+    while at < bytes.len() {
+        let b = bytes[at];
+        match b {
+            b'/' if bytes.get(at + 1) == Some(&b'/') => {
+                at = text[at..].find('\n').map_or(bytes.len(), |n| at + n);
+                continue;
+            }
+            b'/' if bytes.get(at + 1) == Some(&b'*') => {
+                at = text[at + 2..].find("*/").map_or(bytes.len(), |n| at + 2 + n + 2);
+                continue;
+            }
+            b';' | b'{' | b'}' => {
+                if count > longest.as_ref().map_or(0, |(_, n)| *n) {
+                    longest = Some((start..at, count));
+                }
+                (start, count, operand_before) = (at + 1, 0, false);
+            }
+            b'.' if bytes.get(at + 1).is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_') => {
+                count += 1;
+                operand_before = false;
+            }
+            b'[' => {
+                count += 1;
+                operand_before = false;
+            }
+            b'+' | b'-' | b'*' | b'/' | b'%' | b'&' | b'|' | b'^' | b'<' | b'>' | b'=' | b'!' => {
+                // A run of operator characters is one operator (`<<=`, `->`, `&&`).
+                count += usize::from(operand_before);
+                while at + 1 < bytes.len() && b"+-*/%&|^<>=!".contains(&bytes[at + 1]) {
+                    at += 1;
+                }
+                operand_before = false;
+            }
+            b')' | b']' => operand_before = true,
+            b'(' | b',' | b':' => operand_before = false,
+            c if c.is_ascii_alphanumeric() || c == b'_' || c == b'.' => operand_before = true,
+            _ => {}
+        }
+        at += 1;
+    }
+    if count > longest.as_ref().map_or(0, |(_, n)| *n) {
+        longest = Some((start..bytes.len(), count));
+    }
+    longest
 }
 
 pub(crate) fn validate(

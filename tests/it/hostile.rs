@@ -2,7 +2,6 @@
 //! checks it) with nothing injected, names that would become one identifier are refused with
 //! both named, and no path reaches cargo's build-script protocol unless it can be said there.
 
-use crate::support::{cargo_scratch, generated_module_crate};
 use std::path::Path;
 
 fn write(root: &Path, path: &str, text: &str) {
@@ -101,15 +100,9 @@ fn hostile_names_make_a_generated_module_that_compiles_with_nothing_injected() {
         !module.lines().any(|line| line.trim_start().starts_with("fn injected")),
         "a file name's line break ended a comment:\n{module}"
     );
-    let krate = dir.path().join("crate");
-    generated_module_crate(&krate, &module, (&out.join("kiln"), "kiln"), USES);
-    let run = cargo_scratch(&krate, &["test"]);
-    assert!(
-        run.status.success(),
-        "the generated module does not compile or its names are not the rules':\n{}{}",
-        String::from_utf8_lossy(&run.stdout),
-        String::from_utf8_lossy(&run.stderr)
-    );
+    // Cargo compiles it and runs `USES`' test, which names every item as the rules spell it.
+    std::fs::write(out.join("kiln_shaders.rs"), module).expect("write");
+    crate::support::test_generated_module(&out, USES);
 }
 
 /// The rendered diagnostics of a build script's build that must fail.
@@ -265,4 +258,21 @@ fn ten_thousand_warnings_on_one_long_line_are_a_few_lines_of_output() {
         "{}",
         &stderr[..stderr.len().min(4000)]
     );
+}
+
+#[test]
+fn a_long_sum_builds_on_a_worker_s_stack_instead_of_aborting_the_process() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    // 50,000 terms: the 5,000 (a 20 KB line) overflowed rayon's 2 MiB stacks, exit 134.
+    let sum = vec!["x"; 50_000].join(" + ");
+    let text = shader("Long", "_A", "S", "last: f32,").replace(
+        "{ return vec4<f32>(block.last); }",
+        &format!("{{ let x = block.last; let sum = {sum}; return vec4<f32>(sum); }}"),
+    );
+    write(&project, "shaders/long.shader", &text);
+    write(&project, "kiln.toml", "shaders = [\"shaders\"]\nalways_include = [\"Long\"]\n");
+    let run = crate::support::kiln_in(&project, &["check", "."]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(0), "{}", &stderr[..stderr.len().min(2000)]);
 }
