@@ -448,3 +448,53 @@ fn indented_shards_merge_into_the_bytes_of_one_indented_build() {
         );
     }
 }
+
+/// The crash sweep for `kiln merge`: killed (debug builds: `KILN_KILL_AT`) just before each of its
+/// renames and links in turn, over a folder holding an earlier merge of other shards; the merge
+/// run again then writes a whole build's bytes, every time.
+#[test]
+fn a_merge_killed_before_any_rename_or_link_is_whole_when_run_again() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (project, shards) = synthetic_shards(dir.path(), 2);
+    let whole = dir.path().join("whole");
+    let run = kiln(&["build", project.to_str().expect("utf-8"), "--output", whole.to_str().expect("utf-8")]);
+    assert_eq!(run.status.code(), Some(0), "{}", text(&run));
+    // Another state of the project, merged first into each folder the sweep kills merges over.
+    let earlier = dir.path().join("earlier");
+    std::fs::create_dir_all(&earlier).expect("mkdir");
+    for entry in walkdir::WalkDir::new(&project).into_iter().flatten().filter(|e| e.file_type().is_file()) {
+        let to = earlier.join(entry.path().strip_prefix(&project).expect("inside"));
+        std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
+        std::fs::copy(entry.path(), to).expect("copy");
+    }
+    std::fs::write(earlier.join("Tint.wgsl"), "#define TINT 0.75\n").expect("write");
+    let earlier_shards: Vec<PathBuf> = (1..=2).map(|i| dir.path().join(format!("earlier{i}"))).collect();
+    build_shards(&earlier, &earlier_shards, None);
+    let shipped = |folder: &Path| {
+        let mut files = tree(folder);
+        files.retain(|path, _| !path.starts_with(".cache"));
+        files
+    };
+    let mut kill_at = 1;
+    loop {
+        let out = dir.path().join(format!("merged{kill_at}"));
+        assert_eq!(merge(&out, &earlier_shards).status.code(), Some(0));
+        let mut args = vec!["merge".to_string(), out.to_string_lossy().into_owned()];
+        args.extend(shards.iter().map(|s| s.to_string_lossy().into_owned()));
+        let killed = Command::new(env!("CARGO_BIN_EXE_kiln"))
+            .args(&args)
+            .env("KILN_KILL_AT", kill_at.to_string())
+            .output();
+        if killed.expect("kiln runs").status.code() == Some(0) {
+            break;
+        }
+        let again = merge(&out, &shards);
+        assert_eq!(again.status.code(), Some(0), "killed at {kill_at}: {}", text(&again));
+        assert!(
+            shipped(&out) == shipped(&whole),
+            "killed at {kill_at}: the merge run again is not a whole build"
+        );
+        kill_at += 1;
+    }
+    assert!(kill_at > 4, "a merge puts {} files in place", kill_at - 1);
+}
