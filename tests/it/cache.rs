@@ -292,15 +292,14 @@ fn gc_of_a_cache_it_cannot_change_fails_and_says_what_is_left() {
     }
     let limit = ["--max-size", "0", "--cache-dir", cache.to_str().expect("utf-8")];
     let run = if as_root {
+        // A copy of the binary where the other user can run it (the checkout may be closed to it).
+        let binary = dir.path().join("kiln");
+        std::fs::copy(env!("CARGO_BIN_EXE_kiln"), &binary).expect("copy");
+        std::fs::set_permissions(&binary, std::fs::Permissions::from_mode(0o755)).expect("executable");
         Command::new("setpriv")
-            .args([
-                "--reuid=65534",
-                "--regid=65534",
-                "--clear-groups",
-                env!("CARGO_BIN_EXE_kiln"),
-                "cache",
-                "gc",
-            ])
+            .args(["--reuid=65534", "--regid=65534", "--clear-groups"])
+            .arg(&binary)
+            .args(["cache", "gc"])
             .args(limit)
             .output()
             .expect("setpriv (util-linux) runs")
