@@ -156,9 +156,7 @@ pub(crate) fn scan(file: FileId, text: &str, range: Range<usize>) -> (Unit, Vec<
             // A directive goes on after a line splice, and through a block comment's line
             // breaks (C removes comments before reading directives).
             let mut end = line_end;
-            while end < range.end
-                && (line_content(&text[pos..end]).ends_with('\\') || comment_open(&text[pos..end]))
-            {
+            while end < range.end && (ends_with_splice(&text[pos..end]) || comment_open(&text[pos..end])) {
                 end = next_line(text, end, range.end);
             }
             if !scanner.directive(pos, end) {
@@ -170,7 +168,7 @@ pub(crate) fn scan(file: FileId, text: &str, range: Range<usize>) -> (Unit, Vec<
         } else {
             // A line splice joins the next line to this one, in text as in directives.
             let mut end = line_end;
-            while end < range.end && line_content(&text[pos..end]).ends_with('\\') {
+            while end < range.end && ends_with_splice(&text[pos..end]) {
                 end = next_line(text, end, range.end);
             }
             scanner.text_line(pos, end);
@@ -201,8 +199,12 @@ fn next_line(text: &str, pos: usize, end: usize) -> usize {
     text[pos..end].find('\n').map_or(end, |i| pos + i + 1)
 }
 
-fn line_content(line: &str) -> &str {
-    line.trim_end_matches(['\n', '\r'])
+/// Whether the last line of `lines` ends in a line splice (`\` right before its line break). Only
+/// that line's own break is removed before looking: an empty line after a spliced one ends the
+/// directive, as in C, rather than letting the `\` reach past it and swallow the code below.
+fn ends_with_splice(lines: &str) -> bool {
+    let line = lines.strip_suffix('\n').unwrap_or(lines);
+    line.strip_suffix('\r').unwrap_or(line).ends_with('\\')
 }
 
 /// Whether a line is a directive: `#` first, after blanks and block comments that close on the

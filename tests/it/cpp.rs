@@ -424,3 +424,18 @@ static UNARY_40: std::sync::LazyLock<String> = std::sync::LazyLock::new(|| {
     let (open, close) = ("-(~(".repeat(20), "))".repeat(20));
     format!("#if {open}1{close}\ndeep\n#endif\n")
 });
+
+/// A directive whose last line ends in `\` followed by an empty line ends at that empty line, as
+/// in C: kiln once carried it on to the next line with text, so a macro swallowed the function
+/// after it, silently.
+#[test]
+fn a_splice_before_an_empty_line_ends_the_directive_there() {
+    agree_with_cpp(
+        "a_splice_before_an_empty_line_ends_the_directive_there",
+        &[
+            ("#define X 1 \\\n\nfn keep() {}\nX\n", "fn keep ( ) { } 1", false),
+            ("#define Y(a) a + \\\n  2 \\\n\nfn after() {}\nY(1)\n", "fn after ( ) { } 1 + 2", false),
+            ("#define Z 3 \\\r\n\r\nfn z() {}\nZ\n", "fn z ( ) { } 3", false),
+        ],
+    );
+}
