@@ -83,6 +83,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0329", "`__VA_ARGS__` or `__VA_OPT__` misused"),
     ("K0330", "`defined` from a macro in `#if` (warning)"),
     ("K0331", "preprocessed text too large"),
+    ("K0332", "block comment never closed"),
     ("K0401", "WGSL syntax error"),
     ("K0402", "WGSL validation error"),
     ("K0403", "entry point not found"),

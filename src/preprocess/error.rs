@@ -39,6 +39,9 @@ pub enum PreprocessError {
         name: String,
         reason: String,
     },
+    UnterminatedComment {
+        span: Span,
+    },
     UnterminatedConditional {
         open: Span,
         directive: String,
@@ -211,6 +214,10 @@ impl From<PreprocessError> for Diagnostic {
                     .at(span, "included here")
                     .note(reason)
             }
+            UnterminatedComment { span } => Diagnostic::error("K0332", "block comment never closed")
+                .at(span, "this `/*` has no `*/` before the end of the file")
+                .note("everything after it, to the end of the file, is comment and was not compiled")
+                .help("close it with `*/` (WGSL's block comments nest: each `/*` needs its own)"),
             UnterminatedConditional { open, directive } => {
                 Diagnostic::error("K0305", format!("`#{directive}` without `#endif`"))
                     .at(open, "this conditional is never closed")

@@ -146,6 +146,7 @@ pub(crate) fn scan(file: FileId, text: &str, range: Range<usize>) -> (Unit, Vec<
         errors: Vec::new(),
         open: Vec::new(),
         comment_depth: 0,
+        comment_start: 0,
         run: None,
     };
     let mut pos = range.start;
@@ -288,6 +289,8 @@ struct Scanner<'a> {
     open: Vec<OpenConditional>,
     /// WGSL block comments nest, so this is a depth, not a flag.
     comment_depth: usize,
+    /// Where the outermost open block comment starts.
+    comment_start: usize,
     run: Option<TextRun>,
 }
 
@@ -333,7 +336,7 @@ impl Scanner<'_> {
             if bytes[i..end].starts_with(b"//") {
                 break;
             } else if bytes[i..end].starts_with(b"/*") {
-                self.comment_depth = 1;
+                (self.comment_depth, self.comment_start) = (1, i);
                 i += 2;
             } else if b == b'"' {
                 run.code = true;
@@ -494,7 +497,7 @@ impl Scanner<'_> {
                 out[i..].fill(b' ');
                 break;
             } else if rest.starts_with(b"/*") {
-                self.comment_depth = 1;
+                (self.comment_depth, self.comment_start) = (1, start + i);
                 out[i..i + 2].fill(b' ');
                 i += 2;
             } else if rest.starts_with(b"\\\n") || rest.starts_with(b"\\\r\n") {
@@ -765,6 +768,11 @@ impl Scanner<'_> {
     }
 
     fn close_unterminated(&mut self) {
+        // C refuses a comment the file does not close; everything after its `/*` was lost.
+        if self.comment_depth > 0 {
+            let span = self.span(self.comment_start..self.comment_start + 2);
+            self.errors.push(PreprocessError::UnterminatedComment { span });
+        }
         while let Some(open) = self.open.pop() {
             self.errors.push(PreprocessError::UnterminatedConditional {
                 open: open.span,

@@ -439,3 +439,23 @@ fn a_splice_before_an_empty_line_ends_the_directive_there() {
         ],
     );
 }
+
+/// A block comment the file never closes is an error in cpp, and in kiln (K0332), where kiln once
+/// took the rest of the file as comment silently; one closed on a later line is not.
+#[test]
+fn a_block_comment_never_closed_is_an_error_as_in_cpp() {
+    let cpp = tool("cpp", "cpp", "a_block_comment_never_closed_is_an_error_as_in_cpp");
+    for (text, open) in
+        [("fn kept() {}\n/* never closed\nfn lost() {}\n", true), ("a /* spans\nlines */ b\n", false)]
+    {
+        let (_, errors, _) = kiln_run(text, &[]);
+        assert_eq!(errors.contains("error[K0332]: block comment never closed"), open, "{text}: {errors}");
+        if cpp {
+            let theirs = cpp_run(text);
+            assert_eq!(theirs.is_err(), open, "{text}: cpp gave {theirs:?}");
+            if let Err(message) = theirs {
+                assert!(message.contains("unterminated comment"), "{message}");
+            }
+        }
+    }
+}
