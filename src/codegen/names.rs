@@ -47,7 +47,7 @@ pub(super) enum Case {
 }
 
 /// `name` as an identifier in `case`: ASCII letters, digits and `_` are kept (case changed),
-/// other ASCII becomes `_`, and every other character its code point (`Å` is `u00c5`), so that
+/// other ASCII becomes `_`, and every other character its code point in hex (`Å` is `uc5`), so that
 /// names without an ASCII letter still have a stable spelling and only ASCII reaches rustc (which
 /// would merge names that differ only in Unicode normalisation). A leading digit gets a `_`
 /// before it; a Rust keyword is written raw (`r#in`) or, where Rust allows no raw form, with a `_`
