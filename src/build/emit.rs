@@ -139,6 +139,7 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
     alongside: impl FnOnce() -> std::io::Result<u64> + Send,
 ) -> BuildResult {
     let mut files = Vec::new();
+    let cache = Cache::new(&options.output, true);
     if options.write && !diagnostics::has_errors(&diagnostics) {
         files = (pack_ends(manifest.shaders.iter().flat_map(|s| &s.passes)).into_iter())
             .map(|(path, len)| RecordedFile { path, len, hash: None })
@@ -154,7 +155,6 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
             },
             alongside,
         );
-        let cache = Cache::new(&options.output, true);
         match (staged, alongside.and_then(|copied| cache.forget_inputs().map(|()| copied))) {
             (Ok((materials, manifest)), Ok(copied)) => {
                 summary.bytes_written += copied;
@@ -178,12 +178,11 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
     }
     diagnostics::dedup(&mut diagnostics);
     if options.write && !diagnostics::has_errors(&diagnostics) {
-        let packs = files.iter().filter(|f| f.hash.is_none()).map(|f| f.path.clone()).collect();
-        Cache::new(&options.output, true).sweep(&packs);
+        cache.sweep(&files);
     }
     if options.write && options.record && diagnostics.is_empty() {
         // Only costs a full build next time if it cannot be written.
-        let _ = Cache::new(&options.output, true).record_inputs(&Recorded {
+        let _ = cache.record_inputs(&Recorded {
             key: inputs.to_string(),
             given: catalogue.given,
             shaders: summary.shaders,
@@ -224,7 +223,8 @@ struct StagedJson {
 }
 
 /// Writes JSON streamed, so that a million variants' manifest is never a string in memory, and
-/// hashed as it goes when a file is there already (see [`StagedJson::commit`]).
+/// hashed as it goes (the record names the hash, and [`StagedJson::commit`] compares it with the
+/// file there).
 fn stage_json(
     path: &std::path::Path,
     value: &impl serde::Serialize,
@@ -234,9 +234,8 @@ fn stage_json(
     let mut digest = Digest::default();
     // Hashed always: the record of a clean build names both files' hashes, and the manifest the
     // materials'.
-    let hash = true;
     let serialize = |out: &mut dyn std::io::Write| {
-        let mut hashed = Hashed { out, digest: Digest::default(), hash };
+        let mut hashed = Hashed { out, digest: Digest::default() };
         {
             // serde writes a token at a time: buffered before hashing, so the hasher (and the
             // file's own buffer) see large pieces (a 50 MB manifest took 0.8 s unbuffered).

@@ -45,9 +45,12 @@ const NAGA_VERSION: &str = "naga 30";
 const COMPILER_REVISION: u32 = 3;
 
 /// What compiled a module, as the shared cache records it beside each object: kiln's version and
-/// revision and naga's.
-pub(crate) fn compiler_id() -> String {
-    format!("kiln {} revision {COMPILER_REVISION} {NAGA_VERSION}", env!("CARGO_PKG_VERSION"))
+/// revision and naga's. Made once: every object fetched or published names it.
+pub(crate) fn compiler_id() -> &'static str {
+    static ID: std::sync::OnceLock<String> = std::sync::OnceLock::new();
+    ID.get_or_init(|| {
+        format!("kiln {} revision {COMPILER_REVISION} {NAGA_VERSION}", env!("CARGO_PKG_VERSION"))
+    })
 }
 
 /// Each worker thread's stack. naga's front end, validator and back ends recurse once per level

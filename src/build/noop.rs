@@ -94,8 +94,7 @@ pub fn unchanged(store: &mut SourceStore, options: &BuildOptions) -> Option<Buil
     }
     if options.write {
         // What a build stopped since left (its packs, its temporaries) goes, as after any build.
-        let packs = recorded.files.iter().filter(|f| f.hash.is_none()).map(|f| f.path.clone()).collect();
-        Cache::new(&options.output, true).sweep(&packs);
+        Cache::new(&options.output, true).sweep(&recorded.files);
     }
     let summary = BuildSummary {
         shaders: recorded.shaders,

@@ -157,7 +157,7 @@ pub(super) fn build_pass(
                             shared::publish_object(
                                 dir,
                                 &key,
-                                &super::compiler_id(),
+                                super::compiler_id(),
                                 &module.modules,
                                 &module.reflection,
                             );

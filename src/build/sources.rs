@@ -101,7 +101,7 @@ impl FrontSource for SharedCache {
 impl ModuleSource for SharedCache {
     fn module(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>> {
         let dir = pass.options.cache_dir.as_ref()?;
-        let (modules, reflection) = shared::fetch_object(dir, ask.key, &super::compiler_id())?;
+        let (modules, reflection) = shared::fetch_object(dir, ask.key, super::compiler_id())?;
         Some(Ok(Built::Fetched(Arc::new(Compiled { modules, reflection }))))
     }
 }

@@ -71,10 +71,17 @@ pub(crate) fn parse(text: &str, mapper: &Mapper) -> Result<naga::Module, Diagnos
 const MAX_OPERATORS: usize = 100_000;
 
 /// The statement of `text` with the most operators (binary ones, member accesses and indexing:
-/// what nests an expression one level deeper), with their count. A token-level scan: `;`, `{` and
+/// what nests an expression one level deeper), with their count, where it may pass
+/// [`MAX_OPERATORS`]. A token-level scan: `;`, `{` and
 /// `}` end a statement, comments are skipped, and a `-` or `!` that starts an operand counts for
 /// nothing (a table of negative numbers is one level deep).
 fn longest_statement(text: &str) -> Option<(std::ops::Range<usize>, usize)> {
+    // A level of an expression takes at least two bytes (an operand's and its operator's; bare
+    // brackets nest, and naga's parser stops those at 200): a text shorter than twice the limit
+    // cannot pass it, and is not scanned (every stage text goes by here).
+    if text.len() <= 2 * MAX_OPERATORS {
+        return None;
+    }
     let bytes = text.as_bytes();
     let (mut longest, mut start, mut count) = (None, 0, 0usize);
     let mut operand_before = false;

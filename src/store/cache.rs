@@ -222,19 +222,21 @@ impl OutputLock {
 }
 
 impl Cache {
-    /// Removes what the last clean build does not name: packs under `modules/` not in `packs`,
-    /// and temporaries a killed build left (`.NAME.RANDOM.tmp`) there, in the folder and in its
-    /// cache, so that an output folder (`kiln watch`'s, a build script's) holds only what ships.
-    /// Called with the folder's [`OutputLock`] held, after the build's files are in place.
-    /// Returns the files removed. (Pass indices stay: their modules are verified when read.)
-    pub fn sweep(&self, packs: &BTreeSet<String>) -> usize {
+    /// Removes what the last clean build (`files`, as its record names them) does not name:
+    /// packs under `modules/`, and temporaries a killed build left (`.NAME.RANDOM.tmp`) there,
+    /// in the folder and in its cache, so that an output folder (`kiln watch`'s, a build
+    /// script's) holds only what ships. Called with the folder's [`OutputLock`] held, after the
+    /// build's files are in place. Returns the files removed. (Pass indices stay: their modules
+    /// are verified when read.)
+    pub fn sweep(&self, files: &[RecordedFile]) -> usize {
+        let named: BTreeSet<&str> = files.iter().map(|f| f.path.as_str()).collect();
         let mut removed = 0;
         for folder in ["modules", ".", ".cache/pass", ".cache/build"] {
             let Ok(entries) = std::fs::read_dir(self.output.join(folder)) else { continue };
             for entry in entries.flatten() {
                 let name = entry.file_name().to_string_lossy().into_owned();
                 let temporary = name.starts_with('.') && name.ends_with(".tmp");
-                let stale = folder == "modules" && !packs.contains(&format!("modules/{name}"));
+                let stale = folder == "modules" && !named.contains(format!("modules/{name}").as_str());
                 let file = entry.file_type().is_ok_and(|t| t.is_file() || t.is_symlink());
                 if file && (temporary || stale) && std::fs::remove_file(entry.path()).is_ok() {
                     removed += 1;
@@ -426,25 +428,18 @@ impl Digest {
     }
 }
 
-/// Writes to `out` and counts what it writes, hashing it too when `hash` says so (there is an
-/// old file to compare with).
+/// Writes to `out` and hashes what it writes.
 pub struct Hashed<'a> {
     /// Where the bytes go.
     pub out: &'a mut dyn Write,
     /// What has gone through.
     pub digest: Digest,
-    /// Whether `digest` hashes, or only counts.
-    pub hash: bool,
 }
 
 impl Write for Hashed<'_> {
     fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
         let written = self.out.write(bytes)?;
-        if self.hash {
-            self.digest.write_all(&bytes[..written])?;
-        } else {
-            self.digest.len += written as u64;
-        }
+        self.digest.write_all(&bytes[..written])?;
         Ok(written)
     }
 

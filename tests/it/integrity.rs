@@ -2,7 +2,7 @@
 //! and the next build finishes; damaged cache entries and module files are detected by their
 //! hashes and rebuilt, never used.
 
-use crate::support::{build_clean as build, root, synthetic_project, verified_manifest};
+use crate::support::{build_clean as build, root, shipped, synthetic_project, verified_manifest};
 use kiln::manifest::Manifest;
 use std::time::Duration;
 
@@ -106,14 +106,6 @@ fn a_damaged_module_in_a_pack_is_recompiled_though_its_cache_entry_is_intact() {
     assert!(!damaged.is_empty());
     assert!(second.compiled >= 1 && second.compiled <= users && second.compiled < first.compiled);
     verified_manifest(&output);
-}
-
-/// What a build ships: every file of the output folder but its cache (which may keep entries of
-/// other states: they are verified when read).
-fn shipped(output: &std::path::Path) -> std::collections::BTreeMap<std::path::PathBuf, Vec<u8>> {
-    let mut files = crate::support::tree(output);
-    files.retain(|path, _| !path.starts_with(".cache"));
-    files
 }
 
 /// `kiln build PROJECT --output OUTPUT`, killed (debug builds: `KILN_KILL_AT`) just before its

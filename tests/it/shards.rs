@@ -3,7 +3,7 @@
 //! preprocesses nothing of passes that are not its own, and merge refuses shards that do not
 //! belong together.
 
-use crate::support::{compiled, kiln, synthetic_project, tree};
+use crate::support::{compiled, kiln, shipped, synthetic_project, tree};
 use expect_test::expect_file;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -470,11 +470,6 @@ fn a_merge_killed_before_any_rename_or_link_is_whole_when_run_again() {
     std::fs::write(earlier.join("Tint.wgsl"), "#define TINT 0.75\n").expect("write");
     let earlier_shards: Vec<PathBuf> = (1..=2).map(|i| dir.path().join(format!("earlier{i}"))).collect();
     build_shards(&earlier, &earlier_shards, None);
-    let shipped = |folder: &Path| {
-        let mut files = tree(folder);
-        files.retain(|path, _| !path.starts_with(".cache"));
-        files
-    };
     let mut kill_at = 1;
     loop {
         let out = dir.path().join(format!("merged{kill_at}"));

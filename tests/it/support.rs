@@ -181,6 +181,14 @@ pub fn tree(folder: &Path) -> std::collections::BTreeMap<PathBuf, Vec<u8>> {
         .collect()
 }
 
+/// What a build ships: every file of the output folder but its cache (which may keep entries of
+/// other states: they are verified when read).
+pub fn shipped(output: &Path) -> std::collections::BTreeMap<PathBuf, Vec<u8>> {
+    let mut files = tree(output);
+    files.retain(|path, _| !path.starts_with(".cache"));
+    files
+}
+
 /// The number of stage modules a build's summary line says it compiled.
 pub fn compiled(summary: &str) -> usize {
     let at = summary.find(" compiled,").expect("a summary line");
