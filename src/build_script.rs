@@ -228,16 +228,18 @@ impl Build {
 /// with no escapes, so a path with a line break (or any other control character) cannot be
 /// watched, and printing it would let the rest of its name speak to cargo: it is refused.
 fn rerun_if_changed(path: &Path) -> Result<String, Diagnostic> {
-    let text = path.to_string_lossy();
-    if text.contains(char::is_control) || matches!(text, std::borrow::Cow::Owned(_)) {
-        return Err(Diagnostic::error(
+    match path.to_str().filter(|text| !text.contains(char::is_control)) {
+        Some(text) => Ok(format!("cargo:rerun-if-changed={text}")),
+        None => Err(Diagnostic::error(
             "K0420",
-            format!("cargo cannot watch `{}`: its name holds a control character or is not UTF-8", text.escape_debug()),
+            format!(
+                "cargo cannot watch `{}`: its name holds a control character or is not UTF-8",
+                path.to_string_lossy().escape_debug()
+            ),
         )
         .note("a build script's lines to cargo have no escapes: a line break in a path would end its `cargo:rerun-if-changed` line and start another directive")
-        .help("rename the file or folder, or build it with the `kiln` command, which has no such limit"));
+        .help("rename the file or folder, or build it with the `kiln` command, which has no such limit")),
     }
-    Ok(format!("cargo:rerun-if-changed={text}"))
 }
 
 /// What cargo should watch: every file the build read and every folder it searched (so that a
