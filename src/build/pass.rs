@@ -15,7 +15,7 @@ use crate::config::Backend;
 use crate::diagnostics::Diagnostic;
 use crate::manifest::FileRef;
 use crate::preprocess::Includes;
-use crate::reflect::StageReflection;
+use crate::reflect::{SpirvGap, StageReflection};
 use crate::source::SourceStore;
 use crate::store::{Cache, CachedStage, ModuleBytes, PassIndex, hash, shared};
 use rayon::prelude::*;
@@ -176,6 +176,12 @@ pub(super) fn build_pass(
             }
             None => None,
         };
+        if let Some((stage, _)) = &stage
+            && let Some(gap) = &stage.reflection.spirv_gap
+            && options.backends.contains(&Backend::Spirv)
+        {
+            diagnostics.push(job.in_stage(spirv_gap_warning(gap, job)));
+        }
         modules.push(stage.map(|(stage, key)| {
             fresh.stage.insert(key, stage.clone());
             stage
@@ -193,6 +199,30 @@ pub(super) fn build_pass(
         reused,
         shared,
         bytes_written,
+    }
+}
+
+/// The warning for a module shipped as WGSL only (K0415). It is said from the module's
+/// reflection, so a module a cache gives warns as one naga compiled does.
+fn spirv_gap_warning(gap: &SpirvGap, job: &Job) -> Diagnostic {
+    let d =
+        Diagnostic::warning("K0415", format!("no SPIR-V for `{}`: {gap}; it ships as WGSL only", job.entry))
+            .at(job.entry_pragma, "this entry point");
+    let d = d.note(
+        "wgpu's Vulkan back end translates WGSL with the same naga writer, so on Vulkan this pipeline \
+         meets the same problem (docs/diagnostics.md)",
+    );
+    match gap {
+        SpirvGap::UniformMatrix { .. } => d.help(
+            "move the block to a `var<storage, read>` buffer, or store the matrix's columns as vector members",
+        ),
+        SpirvGap::AliasedArray { alias, ty } => {
+            d.help(format!("use `{alias}` (or `{ty}`) in every place, not both, to get SPIR-V"))
+        }
+        SpirvGap::Writer { .. } => d.help(
+            "this is a gap in naga's SPIR-V back end; please report it with this variant's `kiln preprocess` \
+             output (https://github.com/gfx-rs/wgpu/issues)",
+        ),
     }
 }
 

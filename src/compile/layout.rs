@@ -5,14 +5,13 @@
 //! early when nested or used as an array element (gfx-rs/wgpu#4377); and naga's WGSL writer drops
 //! `@align` and `@size`. kiln reads the attributes from the text ([`scan_structs`]), lays every
 //! struct out by the spec and rewrites naga's offsets, spans and strides before anything else
-//! sees the module ([`correct`]), writes the attributes back into the WGSL it emits
-//! ([`annotate_wgsl`]), and refuses what naga's SPIR-V writer cannot express
-//! ([`check_uniform_constructs`]).
+//! sees the module ([`correct`]), and writes the attributes back into the WGSL it emits
+//! ([`annotate_wgsl`]).
 
 use super::Mapper;
 use crate::diagnostics::Diagnostic;
 use crate::preprocess::{Kind, lex};
-use naga::{AddressSpace, ArraySize, Handle, Module, Type, TypeInner};
+use naga::{ArraySize, Handle, Module, Type, TypeInner};
 use std::collections::HashMap;
 use std::ops::Range;
 
@@ -463,74 +462,6 @@ pub(super) fn annotate_wgsl(wgsl: String, module: &Module, host: &HostLayout) ->
 fn writer_mismatch() -> Diagnostic {
     Diagnostic::error("K0409", "the WGSL writer's structs are not where kiln expects them")
         .note("kiln writes each struct member's `@align`/`@size` into naga's WGSL; this naga writes structs differently")
-}
-
-/// Refuses what naga's SPIR-V writer gets wrong in uniform buffers, which Vulkan drivers would
-/// reject or misread: a two-column-row matrix (`matCx2`) anywhere but directly in the block's
-/// struct or alone (naga's std140 rewrite misses nested structs and panics or writes invalid
-/// access chains), and `f16` matrices with 3 or 4 rows (column stride 8; std140 needs 16).
-pub(crate) fn check_uniform_constructs(
-    module: &Module,
-    text: &str,
-    mapper: &Mapper,
-) -> Result<(), Diagnostic> {
-    for (_, global) in module.global_variables.iter() {
-        if global.space != AddressSpace::Uniform {
-            continue;
-        }
-        if let Some((struct_ty, member, why, help)) = uniform_problem(module, global.ty, false) {
-            let struct_name = module.types[struct_ty].name.clone().unwrap_or_default();
-            let declared = scan_structs(text).into_iter().find(|s| s.name == struct_name);
-            let range = declared.as_ref().and_then(|s| s.members.get(member)).map(|m| m.range.clone());
-            let member_name = match &module.types[struct_ty].inner {
-                TypeInner::Struct { members, .. } => members[member].name.clone().unwrap_or_default(),
-                _ => String::new(),
-            };
-            let diagnostic = Diagnostic::error(
-                "K0415",
-                format!("`{struct_name}.{member_name}` in uniform buffer `{}`: {why}", global.name.as_deref().unwrap_or("?")),
-            )
-            .help(help)
-            .note("naga's SPIR-V writer cannot lay this out for Vulkan (docs/diagnostics.md); wgpu compiles WGSL through it too");
-            return Err(mapper.diagnostic_at(
-                diagnostic,
-                range.into_iter().map(|r| (r, "this member".to_string())).collect(),
-            ));
-        }
-    }
-    Ok(())
-}
-
-/// The first member of a uniform buffer's struct (or a struct nested in it, `nested`) that naga
-/// cannot write: (its struct, member index, why, help).
-fn uniform_problem(
-    module: &Module,
-    ty: Handle<Type>,
-    nested: bool,
-) -> Option<(Handle<Type>, usize, &'static str, &'static str)> {
-    let TypeInner::Struct { members, .. } = &module.types[ty].inner else { return None };
-    members.iter().enumerate().find_map(|(i, member)| {
-        let mut innermost = member.ty;
-        while let TypeInner::Array { base, .. } = module.types[innermost].inner {
-            innermost = base;
-        }
-        match module.types[innermost].inner {
-            TypeInner::Matrix { rows, scalar, .. } if scalar.width == 2 && rows != naga::VectorSize::Bi => Some((
-                ty,
-                i,
-                "an f16 matrix with 3 or 4 rows has a column stride of 8, which a Vulkan uniform buffer cannot have",
-                "use an f32 matrix, or move the block to a `var<storage, read>` buffer",
-            )),
-            TypeInner::Matrix { rows: naga::VectorSize::Bi, .. } if nested => Some((
-                ty,
-                i,
-                "a two-row matrix in a struct nested in a uniform buffer is written wrongly by naga's SPIR-V back end",
-                "move the matrix into the buffer's own struct, store its columns as `vec2` members, or use a `var<storage, read>` buffer",
-            )),
-            TypeInner::Struct { .. } => uniform_problem(module, innermost, true),
-            _ => None,
-        }
-    })
 }
 
 #[cfg(test)]

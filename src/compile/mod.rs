@@ -4,8 +4,10 @@
 //! - `bind.rs`: binding assignment by update frequency, one layout per pass.
 //! - `target.rs`: what `#pragma target` / `require` allow.
 //! - `layout.rs`: host-shareable layouts by the WGSL spec (naga's offsets corrected, `@align`/`@size`
-//!   written back into emitted WGSL, constructs naga's SPIR-V writer gets wrong refused).
+//!   written back into emitted WGSL).
 //! - `stage.rs`: one stage module from parsed text to WGSL, SPIR-V and reflection.
+//! - `wgsl.rs`: WGSL out, repaired where naga's writer misspells a construct, so that it loads again.
+//! - `gaps.rs`: what naga's SPIR-V writer cannot write (a module with it ships as WGSL only).
 //! - `messages.rs`: naga's validation errors with names instead of arena handles.
 //! - `panics.rs`: a panic while compiling one module caught as a value (K0416).
 //! - `spirv.rs`: corrections to naga's SPIR-V where it breaks a Vulkan rule (`SampleMask`).
@@ -14,12 +16,14 @@
 //! `crate::store`).
 
 pub mod bind;
+mod gaps;
 mod layout;
 mod messages;
 mod panics;
 mod spirv;
 pub(crate) mod stage;
 pub mod target;
+mod wgsl;
 
 use crate::diagnostics::Diagnostic;
 use crate::preprocess::{Preprocessed, SourceMap};

@@ -1,9 +1,21 @@
-//! Corrections to the SPIR-V naga writes, where naga's output breaks a Vulkan rule that
-//! `spirv-val` checks: today the `SampleMask` built-in, which naga declares as a scalar `u32`
-//! while Vulkan requires an array of 32-bit integers (VUID-SampleMask-SampleMask-04359). The
-//! variable becomes an array of one, and each load and store reaches its element through an
-//! access chain; nothing else in the module changes.
+//! Corrections to the SPIR-V naga (30) writes, where naga's output breaks a rule that
+//! `spirv-val` checks; nothing else in the module changes:
+//!
+//! - the `SampleMask` built-in, which naga declares as a scalar `u32` while Vulkan requires an
+//!   array of 32-bit integers (VUID-SampleMask-SampleMask-04359): the variable becomes an array
+//!   of one, and each load and store reaches its element through an access chain;
+//! - the size of a storage texture (`textureDimensions`, `textureNumLayers`), which naga queries
+//!   with `OpImageQuerySizeLod`, allowed only on sampled images (VUID-StandaloneSpirv-
+//!   OpImageQuerySizeLod-04659): it becomes `OpImageQuerySize`, which has no level;
+//! - a read of a storage texture whose format SPIR-V cannot name (`bgra8unorm`), which needs the
+//!   `StorageImageReadWithoutFormat` capability naga does not declare.
 
+const OP_CAPABILITY: u32 = 17;
+const OP_TYPE_IMAGE: u32 = 25;
+const OP_IMAGE_READ: u32 = 98;
+const OP_IMAGE_QUERY_SIZE_LOD: u32 = 103;
+const OP_IMAGE_QUERY_SIZE: u32 = 104;
+const CAPABILITY_STORAGE_IMAGE_READ_WITHOUT_FORMAT: u32 = 55;
 const OP_TYPE_INT: u32 = 21;
 const OP_TYPE_ARRAY: u32 = 28;
 const OP_TYPE_POINTER: u32 = 32;
@@ -28,14 +40,71 @@ impl Instruction {
     }
 }
 
-/// `words` with every scalar `SampleMask` variable made an array of one. A module that does not
-/// parse as SPIR-V, or has no such variable, is returned as it is.
-pub(super) fn sample_mask_as_array(words: Vec<u32>) -> Vec<u32> {
-    // Most modules have none: found without building the instruction list.
-    if !decorates_sample_mask(&words) {
+/// `words` with each correction made. A module that does not parse as SPIR-V, or needs none,
+/// is returned as it is.
+pub(super) fn corrected(words: Vec<u32>) -> Vec<u32> {
+    // Most modules need none: found without building the instruction list.
+    if !needs_correction(&words) {
         return words;
     }
     let Some(mut instructions) = parse(&words) else { return words };
+    let mut bound = words[3];
+    sample_mask_as_array(&mut instructions, &mut bound);
+    storage_image_queries(&mut instructions);
+    let mut out = Vec::with_capacity(words.len() + 32);
+    out.extend_from_slice(&words[..5]);
+    out[3] = bound;
+    for instruction in instructions {
+        out.push(((instruction.operands.len() as u32 + 1) << 16) | instruction.opcode);
+        out.extend(instruction.operands);
+    }
+    out
+}
+
+/// The image type of each storage image (`Sampled` 2), and of those the ones with an unknown
+/// format, by the ids of the values loaded from them.
+fn storage_image_queries(instructions: &mut Vec<Instruction>) {
+    let storage_types: Vec<(u32, bool)> = instructions
+        .iter()
+        .filter(|i| i.opcode == OP_TYPE_IMAGE && i.operands.get(6) == Some(&2))
+        .map(|i| (i.operands[0], i.operands.get(7) == Some(&0)))
+        .collect();
+    if storage_types.is_empty() {
+        return;
+    }
+    // Every value's type: an image operand is a loaded value.
+    let value_type: std::collections::HashMap<u32, u32> = instructions
+        .iter()
+        .filter(|i| i.opcode == OP_LOAD)
+        .filter_map(|i| Some((*i.operands.get(1)?, *i.operands.first()?)))
+        .collect();
+    let storage = |image: u32| {
+        let ty = value_type.get(&image)?;
+        storage_types.iter().find(|(t, _)| t == ty).map(|(_, unknown_format)| *unknown_format)
+    };
+    let mut reads_unknown_format = false;
+    for instruction in instructions.iter_mut() {
+        let Some(&image) = instruction.operands.get(2) else { continue };
+        match instruction.opcode {
+            OP_IMAGE_QUERY_SIZE_LOD if storage(image).is_some() => {
+                instruction.opcode = OP_IMAGE_QUERY_SIZE;
+                instruction.operands.truncate(3);
+            }
+            OP_IMAGE_READ if storage(image) == Some(true) => reads_unknown_format = true,
+            _ => {}
+        }
+    }
+    let declared = instructions
+        .iter()
+        .any(|i| i.opcode == OP_CAPABILITY && i.operands == [CAPABILITY_STORAGE_IMAGE_READ_WITHOUT_FORMAT]);
+    if reads_unknown_format && !declared {
+        instructions
+            .insert(0, Instruction::new(OP_CAPABILITY, vec![CAPABILITY_STORAGE_IMAGE_READ_WITHOUT_FORMAT]));
+    }
+}
+
+/// Every scalar `SampleMask` variable made an array of one.
+fn sample_mask_as_array(instructions: &mut Vec<Instruction>, bound: &mut u32) {
     let masks: Vec<u32> = instructions
         .iter()
         .filter(|i| {
@@ -44,13 +113,9 @@ pub(super) fn sample_mask_as_array(words: Vec<u32>) -> Vec<u32> {
         })
         .map(|i| i.operands[0])
         .collect();
-    if masks.is_empty() {
-        return words;
-    }
-    let mut bound = words[3];
     let mut fresh = || {
-        bound += 1;
-        bound - 1
+        *bound += 1;
+        *bound - 1
     };
     for mask in masks {
         let Some(at) =
@@ -111,26 +176,22 @@ pub(super) fn sample_mask_as_array(words: Vec<u32>) -> Vec<u32> {
             i += 2;
         }
     }
-    let mut out = Vec::with_capacity(words.len() + 32);
-    out.extend_from_slice(&words[..5]);
-    out[3] = bound;
-    for instruction in instructions {
-        out.push(((instruction.operands.len() as u32 + 1) << 16) | instruction.opcode);
-        out.extend(instruction.operands);
-    }
-    out
 }
 
-/// Whether any instruction is `OpDecorate %x BuiltIn SampleMask`.
-fn decorates_sample_mask(words: &[u32]) -> bool {
+/// Whether any instruction is one a correction is for: `OpDecorate %x BuiltIn SampleMask`, a
+/// size query with a level, or an image read.
+fn needs_correction(words: &[u32]) -> bool {
     let mut at = 5;
     while at < words.len() {
         let count = (words[at] >> 16) as usize;
         if count == 0 {
             return false;
         }
-        if words[at] & 0xffff == OP_DECORATE
-            && words.get(at + 2..at + 4) == Some(&[DECORATION_BUILT_IN, BUILT_IN_SAMPLE_MASK])
+        let opcode = words[at] & 0xffff;
+        if opcode == OP_IMAGE_QUERY_SIZE_LOD
+            || opcode == OP_IMAGE_READ
+            || opcode == OP_DECORATE
+                && words.get(at + 2..at + 4) == Some(&[DECORATION_BUILT_IN, BUILT_IN_SAMPLE_MASK])
         {
             return true;
         }

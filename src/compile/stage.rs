@@ -2,7 +2,8 @@
 //! point, validated with what its target allows, and written as WGSL and SPIR-V.
 
 use super::bind::{self, PassLayout};
-use super::layout::{self, HostLayout};
+use super::gaps;
+use super::layout;
 use super::panics::contain_panics;
 use super::target::Allowed;
 use super::{Mapper, validate};
@@ -103,38 +104,48 @@ fn compile_unguarded(
     let info = keep_entry_point(&mut module, request.entry, stage, request.allowed.capabilities(), mapper)
         .map_err(|d| located(d, request, mapper))?;
     check_limits(&module, request, mapper)?;
-    check_override_defaults(&module, mapper)?;
-    layout::check_uniform_constructs(&module, request.text, mapper)?;
+    check_override_defaults(&module, request.text, mapper)?;
 
     if injected("KILN_INJECT_BACKEND_ERROR", request.entry) {
         return Err(backend_error("WGSL", "fault injected by KILN_INJECT_BACKEND_ERROR".into()));
     }
+    let capabilities = request.allowed.capabilities();
     let wgsl = if request.backends.contains(&Backend::Wgsl) {
-        Some(write_wgsl(&module, &info, request.allowed.capabilities(), &host)?)
+        Some(super::wgsl::write(&module, &info, capabilities, &host)?)
     } else {
         None
     };
     // naga's SPIR-V writer cannot express specialisation constants: a module with `override`s
     // is WGSL only, specialised by wgpu (or naga's `process_overrides`) when a pipeline is made.
-    let spirv = if request.backends.contains(&Backend::Spirv) && module.overrides.is_empty() {
+    let (spirv, spirv_gap) = if request.backends.contains(&Backend::Spirv) && module.overrides.is_empty() {
         let options = naga::back::spv::Options {
-            lang_version: spirv_version(request.allowed.capabilities()),
+            lang_version: spirv_version(capabilities),
             flags: naga::back::spv::WriterFlags::empty(),
             ..naga::back::spv::Options::default()
         };
         let pipeline =
             naga::back::spv::PipelineOptions { shader_stage: stage, entry_point: request.entry.to_string() };
-        let words = naga::back::spv::write_vec(&module, &info, &options, Some(&pipeline))
-            .map_err(|e| backend_error("SPIR-V", e.to_string()))?;
-        Some(super::spirv::sample_mask_as_array(words))
+        let written = match gaps::before_writing(&module) {
+            Some(gap) => Err(gap),
+            None => gaps::write(&module, &info, &options, &pipeline),
+        };
+        match written {
+            Ok(words) => (Some(super::spirv::corrected(words)), None),
+            Err(gap) => (None, Some(gap)),
+        }
     } else {
-        None
+        (None, None)
     };
-    Ok(StageOutput {
-        wgsl,
-        spirv,
-        reflection: reflect_stage(&module, request.entry, &|ty| host.alignment(&module, ty)),
-    })
+    // A module that would ship nothing is an error: WGSL-only is the fallback, not an outcome.
+    if let (None, Some(gap)) = (&wgsl, &spirv_gap) {
+        let d = Diagnostic::error("K0415", format!("no SPIR-V for `{}`: {gap}", request.entry))
+            .at(request.entry_pragma, "compiling this entry point")
+            .help("add `wgsl` to `backends` in kiln.toml to ship this module as WGSL");
+        return Err(d);
+    }
+    let mut reflection = reflect_stage(&module, request.entry, &|ty| host.alignment(&module, ty));
+    reflection.spirv_gap = spirv_gap;
+    Ok(StageOutput { wgsl, spirv, reflection })
 }
 
 /// The SPIR-V version a module is written in: 1.0 (every Vulkan device) unless it may use 16-bit
@@ -157,49 +168,7 @@ fn keep_entry_point(
     validate(module, ValidationFlags::all(), capabilities, mapper)
 }
 
-/// WGSL for a validated module, with the struct layouts of the source (naga's writer drops
-/// `@align`/`@size`). naga's writer emits `enable f16;` only when a type declaration
-/// uses f16, not for f16 arithmetic in expressions (conversions, `h` literals), which the WGSL
-/// front end then rejects; a module allowed f16 always gets the directive.
-fn write_wgsl(
-    module: &naga::Module,
-    info: &naga::valid::ModuleInfo,
-    capabilities: naga::valid::Capabilities,
-    host: &HostLayout,
-) -> Result<String, Diagnostic> {
-    let wgsl = naga::back::wgsl::write_string(module, info, naga::back::wgsl::WriterFlags::empty())
-        .map_err(|e| backend_error("WGSL", e.to_string()))?;
-    let wgsl = layout::annotate_wgsl(wgsl, module, host)?;
-    let wgsl = override_workgroup_sizes(wgsl, module);
-    let needs_enable = capabilities.contains(naga::valid::Capabilities::SHADER_FLOAT16)
-        && !wgsl.lines().any(|line| line.trim() == "enable f16;");
-    Ok(if needs_enable { format!("enable f16;\n{wgsl}") } else { wgsl })
-}
-
-/// naga's WGSL writer (30) writes a workgroup size an `override` gives as 1: the entry point's
-/// `@workgroup_size` is written again with the constants' names. (Sizes given by other
-/// expressions are refused first: [`check_override_defaults`].)
-fn override_workgroup_sizes(wgsl: String, module: &naga::Module) -> String {
-    let Some(entry) = module.entry_points.first() else { return wgsl };
-    let Some(sizes) = &entry.workgroup_size_overrides else { return wgsl };
-    let dimension = |i: usize| match sizes[i].map(|e| &module.global_expressions[e]) {
-        Some(naga::Expression::Override(o)) => module.overrides[*o].name.clone().unwrap_or_default(),
-        _ => entry.workgroup_size[i].to_string(),
-    };
-    let Some(function) = wgsl.find(&format!("\nfn {}(", entry.name)) else { return wgsl };
-    let Some(start) = wgsl[..function].rfind("@workgroup_size(") else { return wgsl };
-    let Some(end) = wgsl[start..function].find(')').map(|e| start + e + 1) else { return wgsl };
-    format!(
-        "{}@workgroup_size({}, {}, {}){}",
-        &wgsl[..start],
-        dimension(0),
-        dimension(1),
-        dimension(2),
-        &wgsl[end..]
-    )
-}
-
-fn backend_error(backend: &str, message: String) -> Diagnostic {
+pub(super) fn backend_error(backend: &str, message: String) -> Diagnostic {
     Diagnostic::error("K0409", format!("the {backend} writer failed: {message}"))
         .note("naga validated the module, so this is a gap in naga's back end; please report it")
 }
@@ -228,7 +197,7 @@ fn located(diagnostic: Diagnostic, request: &StageRequest, mapper: &Mapper) -> D
 /// An `override` whose default is an expression (`override height = 2 * depth;`): naga's WGSL
 /// writer (30) can write only literals, constants and their composites there, and panics on
 /// the rest, so such a module is refused at the declaration, with the rewrite that works.
-fn check_override_defaults(module: &naga::Module, mapper: &Mapper) -> Result<(), Diagnostic> {
+fn check_override_defaults(module: &naga::Module, text: &str, mapper: &Mapper) -> Result<(), Diagnostic> {
     use naga::Expression as E;
     // A workgroup size an expression of overrides gives (`@workgroup_size(block * 2)`).
     for entry in &module.entry_points {
@@ -265,13 +234,26 @@ fn check_override_defaults(module: &naga::Module, mapper: &Mapper) -> Result<(),
         if writable {
             continue;
         }
-        let name = constant.name.clone().unwrap_or_default();
-        let d = Diagnostic::error(
-            "K0418",
-            format!("the default of `override {name}` is an expression naga's WGSL writer cannot write"),
-        )
-        .help("give it a literal default (or none), and compute the value where it is used");
         let range = module.overrides.get_span(handle).to_range();
+        // naga makes an unnamed `override` of an array size that is an expression of overrides.
+        let d = match &constant.name {
+            Some(name) => Diagnostic::error(
+                "K0418",
+                format!("the default of `override {name}` is an expression naga's WGSL writer cannot write"),
+            )
+            .help("give it a literal default (or none), and compute the value where it is used"),
+            None => {
+                let size = range.clone().and_then(|r| text.get(r)).unwrap_or("?");
+                Diagnostic::error(
+                    "K0418",
+                    format!(
+                        "the array size `{size}` is an expression of `override` constants, which naga's WGSL \
+                         writer cannot write"
+                    ),
+                )
+                .help("size the array by one `override` constant's name, or by a number")
+            }
+        };
         return Err(
             mapper.diagnostic_at(d, range.into_iter().map(|r| (r, "declared here".to_string())).collect())
         );

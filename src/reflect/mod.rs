@@ -35,6 +35,76 @@ pub struct StageReflection {
     /// Bytes of `var<workgroup>` memory the kernel uses.
     #[serde(default)]
     pub workgroup_memory: u32,
+    /// Why the module has no SPIR-V though SPIR-V was asked for (it ships as WGSL only).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub spirv_gap: Option<SpirvGap>,
+}
+
+/// A construct naga's SPIR-V writer cannot write correctly, for which a module ships as WGSL
+/// only (K0415).
+#[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
+pub enum SpirvGap {
+    /// A matrix in a uniform buffer that naga lays out against Vulkan's rules.
+    UniformMatrix {
+        /// The uniform buffer's variable.
+        buffer: String,
+        /// The member holding the matrix (`Struct.member`), or the buffer's own name.
+        member: String,
+        /// The matrix type, as WGSL writes it.
+        matrix: String,
+        /// What is wrong with it.
+        problem: MatrixProblem,
+    },
+    /// An `alias` of an array and the array type it names, both used: one type in WGSL, two in
+    /// naga's SPIR-V, which then assigns one to the other without a conversion.
+    AliasedArray {
+        /// The alias.
+        alias: String,
+        /// The type it names, as WGSL writes it.
+        ty: String,
+    },
+    /// naga's SPIR-V writer failed (or panicked) on a module its validator accepts.
+    Writer {
+        /// What it said.
+        message: String,
+    },
+}
+
+/// Why naga's SPIR-V for a matrix in a uniform buffer is wrong.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MatrixProblem {
+    /// An f16 matrix with 3 or 4 rows: column stride 8, where a uniform buffer needs 16.
+    F16Rows,
+    /// A two-row matrix inside a nested struct or an array of structs, which naga's std140
+    /// rewrite does not reach.
+    NestedTwoRows,
+}
+
+impl std::fmt::Display for SpirvGap {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            SpirvGap::UniformMatrix { buffer, member, matrix, problem: MatrixProblem::F16Rows } => write!(
+                f,
+                "`{member}` in uniform buffer `{buffer}` is an f16 matrix with 3 or 4 rows (`{matrix}`), whose \
+                 column stride of 8 bytes a Vulkan uniform buffer cannot have"
+            ),
+            SpirvGap::UniformMatrix { buffer, member, matrix, problem: MatrixProblem::NestedTwoRows } => {
+                write!(
+                    f,
+                    "`{member}` in uniform buffer `{buffer}` is a two-row matrix (`{matrix}`) inside a nested struct \
+                 or an array, which naga's SPIR-V writer lays out against Vulkan's rules"
+                )
+            }
+            SpirvGap::AliasedArray { alias, ty } => write!(
+                f,
+                "`alias {alias} = {ty}` and `{ty}` are both used: naga's SPIR-V writer makes them two types, \
+                 and an assignment from one to the other invalid"
+            ),
+            SpirvGap::Writer { message } => write!(f, "naga's SPIR-V writer failed: {message}"),
+        }
+    }
 }
 
 /// One resource the module uses, where it is bound.
@@ -150,6 +220,7 @@ pub fn reflect_stage(
         workgroup_size: None,
         workgroup_size_overrides: Vec::new(),
         workgroup_memory: 0,
+        spirv_gap: None,
     };
     if let Some(entry) = module.entry_points.iter().find(|e| e.name == entry_point) {
         if entry.stage == naga::ShaderStage::Compute {

@@ -214,14 +214,16 @@ fn check_covers_shaders_no_material_uses() {
     assert!(!root().join("fixtures/project/shaders/build").exists());
 }
 
-#[test]
-fn every_bad_build_input_has_a_pinned_diagnostic() {
-    let files = fixture_files("fixtures/bad/build", "shader");
-    assert!(files.len() >= 6);
+/// Builds each fixture of a folder, pins its diagnostics, and returns each fixture's output folder
+/// (in `dir`).
+fn build_fixtures(folder: &str, expect_errors: bool, dir: &Path) -> Vec<PathBuf> {
+    let files = fixture_files(folder, "shader");
+    let mut outputs = Vec::new();
     for path in files {
         let mut store = SourceStore::new();
+        let output = dir.join(path.file_stem().expect("name"));
         let mode = BuildMode {
-            write: false,
+            output: Some(output.clone()),
             unused_shaders: VariantSelection::All { limit: 4096 },
             threads: Some(1),
             ..BuildMode::default()
@@ -229,11 +231,44 @@ fn every_bad_build_input_has_a_pinned_diagnostic() {
         let (result, mut diagnostics) =
             build_project(&mut store, std::slice::from_ref(&path), &mode, &|_, _| {}).expect("exists");
         diagnostics.extend(result.diagnostics);
-        crate::support::assert_pinned(&path, &store, &diagnostics, true);
+        crate::support::assert_pinned(&path, &store, &diagnostics, expect_errors);
         let cli = kiln(&["check", path.to_str().expect("utf-8"), "--all-variants", "--format", "json"]);
-        assert_eq!(cli.status.code(), Some(1));
+        assert_eq!(cli.status.code(), Some(i32::from(expect_errors)));
         let json: serde_json::Value = serde_json::from_slice(&cli.stdout).expect("json");
         assert!(!json["diagnostics"].as_array().expect("array").is_empty());
+        outputs.push(output);
+    }
+    outputs
+}
+
+#[test]
+fn every_bad_build_input_has_a_pinned_diagnostic() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    assert!(build_fixtures("fixtures/bad/build", true, dir.path()).len() >= 6);
+}
+
+/// A construct naga's SPIR-V writer gets wrong in a module its validator accepts: the build
+/// warns (K0415, pinned), and the module ships as WGSL that loads, without SPIR-V.
+#[test]
+fn a_module_naga_cannot_write_as_spir_v_ships_as_wgsl_only_with_a_warning() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let outputs = build_fixtures("fixtures/warn/build", false, dir.path());
+    assert!(outputs.len() >= 2);
+    for output in outputs {
+        let manifest = kiln::manifest::Manifest::read(&output).expect("manifest");
+        let gaps: Vec<_> = manifest.stages().filter(|s| s.spirv().is_none()).collect();
+        assert!(!gaps.is_empty(), "{}: every module has SPIR-V", output.display());
+        for stage in gaps {
+            let wgsl = stage.wgsl().expect("WGSL").read(&output).expect("module");
+            let text = String::from_utf8(wgsl).expect("UTF-8");
+            let module = naga::front::wgsl::parse_str(&text).expect("kiln's WGSL parses again");
+            naga::valid::Validator::new(
+                naga::valid::ValidationFlags::all(),
+                naga::valid::Capabilities::all(),
+            )
+            .validate(&module)
+            .expect("kiln's WGSL validates again");
+        }
     }
 }
 

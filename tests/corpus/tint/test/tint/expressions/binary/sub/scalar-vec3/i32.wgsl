@@ -1,0 +1,6 @@
+@compute @workgroup_size(1)
+fn f() {
+    let a = 4;
+    let b = vec3<i32>(1, 2, 3);
+    let r : vec3<i32> = a - b;
+}

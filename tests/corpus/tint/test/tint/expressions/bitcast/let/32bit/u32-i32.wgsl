@@ -1,0 +1,5 @@
+@compute @workgroup_size(1)
+fn f() {
+    let a : u32 = u32(1073757184u);
+    let b : i32 = bitcast<i32>(a);
+}

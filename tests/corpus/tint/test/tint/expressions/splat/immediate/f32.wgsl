@@ -1,0 +1,6 @@
+@compute @workgroup_size(1)
+fn f() {
+    var v2 : vec2<f32> = vec2<f32>(1.0);
+    var v3 : vec3<f32> = vec3<f32>(1.0);
+    var v4 : vec4<f32> = vec4<f32>(1.0);
+}

@@ -1,0 +1,7 @@
+@compute @workgroup_size(1)
+fn f() {
+    var v = true || false;
+    var v2 : vec2<bool> = vec2<bool>(v);
+    var v3 : vec3<bool> = vec3<bool>(v);
+    var v4 : vec4<bool> = vec4<bool>(v);
+}

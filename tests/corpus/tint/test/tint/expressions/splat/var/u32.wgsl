@@ -1,0 +1,7 @@
+@compute @workgroup_size(1)
+fn f() {
+    var v = 1u + 2u;
+    var v2 : vec2<u32> = vec2<u32>(v);
+    var v3 : vec3<u32> = vec3<u32>(v);
+    var v4 : vec4<u32> = vec4<u32>(v);
+}

@@ -1,0 +1,9 @@
+// flags:  --hlsl-shader-model 6.2
+enable f16;
+var<private> u = mat2x3<f16>(1.0h, 2.0h, 3.0h,
+                             4.0h, 5.0h, 6.0h);
+
+@compute @workgroup_size(1)
+fn f() {
+    var v : mat2x3<f32> = mat2x3<f32>(u);
+}

@@ -1,0 +1,10 @@
+// flags:  --hlsl-shader-model 6.2
+enable f16;
+var<private> u : mat4x4<f16> = mat4x4<f16>(mat4x4<f32>(1.0f, 2.0f, 3.0f, 4.0f,
+                                                       5.0f, 6.0f, 7.0f, 8.0f,
+                                                       9.0f, 10.0f, 11.0f, 12.0f,
+                                                       13.0f, 14.0f, 15.0f, 16.0f));
+@compute @workgroup_size(1)
+fn main() {
+    _ = u;
+}

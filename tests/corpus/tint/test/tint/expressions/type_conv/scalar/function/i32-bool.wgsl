@@ -1,0 +1,10 @@
+var<private> t : i32;
+fn m() -> i32 {
+    t = 1i;
+    return i32(t);
+}
+
+@compute @workgroup_size(1)
+fn f() {
+    var v : bool = bool(m());
+}

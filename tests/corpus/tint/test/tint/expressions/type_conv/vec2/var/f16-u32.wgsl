@@ -1,0 +1,8 @@
+// flags:  --hlsl-shader-model 6.2
+enable f16;
+var<private> u = vec2<f16>(1.0h);
+
+@compute @workgroup_size(1)
+fn f() {
+    let v : vec2<u32> = vec2<u32>(u);
+}

@@ -1,0 +1,8 @@
+@group(0) @binding(0)
+var<storage, read_write> out : mat3x3<f32>;
+
+@compute @workgroup_size(1)
+fn f() {
+  var m = mat3x3<f32>();
+  out = mat3x3(m);
+}

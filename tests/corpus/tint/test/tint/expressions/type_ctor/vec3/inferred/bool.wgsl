@@ -1,0 +1,6 @@
+var<private> v = vec3(false, true, false);
+
+@compute @workgroup_size(1)
+fn main() {
+    _ = v;
+}

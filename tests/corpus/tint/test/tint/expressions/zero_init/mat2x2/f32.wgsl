@@ -1,0 +1,4 @@
+@compute @workgroup_size(1)
+fn f() {
+    var v = mat2x2<f32>();
+}

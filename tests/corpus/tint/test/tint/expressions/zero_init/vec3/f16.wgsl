@@ -1,0 +1,6 @@
+// flags:  --hlsl-shader-model 6.2
+enable f16;
+@compute @workgroup_size(1)
+fn f() {
+    var v = vec3<f16>();
+}

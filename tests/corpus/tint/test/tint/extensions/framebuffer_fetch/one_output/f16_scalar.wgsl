@@ -1,0 +1,6 @@
+enable chromium_experimental_framebuffer_fetch;
+enable f16;
+
+@fragment fn f(@color(0) fbf : f16) -> @location(0) f16 {
+  return fbf;
+}

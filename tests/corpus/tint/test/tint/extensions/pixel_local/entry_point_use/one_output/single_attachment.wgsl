@@ -1,0 +1,13 @@
+// flags: --pixel-local-attachments 0=1 --pixel-local-attachment-formats 0=R32Uint
+enable chromium_experimental_pixel_local;
+
+struct PixelLocal {
+  a : u32,
+}
+
+var<pixel_local> P : PixelLocal;
+
+@fragment fn f() -> @location(0) vec4f {
+  P.a += 42;
+  return vec4f(2);
+}

@@ -1,0 +1,10 @@
+struct S {
+  i : i32,
+};
+
+var<private> V : S;
+
+@compute @workgroup_size(1)
+fn main() {
+  let i : i32 = V.i;
+}

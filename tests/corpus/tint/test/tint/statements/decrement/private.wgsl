@@ -1,0 +1,6 @@
+var<private> i : i32 = 0;
+
+@compute @workgroup_size(1)
+fn main() {
+  i--;
+}

@@ -1,0 +1,5 @@
+@fragment
+fn f() {
+  discard;
+  return;
+}

@@ -1,0 +1,7 @@
+@fragment
+fn f() {
+  loop {
+    discard;
+    return;
+  }
+}

@@ -1,0 +1,6 @@
+@compute @workgroup_size(1)
+fn f() {
+  var i : i32;
+  for (;i < 4;) {
+  }
+}

@@ -1,0 +1,7 @@
+@group(0) @binding(0) var<storage, read_write> i : u32;
+
+@compute @workgroup_size(1)
+fn main() {
+  for (; i < 10u; i++) {
+  }
+}

@@ -1,0 +1,10 @@
+struct S {
+    a : i32,
+    b : f32,
+};
+
+@compute @workgroup_size(1)
+fn main() {
+    var v : S;
+    _ = v;
+}

@@ -1,0 +1,6 @@
+var<private> v : i32;
+
+@compute @workgroup_size(1)
+fn main() {
+    _ = v;
+}

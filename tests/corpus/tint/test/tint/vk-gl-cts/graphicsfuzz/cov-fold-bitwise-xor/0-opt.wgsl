@@ -1,0 +1,27 @@
+var<private> x_GLF_color : vec4<f32>;
+
+fn main_1() {
+  var a : i32;
+  var b : i32;
+  a = 6;
+  b = 5;
+  let x_6 : i32 = a;
+  let x_7 : i32 = b;
+  if (((x_6 ^ x_7) != 3)) {
+    x_GLF_color = vec4<f32>(0.0, 0.0, 0.0, 0.0);
+  } else {
+    x_GLF_color = vec4<f32>(1.0, 0.0, 0.0, 1.0);
+  }
+  return;
+}
+
+struct main_out {
+  @location(0)
+  x_GLF_color_1 : vec4<f32>,
+}
+
+@fragment
+fn main() -> main_out {
+  main_1();
+  return main_out(x_GLF_color);
+}
