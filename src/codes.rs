@@ -97,7 +97,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0412", "no shard holds a module"),
     ("K0413", "shards of another state of the project"),
     ("K0414", "layout attribute kiln cannot read"),
-    ("K0415", "a construct naga's SPIR-V writer cannot express"),
+    ("K0415", "a module without SPIR-V"),
     ("K0416", "internal error"),
     ("K0417", "`@align` below the member type's alignment"),
     ("K0418", "`override` expression naga cannot write"),
