@@ -84,6 +84,8 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0330", "`defined` from a macro in `#if` (warning)"),
     ("K0331", "preprocessed text too large"),
     ("K0332", "block comment never closed"),
+    ("K0333", "tokens after `#else` or `#endif` (warning)"),
+    ("K0334", "blanks between `\\` and the line break (warning)"),
     ("K0401", "WGSL syntax error"),
     ("K0402", "WGSL validation error"),
     ("K0403", "entry point not found"),

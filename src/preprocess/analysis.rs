@@ -143,5 +143,6 @@ fn condition_names(condition: &Condition, file: crate::source::FileId) -> Vec<(&
                 (name, Span::new(file, at..at + name.len()))
             })
             .collect(),
+        Condition::Missing { .. } => Vec::new(),
     }
 }

@@ -154,10 +154,19 @@ pub enum PreprocessError {
         keyword: String,
         declared: Span,
     },
+    /// Tokens after `#else` or `#endif`.
+    ExtraTokens {
+        span: Span,
+        directive: String,
+    },
+    /// `\`, blanks, then a line break.
+    SpliceAfterBlanks {
+        span: Span,
+    },
 }
 
 /// The directives the preprocessor knows, for the "unknown directive" help.
-pub(crate) const DIRECTIVES: [&str; 13] = [
+pub(crate) const DIRECTIVES: [&str; 15] = [
     "include",
     "include_with_pragmas",
     "define",
@@ -166,6 +175,8 @@ pub(crate) const DIRECTIVES: [&str; 13] = [
     "ifdef",
     "ifndef",
     "elif",
+    "elifdef",
+    "elifndef",
     "else",
     "endif",
     "error",
@@ -351,6 +362,18 @@ impl From<PreprocessError> for Diagnostic {
             .label(declared, "declared `dynamic_branch` here")
             .note("one module serves every value of a `dynamic_branch` keyword, so it is never a macro; it is an `override` constant set when the pipeline is created")
             .help(format!("branch with `if ({keyword}) {{ ... }}`, or declare it `shader_feature` to compile a variant for it")),
+            ExtraTokens { span, directive } => {
+                Diagnostic::warning("K0333", format!("tokens after `#{directive}` are ignored"))
+                    .at(span, "ignored")
+                    .note("C allows nothing after `#else` and `#endif`; gcc warns and goes on, as kiln does")
+                    .help("put the remark in a comment: `#endif // NAME`")
+            }
+            SpliceAfterBlanks { span } => {
+                Diagnostic::warning("K0334", "blanks between `\\` and the line break")
+                    .at(span, "this `\\` still joins the next line to this one")
+                    .note("gcc takes a `\\` followed by spaces or tabs at the end of a line as a line splice, and so does kiln")
+                    .help("remove the blanks after the `\\`, or the `\\` if the lines are not meant to join")
+            }
         }
     }
 }

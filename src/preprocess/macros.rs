@@ -97,12 +97,16 @@ fn comment_len(rest: &[u8]) -> Option<usize> {
 
 /// The length of a line splice (`\\` and a line break) at the start of `bytes`, or 0.
 pub(crate) fn splice_len(bytes: &[u8]) -> usize {
-    if bytes.starts_with(b"\\\n") {
-        2
-    } else if bytes.starts_with(b"\\\r\n") {
-        3
-    } else {
-        0
+    if bytes.first() != Some(&b'\\') {
+        return 0;
+    }
+    // gcc takes blanks between the `\` and the line break as a splice too, with a warning
+    // (K0334, from the scanner).
+    let blanks = bytes[1..].iter().take_while(|&&b| b == b' ' || b == b'\t').count();
+    match &bytes[1 + blanks..] {
+        [b'\n', ..] => 2 + blanks,
+        [b'\r', b'\n', ..] => 3 + blanks,
+        _ => 0,
     }
 }
 
@@ -111,7 +115,19 @@ pub(crate) fn unspliced(text: &str) -> Cow<'_, str> {
     if !text.contains('\\') {
         return Cow::Borrowed(text);
     }
-    Cow::Owned(text.replace("\\\r\n", "").replace("\\\n", ""))
+    let bytes = text.as_bytes();
+    let (mut out, mut copied, mut at) = (String::with_capacity(text.len()), 0, 0);
+    while let Some(found) = text[at..].find('\\') {
+        let splice = at + found;
+        let len = splice_len(&bytes[splice..]);
+        if len > 0 {
+            out.push_str(&text[copied..splice]);
+            copied = splice + len;
+        }
+        at = splice + len.max(1);
+    }
+    out.push_str(&text[copied..]);
+    Cow::Owned(out)
 }
 
 /// Whether a preprocessing number starts at `at`: a digit, or `.` and a digit.
@@ -849,14 +865,27 @@ pub(crate) fn glues(left: &str, right: &str) -> bool {
     let (Some(a), Some(b)) = (left.as_bytes().last().copied(), right.as_bytes().first().copied()) else {
         return false;
     };
-    // The word `left` ends with: a pp-number if it starts with a digit or `.`.
-    let word_start = left.bytes().rposition(|c| !(is_ident_char(c) || c == b'.')).map_or(0, |p| p + 1);
-    let number = left.as_bytes().get(word_start).is_some_and(|c| c.is_ascii_digit() || *c == b'.');
+    // The pp-number `left` ends with, if it does: digits, letters, `_`, `.`, and a sign after
+    // `e`, `E`, `p` or `P` (a paste can end one with its sign: `1.0e` `##` `-` is `1.0e-`).
+    let bytes = left.as_bytes();
+    let mut word_start = bytes.len();
+    while word_start > 0 {
+        let c = bytes[word_start - 1];
+        let signed = matches!(c, b'+' | b'-')
+            && word_start >= 2
+            && matches!(bytes[word_start - 2], b'e' | b'E' | b'p' | b'P');
+        if !(is_ident_char(c) || c == b'.' || signed) {
+            break;
+        }
+        word_start -= 1;
+    }
+    let number = bytes.get(word_start).is_some_and(|c| c.is_ascii_digit() || *c == b'.');
     if is_ident_char(a) && is_ident_char(b) {
         return true;
     }
-    // `1` `.5` is `1.5`, but `uv` `.x` is still `uv.x`.
-    if (number && b == b'.') || (a == b'.' && (b.is_ascii_digit() || b == b'.')) {
+    // A number goes on through letters, digits and `.`: `1` `.5` is `1.5`, `1e-` `1` is `1e-1`;
+    // but `uv` `.x` is still `uv.x`.
+    if (number && (is_ident_char(b) || b == b'.')) || (a == b'.' && (b.is_ascii_digit() || b == b'.')) {
         return true;
     }
     if number && matches!(a, b'e' | b'E' | b'p' | b'P') && matches!(b, b'+' | b'-') {

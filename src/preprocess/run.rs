@@ -194,6 +194,7 @@ impl<'a> Runner<'a> {
                     PreprocessError::WarningDirective { span: *span, message: message.clone() },
                     inclusion,
                 ),
+                Item::Refused(error) => self.report(error.clone(), inclusion),
             }
             i += 1;
         }
@@ -368,6 +369,15 @@ impl<'a> Runner<'a> {
         match condition {
             Condition::Defined { name, .. } => self.macros.contains_key(name.as_str()),
             Condition::NotDefined { name, .. } => !self.macros.contains_key(name.as_str()),
+            Condition::Missing { directive, span } => {
+                let error = PreprocessError::MalformedDirective {
+                    span: *span,
+                    directive: directive.to_string(),
+                    expected: "an expression",
+                };
+                self.report(error, inclusion);
+                false
+            }
             Condition::Expr { text, start } => {
                 let mut expander = Expander::for_condition(&self.macros, &mut self.hides);
                 let result = expr::evaluate(text, &mut expander);

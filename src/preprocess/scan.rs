@@ -80,6 +80,9 @@ pub(crate) enum Item {
         message: String,
         span: Span,
     },
+    /// A directive found malformed inside a conditional group: reported only when the run
+    /// reaches it, since C does not check directives in a group it skips.
+    Refused(PreprocessError),
 }
 
 impl Item {
@@ -92,7 +95,7 @@ impl Item {
             | Item::Define { span, .. }
             | Item::Error { span, .. }
             | Item::Warning { span, .. } => Some(*span),
-            Item::Undef { .. } | Item::Branch { .. } | Item::Endif => None,
+            Item::Undef { .. } | Item::Refused(_) | Item::Branch { .. } | Item::Endif => None,
         }
     }
 }
@@ -118,6 +121,12 @@ pub(crate) enum Condition {
     },
     NotDefined {
         name: String,
+        span: Span,
+    },
+    /// `#if` or `#elif` with nothing after it: an error only if the run evaluates it (C does not
+    /// evaluate an `#elif` after a taken group, DR 412).
+    Missing {
+        directive: &'static str,
         span: Span,
     },
 }
@@ -178,6 +187,7 @@ pub(crate) fn scan(file: FileId, text: &str, range: Range<usize>) -> (Unit, Vec<
     }
     scanner.flush_text();
     scanner.close_unterminated();
+    scanner.errors.extend(splices_after_blanks(file, text, range));
     scanner.unit.guard = include_guard(&scanner.unit.items);
     (scanner.unit, scanner.errors)
 }
@@ -205,7 +215,22 @@ fn next_line(text: &str, pos: usize, end: usize) -> usize {
 /// directive, as in C, rather than letting the `\` reach past it and swallow the code below.
 fn ends_with_splice(lines: &str) -> bool {
     let line = lines.strip_suffix('\n').unwrap_or(lines);
-    line.strip_suffix('\r').unwrap_or(line).ends_with('\\')
+    // gcc also splices a `\` with blanks before the line break (K0334 warns of it).
+    line.strip_suffix('\r').unwrap_or(line).trim_end_matches([' ', '\t']).ends_with('\\')
+}
+
+/// Each `\` with blanks between it and a line break in `text[range]`: a splice with a warning, as
+/// gcc has it (the blanks are often invisible, and a `\` elsewhere is no splice).
+fn splices_after_blanks(file: FileId, text: &str, range: Range<usize>) -> Vec<PreprocessError> {
+    let bytes = text.as_bytes();
+    text[range.clone()]
+        .match_indices('\\')
+        .map(|(at, _)| range.start + at)
+        .filter(|&at| {
+            splice_len(&bytes[at..range.end]) > 0 && matches!(bytes.get(at + 1), Some(b' ' | b'\t'))
+        })
+        .map(|at| PreprocessError::SpliceAfterBlanks { span: Span::new(file, at..at + 1) })
+        .collect()
 }
 
 /// Whether a line is a directive: `#` first, after blanks and block comments that close on the
@@ -381,6 +406,8 @@ impl Scanner<'_> {
         let (name_start, name) = cursor.ident();
         let whole = self.span(hash..content_end);
         let name_span = self.span(hash..name_start + name.len());
+        // What this directive finds wrong, deferred when it is inside a conditional group.
+        let found = self.errors.len();
         match name {
             // `#` alone is C's null directive.
             "" if cursor.rest().trim().is_empty() => {}
@@ -398,32 +425,30 @@ impl Scanner<'_> {
                     self.unit.items.push(Item::Undef { name });
                 }
             }
-            "ifdef" | "ifndef" => {
-                if let Some((macro_name, span)) = self.macro_name(&mut cursor, name, whole) {
-                    self.expect_end(&mut cursor, name);
-                    let condition = if name == "ifdef" {
-                        Condition::Defined { name: macro_name, span }
-                    } else {
-                        Condition::NotDefined { name: macro_name, span }
-                    };
-                    return self.open_conditional(name, name_span, condition);
+            "ifdef" | "ifndef" | "elifdef" | "elifndef" => {
+                let condition = match self.macro_name(&mut cursor, name, whole) {
+                    Some((macro_name, span)) => {
+                        self.expect_end(&mut cursor, name);
+                        if name.ends_with("ndef") {
+                            Condition::NotDefined { name: macro_name, span }
+                        } else {
+                            Condition::Defined { name: macro_name, span }
+                        }
+                    }
+                    // Keep the structure balanced so that the matching `#endif` is not reported too.
+                    None => Condition::Expr { text: "0".into(), start: 0 },
+                };
+                self.defer(found);
+                if name.starts_with("el") {
+                    self.branch(name, name_span, BranchKind::Elif(condition));
+                    return true;
                 }
-                // Keep the structure balanced so that the matching `#endif` is not reported too.
-                return self.open_conditional(
-                    name,
-                    name_span,
-                    Condition::Expr { text: "0".into(), start: 0 },
-                );
+                return self.open_conditional(name, name_span, condition);
             }
             "if" | "elif" => {
                 let rest_start = cursor.base + cursor.at;
                 let condition = if cursor.rest().trim().is_empty() {
-                    self.errors.push(PreprocessError::MalformedDirective {
-                        span: whole,
-                        directive: name.to_string(),
-                        expected: "an expression",
-                    });
-                    Condition::Expr { text: "0".into(), start: rest_start as u32 }
+                    Condition::Missing { directive: if name == "if" { "if" } else { "elif" }, span: whole }
                 } else {
                     Condition::Expr { text: cursor.rest().to_string(), start: rest_start as u32 }
                 };
@@ -431,14 +456,16 @@ impl Scanner<'_> {
                     return self.open_conditional(name, name_span, condition);
                 }
                 self.branch(name, name_span, BranchKind::Elif(condition));
+                return true;
             }
-            "else" => {
-                self.expect_end(&mut cursor, "else");
-                self.branch("else", name_span, BranchKind::Else);
-            }
-            "endif" => {
-                self.expect_end(&mut cursor, "endif");
-                self.endif(name_span);
+            "else" | "endif" => {
+                self.extra_tokens(&mut cursor, name);
+                if name == "else" {
+                    self.branch("else", name_span, BranchKind::Else);
+                } else {
+                    self.endif(name_span);
+                }
+                return true;
             }
             "error" | "warning" => {
                 let message = cursor.rest().trim();
@@ -466,7 +493,28 @@ impl Scanner<'_> {
                 .errors
                 .push(PreprocessError::UnknownDirective { span: name_span, name: other.to_string() }),
         }
+        self.defer(found);
         true
+    }
+
+    /// The errors found since `from`, made items when inside a conditional group: C reads only
+    /// the names of the directives in a group it skips, so they count only where the run goes.
+    fn defer(&mut self, from: usize) {
+        if !self.open.is_empty() {
+            let deferred: Vec<PreprocessError> = self.errors.drain(from..).collect();
+            self.unit.items.extend(deferred.into_iter().map(Item::Refused));
+        }
+    }
+
+    /// Tokens after `#else` or `#endif` (`#endif _GUARD_H`): a warning, as gcc gives.
+    fn extra_tokens(&mut self, cursor: &mut Cursor, directive: &str) {
+        let rest = cursor.rest();
+        let trimmed = rest.trim_start();
+        if !trimmed.trim_end().is_empty() {
+            let start = cursor.base + cursor.at + (rest.len() - trimmed.len());
+            let span = self.span(start..start + trimmed.trim_end().len());
+            self.errors.push(PreprocessError::ExtraTokens { span, directive: directive.to_string() });
+        }
     }
 
     /// The directive's text with comments and line continuations blanked out, byte for byte, so
@@ -500,8 +548,8 @@ impl Scanner<'_> {
                 (self.comment_depth, self.comment_start) = (1, start + i);
                 out[i..i + 2].fill(b' ');
                 i += 2;
-            } else if rest.starts_with(b"\\\n") || rest.starts_with(b"\\\r\n") {
-                let step = if rest[1] == b'\r' { 3 } else { 2 };
+            } else if splice_len(rest) > 0 {
+                let step = splice_len(rest);
                 out[i..i + step].fill(b' ');
                 i += step;
             } else {
@@ -675,7 +723,9 @@ impl Scanner<'_> {
             self.errors.push(PreprocessError::VariadicMisuse { span, name: name.to_string(), reason });
             return None;
         }
-        if name.is_empty() || name == "defined" || name.as_bytes()[0].is_ascii_digit() {
+        // `defined` cannot be defined, but `#ifdef defined` asks (and is false), as in gcc.
+        let asks = matches!(directive, "ifdef" | "ifndef" | "elifdef" | "elifndef");
+        if name.is_empty() || (name == "defined" && !asks) || name.as_bytes()[0].is_ascii_digit() {
             self.errors.push(PreprocessError::MalformedDirective {
                 span: whole,
                 directive: directive.to_string(),

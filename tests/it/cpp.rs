@@ -459,3 +459,76 @@ fn a_block_comment_never_closed_is_an_error_as_in_cpp() {
         }
     }
 }
+
+/// gcc joins `\`, blanks and a line break as a splice, with a warning; kiln once kept the `\` and
+/// ended the directive there.
+#[test]
+fn a_splice_with_blanks_before_the_line_break_joins_with_a_warning() {
+    agree_with_cpp(
+        "a_splice_with_blanks_before_the_line_break_joins_with_a_warning",
+        &[("#define S 1 \\  \n+ 2\nS\n", "1 + 2", true), ("#define T(a) a \\\t\n* 3\nT(2)\n", "2 * 3", true)],
+    );
+}
+
+/// C reads only the names of directives in a group it skips (for nesting): what would be an error
+/// in a taken group is none there; `#elif` after a taken group is not evaluated, so it may be
+/// empty (C's DR 412).
+#[test]
+fn directives_in_a_skipped_group_are_not_checked() {
+    agree_with_cpp(
+        "directives_in_a_skipped_group_are_not_checked",
+        &[
+            ("#if 0\n#define foo __VA_ARGS__\n#bogus\n#define\n#if\n#endif\n#endif\nkept\n", "kept", false),
+            ("#ifdef NOPE\n#undef 1\n#include\n#else\nelse_kept\n#endif\n", "else_kept", false),
+            ("#if 1\ntaken\n#elif\nskipped\n#endif\n", "taken", false),
+        ],
+    );
+}
+
+/// `#else` and `#endif` followed by tokens (`#endif _GUARD_H`, common in old headers): gcc warns
+/// and goes on.
+#[test]
+fn tokens_after_else_and_endif_warn() {
+    agree_with_cpp(
+        "tokens_after_else_and_endif_warn",
+        &[
+            ("#ifdef G\na\n#else G\nb\n#endif G\n", "b", true),
+            ("#ifndef _GUARD_H\n#define _GUARD_H\nguarded\n#endif _GUARD_H\n", "guarded", true),
+        ],
+    );
+}
+
+/// C23's `#elifdef` and `#elifndef` (gcc 12 on), and `defined` as the name `#ifdef` asks about.
+#[test]
+fn elifdef_elifndef_and_ifdef_defined_are_cs() {
+    agree_with_cpp(
+        "elifdef_elifndef_and_ifdef_defined_are_cs",
+        &[
+            ("#define X 1\n#if 0\na\n#elifdef X\nb\n#else\nc\n#endif\n", "b", false),
+            ("#if 0\na\n#elifndef Y\nb\n#endif\n", "b", false),
+            ("#define X 1\n#ifdef Y\na\n#elifndef X\nb\n#elifdef X\nc\n#endif\n", "c", false),
+            ("#ifdef defined\na\n#else\nb\n#endif\n#ifndef defined\nc\n#endif\n", "b c", false),
+        ],
+    );
+}
+
+/// A pasted preprocessing number is kept apart from the token after it in the output, as cpp
+/// keeps it (`1.0e` then `-1` is not the number `1.0e-1`).
+#[test]
+fn a_pasted_number_is_not_glued_to_the_next_token() {
+    let cpp = tool("cpp", "cpp", "a_pasted_number_is_not_glued_to_the_next_token");
+    for (text, expected) in [
+        ("#define E(x) x ## e\nE(1.0)-1\n", "1.0e -1"),
+        ("#define P(a, b) a ## b\nP(1.0e, -)1\n", "1.0e- 1"),
+        ("#define P(a, b) a ## b\nP(1, e)+2\n", "1e +2"),
+    ] {
+        let (ours, errors, _) = kiln_run(text, &[]);
+        assert!(errors.is_empty(), "{text}: {errors}");
+        let squeeze = |s: &str| s.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert_eq!(squeeze(&ours), expected, "{text}");
+        if cpp {
+            let (theirs, _) = cpp_run(text).unwrap_or_else(|e| panic!("{text}: cpp: {e}"));
+            assert_eq!(squeeze(&theirs), expected, "{text}: cpp");
+        }
+    }
+}
