@@ -293,8 +293,9 @@ fn resolve(
         };
         match property_value(property, value.get_ref()) {
             Ok(resolved) => {
+                // A reversed range (`Range(1, 0)`, which Unity accepts) holds what lies between.
                 if let (PropertyType::Range { min, max }, MaterialValue::Number(n)) = (property.ty, &resolved)
-                    && !(min..=max).contains(n)
+                    && !(min.min(max)..=max.max(min)).contains(n)
                 {
                     errors.push(MaterialError::OutOfRange {
                         span: span(value.span()),

@@ -122,9 +122,10 @@ impl From<ShaderLabError> for Diagnostic {
                 .at(span, "missing `(min, max)`")
                 .help("write `Range(0, 1)`"),
             RangeMinAboveMax { span, min, max } => {
-                Diagnostic::error("K0112", format!("range minimum {min} is above its maximum {max}"))
-                    .at(span, "empty range")
-                    .help(format!("swap the bounds: `Range({max}, {min})`"))
+                Diagnostic::warning("K0112", format!("range minimum {min} is above its maximum {max}"))
+                    .at(span, "a reversed range")
+                    .note("Unity accepts it and draws the slider from the first bound to the second; kiln accepts values between the two")
+                    .help(format!("swap the bounds if that is not meant: `Range({max}, {min})`"))
             }
             BoundsOnNonRange { span, ty } => Diagnostic::error("K0113", format!("`{ty}` takes no bounds"))
                 .at(span, "bounds are only allowed on `Range`")
@@ -139,9 +140,11 @@ impl From<ShaderLabError> for Diagnostic {
             )
             .at(span, format!("{found} components")),
             DuplicateProperty { span, first, name } => {
-                Diagnostic::error("K0116", format!("property `{name}` is declared twice"))
+                Diagnostic::warning("K0116", format!("property `{name}` is declared twice"))
                     .at(span, "declared again here")
                     .label(first, "first declared here")
+                    .note("as in Unity, both are one material value; its type and default are the first declaration's")
+                    .help("give each property a name of its own, unless the repeat is meant (an inspector line)")
             }
             UnknownValue { span, command, found, expected } => {
                 Diagnostic::error("K0120", format!("unknown `{command}` value `{found}`"))

@@ -119,6 +119,34 @@ fn syntax_error(file: FileId, text: &str, error: pest::error::Error<Rule>) -> Sh
     ShaderLabError::Syntax { span: Span::new(file, at..at + found_len), expected, found }
 }
 
+/// `text` split at the commas outside parentheses (`PBR(Metallic, Standard),0` is two parts).
+fn split_top_level(text: &str) -> Vec<&str> {
+    let (mut parts, mut depth, mut start) = (Vec::new(), 0usize, 0);
+    for (at, c) in text.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth = depth.saturating_sub(1),
+            ',' if depth == 0 => {
+                parts.push(&text[start..at]);
+                start = at + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&text[start..]);
+    parts
+}
+
+/// A `ZTest` word: a compare function, or `Off`, which Unity's own shaders write for `Always`
+/// (no depth test).
+fn ztest_word(word: &str) -> Option<CompareFunction> {
+    if word.eq_ignore_ascii_case("Off") {
+        Some(CompareFunction::Always)
+    } else {
+        CompareFunction::from_word(word)
+    }
+}
+
 fn token_len(rest: &str) -> usize {
     let word = rest.bytes().take_while(|b| b.is_ascii_alphanumeric() || *b == b'_' || *b == b'.').count();
     if word > 0 { word } else { rest.chars().next().map_or(0, char::len_utf8) }
@@ -127,7 +155,7 @@ fn token_len(rest: &str) -> usize {
 /// Plain words for what a rule stands for; `None` for rules that are implied by another.
 fn describe(rule: Rule) -> Option<&'static str> {
     Some(match rule {
-        Rule::string => "a quoted string",
+        Rule::string | Rule::display_name => "a quoted string",
         Rule::number => "a number",
         Rule::integer => "a whole number",
         Rule::ident => "a name",
@@ -209,9 +237,19 @@ impl Builder {
     /// A quoted string's text. Names, tags and display names end up in the manifest and in
     /// generated code, so control characters (bar tab) and bytes that were not UTF-8 are refused.
     fn string(&mut self, pair: P) -> Spanned<String> {
+        self.text(pair, false)
+    }
+
+    /// A property's display name: a string that may run over lines, as in Unity.
+    fn display_name(&mut self, pair: P) -> Spanned<String> {
+        self.text(pair, true)
+    }
+
+    fn text(&mut self, pair: P, line_breaks: bool) -> Spanned<String> {
         let span = self.span(&pair);
         let Some(inner) = pair.into_inner().next() else { return Spanned::new(String::new(), span) };
-        let forbidden = |c: char| (c.is_control() && c != '\t') || c == char::REPLACEMENT_CHARACTER;
+        let allowed = |c: char| c == '\t' || (line_breaks && (c == '\n' || c == '\r'));
+        let forbidden = |c: char| (c.is_control() && !allowed(c)) || c == char::REPLACEMENT_CHARACTER;
         if let Some((at, found)) = inner.as_str().char_indices().find(|&(_, c)| forbidden(c)) {
             let start = inner.as_span().start() + at;
             let span = Span::new(self.file, start..start + found.len_utf8());
@@ -261,6 +299,8 @@ impl Builder {
                     shader.properties.iter().map(|p| (p.name.value.clone(), p.name.span)).collect();
                 for property in item.into_inner().skip(1) {
                     if let Some(property) = self.property(property) {
+                        // Unity shows each declaration in its default inspector, all of them one
+                        // material value: the first declaration gives its type and default.
                         if let Some(&first) = declared.get(&property.name.value) {
                             self.errors.push(ShaderLabError::DuplicateProperty {
                                 span: property.name.span,
@@ -461,12 +501,16 @@ impl Builder {
         }
         let name_pair = inner.next().expect("grammar: property name");
         let name = Spanned::new(name_pair.as_str().to_string(), self.span(&name_pair));
-        let display_name = self.string(inner.next().expect("grammar: display name"));
+        let display_name = self.display_name(inner.next().expect("grammar: display name"));
         let ty = self.property_type(inner.next().expect("grammar: property type"));
         let default_pair = inner.next().expect("grammar: default");
-        let default = self.property_default(default_pair);
+        let mut default = self.property_default(default_pair);
         let ty = ty?;
         self.check_default(&ty, &default);
+        // Unity fills a `Vector` default's missing components with 0 (Poiyomi writes `(0, 0, 1)`).
+        if let (PropertyType::Vector, PropertyDefault::Vector(components)) = (&ty.value, &mut default.value) {
+            components.resize(4, 0.0);
+        }
         Some(Property { attributes, name, display_name, ty, default, span })
     }
 
@@ -481,8 +525,8 @@ impl Builder {
             .map(|text| {
                 let base = text.as_span().start();
                 let mut offset = 0;
-                text.as_str()
-                    .split(',')
+                split_top_level(text.as_str())
+                    .into_iter()
                     .map(|part| {
                         let lead = part.len() - part.trim_start().len();
                         let start = base + offset + lead;
@@ -580,9 +624,9 @@ impl Builder {
                     self.errors.push(ShaderLabError::RangeWithoutBounds { span });
                     return None;
                 };
+                // Unity accepts it (TextMesh Pro's `_GlowPower` is `Range(1, 0)`): a warning.
                 if min > max {
                     self.errors.push(ShaderLabError::RangeMinAboveMax { span, min, max });
-                    return None;
                 }
                 return Some(Spanned::new(PropertyType::Range { min, max }, span));
             }
@@ -649,7 +693,7 @@ impl Builder {
         if let PropertyDefault::Vector(components) = &default.value {
             let (ok, expected) = match ty.value {
                 PropertyType::Color => (matches!(components.len(), 3 | 4), "3 or 4"),
-                _ => (components.len() == 4, "4"),
+                _ => (matches!(components.len(), 3 | 4), "3 or 4"),
             };
             if !ok {
                 self.errors.push(ShaderLabError::VectorComponents {
@@ -726,7 +770,7 @@ impl Builder {
             Rule::ztest => RenderCommandKind::ZTest(self.word_value(
                 rest.pop()?,
                 "ZTest",
-                CompareFunction::from_word,
+                ztest_word,
                 CompareFunction::NAMES,
             )?),
             Rule::cull => RenderCommandKind::Cull(self.word_value(

@@ -175,6 +175,9 @@ pub const TARGET_LEVELS: [(&str, &[&str]); 8] = [
     ("5.0", &["interpolators32", "mrt8", "sparsetex", "framebufferfetch", "setrtarrayindexfromanyshader"]),
 ];
 
+/// Unity's other names for target levels, by the graphics API that has them.
+pub const TARGET_ALIASES: [(&str, &str); 3] = [("es3.0", "3.5"), ("es3.1", "4.5"), ("gl4.1", "4.6")];
+
 /// Every requirement name `#pragma require` accepts.
 pub const REQUIREMENTS: [&str; 30] = [
     "interpolators10",
@@ -283,6 +286,8 @@ pub enum PragmaError {
     UnknownRequirement { span: Span, found: String },
     UnknownKeywordPragma { span: Span, found: String },
     ConflictingEntryPoint { span: Span, first: Span, stage: &'static str },
+    MisspeltPragma { span: Span, found: String, suggestion: String },
+    FragmentWithoutVertex { span: Span },
 }
 
 impl From<PragmaError> for Diagnostic {
@@ -340,6 +345,17 @@ impl From<PragmaError> for Diagnostic {
                         "write `multi_compile`, `shader_feature` or `dynamic_branch`, optionally followed by \
                          `_local` and then `_vertex` or `_fragment`",
                     )
+            }
+            MisspeltPragma { span, found, suggestion } => {
+                Diagnostic::warning("K0211", format!("unknown pragma `{found}`: it does nothing"))
+                    .at(span, "not a pragma kiln or Unity knows")
+                    .help(format!("did you mean `#pragma {suggestion}`?"))
+            }
+            FragmentWithoutVertex { span } => {
+                Diagnostic::error("K0215", "a fragment stage without a vertex stage")
+                    .at(span, "the pass's fragment entry point")
+                    .note("a render pipeline needs a vertex stage; the pass would be built with a fragment stage alone")
+                    .help("name the vertex entry point with `#pragma vertex NAME` (check its spelling)")
             }
             ConflictingEntryPoint { span, first, stage } => {
                 Diagnostic::error("K0209", format!("the {stage} entry point is named twice"))
@@ -498,10 +514,13 @@ fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<Pragma
         }
         "target" => {
             let mut args = line.args.into_iter();
-            let Some(level) = args.next() else {
+            let Some(mut level) = args.next() else {
                 errors.push(missing("a target level such as `3.5`"));
                 return;
             };
+            if let Some((_, canonical)) = TARGET_ALIASES.iter().find(|(alias, _)| *alias == level.value) {
+                level.value = canonical.to_string();
+            }
             if !TARGET_LEVELS.iter().any(|(known, _)| *known == level.value) {
                 errors.push(PragmaError::UnknownTarget { span: level.span, found: level.value });
                 return;
@@ -565,10 +584,70 @@ fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<Pragma
                     found: name.to_string(),
                 });
             } else {
+                if let Some(suggestion) = misspelt(name) {
+                    errors.push(PragmaError::MisspeltPragma {
+                        span: line.name.span,
+                        found: name.to_string(),
+                        suggestion,
+                    });
+                }
                 pragmas.other.push((line.name, line.rest));
             }
         }
     }
+}
+
+/// Pragmas Unity knows that configure what kiln does not do (surface shaders, other stages,
+/// renderers, compiler switches): passed over, and never taken for a misspelling.
+const UNITY_PRAGMAS: [&str; 20] = [
+    "surface",
+    "geometry",
+    "hull",
+    "domain",
+    "raytracing",
+    "only_renderers",
+    "exclude_renderers",
+    "enable_d3d11_debug_symbols",
+    "hlslcc_bytecode_disassembly",
+    "disable_fastmath",
+    "editor_sync_compilation",
+    "enable_cbuffer",
+    "fragmentoption",
+    "glsl_no_auto_normalization",
+    "debug",
+    "use_dxc",
+    "never_use_dxc",
+    "skip_optimizations",
+    "prefer_hlslcc",
+    "multi_compile_local_instancing",
+];
+
+/// The pragma `name` is likely a misspelling of: one kiln reads (or Unity knows) within two
+/// edits, for a name of four letters or more that is none of them.
+fn misspelt(name: &str) -> Option<String> {
+    let mut known: Vec<String> =
+        ["vertex", "fragment", "kernel", "target", "require", "skip_variants", "instancing_options", "once"]
+            .iter()
+            .chain(&UNITY_PRAGMAS)
+            .chain(SHORTHANDS.iter().map(|(short, _)| short))
+            .map(|s| s.to_string())
+            .collect();
+    for kind in ["multi_compile", "shader_feature", "dynamic_branch"] {
+        for scope in ["", "_local"] {
+            for stage in std::iter::once("").chain(KeywordStage::SUFFIXES.iter().map(|(s, _)| *s)) {
+                known.push(format!("{kind}{scope}{stage}"));
+            }
+        }
+    }
+    if name.len() < 4 || known.iter().any(|k| k == name) {
+        return None;
+    }
+    known
+        .into_iter()
+        .map(|k| (strsim::damerau_levenshtein(&k, name), k))
+        .filter(|(distance, _)| *distance <= 2)
+        .min_by_key(|(distance, _)| *distance)
+        .map(|(_, k)| k)
 }
 
 /// Splits `shader_feature_local_fragment` into its kind, scope and stage.
@@ -640,6 +719,9 @@ fn keyword_set(
 
 /// Pass-wide rules once every line is in: instancing options, keywords declared twice.
 fn finish(pragmas: &mut ProgramPragmas, errors: &mut Vec<PragmaError>) {
+    if let (Some(fragment), None) = (&pragmas.fragment, &pragmas.vertex) {
+        errors.push(PragmaError::FragmentWithoutVertex { span: fragment.span });
+    }
     if pragmas.instancing_options.iter().any(|o| o.value.starts_with("procedural:")) {
         for set in &mut pragmas.keyword_sets {
             if set.shorthand == Some("multi_compile_instancing") {

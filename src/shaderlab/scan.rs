@@ -50,6 +50,11 @@ pub(crate) fn scan(file: FileId, text: &str) -> (Vec<ShaderLabError>, Vec<Shader
                         1
                     };
                 }
+                if bytes.get(j) == Some(&b'\n')
+                    && let Some(close) = display_name_end(bytes, i)
+                {
+                    j = close;
+                }
                 if j >= bytes.len() || bytes[j] != b'"' {
                     let end = j.min(bytes.len());
                     let end = if end > i + 1 && bytes[end - 1] == b'\r' { end - 1 } else { end };
@@ -110,6 +115,23 @@ pub(crate) fn scan(file: FileId, text: &str) -> (Vec<ShaderLabError>, Vec<Shader
         braces.push(ShaderLabError::UnclosedBrace { open: Span::new(file, outer..outer + 1), likely });
     }
     (errors, braces)
+}
+
+/// Where a property's display name that runs over lines closes: a string right after `NAME (`
+/// whose closing quote is followed by `,` (Unity reads `_Mode ("Preset--{...\n...}", Int)`).
+/// Any other string ends on its line.
+fn display_name_end(bytes: &[u8], open: usize) -> Option<usize> {
+    let before = bytes[..open].iter().rposition(|b| !b.is_ascii_whitespace())?;
+    let name_end = bytes[..before].iter().rposition(|b| !b.is_ascii_whitespace())?;
+    if bytes[before] != b'(' || !(bytes[name_end].is_ascii_alphanumeric() || bytes[name_end] == b'_') {
+        return None;
+    }
+    let mut j = open + 1;
+    while j < bytes.len() && bytes[j] != b'"' {
+        j += if bytes[j] == b'\\' { 2 } else { 1 };
+    }
+    let after = bytes.get(j + 1..)?.iter().find(|b| !b.is_ascii_whitespace());
+    (after == Some(&b',')).then_some(j)
 }
 
 fn program_opening(word: &str) -> Option<(ProgramLanguage, bool)> {

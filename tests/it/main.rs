@@ -29,5 +29,6 @@ mod shards;
 mod support;
 mod tidy;
 mod trust;
+mod unity_corpus;
 mod validators;
 mod wgsl_corpora;

@@ -260,3 +260,55 @@ fn placeholder_may_come_last() {
     assert_eq!(options, [Some("_TOON_RAMP"), Some("_TOON_SOFT"), None]);
     assert!(toon.has_off_option());
 }
+
+/// The constructs of real Unity files that Unity accepts and kiln once refused, read as Unity
+/// reads them (tests/corpus/unity holds the files they come from).
+#[test]
+fn unity_s_quirks_read_as_unity_reads_them() {
+    let text = "Shader \"Quirks\" {\n    Properties {\n        \
+        [Enum(PBR(Unity Metallic Standard),0,Baked Cubemap,1)] _Mode (\"Mode\", Int) = 0\n        \
+        [Header(Color Modifier (By Speed))] _Speed (\"Speed\", Float) = 1\n        \
+        _Preset (\"Rendering Preset--{on_value_actions:[\n            {value:0,actions:[]}\n        ]}\", Int) = 0\n        \
+        _Forward (\"Forward\", Vector) = (0, 0, 1)\n    }\n    \
+        SubShader {\n        Pass {\n            ZTest Off\n        }\n    }\n}\n";
+    let shader = parse(text);
+    let mode = shader.property("_Mode").expect("_Mode");
+    assert_eq!(
+        mode.attributes[0].kind,
+        AttributeKind::Enum(vec![
+            "PBR(Unity Metallic Standard)".into(),
+            "0".into(),
+            "Baked Cubemap".into(),
+            "1".into()
+        ])
+    );
+    let speed = shader.property("_Speed").expect("_Speed");
+    assert_eq!(speed.attributes[0].kind, AttributeKind::Header("Color Modifier (By Speed)".into()));
+    let preset = shader.property("_Preset").expect("_Preset");
+    assert_eq!(
+        preset.display_name.value,
+        "Rendering Preset--{on_value_actions:[\n            {value:0,actions:[]}\n        ]}"
+    );
+    let forward = shader.property("_Forward").expect("_Forward");
+    assert_eq!(forward.default.value, PropertyDefault::Vector(vec![0.0, 0.0, 1.0, 0.0]));
+    let PassItem::Pass(pass) = &shader.subshaders[0].passes[0] else { panic!("a pass") };
+    assert!(matches!(
+        &pass.state.render_state[0].kind,
+        RenderCommandKind::ZTest(z) if z.value == Value::Literal(kiln::manifest::state::CompareFunction::Always)
+    ));
+}
+
+/// A string that is not a display name still ends on its line: a missing quote is found where it
+/// is, not at the next quote lines below.
+#[test]
+fn only_a_display_name_runs_over_lines() {
+    let mut store = SourceStore::new();
+    let text = "Shader \"Broken {\n    Properties {\n        _A (\"A\", Float) = 0\n    }\n}\n";
+    let file = store.add("broken.shader", text);
+    let parsed = parse_shader(&store, file);
+    assert!(
+        parsed.diagnostics.iter().any(|d| d.code == "K0101"),
+        "{}",
+        render_plain(&store, &parsed.diagnostics)
+    );
+}

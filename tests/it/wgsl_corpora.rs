@@ -56,11 +56,6 @@ struct NagaVerdict {
     kernels: Vec<String>,
 }
 
-impl NagaVerdict {
-    fn compute_only(&self) -> bool {
-        self.entry_points.is_empty() && !self.kernels.is_empty()
-    }
-}
 
 fn naga_alone(text: &str) -> NagaVerdict {
     match naga::front::wgsl::parse_str(text) {
