@@ -236,3 +236,36 @@ fn loads_again(wgsl: &str, capabilities: naga::valid::Capabilities) -> Result<()
         .map_err(|e| refused(e.as_inner().to_string()))?;
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// naga's own WGSL for each construct does not load again, and kiln's repaired WGSL does
+    /// (the cases come from Tint's end-to-end tests, where they were found).
+    #[test]
+    fn each_construct_naga_misspells_is_repaired_so_that_it_loads() {
+        let capabilities = naga::valid::Capabilities::all();
+        for source in [
+            "@compute @workgroup_size(1) fn main() { var a = modf(1.5); let w = a.whole; }",
+            "@compute @workgroup_size(1) fn main() { var a = frexp(vec2(1.5, 2.0)); let e = a.exp; }",
+            "@compute @workgroup_size(1) fn main() { let a = 1.0; let b = 0.0; let r = a / b; }",
+            "override size = 2; var<workgroup> v: array<f32, size>;\n\
+             @compute @workgroup_size(1) fn main() { let x = v[0]; }",
+        ] {
+            let module = naga::front::wgsl::parse_str(source).expect("parses");
+            let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities)
+                .validate(&module)
+                .expect("validates");
+            let plain =
+                naga::back::wgsl::write_string(&module, &info, naga::back::wgsl::WriterFlags::empty())
+                    .expect("writes");
+            assert!(loads_again(&plain, capabilities).is_err(), "naga's own WGSL loads now:\n{plain}");
+            let (repaired, changed) = repair(plain, &module);
+            assert!(changed);
+            if let Err(d) = loads_again(&repaired, capabilities) {
+                panic!("{source}\n{repaired}\n{}", d.message);
+            }
+        }
+    }
+}

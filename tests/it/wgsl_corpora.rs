@@ -56,7 +56,6 @@ struct NagaVerdict {
     kernels: Vec<String>,
 }
 
-
 fn naga_alone(text: &str) -> NagaVerdict {
     match naga::front::wgsl::parse_str(text) {
         Err(error) => {
