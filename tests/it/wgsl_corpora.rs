@@ -106,18 +106,31 @@ fn naga_alone(text: &str) -> NagaVerdict {
     }
 }
 
+/// The vertex entry point a fragment entry point's pass is given.
+const CORPUS_VERTEX: &str = "kiln_corpus_vertex";
+
 /// `file` as a shader of its own: a pass per entry point, each including the file whole, at the
-/// highest target (so kiln's interpolator and colour-target limits are WebGPU's).
+/// highest target (so kiln's interpolator and colour-target limits are WebGPU's). A fragment
+/// entry point's pass gets a vertex stage of its own after the file (a pass needs one, K0215).
 fn wrapper(label: &str, name: &str, text: &str, entry_points: &[(&str, String)]) -> String {
     let require = if text.contains("enable f16") { "#pragma require native16bit\n" } else { "" };
     let mut out = format!("Shader \"{label}/{name}\" {{\n    SubShader {{\n");
     let passes: Vec<Option<&(&str, String)>> =
         if entry_points.is_empty() { vec![None] } else { entry_points.iter().map(Some).collect() };
     for entry in passes {
-        let pragma = entry.map(|(stage, name)| format!("#pragma {stage} {name}\n")).unwrap_or_default();
+        let (pragma, after) = match entry {
+            Some(("fragment", entry)) => (
+                format!("#pragma vertex {CORPUS_VERTEX}\n#pragma fragment {entry}\n"),
+                format!(
+                    "@vertex fn {CORPUS_VERTEX}() -> @builtin(position) vec4<f32> {{ return vec4<f32>(); }}\n"
+                ),
+            ),
+            Some((stage, entry)) => (format!("#pragma {stage} {entry}\n"), String::new()),
+            None => (String::new(), String::new()),
+        };
         let _ = write!(
             out,
-            "        Pass {{\nWGSLPROGRAM\n#pragma target 5.0\n{require}{pragma}#include \"{name}\"\nENDWGSL\n        }}\n"
+            "        Pass {{\nWGSLPROGRAM\n#pragma target 5.0\n{require}{pragma}#include \"{name}\"\n{after}ENDWGSL\n        }}\n"
         );
     }
     out.push_str("    }\n}\n");
