@@ -172,7 +172,11 @@ impl Build {
         };
         let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
         problems.extend(result.diagnostics);
-        let mut cargo_lines = Vec::new();
+        let crate_root = std::env::var_os("CARGO_MANIFEST_DIR").map(PathBuf::from);
+        let mut cargo_lines: Vec<String> = match (self.paths.first(), crate_root) {
+            (Some(project), Some(crate_root)) => unread_config(project, &crate_root).into_iter().collect(),
+            _ => Vec::new(),
+        };
         for path in watched(store.files_read(), store.searched(), &out_dir) {
             match rerun_if_changed(&path) {
                 Ok(line) => cargo_lines.push(line),
@@ -222,6 +226,32 @@ impl Build {
         }
         Ok(BuildOutput { module, manifest, summary: result.summary, cargo_lines })
     }
+}
+
+/// A `cargo:warning` when the project folder has no `kiln.toml` but a folder above it, up to the
+/// crate's root, has one: the build reads only the project folder's (as `kiln build FOLDER`
+/// does), and a file at the crate root, where `kiln build` run there finds it, would otherwise be
+/// ignored without a word.
+fn unread_config(project: &Path, crate_root: &Path) -> Option<String> {
+    if !project.is_dir() || project.join(crate::config::FILE_NAME).is_file() {
+        return None;
+    }
+    // Resolved: `../../shaders` from a crate lies outside it, though it starts with its path.
+    let crate_root = std::fs::canonicalize(crate_root).ok()?;
+    let folder = std::fs::canonicalize(project).ok()?;
+    let above = folder
+        .ancestors()
+        .skip(1)
+        .take_while(|a| a.starts_with(&crate_root))
+        .find(|a| a.join(crate::config::FILE_NAME).is_file())?;
+    let (project, above) = (project.display().to_string(), above.display().to_string());
+    Some(format!(
+        "cargo:warning=kiln: `{}` has no kiln.toml, so `{}/kiln.toml` is not read: move it into `{}`, or \
+         give kiln::Build::new its folder with `shaders` and `materials` listed in it (docs/renderer.md)",
+        project.escape_debug(),
+        above.escape_debug(),
+        project.escape_debug(),
+    ))
 }
 
 /// The line that has cargo watch `path`. Cargo's build-script protocol is one directive a line
@@ -323,7 +353,7 @@ fn unoptimised_warning(compiled: usize, opt_level: &str) -> Vec<String> {
 
 #[cfg(test)]
 mod tests {
-    use super::{unoptimised_warning, watched};
+    use super::{unoptimised_warning, unread_config, watched};
     use std::path::{Path, PathBuf};
 
     #[test]
@@ -345,6 +375,29 @@ mod tests {
             .map(|p| p.strip_prefix(root).unwrap_or(Path::new("?")).to_string_lossy().replace('\\', "/"))
             .collect();
         assert_eq!(relative, ["shaders", "shaders/Lit.shader", "target/keep.txt"]);
+    }
+
+    /// A `kiln.toml` at the crate root, above the folder the build script names, is named in a
+    /// warning; one in the folder, or none anywhere, or one above the crate, is not.
+    #[test]
+    fn a_kiln_toml_above_the_project_folder_inside_the_crate_is_named_in_a_warning() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let crate_root = dir.path().join("renderer");
+        let shaders = crate_root.join("shaders");
+        std::fs::create_dir_all(&shaders).expect("mkdir");
+        assert_eq!(unread_config(&shaders, &crate_root), None, "no kiln.toml anywhere");
+        std::fs::write(dir.path().join("kiln.toml"), "").expect("write");
+        assert_eq!(unread_config(&shaders, &crate_root), None, "above the crate: not the crate's");
+        std::fs::write(crate_root.join("kiln.toml"), "").expect("write");
+        let warning = unread_config(&shaders, &crate_root).expect("a warning");
+        assert!(warning.starts_with("cargo:warning=kiln: `"), "{warning}");
+        assert!(warning.contains("renderer/kiln.toml` is not read"), "{warning}");
+        // A folder outside the crate, named through it, is not the crate's.
+        let outside = dir.path().join("elsewhere");
+        std::fs::create_dir_all(&outside).expect("mkdir");
+        assert_eq!(unread_config(&crate_root.join("../elsewhere"), &crate_root), None);
+        std::fs::write(shaders.join("kiln.toml"), "").expect("write");
+        assert_eq!(unread_config(&shaders, &crate_root), None, "the folder's own is read");
     }
 
     #[test]

@@ -146,6 +146,9 @@ pub struct VariantRequest {
     pub keywords: Vec<String>,
     /// Which stage to preprocess.
     pub stage: Stage,
+    /// The project whose `kiln.toml` settings apply (`[bind_groups]`, as `kiln build` uses them);
+    /// default: the nearest folder above the shader with a `kiln.toml`, if any.
+    pub project: Option<PathBuf>,
 }
 
 /// A requested variant of a pass of one shader file, with the catalogue it was found in.
@@ -878,7 +881,17 @@ pub fn reflect_variant(
         }
     }
     let folder = request.shader.parent().map(Path::to_path_buf).unwrap_or_default();
-    let options = BuildOptions::one_off(folder.clone(), folder.join(".kiln-reflect-unused"), false);
+    let mut options = BuildOptions::one_off(folder.clone(), folder.join(".kiln-reflect-unused"), false);
+    // Bindings as the project's build gives them: its `[bind_groups]` move resources between groups.
+    let project = request.project.clone().or_else(|| {
+        let absolute = std::path::absolute(&folder).ok()?;
+        absolute.ancestors().find(|a| a.join(crate::config::FILE_NAME).is_file()).map(Path::to_path_buf)
+    });
+    if let Some(project) = project {
+        let (workspace, found) = open_workspace(store, &[project])?;
+        diagnostics.extend(found);
+        options.groups = workspace.groups;
+    }
     let result = build(store, &includes, &catalog, &options, &|_, _| {});
     diagnostics.extend(result.diagnostics);
     let pass = result.manifest.as_ref().and_then(|m| m.passes().next());

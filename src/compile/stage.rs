@@ -93,11 +93,14 @@ fn compile_unguarded(
                 format!("{:?}", e.stage).to_lowercase(),
                 request.stage.name()
             )),
-            None => d.help(format!(
-                "define `@{} fn {}(...)` in the program or its includes",
-                request.stage.name(),
-                request.entry
-            )),
+            None => match closest_function(&module, request.entry) {
+                Some(name) => d.help(format!("did you mean `{name}`?")),
+                None => d.help(format!(
+                    "define `@{} fn {}(...)` in the program or its includes",
+                    request.stage.name(),
+                    request.entry
+                )),
+            },
         });
     }
     bind::apply(&mut module, request.layout);
@@ -146,6 +149,19 @@ fn compile_unguarded(
     let mut reflection = reflect_stage(&module, request.entry, &|ty| host.alignment(&module, ty));
     reflection.spirv_gap = spirv_gap;
     Ok(StageOutput { wgsl, spirv, reflection })
+}
+
+/// The entry point or function of `module` whose name is within two edits of `name` (a
+/// misspelt `#pragma fragment ToonFragmnt`), the closest first.
+fn closest_function<'m>(module: &'m naga::Module, name: &str) -> Option<&'m str> {
+    let entry_points = module.entry_points.iter().map(|e| e.name.as_str());
+    let functions = module.functions.iter().filter_map(|(_, f)| f.name.as_deref());
+    entry_points
+        .chain(functions)
+        .map(|candidate| (strsim::damerau_levenshtein(candidate, name), candidate))
+        .filter(|(distance, _)| *distance <= 2)
+        .min_by_key(|(distance, _)| *distance)
+        .map(|(_, candidate)| candidate)
 }
 
 /// The SPIR-V version a module is written in: 1.0 (every Vulkan device) unless it may use 16-bit

@@ -2,9 +2,10 @@
 //! naga (30) writes text that its own front end refuses, so that every WGSL module kiln ships
 //! loads again (wgpu hands it to naga at run time):
 //!
-//! - a value of a type WGSL cannot name (`modf`'s and `frexp`'s results) is declared with naga's
-//!   internal type name (`var a: _modf_result_f32_;`): it is declared by its zero value instead
-//!   (`var a = modf(f32());`, whose fields are zero too);
+//! - a value of a type WGSL cannot name (`modf`'s, `frexp`'s and `atomicCompareExchangeWeak`'s
+//!   results) is declared with naga's internal type name (`var a: _modf_result_f32_;`): it is
+//!   declared by its zero value instead (`var a = modf(f32());`, whose fields are zero too), or
+//!   where it is first assigned (`var r = atomicCompareExchangeWeak(...)`);
 //! - a division (or another operator) of two constants that naga could not fold (`1f / 0f`: WGSL
 //!   makes that an error only in a constant expression) is written as a constant expression: the
 //!   right operand goes through a function, which no constant expression may call;
@@ -91,8 +92,12 @@ fn repair(mut wgsl: String, module: &Module) -> (String, bool) {
         let (function, size, scalar) = match *kind {
             naga::PredeclaredType::ModfResult { size, scalar } => ("modf", size, scalar),
             naga::PredeclaredType::FrexpResult { size, scalar } => ("frexp", size, scalar),
-            // Only an atomic operation makes one, and its value is only ever a `let`.
-            naga::PredeclaredType::AtomicCompareExchangeWeakResult(_) => continue,
+            // No expression without an atomic gives one: the variable is declared where it is
+            // first given a value instead.
+            naga::PredeclaredType::AtomicCompareExchangeWeakResult(_) => {
+                wgsl = declared_at_first_assignment(&wgsl, names.name(NameKey::Type(ty)));
+                continue;
+            }
         };
         let argument = match size {
             Some(size) => TypeInner::Vector { size, scalar },
@@ -123,6 +128,40 @@ fn repair(mut wgsl: String, module: &Module) -> (String, bool) {
         let _ = write!(wgsl, "\nfn {helper}(value: {scalar}) -> {scalar} {{\n    return value;\n}}\n");
     }
     (wgsl, true)
+}
+
+/// `wgsl` with each `var NAME: TYPE;` (naga declares a function's variables first) removed and
+/// its first assignment, `NAME = value;` at the same depth with no use of `NAME` between,
+/// made the declaration, `var NAME = value;`, whose type WGSL infers. Others are left as they are
+/// (the repaired module is loaded again, so one left is an error, not a module that fails later).
+fn declared_at_first_assignment(wgsl: &str, type_name: &str) -> String {
+    let mut lines: Vec<String> = wgsl.lines().map(str::to_string).collect();
+    let suffix = format!(": {type_name};");
+    let mut at = 0;
+    while at < lines.len() {
+        let line = &lines[at];
+        let indent = &line[..line.len() - line.trim_start().len()];
+        let Some(name) = line.trim_start().strip_prefix("var ").and_then(|rest| rest.strip_suffix(&suffix))
+        else {
+            at += 1;
+            continue;
+        };
+        let (name, indent) = (name.to_string(), indent.to_string());
+        let mentions =
+            |text: &str| text.split(|c: char| !(c.is_alphanumeric() || c == '_')).any(|w| w == name);
+        let first_use = (at + 1..lines.len()).find(|&i| mentions(&lines[i]));
+        let assignment = format!("{indent}{name} = ");
+        match first_use {
+            Some(i) if lines[i].starts_with(&assignment) => {
+                lines[i] = format!("{indent}var {}", &lines[i][indent.len()..]);
+                lines.remove(at);
+            }
+            _ => at += 1,
+        }
+    }
+    let mut out = lines.join("\n");
+    out.push('\n');
+    out
 }
 
 /// The operations of two literals left in a function: naga folds every one it can, so each is one
@@ -252,6 +291,8 @@ mod tests {
             "@compute @workgroup_size(1) fn main() { let a = 1.0; let b = 0.0; let r = a / b; }",
             "override size = 2; var<workgroup> v: array<f32, size>;\n\
              @compute @workgroup_size(1) fn main() { let x = v[0]; }",
+            "var<workgroup> a: atomic<i32>;\n\
+             @compute @workgroup_size(1) fn main() { var r = atomicCompareExchangeWeak(&a, 1i, 1i); }",
         ] {
             let module = naga::front::wgsl::parse_str(source).expect("parses");
             let info = naga::valid::Validator::new(naga::valid::ValidationFlags::all(), capabilities)

@@ -560,6 +560,29 @@ fn kiln_toml_names_the_resources_bound_per_frame_and_per_object() {
     assert_eq!(group_of("Fog"), Some(0), "named per frame");
     assert_eq!(group_of("ObjectTint"), Some(2), "named per object");
     assert_eq!(group_of("UnityPerMaterial"), Some(1), "the rest is the material's");
+    // `kiln reflect` gives the same slots: the shader's project (the folder with its kiln.toml),
+    // found from the shader or given.
+    let shader = "fixtures/bind_groups/Fogged.shader";
+    for args in [vec!["reflect", shader], vec!["reflect", shader, "--project", "fixtures/bind_groups"]] {
+        let run = kiln(&args);
+        assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+        let json: serde_json::Value = serde_json::from_slice(&run.stdout).expect("json");
+        let groups = json["layout"].as_array().expect("layout").clone();
+        let slot = |name: &str| {
+            groups.iter().find_map(|g| {
+                let entry = g["entries"].as_array()?.iter().find(|e| e["name"] == name)?;
+                Some((g["group"].as_u64()?, entry["binding"].as_u64()?))
+            })
+        };
+        let built = |name: &str| {
+            let group = pass.layout.iter().find(|g| g.entries.iter().any(|e| e.name == name))?;
+            let entry = group.entries.iter().find(|e| e.name == name)?;
+            Some((u64::from(group.group), u64::from(entry.binding)))
+        };
+        for name in ["Fog", "ObjectTint"] {
+            assert_eq!(slot(name), built(name), "{name} in `kiln {}`", args.join(" "));
+        }
+    }
     // One name in both lists: refused where it is written the second time.
     let mut store = SourceStore::new();
     let path = PathBuf::from("fixtures/bad/bind_groups");

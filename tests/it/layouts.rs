@@ -962,6 +962,7 @@ fn every_output_lays_random_structs_out_as_the_wgsl_spec_does() {
                 pass: None,
                 keywords: Vec::new(),
                 stage: kiln::preprocess::Stage::Fragment,
+                project: None,
             };
             let (json, _) =
                 kiln::project::reflect_variant(&mut SourceStore::new(), &request).expect("reflect");

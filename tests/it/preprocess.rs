@@ -82,6 +82,7 @@ fn the_vertex_stage_ignores_fragment_only_keywords() {
             pass: None,
             keywords: keywords.iter().map(|k| k.to_string()).collect(),
             stage: Stage::Vertex,
+            project: None,
         };
         let (out, diagnostics) =
             preprocess_variant(&mut SourceStore::new(), &request).expect("request is valid");
@@ -245,6 +246,7 @@ fn request_for(path: &Path) -> VariantRequest {
         pass: None,
         keywords: Vec::new(),
         stage: Stage::Fragment,
+        project: None,
     };
     let args = text.lines().next().and_then(|l| l.strip_prefix("// kiln-args:")).unwrap_or("");
     let mut words = args.split_whitespace();

@@ -16,7 +16,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-/// A corpus: its folder under the root, and the prefix of its shaders' names.
+/// A corpus: its folder (under the root, or absolute), and the prefix of its shaders' names.
 struct Corpus {
     folder: &'static str,
     label: &'static str,
@@ -390,6 +390,17 @@ fn naga_s_wgsl_tests_build_through_kiln_as_naga_judges_them() {
 #[test]
 fn tint_s_wgsl_tests_build_through_kiln_as_naga_judges_them() {
     check_corpus(&TINT, "tint_s_wgsl_tests_build_through_kiln_as_naga_judges_them", 1500);
+}
+
+/// The whole of Tint's test inputs (11,638 files with `builtins/gen/`), from a Dawn checkout that
+/// `KILN_TINT_DIR` names (its `test/tint`): too large to commit, run by hand
+/// (`KILN_TINT_DIR=~/dawn/test/tint cargo test --release --test it whole_tint -- --ignored`).
+#[test]
+#[ignore = "needs a Dawn checkout in KILN_TINT_DIR"]
+fn whole_tint_corpus_from_a_dawn_checkout() {
+    let folder = std::env::var("KILN_TINT_DIR").expect("KILN_TINT_DIR names Dawn's test/tint");
+    let corpus = Corpus { folder: Box::leak(folder.into_boxed_str()), label: "Tint" };
+    check_corpus(&corpus, "whole_tint_corpus_from_a_dawn_checkout", 1500);
 }
 
 fn come_back_token_for_token(corpus: &Corpus) {

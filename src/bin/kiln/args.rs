@@ -124,6 +124,10 @@ pub enum Command {
         /// The variant's keywords, comma-separated. Sets without `_` default to their first keyword.
         #[arg(long, value_delimiter = ',')]
         keywords: Vec<String>,
+        /// The project whose kiln.toml settings apply (`[bind_groups]`), as `kiln build` uses them
+        /// (default: the nearest folder above the shader with a kiln.toml).
+        #[arg(long)]
+        project: Option<PathBuf>,
     },
     /// Measure the shader library's formulations against the f64 reference on hard cases, on
     /// the GPU (the speed-against-error table of docs/accuracy.md; needs `--features gpu`).

@@ -55,7 +55,7 @@ pub fn preprocess(
         None if kiln::shaderlab::compute::is_compute_file(&shader) => Stage::Compute,
         None => Stage::Fragment,
     };
-    let request = VariantRequest { shader, pass, keywords, stage };
+    let request = VariantRequest { shader, pass, keywords, stage, project: None };
     let mut store = SourceStore::new();
     match kiln::project::preprocess_variant(&mut store, &request) {
         Ok((output, problems)) => {
@@ -70,9 +70,14 @@ pub fn preprocess(
 }
 
 /// `kiln reflect`.
-pub fn reflect(shader: PathBuf, pass: Option<String>, keywords: Vec<String>) -> ExitCode {
+pub fn reflect(
+    shader: PathBuf,
+    pass: Option<String>,
+    keywords: Vec<String>,
+    project: Option<PathBuf>,
+) -> ExitCode {
     let mut store = SourceStore::new();
-    let request = VariantRequest { shader, pass, keywords, stage: Stage::Fragment };
+    let request = VariantRequest { shader, pass, keywords, stage: Stage::Fragment, project };
     match kiln::project::reflect_variant(&mut store, &request) {
         Ok((json, problems)) => {
             if let Some(json) = json {

@@ -30,7 +30,9 @@ fn main() -> ExitCode {
         Command::Preprocess { shader, pass, keywords, stage } => {
             inspect::preprocess(shader, pass, keywords, stage)
         }
-        Command::Reflect { shader, pass, keywords } => inspect::reflect(shader, pass, keywords),
+        Command::Reflect { shader, pass, keywords, project } => {
+            inspect::reflect(shader, pass, keywords, project)
+        }
         Command::Accuracy { plot, samples } => inspect::accuracy(plot, samples),
         Command::Lsp { cache_dir, stdio: _ } => inspect::lsp(cache_dir),
         Command::Build { project, threads, output, pretty, variants_from, shard, cache_dir } => {
