@@ -19,6 +19,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0009", "project without shaders"),
     ("K0010", "resource named in two bind groups"),
     ("K0011", "path outside the project"),
+    ("K0012", "bind group name no file declares (warning)"),
     ("K0101", "unterminated string"),
     ("K0102", "unterminated block comment"),
     ("K0103", "program block never closed"),

@@ -268,6 +268,8 @@ pub struct Workspace {
     pub listed_variants: Vec<crate::catalog::ListedVariant>,
     /// The names `kiln.toml` adds to the per-frame and per-object bind groups.
     pub groups: crate::compile::bind::GroupNames,
+    /// The same names, where `kiln.toml` writes them.
+    pub group_names: Vec<Spanned<String>>,
 }
 
 impl Workspace {
@@ -312,6 +314,50 @@ fn bind_group_names(
     groups.per_frame.extend(config.per_frame.iter().map(|n| n.get_ref().clone()));
     groups.per_object.extend(config.per_object.iter().map(|n| n.get_ref().clone()));
     diagnostics
+}
+
+/// `[bind_groups]` names that no shader or include of the project mentions: a misspelt resource
+/// (`ObjectDta`) would silently stay in the material's group, and the run time would bind it
+/// wrongly. A warning at the name, with the closest resource a file declares (`var` names).
+fn unknown_group_names(store: &SourceStore, names: &[Spanned<String>]) -> Vec<Diagnostic> {
+    if names.is_empty() {
+        return Vec::new();
+    }
+    let is_config = |file: FileId| store.path(file).is_some_and(|p| p.ends_with(crate::config::FILE_NAME));
+    let mut words = std::collections::HashSet::new();
+    let mut declared = std::collections::BTreeSet::new();
+    for file in store.ids().filter(|&f| !is_config(f)) {
+        // After `var`, the first word that is not an address space or access mode is the name.
+        let mut after_var = false;
+        for word in
+            store.text(file).split(|c: char| !(c.is_alphanumeric() || c == '_')).filter(|w| !w.is_empty())
+        {
+            words.insert(word);
+            const SPACES: [&str; 7] =
+                ["uniform", "storage", "read", "read_write", "private", "workgroup", "function"];
+            if word == "var" {
+                after_var = true;
+            } else if after_var && !SPACES.contains(&word) {
+                declared.insert(word);
+                after_var = false;
+            }
+        }
+    }
+    names
+        .iter()
+        .filter(|name| !words.contains(name.value.as_str()))
+        .map(|name| {
+            let d = Diagnostic::warning(
+                "K0012",
+                format!("`[bind_groups]` names `{}`, which no shader or include declares", name.value),
+            )
+            .at(name.span, "not a resource of this project");
+            match crate::material::closest(&name.value, declared.iter().copied()) {
+                Some(suggestion) => d.help(format!("did you mean `{suggestion}`?")),
+                None => d.help("name a resource's variable, as `var<uniform> Name` declares it"),
+            }
+        })
+        .collect()
 }
 
 /// A `kiln.toml` path that leads out of the project folder, at the place the file names it.
@@ -367,6 +413,10 @@ pub fn open_workspace(
                 workspace.global_keywords.get_or_insert_with(Vec::new).extend(spanned);
             }
             diagnostics.extend(bind_group_names(&config.bind_groups, file, &mut workspace.groups));
+            let spanned = config.bind_groups.per_frame.iter().chain(&config.bind_groups.per_object);
+            workspace
+                .group_names
+                .extend(spanned.map(|n| Spanned::new(n.get_ref().clone(), Span::new(file, n.span()))));
             for (name, compute) in &config.compute {
                 match &compute.variants {
                     crate::config::ComputeVariants::All => workspace.always_include.push(name.clone()),
@@ -650,6 +700,7 @@ pub fn build_part(
     }
     let (catalog, found) = catalog(store, &mut includes, &input);
     diagnostics.extend(found);
+    diagnostics.extend(unknown_group_names(store, &workspace.group_names));
     options.write = mode.write && !diagnostics::has_errors(&diagnostics);
     options.record = diagnostics.is_empty();
     let result = build(store, &includes, &catalog, &options, progress);

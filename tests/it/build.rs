@@ -593,3 +593,22 @@ fn kiln_toml_names_the_resources_bound_per_frame_and_per_object() {
     expect_file![root().join("fixtures/bad/bind_groups/kiln.stderr")]
         .assert_eq(&render_plain(&store, &diagnostics));
 }
+
+/// A `[bind_groups]` name no file of the project mentions (a misspelt resource) warns at its place
+/// in `kiln.toml`, with the resource it is close to; names that are resources do not.
+#[test]
+fn a_bind_group_name_no_file_declares_warns_with_the_closest_resource() {
+    let check = |path: &str| {
+        let mut store = SourceStore::new();
+        let mode = BuildMode { write: false, ..BuildMode::default() };
+        let (result, mut diagnostics) =
+            build_project(&mut store, &[PathBuf::from(path)], &mode, &|_, _| {}).expect("exists");
+        diagnostics.extend(result.diagnostics);
+        (render_plain(&store, &diagnostics), diagnostics)
+    };
+    let (rendered, diagnostics) = check("fixtures/warn/bind_groups");
+    assert!(!has_errors(&diagnostics), "{rendered}");
+    expect_file![root().join("fixtures/warn/bind_groups/kiln.stderr")].assert_eq(&rendered);
+    let (rendered, _) = check("fixtures/bind_groups");
+    assert!(!rendered.contains("K0012"), "{rendered}");
+}
