@@ -10,7 +10,9 @@
 //! by an `alias` and by its own name (naga writes two types, and a store between them is invalid).
 
 use super::panics::contain_panics;
+use super::wgsl::WriterNames;
 use crate::reflect::{MatrixProblem, SpirvGap};
+use naga::common::wgsl::TypeContext;
 use naga::{AddressSpace, Handle, Module, Type, TypeInner, VectorSize};
 
 /// The first construct of a module, cut to its entry point, that naga's SPIR-V writer gets wrong.
@@ -30,37 +32,14 @@ fn aliased_array(module: &Module) -> Option<SpirvGap> {
         if let Some(&other) = seen.get(&ty.inner) {
             let named = [handle, other].into_iter().find_map(|h| module.types[h].name.clone());
             let alias = named.unwrap_or_default();
-            return Some(SpirvGap::AliasedArray { alias, ty: array_text(module, handle) });
+            return Some(SpirvGap::AliasedArray {
+                alias,
+                ty: WriterNames::new(module).type_to_string(handle),
+            });
         }
         seen.insert(&ty.inner, handle);
     }
     None
-}
-
-/// An array type as WGSL writes it, for a message.
-fn array_text(module: &Module, ty: Handle<Type>) -> String {
-    match &module.types[ty].inner {
-        TypeInner::Array { base, size: naga::ArraySize::Constant(n), .. } => {
-            format!("array<{}, {n}>", array_text(module, *base))
-        }
-        TypeInner::Array { base, .. } => format!("array<{}>", array_text(module, *base)),
-        TypeInner::Scalar(s) => scalar_text(*s),
-        TypeInner::Vector { size, scalar } => format!("vec{}<{}>", *size as u8, scalar_text(*scalar)),
-        &TypeInner::Matrix { columns, rows, scalar } => {
-            format!("mat{}x{}<{}>", columns as u8, rows as u8, scalar_text(scalar))
-        }
-        _ => module.types[ty].name.clone().unwrap_or_else(|| "…".to_string()),
-    }
-}
-
-fn scalar_text(scalar: naga::Scalar) -> String {
-    let kind = match scalar.kind {
-        naga::ScalarKind::Sint => "i",
-        naga::ScalarKind::Uint => "u",
-        naga::ScalarKind::Bool => return "bool".to_string(),
-        _ => "f",
-    };
-    format!("{kind}{}", scalar.width * 8)
 }
 
 /// The first matrix of a uniform buffer that naga's SPIR-V writer lays out wrongly.
@@ -110,7 +89,7 @@ fn matrix_problem(
     nested: bool,
 ) -> Option<(String, String, MatrixProblem)> {
     match &module.types[ty].inner {
-        &TypeInner::Matrix { columns, rows, scalar } => {
+        &TypeInner::Matrix { rows, scalar, .. } => {
             let problem = if scalar.width == 2 && rows != VectorSize::Bi {
                 MatrixProblem::F16Rows
             } else if rows == VectorSize::Bi && nested {
@@ -118,7 +97,7 @@ fn matrix_problem(
             } else {
                 return None;
             };
-            Some((name, format!("mat{}x{}<{}>", columns as u8, rows as u8, scalar_text(scalar)), problem))
+            Some((name, WriterNames::new(module).type_to_string(ty), problem))
         }
         TypeInner::Array { base, .. } => matrix_problem(module, *base, name, nested),
         TypeInner::Struct { members, .. } => members.iter().find_map(|m| {

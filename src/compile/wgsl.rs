@@ -207,14 +207,14 @@ fn literal_text(literal: naga::Literal) -> String {
 }
 
 /// The names naga's WGSL writer gives a module's declarations: its namer, set up as the writer
-/// sets it up.
-struct WriterNames<'a> {
+/// sets it up (and, through [`TypeContext`], a type as the writer spells it).
+pub(super) struct WriterNames<'a> {
     module: &'a Module,
     names: naga::FastHashMap<NameKey, String>,
 }
 
 impl<'a> WriterNames<'a> {
-    fn new(module: &'a Module) -> WriterNames<'a> {
+    pub(super) fn new(module: &'a Module) -> WriterNames<'a> {
         let mut names = naga::FastHashMap::default();
         naga::proc::Namer::default().reset(
             module,
