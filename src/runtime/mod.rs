@@ -110,8 +110,11 @@ pub enum RuntimeError {
     )]
     UnknownKernel { shader: String, kernel: String, suggestion: Option<String> },
     /// No material of this name was built.
-    #[error("no material `{0}` in the build")]
-    NoMaterial(String),
+    #[error(
+        "no material `{name}` in the build{}",
+        suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default()
+    )]
+    NoMaterial { name: String, suggestion: Option<String> },
     /// A material file read at run time has errors.
     #[error("material: {0}")]
     Material(String),
@@ -260,10 +263,10 @@ impl Library {
 
     /// A built material, by name.
     pub fn material(&self, name: &str) -> Result<&MaterialManifest, RuntimeError> {
-        self.materials
-            .iter()
-            .find(|m| m.name == name)
-            .ok_or_else(|| RuntimeError::NoMaterial(name.to_string()))
+        self.materials.iter().find(|m| m.name == name).ok_or_else(|| RuntimeError::NoMaterial {
+            name: name.to_string(),
+            suggestion: crate::material::closest(name, self.materials.iter().map(|m| m.name.as_str())),
+        })
     }
 
     fn shader_index(&self, name: &str) -> Result<usize, RuntimeError> {

@@ -270,6 +270,9 @@ fn a_material_file_read_at_run_time_resolves_as_the_build_resolved_it() {
         library.load_material("t", "shader = \"Test/Blend\"\n[properties]\n_Tint = 1\n").expect("resolves");
     assert_eq!(tinted.keywords, ["_TINT"]);
     let named = library.material("Named").expect("built");
+    // A misspelt name is answered with the built material it is close to.
+    let misspelt = library.material("Opaqeu").map(drop).expect_err("no such material").to_string();
+    assert!(misspelt.contains("did you mean `Opaque`?"), "{misspelt}");
     assert_eq!(
         (named.number("_SrcBlend"), named.number("_ZWrite"), named.render_queue),
         (Some(5.0), Some(0.0), 3000)
