@@ -226,8 +226,10 @@ pub fn dedup(diagnostics: &mut Vec<Diagnostic>) {
         keep.push(false);
         let more = diagnostics[i].occurrence.clone();
         if let (Some(more), Some(into)) = (more, diagnostics[f].occurrence.as_mut())
-            && (&more.pass, &more.within) == (&into.pass, &into.within)
+            && more.pass == into.pass
+            && let Some(within) = joined_stages(&into.within, &more.within)
         {
+            into.within = within;
             for variant in more.variants {
                 if !into.variants.contains(&variant) {
                     into.variants.push(variant);
@@ -237,6 +239,30 @@ pub fn dedup(diagnostics: &mut Vec<Diagnostic>) {
     }
     let mut keep = keep.into_iter();
     diagnostics.retain(|_| keep.next().unwrap_or(true));
+}
+
+/// Where one cause occurs in a pass, said once for two occurrences: the same place, or two stages
+/// (`, vertex stage` and `, fragment stage` are `, vertex and fragment stages`: a mistake in a file
+/// both stages read is both stages'). `None` for places that do not join (a kernel, the text).
+fn joined_stages(first: &str, second: &str) -> Option<String> {
+    if first == second {
+        return Some(first.to_string());
+    }
+    let stages = |within: &str| -> Option<Vec<String>> {
+        let names = within.strip_prefix(", ")?;
+        let names = names.strip_suffix(" stage").or_else(|| names.strip_suffix(" stages"))?;
+        Some(names.split(" and ").map(str::to_string).collect())
+    };
+    let mut all = stages(first)?;
+    for stage in stages(second)? {
+        if !all.contains(&stage) {
+            all.push(stage);
+        }
+    }
+    Some(match &all[..] {
+        [one] => format!(", {one} stage"),
+        _ => format!(", {} stages", all.join(" and ")),
+    })
 }
 
 /// Strict mode: every warning becomes an error (with the same code).
@@ -464,12 +490,16 @@ mod tests {
     }
 
     #[test]
-    fn repeats_become_one_diagnostic_naming_every_variant_of_the_same_stage() {
+    fn repeats_become_one_diagnostic_naming_every_variant_and_stage() {
         let mut found =
             vec![in_variant("A", "fragment"), in_variant("B", "fragment"), in_variant("A", "vertex")];
         dedup(&mut found);
         assert_eq!(found.len(), 1, "one cause");
-        assert_eq!(found[0].shown_notes(), ["in 2 variants `A` and `B` of `S` pass 0, fragment stage"]);
+        assert_eq!(
+            found[0].shown_notes(),
+            ["in 2 variants `A` and `B` of `S` pass 0, fragment and vertex stages"],
+            "a cause both stages meet is said of both"
+        );
         let mut many: Vec<Diagnostic> = (0..9).map(|i| in_variant(&format!("V{i}"), "fragment")).collect();
         dedup(&mut many);
         assert_eq!(
