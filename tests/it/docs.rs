@@ -191,3 +191,43 @@ fn write(path: &Path, text: &str) {
     std::fs::create_dir_all(path.parent().expect("folder")).expect("mkdir");
     std::fs::write(path, text).expect("write");
 }
+
+/// The README's example outputs are what kiln prints today: its `kiln list` block is part of a
+/// fresh listing of the bundled project, word for word, and its build line is a fresh build's
+/// (bytes and time aside, which move with every change).
+#[test]
+fn the_readme_s_example_outputs_are_what_kiln_prints() {
+    let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
+    // Every fenced block's text, whatever its language (a `sh` block's closing fence opens none).
+    let mut blocks: Vec<String> = Vec::new();
+    let mut open: Option<String> = None;
+    for line in readme.lines() {
+        match (open.as_mut(), line.starts_with("```")) {
+            (None, true) => open = Some(String::new()),
+            (Some(_), true) => blocks.extend(open.take()),
+            (Some(block), false) => {
+                block.push_str(line);
+                block.push('\n');
+            }
+            (None, false) => {}
+        }
+    }
+    let listing = blocks.iter().find(|b| b.starts_with("Custom RP/Lit (")).expect("the list example");
+    let list = crate::support::kiln(&["list", "fixtures/project"]);
+    assert!(list.status.success());
+    let fresh = String::from_utf8_lossy(&list.stdout);
+    assert!(fresh.contains(listing.as_str()), "README:\n{listing}\nkiln list:\n{fresh}");
+
+    let line = blocks.iter().find(|b| b.starts_with("built ")).expect("the build example").trim().to_string();
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = dir.path().join("out");
+    let build =
+        crate::support::kiln(&["build", "fixtures/project", "--output", output.to_str().expect("UTF-8")]);
+    assert!(build.status.success(), "{}", String::from_utf8_lossy(&build.stderr));
+    // The summary goes to stderr, with the diagnostics.
+    let stderr = String::from_utf8_lossy(&build.stderr);
+    let fresh = stderr.lines().find(|l| l.starts_with("built ")).expect("a summary line");
+    // Up to the bytes written: the counts of shaders, passes, variants and modules.
+    let counts = |l: &str| l.split("), ").next().map(str::to_string);
+    assert_eq!(counts(&line), counts(fresh), "README: {line}\nkiln build: {fresh}");
+}
