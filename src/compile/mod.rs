@@ -62,11 +62,43 @@ pub(crate) fn parse(text: &str, mapper: &Mapper) -> Result<naga::Module, Diagnos
         return Err(diagnostic);
     }
     naga::front::wgsl::parse_str(text).map_err(|error| {
-        let labels = error.labels().map(|(span, message)| (span, message.to_string()));
-        let mut diagnostic = mapper.diagnostic("K0401", error.message().to_string(), labels.collect());
+        let mut labels: Vec<(naga::Span, String)> =
+            error.labels().map(|(span, message)| (span, message.to_string())).collect();
+        // naga points at the token after a missing `;` (often the next line's `}`); rustc, and the
+        // rest of kiln, at the end of the statement that lacks it.
+        if error.message().starts_with("expected `;`")
+            && let Some((found, _)) = labels.first().cloned()
+            && let Some(end) = found.to_range().and_then(|r| end_of_previous_token(text, r.start))
+        {
+            labels.insert(0, (naga::Span::new(end as u32 - 1, end as u32), "expected `;` after this".into()));
+            labels[1].1 = "found here".into();
+        }
+        let mut diagnostic = mapper.diagnostic("K0401", error.message().to_string(), labels);
         diagnostic.notes.extend(error.notes().map(str::to_string));
         diagnostic
     })
+}
+
+/// Where the token before `at` ends in `text`: blanks, line breaks and `//` comments skipped
+/// (`None` when nothing is before it).
+fn end_of_previous_token(text: &str, at: usize) -> Option<usize> {
+    let before = text.get(..at)?;
+    // The part of `at`'s own line before it, then whole lines above, each without its comment.
+    let mut end = at;
+    for line in before.rsplit('\n') {
+        let line_start = end - line.len();
+        let code = match line.find("//") {
+            Some(comment) => &line[..comment],
+            None => line,
+        };
+        let code = code.trim_end();
+        if !code.is_empty() {
+            return Some(line_start + code.len());
+        }
+        // Past this line and its line break.
+        end = line_start.checked_sub(1)?;
+    }
+    None
 }
 
 /// The most operators one statement may have: naga's front end, validator and back ends recurse
