@@ -320,21 +320,35 @@ fn bind_group_names(
 /// (`ObjectDta`) would silently stay in the material's group, and the run time would bind it
 /// wrongly. A warning at the name, with the closest resource a file declares (`var` names).
 fn unknown_group_names(store: &SourceStore, names: &[Spanned<String>]) -> Vec<Diagnostic> {
-    if names.is_empty() {
+    // The shader texts: not `kiln.toml` (which names them) nor the materials (which cannot).
+    let is_text = |file: &FileId| {
+        store.path(*file).is_some_and(|p| {
+            !p.ends_with(crate::config::FILE_NAME)
+                && !p.extension().is_some_and(|e| e.eq_ignore_ascii_case("mat"))
+        })
+    };
+    let words_of = |file: FileId| {
+        store.text(file).split(|c: char| !(c.is_alphanumeric() || c == '_')).filter(|w| !w.is_empty())
+    };
+    let mut missing: Vec<&Spanned<String>> = names.iter().collect();
+    for file in store.ids().filter(is_text) {
+        if missing.is_empty() {
+            return Vec::new();
+        }
+        let words: std::collections::HashSet<&str> = words_of(file).collect();
+        missing.retain(|name| !words.contains(name.value.as_str()));
+    }
+    if missing.is_empty() {
         return Vec::new();
     }
-    let is_config = |file: FileId| store.path(file).is_some_and(|p| p.ends_with(crate::config::FILE_NAME));
-    let mut words = std::collections::HashSet::new();
+    // What the files declare, for the suggestion: after `var`, the first word that is not an
+    // address space or access mode.
+    const SPACES: [&str; 7] =
+        ["uniform", "storage", "read", "read_write", "private", "workgroup", "function"];
     let mut declared = std::collections::BTreeSet::new();
-    for file in store.ids().filter(|&f| !is_config(f)) {
-        // After `var`, the first word that is not an address space or access mode is the name.
+    for file in store.ids().filter(is_text) {
         let mut after_var = false;
-        for word in
-            store.text(file).split(|c: char| !(c.is_alphanumeric() || c == '_')).filter(|w| !w.is_empty())
-        {
-            words.insert(word);
-            const SPACES: [&str; 7] =
-                ["uniform", "storage", "read", "read_write", "private", "workgroup", "function"];
+        for word in words_of(file) {
             if word == "var" {
                 after_var = true;
             } else if after_var && !SPACES.contains(&word) {
@@ -343,9 +357,8 @@ fn unknown_group_names(store: &SourceStore, names: &[Spanned<String>]) -> Vec<Di
             }
         }
     }
-    names
-        .iter()
-        .filter(|name| !words.contains(name.value.as_str()))
+    missing
+        .into_iter()
         .map(|name| {
             let d = Diagnostic::warning(
                 "K0012",
