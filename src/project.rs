@@ -61,10 +61,14 @@ pub enum ProjectError {
 pub fn project_of(material: &Path) -> PathBuf {
     let folder = material.parent().map(Path::to_path_buf).unwrap_or_default();
     let absolute = std::path::absolute(&folder).unwrap_or_else(|_| folder.clone());
-    let found =
-        absolute.ancestors().find(|a| a.join(crate::config::FILE_NAME).is_file()).map(Path::to_path_buf);
     let current = std::env::current_dir().ok().filter(|cwd| absolute.starts_with(cwd));
-    found.or(current).unwrap_or(folder)
+    config_folder_above(material).or(current).unwrap_or(folder)
+}
+
+/// The nearest folder above `file` (absolute) that holds a `kiln.toml`.
+pub fn config_folder_above(file: &Path) -> Option<PathBuf> {
+    let absolute = std::path::absolute(file).ok()?;
+    absolute.ancestors().skip(1).find(|a| a.join(crate::config::FILE_NAME).is_file()).map(Path::to_path_buf)
 }
 
 /// Parses the project's shaders and returns the one named `name`.
@@ -946,15 +950,15 @@ pub fn reflect_variant(
     }
     let folder = request.shader.parent().map(Path::to_path_buf).unwrap_or_default();
     let mut options = BuildOptions::one_off(folder.clone(), folder.join(".kiln-reflect-unused"), false);
-    // Bindings as the project's build gives them: its `[bind_groups]` move resources between groups.
-    let project = request.project.clone().or_else(|| {
-        let absolute = std::path::absolute(&folder).ok()?;
-        absolute.ancestors().find(|a| a.join(crate::config::FILE_NAME).is_file()).map(Path::to_path_buf)
-    });
-    if let Some(project) = project {
-        let (workspace, found) = open_workspace(store, &[project])?;
-        diagnostics.extend(found);
-        options.groups = workspace.groups;
+    // Bindings as the project's build gives them: its `[bind_groups]` move resources between
+    // groups. Only its `kiln.toml` is read: the project's files are not walked for one shader.
+    let project = request.project.clone().or_else(|| config_folder_above(&request.shader));
+    let config = project.map(|p| p.join(crate::config::FILE_NAME)).filter(|c| c.is_file());
+    if let Some(config) = config {
+        let file = store.load(&config)?;
+        let (config, problems) = crate::config::parse_config(store, file);
+        diagnostics.extend(problems);
+        diagnostics.extend(bind_group_names(&config.bind_groups, file, &mut options.groups));
     }
     let result = build(store, &includes, &catalog, &options, &|_, _| {});
     diagnostics.extend(result.diagnostics);

@@ -61,8 +61,9 @@ pub(super) fn corrected(words: Vec<u32>) -> Vec<u32> {
     out
 }
 
-/// The image type of each storage image (`Sampled` 2), and of those the ones with an unknown
-/// format, by the ids of the values loaded from them.
+/// Each size query of a storage image (`Sampled` 2) made `OpImageQuerySize`, and the capability
+/// a read of one with an unknown format needs declared. An image operand is a loaded value, so
+/// each is traced to its type through its `OpLoad`.
 fn storage_image_queries(instructions: &mut Vec<Instruction>) {
     let storage_types: Vec<(u32, bool)> = instructions
         .iter()

@@ -152,16 +152,11 @@ fn compile_unguarded(
 }
 
 /// The entry point or function of `module` whose name is within two edits of `name` (a
-/// misspelt `#pragma fragment ToonFragmnt`), the closest first.
-fn closest_function<'m>(module: &'m naga::Module, name: &str) -> Option<&'m str> {
+/// misspelt `#pragma fragment ToonFragmnt`).
+fn closest_function(module: &naga::Module, name: &str) -> Option<String> {
     let entry_points = module.entry_points.iter().map(|e| e.name.as_str());
     let functions = module.functions.iter().filter_map(|(_, f)| f.name.as_deref());
-    entry_points
-        .chain(functions)
-        .map(|candidate| (strsim::damerau_levenshtein(candidate, name), candidate))
-        .filter(|(distance, _)| *distance <= 2)
-        .min_by_key(|(distance, _)| *distance)
-        .map(|(_, candidate)| candidate)
+    crate::material::closest(name, entry_points.chain(functions))
 }
 
 /// The SPIR-V version a module is written in: 1.0 (every Vulkan device) unless it may use 16-bit

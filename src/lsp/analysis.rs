@@ -14,9 +14,8 @@ use std::sync::Arc;
 /// The project a file belongs to: the nearest folder up with a `kiln.toml`, or a `.shader` or
 /// `.compute` file on its own; `None` for other files outside any project.
 pub(super) fn project_of(file: &Path) -> Option<PathBuf> {
-    let found = file.ancestors().skip(1).find(|folder| folder.join(crate::config::FILE_NAME).is_file());
-    if let Some(folder) = found {
-        return Some(folder.to_path_buf());
+    if let Some(folder) = crate::project::config_folder_above(file) {
+        return Some(folder);
     }
     let extension = file.extension().and_then(|e| e.to_str()).unwrap_or_default();
     crate::project::SHADER_EXTENSIONS.contains(&extension).then(|| file.to_path_buf())

@@ -508,13 +508,18 @@ impl Scanner<'_> {
 
     /// Tokens after `#else` or `#endif` (`#endif _GUARD_H`): a warning, as gcc gives.
     fn extra_tokens(&mut self, cursor: &mut Cursor, directive: &str) {
-        let rest = cursor.rest();
-        let trimmed = rest.trim_start();
-        if !trimmed.trim_end().is_empty() {
-            let start = cursor.base + cursor.at + (rest.len() - trimmed.len());
-            let span = self.span(start..start + trimmed.trim_end().len());
+        if let Some(span) = self.rest_span(cursor) {
             self.errors.push(PreprocessError::ExtraTokens { span, directive: directive.to_string() });
         }
+    }
+
+    /// Where the rest of a directive's line is, blanks aside, if anything is there.
+    fn rest_span(&self, cursor: &Cursor) -> Option<Span> {
+        let rest = cursor.rest();
+        let trimmed = rest.trim_start();
+        let start = cursor.base + cursor.at + (rest.len() - trimmed.len());
+        let len = trimmed.trim_end().len();
+        (len > 0).then(|| self.span(start..start + len))
     }
 
     /// The directive's text with comments and line continuations blanked out, byte for byte, so
@@ -548,8 +553,7 @@ impl Scanner<'_> {
                 (self.comment_depth, self.comment_start) = (1, start + i);
                 out[i..i + 2].fill(b' ');
                 i += 2;
-            } else if splice_len(rest) > 0 {
-                let step = splice_len(rest);
+            } else if let step @ 1.. = splice_len(rest) {
                 out[i..i + step].fill(b' ');
                 i += step;
             } else {
@@ -737,11 +741,7 @@ impl Scanner<'_> {
     }
 
     fn expect_end(&mut self, cursor: &mut Cursor, directive: &str) {
-        let rest = cursor.rest();
-        let trimmed = rest.trim_start();
-        if !trimmed.trim_end().is_empty() {
-            let start = cursor.base + cursor.at + (rest.len() - trimmed.len());
-            let span = self.span(start..start + trimmed.trim_end().len());
+        if let Some(span) = self.rest_span(cursor) {
             self.errors.push(PreprocessError::MalformedDirective {
                 span,
                 directive: directive.to_string(),

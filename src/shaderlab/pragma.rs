@@ -642,12 +642,7 @@ fn misspelt(name: &str) -> Option<String> {
     if name.len() < 4 || known.iter().any(|k| k == name) {
         return None;
     }
-    known
-        .into_iter()
-        .map(|k| (strsim::damerau_levenshtein(&k, name), k))
-        .filter(|(distance, _)| *distance <= 2)
-        .min_by_key(|(distance, _)| *distance)
-        .map(|(_, k)| k)
+    crate::material::closest(name, known.iter().map(String::as_str))
 }
 
 /// Splits `shader_feature_local_fragment` into its kind, scope and stage.

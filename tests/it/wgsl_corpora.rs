@@ -18,17 +18,18 @@ use std::path::{Path, PathBuf};
 
 /// A corpus: its folder (under the root, or absolute), and the prefix of its shaders' names.
 struct Corpus {
-    folder: &'static str,
+    folder: std::borrow::Cow<'static, str>,
     label: &'static str,
 }
 
-const NAGA: Corpus = Corpus { folder: "tests/corpus/naga/in", label: "Naga" };
-const TINT: Corpus = Corpus { folder: "tests/corpus/tint/test/tint", label: "Tint" };
+const NAGA: Corpus = Corpus { folder: std::borrow::Cow::Borrowed("tests/corpus/naga/in"), label: "Naga" };
+const TINT: Corpus =
+    Corpus { folder: std::borrow::Cow::Borrowed("tests/corpus/tint/test/tint"), label: "Tint" };
 
 impl Corpus {
     /// Every `.wgsl` file under the folder, by a flat name (its path with `.` for `/`), sorted.
     fn files(&self) -> Vec<(String, PathBuf)> {
-        let folder = root().join(self.folder);
+        let folder = root().join(self.folder.as_ref());
         let mut files: Vec<(String, PathBuf)> = walkdir::WalkDir::new(&folder)
             .into_iter()
             .map(|e| e.expect("entry").into_path())
@@ -303,7 +304,7 @@ fn judge(corpus: &Corpus, spirv_val: bool) -> Report {
     let counts = std::sync::Mutex::new((0, 0));
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get()).min(8);
     std::thread::scope(|scope| {
-        for part in stages.chunks(stages.len().div_ceil(threads).max(1)) {
+        for (t, part) in stages.chunks(stages.len().div_ceil(threads).max(1)).enumerate() {
             let (failures, counts, output, dir) = (&failures, &counts, &output, dir.path());
             scope.spawn(move || {
                 for (i, stage) in part.iter().enumerate() {
@@ -323,7 +324,7 @@ fn judge(corpus: &Corpus, spirv_val: bool) -> Report {
                     }
                     let Some(file) = stage.spirv().filter(|_| spirv_val) else { continue };
                     let bytes = file.read(output).expect("module");
-                    let path = dir.join(format!("{}-{i}.spv", std::process::id() ^ (part.as_ptr() as u32)));
+                    let path = dir.join(format!("module-{t}-{i}.spv"));
                     std::fs::write(&path, &bytes).expect("write");
                     let environment = if bytes[6] == 1 && bytes[5] == 0 { "vulkan1.0" } else { "vulkan1.1" };
                     let run = std::process::Command::new("spirv-val")
@@ -399,7 +400,7 @@ fn tint_s_wgsl_tests_build_through_kiln_as_naga_judges_them() {
 #[ignore = "needs a Dawn checkout in KILN_TINT_DIR"]
 fn whole_tint_corpus_from_a_dawn_checkout() {
     let folder = std::env::var("KILN_TINT_DIR").expect("KILN_TINT_DIR names Dawn's test/tint");
-    let corpus = Corpus { folder: Box::leak(folder.into_boxed_str()), label: "Tint" };
+    let corpus = Corpus { folder: folder.into(), label: "Tint" };
     check_corpus(&corpus, "whole_tint_corpus_from_a_dawn_checkout", 1500);
 }
 
