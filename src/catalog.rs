@@ -410,7 +410,7 @@ fn unknown_global_keywords(shaders: &[CatalogShader], global: &[Spanned<String>]
         .map(|k| {
             let message = format!("global keyword `{}` is in no multi_compile set", k.value);
             let d = Diagnostic::warning("K0213", message).at(k.span, "no pass declares it");
-            match crate::material::closest(&k.value, declared.iter().copied()) {
+            match crate::diagnostics::closest(&k.value, declared.iter().copied()) {
                 Some(s) => d.help(format!("did you mean `{s}`?")),
                 None => d.help(
                     "global keywords choose options of `#pragma multi_compile` sets; check the spelling",

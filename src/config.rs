@@ -146,7 +146,7 @@ pub fn parse_config(store: &SourceStore, file: FileId) -> (ProjectConfig, Vec<Di
                 None => (message, None),
             };
             let suggestion = unknown
-                .and_then(|field| crate::material::closest(&field, FIELDS.iter().copied()))
+                .and_then(|field| crate::diagnostics::closest(&field, FIELDS.iter().copied()))
                 .map(|near| format!("did you mean `{near}`? "))
                 .unwrap_or_default();
             let diagnostic = Diagnostic::error("K0003", "invalid `kiln.toml`")

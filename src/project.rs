@@ -81,7 +81,7 @@ fn find_shader(
     let (files, _) = load_files(store, &workspace.shaders);
     let shaders: Vec<_> = files.into_iter().filter_map(|f| parse_shader(store, f).shader).collect();
     let names = shaders.iter().map(|s| s.name.value.as_str());
-    let suggestion = crate::material::closest(name, names);
+    let suggestion = crate::diagnostics::closest(name, names);
     shaders.into_iter().find(|s| s.name.value == name).ok_or_else(|| ProjectError::ShaderNotFound {
         name: name.to_string(),
         suggestion,
@@ -369,7 +369,7 @@ fn unknown_group_names(store: &SourceStore, names: &[Spanned<String>]) -> Vec<Di
                 format!("`[bind_groups]` names `{}`, which no shader or include declares", name.value),
             )
             .at(name.span, "not a resource of this project");
-            match crate::material::closest(&name.value, declared.iter().copied()) {
+            match crate::diagnostics::closest(&name.value, declared.iter().copied()) {
                 Some(suggestion) => d.help(format!("did you mean `{suggestion}`?")),
                 None => d.help("name a resource's variable, as `var<uniform> Name` declares it"),
             }

@@ -156,7 +156,7 @@ fn compile_unguarded(
 fn closest_function(module: &naga::Module, name: &str) -> Option<String> {
     let entry_points = module.entry_points.iter().map(|e| e.name.as_str());
     let functions = module.functions.iter().filter_map(|(_, f)| f.name.as_deref());
-    crate::material::closest(name, entry_points.chain(functions))
+    crate::diagnostics::closest(name, entry_points.chain(functions))
 }
 
 /// The SPIR-V version a module is written in: 1.0 (every Vulkan device) unless it may use 16-bit

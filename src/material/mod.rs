@@ -9,7 +9,7 @@ pub use drawer::{KeywordDrawer, enum_name, enum_names, keyword_drawer, unity_enu
 pub use error::MaterialError;
 pub use preset::Preset;
 
-use crate::diagnostics::Diagnostic;
+use crate::diagnostics::{Diagnostic, closest};
 use crate::manifest::{MaterialManifest, ShaderManifest};
 use crate::shaderlab::ast::{PropertyDefault, PropertyType, Shader};
 use crate::shaderlab::pragma::{KeywordKind, KeywordSet};
@@ -523,15 +523,6 @@ fn check_sets(
             _ => {}
         }
     }
-}
-
-/// The closest name within two edits, for "did you mean" help.
-pub(crate) fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Option<String> {
-    candidates
-        .map(|c| (strsim::damerau_levenshtein(&c.to_lowercase(), &name.to_lowercase()), c))
-        .filter(|&(distance, _)| distance <= 2)
-        .min()
-        .map(|(_, c)| c.to_string())
 }
 
 impl ShaderEntry {

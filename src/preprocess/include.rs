@@ -238,7 +238,7 @@ impl Includes {
             .filter_map(|entry| entry.ok()?.file_name().into_string().ok())
             .collect();
         let library = self.config.library.iter().map(|(n, _)| n.as_str());
-        let found = crate::material::closest(file, on_disk.iter().map(String::as_str).chain(library))?;
+        let found = crate::diagnostics::closest(file, on_disk.iter().map(String::as_str).chain(library))?;
         Some(parent.join(found).to_string_lossy().replace('\\', "/"))
     }
 

@@ -63,7 +63,10 @@ impl Runtime {
             return Err(RuntimeError::UnknownKernel {
                 shader: shader.to_string(),
                 kernel: request.kernel.to_string(),
-                suggestion: crate::material::closest(request.kernel, pass.kernels.iter().map(String::as_str)),
+                suggestion: crate::diagnostics::closest(
+                    request.kernel,
+                    pass.kernels.iter().map(String::as_str),
+                ),
             });
         };
         let module = variant.kernels.get(index).copied().flatten();

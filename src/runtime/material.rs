@@ -149,7 +149,7 @@ impl Runtime {
             .ok_or_else(|| layout_error(format!("the pass has no bind group {group}")))?;
         if let Some((name, _)) = buffers.iter().find(|(name, _)| !entries.iter().any(|e| e.name == *name)) {
             let names: Vec<&str> = entries.iter().map(|e| e.name.as_str()).collect();
-            let hint = crate::material::closest(name, names.iter().copied())
+            let hint = crate::diagnostics::closest(name, names.iter().copied())
                 .map(|s| format!(" (did you mean `{s}`?)"))
                 .unwrap_or_default();
             return Err(layout_error(format!("group {group} has no binding `{name}`{hint}")));

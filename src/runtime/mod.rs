@@ -265,7 +265,7 @@ impl Library {
     pub fn material(&self, name: &str) -> Result<&MaterialManifest, RuntimeError> {
         self.materials.iter().find(|m| m.name == name).ok_or_else(|| RuntimeError::NoMaterial {
             name: name.to_string(),
-            suggestion: crate::material::closest(name, self.materials.iter().map(|m| m.name.as_str())),
+            suggestion: crate::diagnostics::closest(name, self.materials.iter().map(|m| m.name.as_str())),
         })
     }
 
@@ -311,7 +311,7 @@ impl Library {
                 shader: shader.to_string(),
                 pass,
                 keyword: unknown.to_string(),
-                suggestion: crate::material::closest(unknown, names),
+                suggestion: crate::diagnostics::closest(unknown, names),
             });
         }
         // `dynamic_branch` keywords choose constants, not variants.

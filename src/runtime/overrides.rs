@@ -35,7 +35,7 @@ pub(super) fn stage_constants(
                 pass,
                 name: name.to_string(),
                 keyword: request.pass.is_dynamic(name),
-                suggestion: crate::material::closest(name, names),
+                suggestion: crate::diagnostics::closest(name, names),
             });
         };
         if !constant.accepts(value) {

@@ -642,7 +642,7 @@ fn misspelt(name: &str) -> Option<String> {
     if name.len() < 4 || known.iter().any(|k| k == name) {
         return None;
     }
-    crate::material::closest(name, known.iter().map(String::as_str))
+    crate::diagnostics::closest(name, known.iter().map(String::as_str))
 }
 
 /// Splits `shader_feature_local_fragment` into its kind, scope and stage.
