@@ -30,16 +30,16 @@ const HARNESS: &str = include_str!("harness.compute");
 
 const EVALUATIONS: u32 = 256;
 
-/// Invocations per timing dispatch: enough to fill a CPU rasteriser by default; a large GPU needs
-/// more to be busy (`KILN_ACCURACY_INVOCATIONS`, docs/accuracy.md).
-fn timing_invocations() -> u32 {
-    // One dimension of workgroups: WebGPU allows at most 65,535 of them.
+/// Invocations per timing dispatch: 65,536 fill a CPU rasteriser; a GPU gets the most one
+/// dimension of workgroups allows (65,535 of 64), so that its times are not launch-bound.
+/// `KILN_ACCURACY_INVOCATIONS` sets another count (docs/accuracy.md).
+fn timing_invocations(device_type: wgpu::DeviceType) -> u32 {
     let most = 65_535 * 64;
-    std::env::var("KILN_ACCURACY_INVOCATIONS")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(64 * 1024)
-        .min(most)
+    let sized = match device_type {
+        wgpu::DeviceType::Cpu => 64 * 1024,
+        _ => most,
+    };
+    std::env::var("KILN_ACCURACY_INVOCATIONS").ok().and_then(|v| v.parse().ok()).unwrap_or(sized).min(most)
 }
 
 /// The WGSL kiln emits for each kernel of the harness's variant with these keywords, and where
@@ -313,7 +313,7 @@ impl Gpu {
         light: Option<&[u8]>,
     ) -> Result<f64, String> {
         let pipeline = self.pipeline(keywords, entry)?;
-        let invocations = timing_invocations();
+        let invocations = timing_invocations(self.device_type);
         // Warm-up for at least 0.2 s, so that a GPU's clocks have risen from idle.
         let warming = std::time::Instant::now();
         while warming.elapsed().as_millis() < 200 {
@@ -375,6 +375,8 @@ pub struct Gpu {
     pub queue: wgpu::Queue,
     /// The adapter's name, type and backend.
     pub adapter: String,
+    /// Its type: a CPU rasteriser gets smaller timing dispatches than a GPU.
+    pub device_type: wgpu::DeviceType,
     /// Whether the device has timestamp queries.
     pub timestamps: bool,
     /// `shader-f16`: the f16 formulation runs.
@@ -384,14 +386,15 @@ pub struct Gpu {
     kernels: std::sync::Mutex<HashMap<Vec<String>, Kernels>>,
 }
 
-/// Requests a device with timestamp queries and `shader-f16` where the adapter has them.
+/// A device on the adapter [`crate::runtime::adapter`] picks from the backends `WGPU_BACKEND` names (all by
+/// default), with timestamp queries and `shader-f16` where the adapter has them.
 pub fn device() -> Result<Gpu, String> {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle());
-    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
-        power_preference: wgpu::PowerPreference::HighPerformance,
-        ..Default::default()
-    }))
-    .map_err(|e| format!("no GPU adapter ({e})"))?;
+    device_on(wgpu::Backends::from_env().unwrap_or_default())
+}
+
+/// [`device`] on these backends only.
+pub fn device_on(backends: wgpu::Backends) -> Result<Gpu, String> {
+    let adapter = crate::runtime::adapter(backends)?;
     let info = adapter.get_info();
     let required_features = adapter.features()
         & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::SHADER_F16 | wgpu::Features::PIPELINE_CACHE);
@@ -403,6 +406,7 @@ pub fn device() -> Result<Gpu, String> {
         device,
         queue,
         adapter: format!("{} ({:?}, {:?})", info.name, info.device_type, info.backend),
+        device_type: info.device_type,
         timestamps: required_features.contains(wgpu::Features::TIMESTAMP_QUERY),
         f16: required_features.contains(wgpu::Features::SHADER_F16),
         kernels: Default::default(),
@@ -497,7 +501,7 @@ pub fn run(gpu: &Gpu, samples: usize) -> Result<(Vec<Row>, Vec<Timing>, String),
         } else {
             "CPU wall time around submit and wait (no timestamp queries on this adapter)"
         },
-        timing_invocations()
+        timing_invocations(gpu.device_type)
     );
     let rows = error_rows(gpu, &formulations, samples)?;
     Ok((rows, timings, method))

@@ -5,6 +5,7 @@
 //!
 //! Behind the `wgpu` feature; the compiler stages never import it.
 
+mod adapter;
 mod compute;
 mod layout;
 mod material;
@@ -13,6 +14,7 @@ mod pipelines;
 mod state;
 mod uniforms;
 
+pub use adapter::adapter;
 pub use compute::{Kernel, KernelRequest};
 pub use layout::{PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
 pub use material::{MATERIAL_GROUP, MaterialBindGroup, MaterialTextures};

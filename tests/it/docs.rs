@@ -31,9 +31,7 @@ const HARNESS: &str = r#"
 {generated_module}
 
 fn device() -> (wgpu::Device, wgpu::Queue) {
-    let instance = wgpu::Instance::default();
-    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
-        .expect("an adapter (lavapipe in CI)");
+    let adapter = kiln::runtime::adapter(wgpu::Backends::all()).expect("an adapter (lavapipe in CI)");
     pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default())).expect("a device")
 }
 

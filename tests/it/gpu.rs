@@ -170,3 +170,53 @@ fn every_variant_makes_a_render_pipeline() {
     assert_eq!(made, 2 * result.summary.variants);
     println!("{made} render pipelines created on {adapter}");
 }
+
+/// The README's test command on a machine whose only driver is OpenGL (Mesa's, without Vulkan):
+/// a GPU test run on wgpu's GL backend skips, with the adapter and what it lacks named, instead
+/// of failing on what the backend does not do. Run here as the test binary itself, on the GL
+/// backend alone, with `KILN_REQUIRE_GPU` unset.
+#[test]
+fn a_gpu_test_on_an_adapter_below_webgpu_skips_and_names_it() {
+    let gl = pollster::block_on(
+        wgpu::Instance::new(wgpu::InstanceDescriptor {
+            backends: wgpu::Backends::GL,
+            ..wgpu::InstanceDescriptor::new_without_display_handle()
+        })
+        .enumerate_adapters(wgpu::Backends::GL),
+    );
+    let below: Vec<String> = gl
+        .iter()
+        .filter(|a| !a.get_downlevel_capabilities().is_webgpu_compliant())
+        .map(|a| a.get_info().name)
+        .collect();
+    if below.is_empty() {
+        assert!(
+            std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
+            "KILN_REQUIRE_GPU=1 but no OpenGL adapter below WebGPU (Mesa's EGL: libegl1, libgl1-mesa-dri)"
+        );
+        crate::support::skipped(
+            "the GL adapter test: no OpenGL adapter below WebGPU here (install libegl1 libgl1-mesa-dri)",
+        );
+        return;
+    }
+    let test = "runtime::presets_blend_and_write_depth_as_their_properties_say";
+    let run = std::process::Command::new(std::env::current_exe().expect("test binary"))
+        .args(["--exact", test])
+        .env("WGPU_BACKEND", "gl")
+        .env_remove("KILN_REQUIRE_GPU")
+        .current_dir(crate::support::root())
+        .output()
+        .expect("the test binary runs");
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(run.status.success() && stdout.contains("1 passed"), "{stdout}\n{stderr}");
+    let skip = stderr
+        .lines()
+        .find(|l| l.starts_with("SKIPPED"))
+        .unwrap_or_else(|| panic!("no skip line:\n{stderr}"));
+    assert!(skip.contains("no adapter runs WebGPU in full") && skip.contains("(Gl) lacks"), "{skip}");
+    for name in &below {
+        assert!(skip.contains(name.as_str()), "{name} is not named: {skip}");
+    }
+    assert!(skip.contains("DEPTH_TEXTURE_AND_BUFFER_COPIES"), "{skip}");
+}

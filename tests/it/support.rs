@@ -69,7 +69,9 @@ pub fn gpu(test: &str) -> Option<kiln::accuracy::gpu::Gpu> {
                 std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
                 "KILN_REQUIRE_GPU=1 but {reason}"
             );
-            skipped(&format!("{test}: {reason}; install mesa-vulkan-drivers for lavapipe"));
+            skipped(&format!(
+                "{test}: {reason}; lavapipe runs them: apt-get install mesa-vulkan-drivers libvulkan1"
+            ));
             None
         }
     }

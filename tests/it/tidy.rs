@@ -105,3 +105,31 @@ fn every_diagnostic_code_is_documented_and_shown() {
         );
     }
 }
+
+/// The packages after `apt-get install` (and its options) on the first such line of a text.
+fn apt_packages(text: &str) -> Vec<String> {
+    let line = text.lines().find(|l| l.contains("apt-get install")).unwrap_or_default();
+    let after = line.split("apt-get install").nth(1).unwrap_or_default();
+    let mut packages: Vec<String> =
+        after.split_whitespace().filter(|w| !w.starts_with('-')).map(str::to_string).collect();
+    packages.sort();
+    packages
+}
+
+#[test]
+fn the_readme_s_set_up_line_installs_what_ci_installs() {
+    let readme = std::fs::read_to_string(root().join("README.md")).expect("README");
+    let ci = std::fs::read_to_string(root().join(".ci/run")).expect(".ci/run");
+    let (readme_packages, ci_packages) = (apt_packages(&readme), apt_packages(&ci));
+    assert!(ci_packages.contains(&"mesa-vulkan-drivers".to_string()), "{ci_packages:?}");
+    assert_eq!(
+        readme_packages, ci_packages,
+        "the README's set-up line and .ci/run install different packages"
+    );
+    // The set-up line is on the README's first screen, before its first section.
+    let first_screen = readme.split("\n## ").next().unwrap_or_default();
+    assert!(
+        first_screen.contains("apt-get install"),
+        "the set-up line is not before the README's first section"
+    );
+}

@@ -170,12 +170,12 @@ fn sphere_mesh(rings: u32, segments: u32) -> (Vec<f32>, Vec<u32>) {
     (vertices, indices)
 }
 
-/// A device (with `shader-f16` and timestamp queries where the adapter has them), or why there
-/// is none.
+/// A device on an adapter that runs WebGPU in full (with `shader-f16` and timestamp queries
+/// where it has them), or why there is none.
 pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle());
-    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
-        .map_err(|e| format!("no GPU adapter ({e}); install mesa-vulkan-drivers for lavapipe"))?;
+    let backends = wgpu::Backends::from_env().unwrap_or_default();
+    let adapter = kiln::runtime::adapter(backends)
+        .map_err(|e| format!("{e}; lavapipe runs it: apt-get install mesa-vulkan-drivers libvulkan1"))?;
     let name = adapter.get_info().name;
     let descriptor = wgpu::DeviceDescriptor {
         required_features: adapter.features()

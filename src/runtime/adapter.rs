@@ -1,0 +1,41 @@
+//! Which adapter a renderer, the tests and `kiln accuracy` run on.
+
+/// The adapter that runs WebGPU in full, a discrete GPU first and a CPU rasteriser last. An
+/// adapter below WebGPU (wgpu's OpenGL backend on Mesa lacks depth copies, and reads some
+/// layouts wrongly) is named in the error instead of being used: its results would not be
+/// WebGPU's.
+pub fn adapter(backends: wgpu::Backends) -> Result<wgpu::Adapter, String> {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends,
+        ..wgpu::InstanceDescriptor::new_without_display_handle_from_env()
+    });
+    let adapters = pollster::block_on(instance.enumerate_adapters(backends));
+    let rank = |adapter: &wgpu::Adapter| match adapter.get_info().device_type {
+        wgpu::DeviceType::DiscreteGpu => 0,
+        wgpu::DeviceType::IntegratedGpu => 1,
+        wgpu::DeviceType::VirtualGpu => 2,
+        wgpu::DeviceType::Other => 3,
+        wgpu::DeviceType::Cpu => 4,
+    };
+    let (full, below): (Vec<_>, Vec<_>) =
+        adapters.into_iter().partition(|a| a.get_downlevel_capabilities().is_webgpu_compliant());
+    if let Some(best) = full.into_iter().min_by_key(rank) {
+        return Ok(best);
+    }
+    if below.is_empty() {
+        return Err("no GPU adapter (no Vulkan, Metal or DirectX 12 driver, nor OpenGL)".to_string());
+    }
+    let named: Vec<String> = below
+        .iter()
+        .map(|adapter| {
+            let info = adapter.get_info();
+            let capabilities = adapter.get_downlevel_capabilities();
+            let missing = wgpu::DownlevelFlags::compliant() - capabilities.flags;
+            format!(
+                "{} ({:?}) lacks {missing:?}, shader model {:?}",
+                info.name, info.backend, capabilities.shader_model
+            )
+        })
+        .collect();
+    Err(format!("no adapter runs WebGPU in full: {}", named.join("; ")))
+}
