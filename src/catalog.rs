@@ -227,15 +227,33 @@ fn add_listed_variants(listed: &[ListedVariant], shaders: &mut [CatalogShader]) 
         ) {
             Ok(keywords) => {
                 let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
-                added.entry((index, position)).or_default().push(program.keywords.variant_of(&keywords));
+                let mut variant = program.keywords.variant_of(&keywords);
+                variant.listed_in.push(logged.span.file);
+                added.entry((index, position)).or_default().push(variant);
             }
             Err(e) => diagnostics.push(error("K0533", e.to_string(), "named here")),
         }
     }
     for ((shader, pass), variants) in added {
         let Some(program) = shaders[shader].passes[pass].program.as_mut() else { continue };
-        let mut known: HashSet<KeywordBits> = program.variants.iter().map(|v| v.bits.clone()).collect();
-        program.variants.extend(variants.into_iter().filter(|v| known.insert(v.bits.clone())));
+        let mut known: HashMap<KeywordBits, usize> =
+            program.variants.iter().enumerate().map(|(i, v)| (v.bits.clone(), i)).collect();
+        for variant in variants {
+            match known.get(&variant.bits) {
+                Some(&i) => {
+                    let listed_in = &mut program.variants[i].listed_in;
+                    for file in variant.listed_in {
+                        if !listed_in.contains(&file) {
+                            listed_in.push(file);
+                        }
+                    }
+                }
+                None => {
+                    known.insert(variant.bits.clone(), program.variants.len());
+                    program.variants.push(variant);
+                }
+            }
+        }
         program.variants.sort_by(|a, b| a.choices.cmp(&b.choices));
     }
     diagnostics

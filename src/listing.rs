@@ -102,6 +102,10 @@ pub struct VariantListing {
     pub fragment_keywords: Vec<String>,
     /// The materials that use it.
     pub materials: Vec<String>,
+    /// The other files that name it: usage logs, `kiln.toml` (`[compute.NAME]`). A variant no
+    /// material or file names is built because the project always includes its shader.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub listed_in: Vec<String>,
 }
 
 /// One material in `kiln list --materials`.
@@ -161,7 +165,7 @@ pub fn listing(store: &SourceStore, catalog: &Catalog, global: Option<&[&str]>) 
         .map(|s| ShaderListing {
             name: s.shader.name.value.clone(),
             file: store.name(s.file).to_string(),
-            passes: s.passes.iter().map(|p| pass_listing(catalog, p, global)).collect(),
+            passes: s.passes.iter().map(|p| pass_listing(store, catalog, p, global)).collect(),
         })
         .collect();
     let materials = catalog
@@ -172,7 +176,12 @@ pub fn listing(store: &SourceStore, catalog: &Catalog, global: Option<&[&str]>) 
     Listing { shaders, materials }
 }
 
-fn pass_listing(catalog: &Catalog, pass: &CatalogPass, global: Option<&[&str]>) -> PassListing {
+fn pass_listing(
+    store: &SourceStore,
+    catalog: &Catalog,
+    pass: &CatalogPass,
+    global: Option<&[&str]>,
+) -> PassListing {
     PassListing {
         subshader: pass.subshader,
         pass: pass.index,
@@ -192,6 +201,7 @@ fn pass_listing(catalog: &Catalog, pass: &CatalogPass, global: Option<&[&str]>) 
                     vertex_keywords: names(&v.vertex),
                     fragment_keywords: names(&v.fragment),
                     materials: v.materials.iter().map(|&m| catalog.materials[m].name.clone()).collect(),
+                    listed_in: v.listed_in.iter().map(|&f| store.name(f).to_string()).collect(),
                 })
                 .collect();
             let fixed = global.map(|global| keywords.fixed_by_global(global)).unwrap_or_default();
@@ -329,11 +339,9 @@ pub fn render_text(listing: &Listing) -> String {
                 } else {
                     variant.keywords.join(" ")
                 };
-                let users = if variant.materials.is_empty() {
-                    "(always included)".to_string()
-                } else {
-                    variant.materials.join(", ")
-                };
+                let listed = variant.listed_in.iter().map(|file| format!("(listed in {file})"));
+                let users: Vec<String> = variant.materials.iter().cloned().chain(listed).collect();
+                let users = if users.is_empty() { "(always included)".to_string() } else { users.join(", ") };
                 let _ = writeln!(out, "      {keywords:<40} {users}");
             }
         }

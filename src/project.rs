@@ -601,13 +601,30 @@ pub fn list_project(
     problems.extend(found);
     let (materials, found) = load_files(store, &workspace.materials);
     problems.extend(found);
-    let input = workspace.catalog_input(shaders, materials);
+    let mut input = workspace.catalog_input(shaders, materials);
+    // The listing shows what a build builds: the logged variants too.
+    load_variant_logs(store, workspace.variant_logs.iter(), &mut input, &mut problems);
     let (listing, found) = crate::listing::list_shaders(store, &mut includes, &input);
     problems.extend(found);
     if workspace.strict {
         diagnostics::promote_warnings(&mut problems);
     }
     Ok((listing, problems))
+}
+
+/// Loads usage logs into the store for the catalogue; one that cannot be read is a diagnostic.
+fn load_variant_logs<'a>(
+    store: &mut SourceStore,
+    paths: impl Iterator<Item = &'a PathBuf>,
+    input: &mut CatalogInput,
+    diagnostics: &mut Vec<Diagnostic>,
+) {
+    for path in paths {
+        match store.load(path) {
+            Ok(file) => input.variant_logs.push(file),
+            Err(error) => diagnostics.push(load_error(&error)),
+        }
+    }
 }
 
 /// Loads files into the store. Unreadable files and files that are not text become diagnostics,
@@ -804,12 +821,12 @@ fn load_given(store: &mut SourceStore, paths: &[PathBuf], mode: &BuildMode) -> R
     if let Some(missing) = mode.variant_logs.iter().find(|path| !path.exists()) {
         return Err(ProjectError::NotFound(missing.clone()));
     }
-    for path in workspace.variant_logs.iter().chain(&mode.variant_logs) {
-        match store.load(path) {
-            Ok(file) => input.variant_logs.push(file),
-            Err(error) => diagnostics.push(load_error(&error)),
-        }
-    }
+    load_variant_logs(
+        store,
+        workspace.variant_logs.iter().chain(&mode.variant_logs),
+        &mut input,
+        &mut diagnostics,
+    );
     if let Some(global) = &mode.global_keywords {
         input.global_keywords = Some(given_global_keywords(store, global));
     }

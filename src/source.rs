@@ -237,13 +237,26 @@ fn read_in_parallel<T: Send>(paths: &[PathBuf], read: impl Fn(&Path) -> T + Sync
     paths.par_iter().map(|p| read(p)).collect()
 }
 
+/// A file's name as kiln shows it: the path with `/` between its parts and without `.` parts, so
+/// that one file has one name whether it was reached as `./shaders/Lit.shader` (a project at
+/// `.`) or `shaders/Lit.shader`.
+fn file_name(path: &Path) -> String {
+    let parts: Vec<_> =
+        path.components().filter(|c| !matches!(c, Component::CurDir)).map(|c| c.as_os_str()).collect();
+    if parts.is_empty() {
+        return ".".to_string();
+    }
+    let joined: PathBuf = parts.iter().collect();
+    joined.to_string_lossy().replace('\\', "/")
+}
+
 /// Reads a text file of at most [`MAX_FILE_SIZE`] bytes (see [`decode`]), or its stand-in in
 /// `overlay`.
 fn read_file(path: &Path, overlay: Option<&Overlay>) -> Result<SourceFile, LoadError> {
     let unsaved = overlay.filter(|o| !o.is_empty()).and_then(|o| o.get(&std::fs::canonicalize(path).ok()?));
     if let Some(text) = unsaved {
         let (text, problems) = decode(path, text.clone().into_bytes())?;
-        let name = path.to_string_lossy().replace('\\', "/");
+        let name = file_name(path);
         return Ok(SourceFile { problems, ..SourceFile::new(name, Some(path.to_path_buf()), text) });
     }
     let io = |source| LoadError::Io { path: path.to_path_buf(), source };
@@ -263,7 +276,7 @@ fn read_file(path: &Path, overlay: Option<&Overlay>) -> Result<SourceFile, LoadE
         return Err(LoadError::TooLarge { path: path.to_path_buf(), size: bytes.len() as u64 });
     }
     let (text, problems) = decode(path, bytes)?;
-    let name = path.to_string_lossy().replace('\\', "/");
+    let name = file_name(path);
     Ok(SourceFile { problems, ..SourceFile::new(name, Some(path.to_path_buf()), text) })
 }
 

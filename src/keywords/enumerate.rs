@@ -4,6 +4,7 @@
 
 use crate::preprocess::Stage;
 use crate::shaderlab::pragma::{KeywordKind, KeywordSet, KeywordStage};
+use crate::source::FileId;
 use std::collections::HashMap;
 
 /// A pass may have at most this many variants built: more is refused, with the count.
@@ -62,6 +63,9 @@ pub struct Variant {
     pub choices: Vec<usize>,
     /// Indices (into the materials given) of the materials that need this variant.
     pub materials: Vec<usize>,
+    /// The files besides materials that name it (usage logs, `kiln.toml`'s `[compute.NAME]`), in
+    /// the order they named it first.
+    pub listed_in: Vec<FileId>,
     /// The keywords each stage's text is preprocessed with: two variants with equal vertex bits
     /// share a vertex module.
     pub vertex: KeywordBits,
@@ -274,7 +278,7 @@ impl PassKeywords {
         }
         let vertex = bits.and(&self.vertex_mask);
         let fragment = bits.and(&self.fragment_mask);
-        Variant { bits, choices, materials, vertex, fragment }
+        Variant { bits, choices, materials, listed_in: Vec::new(), vertex, fragment }
     }
 
     fn indices(&self, kind: KeywordKind) -> Vec<usize> {

@@ -20,6 +20,16 @@ pub trait MaterialTextures {
     fn sampler(&self, property: &str) -> Option<&wgpu::Sampler>;
 }
 
+/// No textures: for a material whose pass samples none.
+impl MaterialTextures for () {
+    fn texture(&self, _property: &str, _texture: &str) -> Option<&wgpu::TextureView> {
+        None
+    }
+    fn sampler(&self, _property: &str) -> Option<&wgpu::Sampler> {
+        None
+    }
+}
+
 /// A material's bind group for a pass, with the uniform buffers it owns.
 #[derive(Debug)]
 pub struct MaterialBindGroup {

@@ -199,3 +199,74 @@ fn without_a_path_kiln_works_on_the_folder_it_runs_in_not_its_own_fixtures() {
     assert_eq!(build.status.code(), Some(0));
     assert!(String::from_utf8_lossy(&build.stderr).contains("warning[K0009]"));
 }
+
+/// One file, one name: a project whose `kiln.toml` says `shaders = ["."]`, checked with no path,
+/// with `.` and with `./`, names the shader and its include the same way, without a `./`.
+#[test]
+fn a_file_is_named_one_way_however_the_project_is_reached() {
+    let project = tempfile::tempdir().expect("temp dir");
+    let pass = std::fs::read_to_string(crate::support::root().join("fixtures/project/shaders/LitPass.wgsl"))
+        .expect("LitPass");
+    let broken = pass.replace("GetLighting(surface, brdf)", "GetLightin(surface, brdf)");
+    assert_ne!(broken, pass);
+    std::fs::create_dir_all(project.path().join("shaders")).expect("mkdir");
+    std::fs::write(project.path().join("shaders/LitPass.wgsl"), broken).expect("write");
+    std::fs::copy(
+        crate::support::root().join("fixtures/project/shaders/Lit.shader"),
+        project.path().join("shaders/Lit.shader"),
+    )
+    .expect("copy");
+    std::fs::write(
+        project.path().join("kiln.toml"),
+        "shaders = [\".\"]\nalways_include = [\"Custom RP/Lit\"]\n",
+    )
+    .expect("write");
+    let names = |args: &[&str]| {
+        let run = crate::support::kiln_in(project.path(), args);
+        assert_eq!(run.status.code(), Some(1), "{args:?}");
+        let stderr = String::from_utf8_lossy(&run.stderr).to_string();
+        let located: Vec<String> = stderr
+            .lines()
+            .filter_map(|l| {
+                l.split_once("┌─ ")
+                    .map(|(_, at)| at)
+                    .or_else(|| l.split_once("included from ").map(|(_, at)| at))
+            })
+            .map(|at| at.rsplitn(3, ':').last().unwrap_or_default().to_string())
+            .collect();
+        assert!(!located.is_empty(), "{stderr}");
+        located
+    };
+    let plain = names(&["check"]);
+    assert!(plain.contains(&"shaders/LitPass.wgsl".to_string()), "{plain:?}");
+    assert!(plain.contains(&"shaders/Lit.shader".to_string()), "{plain:?}");
+    for args in
+        [&["check", "."][..], &["check", "./"], &["check", "./shaders/Lit.shader"], &["check", "shaders"]]
+    {
+        assert_eq!(names(args), plain, "{args:?}");
+    }
+}
+
+/// A `kiln.toml` broken on its first line is reported on that line, at the column where TOML
+/// stops making sense, however the file ends (newline, none, CRLF, blank lines after).
+#[test]
+fn a_kiln_toml_broken_on_its_first_line_is_reported_there() {
+    let project = tempfile::tempdir().expect("temp dir");
+    let cases = [
+        ("shaders = [\"shaders\"\n", 21),
+        ("shaders = [\"shaders\"", 21),
+        ("shaders = [\"a\",\r\n", 16),
+        ("shaders = [\"a\",\n\n\n", 16),
+        ("shaders =\n", 10),
+        ("shaders\n", 8),
+        ("strict = tru\n", 10),
+        ("[bind_groups\n", 13),
+    ];
+    for (text, column) in cases {
+        std::fs::write(project.path().join("kiln.toml"), text).expect("write");
+        let run = crate::support::kiln_in(project.path(), &["check"]);
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        assert_eq!(run.status.code(), Some(1), "{text:?}: {stderr}");
+        assert!(stderr.contains(&format!("┌─ kiln.toml:1:{column}\n")), "{text:?}: {stderr}");
+    }
+}

@@ -109,8 +109,41 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let bytes = readback.get_mapped_range(..)?;
     let pixel = &bytes[4 * 256 + 4 * 4..4 * 256 + 4 * 4 + 4];
     println!("pixel {} {} {} {}", pixel[0], pixel[1], pixel[2], pixel[3]);
+    first_shader_pixels(&device, &queue)
+}
+
+/// docs/first-shader.md's `draw_flat` for each material named on the command line, run in the
+/// page's project folder (the first argument, built there); prints each one's pixel.
+fn first_shader_pixels(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(), Box<dyn std::error::Error>> {
+    let mut arguments = std::env::args().skip(1);
+    let Some(project) = arguments.next() else { return Ok(()) };
+    std::env::set_current_dir(project)?;
+    for material in arguments {
+        let target = texture(device, wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC);
+        draw_flat(device, queue, &target.create_view(&Default::default()), &material)?;
+        let readback = device.create_buffer(&wgpu::BufferDescriptor {
+            label: None,
+            size: 256 * 8,
+            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+            mapped_at_creation: false,
+        });
+        let mut encoder = device.create_command_encoder(&Default::default());
+        encoder.copy_texture_to_buffer(
+            target.as_image_copy(),
+            wgpu::TexelCopyBufferInfo { buffer: &readback, layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(256), rows_per_image: None } },
+            target.size(),
+        );
+        queue.submit([encoder.finish()]);
+        readback.map_async(wgpu::MapMode::Read, .., |_| {});
+        device.poll(wgpu::PollType::wait_indefinitely())?;
+        let bytes = readback.get_mapped_range(..)?;
+        let pixel = &bytes[4 * 256 + 4 * 4..4 * 256 + 4 * 4 + 4];
+        println!("first-shader {material} {} {} {} {}", pixel[0], pixel[1], pixel[2], pixel[3]);
+    }
     Ok(())
 }
+
+{first_shader}
 "#;
 
 #[test]
@@ -145,14 +178,18 @@ fn a_renderer_written_from_the_docs_builds_and_draws() {
             std::fs::copy(&path, krate.join(to).join(path.file_name().expect("name"))).expect("copy");
         }
     }
+    let (first_project, first_draw, pixels) = first_shader_project(dir.path());
     let mut main = HARNESS
+        .replace("{first_shader}", &first_draw)
         .replace("{generated_module}", &format!("use wgpu::util::DeviceExt as _;\n{generated_module}"))
         .replace("{materials_to_bind_groups}", materials)
         .replace("{per_frame_and_per_object}", per_frame)
         .replace("{render_pass}", render_pass);
     main.push_str(&readme_functions());
     write(&krate.join("src/main.rs"), &main);
-    let run = cargo_scratch(&krate, &["run", "--quiet"]);
+    let mut arguments = vec!["run", "--quiet", "--", first_project.to_str().expect("UTF-8")];
+    arguments.extend(pixels.iter().map(|(material, _)| material.as_str()));
+    let run = cargo_scratch(&krate, &arguments);
     let (stdout, stderr) = (String::from_utf8_lossy(&run.stdout), String::from_utf8_lossy(&run.stderr));
     assert!(
         run.status.success(),
@@ -167,6 +204,56 @@ fn a_renderer_written_from_the_docs_builds_and_draws() {
         .map(|v| v.parse().expect("a number"))
         .collect();
     assert!(pixel[1] > 60 && pixel[1] > pixel[0] && pixel[1] > pixel[2], "{pixel:?}\n{stdout}");
+    // docs/first-shader.md's table, pixel by pixel (one step of 255 for rounding).
+    for (material, expected) in &pixels {
+        let drawn: Vec<i32> = stdout
+            .lines()
+            .find_map(|l| l.strip_prefix(&format!("first-shader {material} ")))
+            .unwrap_or_else(|| panic!("no pixel for {material}:\n{stdout}"))
+            .split(' ')
+            .map(|v| v.parse().expect("a number"))
+            .collect();
+        assert!(
+            drawn.iter().zip(expected).all(|(d, e)| (d - e).abs() <= 1),
+            "docs/first-shader.md says {material} draws {expected:?}; it draws {drawn:?}"
+        );
+    }
+}
+
+/// docs/first-shader.md's files, written into `dir/first-shader` as the page gives them (each
+/// block's first line, a comment, names its file); its `kiln list` text checked against a fresh
+/// listing and the project built with `kiln build`. Returns the folder, the page's `draw_flat`,
+/// and the pixel its table gives each material.
+fn first_shader_project(dir: &Path) -> (std::path::PathBuf, String, Vec<(String, Vec<i32>)>) {
+    let page = std::fs::read_to_string(root().join("docs/first-shader.md")).expect("docs/first-shader.md");
+    let project = dir.join("first-shader");
+    let files: Vec<String> =
+        ["shader", "toml"].iter().flat_map(|language| code_blocks(&page, language)).collect();
+    assert_eq!(files.len(), 4, "the shader, two materials and kiln.toml");
+    for block in &files {
+        let first = block.lines().next().unwrap_or_default();
+        let name = first.trim_start_matches(['/', '#']).trim();
+        write(&project.join(name), block);
+    }
+    let listing = code_blocks(&page, "text").into_iter().next().expect("the page's listing");
+    let list = crate::support::kiln_in(&project, &["list"]);
+    assert!(list.status.success(), "{}", String::from_utf8_lossy(&list.stderr));
+    assert_eq!(String::from_utf8_lossy(&list.stdout), listing, "docs/first-shader.md's listing is stale");
+    let build = crate::support::kiln_in(&project, &["build"]);
+    let stderr = String::from_utf8_lossy(&build.stderr);
+    assert!(build.status.success() && stderr.starts_with("built 1 shaders"), "{stderr}");
+    let draw = code_blocks(&page, "rust").into_iter().next().expect("the page's draw_flat");
+    let pixels = page
+        .lines()
+        .filter_map(|row| {
+            let cells: Vec<&str> = row.split('|').map(str::trim).collect();
+            let numbers: Vec<i32> =
+                cells.get(3)?.split(", ").map(|v| v.parse().ok()).collect::<Option<_>>()?;
+            (numbers.len() == 4).then(|| (cells[1].to_string(), numbers))
+        })
+        .collect::<Vec<_>>();
+    assert_eq!(pixels.len(), 2, "a pixel for each material");
+    (project, draw, pixels)
 }
 
 /// The README's Rust blocks, compiled (not run) in the same crate: its build script as a nested
@@ -228,4 +315,14 @@ fn the_readme_s_example_outputs_are_what_kiln_prints() {
     // Up to the bytes written: the counts of shaders, passes, variants and modules.
     let counts = |l: &str| l.split("), ").next().map(str::to_string);
     assert_eq!(counts(&line), counts(fresh), "README: {line}\nkiln build: {fresh}");
+}
+
+/// docs/first-shader.md's project lists and builds as the page says, with or without a GPU (the
+/// draw is checked in `a_renderer_written_from_the_docs_builds_and_draws`).
+#[test]
+fn the_first_shader_page_lists_and_builds_as_it_says() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let (_, draw, pixels) = first_shader_project(dir.path());
+    assert!(draw.contains("fn draw_flat("), "{draw}");
+    assert_eq!(pixels.iter().map(|(m, _)| m.as_str()).collect::<Vec<_>>(), ["Dim", "Inverted"]);
 }

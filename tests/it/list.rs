@@ -80,3 +80,43 @@ fn variant_counts_are_products_of_set_sizes() {
     assert_eq!(program["possible_variants"].as_u64(), Some(product));
     assert_eq!(product, 18432);
 }
+
+#[test]
+fn compute_variants_name_the_kiln_toml_that_lists_them() {
+    check("fixtures/compute", "compute");
+}
+
+/// A variant a usage log names is listed with the log; one a material also uses, with both.
+#[test]
+fn logged_variants_name_their_log() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("runtime");
+    std::fs::create_dir_all(project.join("materials")).expect("mkdir");
+    for file in ["Blend.shader", "materials/Opaque.mat"] {
+        std::fs::copy(root().join("fixtures/runtime").join(file), project.join(file)).expect("copy");
+    }
+    std::fs::write(
+        project.join("kiln.toml"),
+        "shaders = [\".\"]\nmaterials = [\"materials\"]\nvariant_logs = [\"usage.jsonl\"]\n",
+    )
+    .expect("write");
+    std::fs::write(
+        project.join("usage.jsonl"),
+        "{\"shader\": \"Test/Blend\", \"pass\": 0, \"keywords\": [\"_TINT\"]}\n\
+         {\"shader\": \"Test/Blend\", \"pass\": 0, \"keywords\": []}\n",
+    )
+    .expect("write");
+    let run = crate::support::kiln_in(&project, &["list"]);
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+    let line = |keywords: &str| {
+        stdout
+            .lines()
+            .find(|l| l.trim_start().starts_with(keywords))
+            .unwrap_or_else(|| panic!("{stdout}"))
+            .to_string()
+    };
+    assert!(line("(no keywords)").ends_with("Opaque, (listed in usage.jsonl)"), "{stdout}");
+    assert!(line("_TINT").ends_with(" (listed in usage.jsonl)"), "{stdout}");
+    assert!(!stdout.contains("always included"), "{stdout}");
+}

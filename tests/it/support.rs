@@ -217,8 +217,8 @@ pub fn tool(name: &str, debian_package: &str, test: &str) -> bool {
 pub fn cargo_scratch(krate: &Path, args: &[&str]) -> Output {
     std::fs::copy(root().join("Cargo.lock"), krate.join("Cargo.lock")).expect("lock file");
     std::process::Command::new(env!("CARGO"))
-        .args(args)
         .arg("--offline")
+        .args(args)
         .current_dir(krate)
         .env("CARGO_TARGET_DIR", root().join("target/scratch-crates"))
         .env_remove("RUSTFLAGS")
