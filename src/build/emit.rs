@@ -10,6 +10,7 @@ use crate::catalog::{Catalog, CatalogShader, property_references};
 use crate::diagnostics::{self, Diagnostic};
 use crate::manifest::*;
 use crate::material::{Material, MaterialValue};
+use crate::preprocess::Stage;
 use crate::reflect::{Resource, UniformBlock};
 use crate::shaderlab::ast::Property;
 use crate::shaderlab::pragma::{KeywordKind, KeywordScope};
@@ -372,7 +373,11 @@ pub(super) fn pass_manifest(
             continue;
         };
         let reflection = &stage.reflection;
-        let name = job.stage.name();
+        let name = match job.stage {
+            Stage::Vertex => ShaderStage::Vertex,
+            Stage::Fragment => ShaderStage::Fragment,
+            Stage::Compute => ShaderStage::Compute,
+        };
         for b in &reflection.bindings {
             let entry = entries.entry((b.group, b.binding)).or_insert_with(|| LayoutEntry {
                 binding: b.binding,
@@ -380,8 +385,8 @@ pub(super) fn pass_manifest(
                 visibility: Vec::new(),
                 resource: b.resource.clone(),
             });
-            if !entry.visibility.iter().any(|v| v == name) {
-                entry.visibility.push(name.to_string());
+            if !entry.visibility.contains(&name) {
+                entry.visibility.push(name);
             }
         }
         let mut blocks: Vec<usize> = reflection
@@ -396,7 +401,7 @@ pub(super) fn pass_manifest(
             .collect();
         blocks.sort_by(|&a, &b| uniform_blocks[a].name.cmp(&uniform_blocks[b].name));
         let interface = StageInterface {
-            stage: name.to_string(),
+            stage: name,
             entry_point: reflection.entry_point.clone(),
             inputs: reflection.inputs.clone(),
             outputs: reflection.outputs.clone(),

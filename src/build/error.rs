@@ -35,8 +35,8 @@ pub enum BuildLayerError {
     },
     /// A module's bytes in its shard's pack are missing or not what their hash says (K0412).
     ModuleDamaged {
-        /// `vertex` or `fragment`.
-        stage: String,
+        /// Its stage.
+        stage: crate::manifest::ShaderStage,
         /// The entry point.
         entry: String,
         /// The pack.

@@ -229,7 +229,7 @@ fn damaged(folder: &Path, view: &PassView, hashes: &[String]) -> Option<Diagnost
             if lengths[file.pack].is_none_or(|length| file.offset + file.size > length) {
                 let interface = &view.interfaces[module.interface];
                 let error = BuildLayerError::ModuleDamaged {
-                    stage: interface.stage.clone(),
+                    stage: interface.stage,
                     entry: interface.entry_point.clone(),
                     pack: folder.join(&view.packs[file.pack]),
                 };

@@ -41,9 +41,10 @@ const NAGA_VERSION: &str = "naga 30";
 /// Part of every cache key, raised when kiln compiles the same text differently (revision 2:
 /// layouts by the WGSL spec, a wider capability baseline; 3: `override` constants reflected, their
 /// modules WGSL only, compute kernels; 4: WGSL repaired where naga misspells it, modules naga's
-/// SPIR-V writer cannot write shipped WGSL only), so that a cache an earlier kiln of the
+/// SPIR-V writer cannot write shipped WGSL only; 5: storage texture access reflected as WGSL's
+/// modes), so that a cache an earlier kiln of the
 /// same version filled is not taken for current.
-const COMPILER_REVISION: u32 = 4;
+const COMPILER_REVISION: u32 = 5;
 
 /// What compiled a module, as the shared cache records it beside each object: kiln's version and
 /// revision and naga's. Made once: every object fetched or published names it.

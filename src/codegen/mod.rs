@@ -13,7 +13,7 @@ mod names;
 
 pub use names::NameClash;
 
-use crate::manifest::{Manifest, ModuleFile, PassManifest, ShaderManifest};
+use crate::manifest::{Manifest, ModuleFile, PassManifest, ShaderManifest, ShaderStage};
 use crate::reflect::Resource;
 use names::{Case, PRELUDE_NAMES, Scope, doc_text, string_literal};
 use std::collections::BTreeMap;
@@ -415,13 +415,16 @@ fn pass_static(
                 Resource::Uniform { size, .. } => format!("Uniform {{ size: {size} }}"),
                 Resource::Storage { read_only, .. } => format!("Storage {{ read_only: {read_only} }}"),
                 Resource::Texture { dimension, sample_type, multisampled } => format!(
-                    "Texture {{ dimension: {dimension:?}, sample_type: {sample_type:?}, multisampled: {multisampled} }}"
+                    "Texture {{ dimension: {:?}, sample_type: {:?}, multisampled: {multisampled} }}",
+                    dimension.name(),
+                    sample_type.name()
                 ),
-                Resource::StorageTexture { dimension, format, access } => {
-                    format!(
-                        "StorageTexture {{ dimension: {dimension:?}, format: {format:?}, access: {access:?} }}"
-                    )
-                }
+                Resource::StorageTexture { dimension, format, access } => format!(
+                    "StorageTexture {{ dimension: {:?}, format: {:?}, access: {:?} }}",
+                    dimension.name(),
+                    format.name(),
+                    access.name()
+                ),
                 Resource::Sampler { comparison } => format!("Sampler {{ comparison: {comparison} }}"),
                 Resource::Other { description } => {
                     let _ = writeln!(out, "            // Unsupported: {}.", doc_text(description));
@@ -434,8 +437,8 @@ fn pass_static(
                 group.group,
                 entry.binding,
                 string_literal(&entry.name),
-                entry.visibility.iter().any(|v| v == "vertex"),
-                entry.visibility.iter().any(|v| v == "fragment"),
+                entry.visibility.contains(&ShaderStage::Vertex),
+                entry.visibility.contains(&ShaderStage::Fragment),
             );
         }
     }

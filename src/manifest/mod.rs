@@ -8,14 +8,17 @@
 mod reflection;
 pub mod state;
 
-pub use reflection::{Attribute, Member, OverrideConstant, Resource, UniformBlock};
+pub use reflection::{
+    Attribute, Member, OverrideConstant, Resource, SampleType, ShaderStage, StorageAccess, TexelFormat,
+    UniformBlock, ViewDimension,
+};
 pub use state::*;
 
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
 /// Raised whenever a field changes meaning or is removed (adding fields keeps it).
-pub const SCHEMA_VERSION: u32 = 7;
+pub const SCHEMA_VERSION: u32 = 8;
 
 /// The manifest's file name, at the top of the output folder.
 pub const FILE_NAME: &str = "manifest.json";
@@ -354,8 +357,8 @@ pub struct LayoutEntry {
     pub binding: u32,
     /// The global variable's name.
     pub name: String,
-    /// The stages any variant uses it in: `vertex`, `fragment`.
-    pub visibility: Vec<String>,
+    /// The stages any variant uses it in.
+    pub visibility: Vec<ShaderStage>,
     /// What it holds.
     pub resource: Resource,
 }
@@ -382,8 +385,8 @@ pub struct VariantManifest {
 /// in their code share one.
 #[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub struct StageInterface {
-    /// `vertex` or `fragment`.
-    pub stage: String,
+    /// Its stage.
+    pub stage: ShaderStage,
     /// The entry point's name.
     pub entry_point: String,
     /// Vertex stage: the vertex attributes it reads.

@@ -14,6 +14,200 @@ pub struct Attribute {
     pub format: String,
 }
 
+/// A closed set of names the manifest writes: an enum, serialised as its name (one list gives
+/// both), so that a value outside the set is refused when a manifest is read, and every use is an
+/// exhaustive `match`.
+macro_rules! closed_set {
+    ($(#[$meta:meta])* $name:ident { $($(#[$vmeta:meta])* $variant:ident = $text:literal,)+ }) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub enum $name {
+            $($(#[$vmeta])* $variant,)+
+        }
+
+        impl $name {
+            /// Every value, in the set's order.
+            pub const ALL: &'static [$name] = &[$($name::$variant,)+];
+
+            /// Its name in the manifest (and in WGSL, where WGSL has one).
+            pub fn name(self) -> &'static str {
+                match self {
+                    $($name::$variant => $text,)+
+                }
+            }
+        }
+
+        impl std::fmt::Display for $name {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str(self.name())
+            }
+        }
+
+        impl Serialize for $name {
+            fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+                serializer.serialize_str(self.name())
+            }
+        }
+
+        impl<'de> Deserialize<'de> for $name {
+            fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+                let text = String::deserialize(deserializer)?;
+                $name::ALL
+                    .iter()
+                    .copied()
+                    .find(|value| value.name() == text)
+                    .ok_or_else(|| serde::de::Error::unknown_variant(&text, &[$($text,)+]))
+            }
+        }
+    };
+}
+
+closed_set! {
+    /// A pipeline stage (in the order `visibility` lists them).
+    ShaderStage {
+        /// A compute kernel.
+        Compute = "compute",
+        /// The fragment stage.
+        Fragment = "fragment",
+        /// The vertex stage.
+        Vertex = "vertex",
+    }
+}
+
+closed_set! {
+    /// A texture's view dimension, as WGSL's texture types spell it (`texture_2d_array`).
+    ViewDimension {
+        /// `texture_1d`.
+        D1 = "1d",
+        /// `texture_2d`.
+        D2 = "2d",
+        /// `texture_2d_array`.
+        D2Array = "2d_array",
+        /// `texture_3d`.
+        D3 = "3d",
+        /// `texture_cube`.
+        Cube = "cube",
+        /// `texture_cube_array`.
+        CubeArray = "cube_array",
+    }
+}
+
+closed_set! {
+    /// What a sampled texture returns.
+    SampleType {
+        /// `f32` texels (filterable unless multisampled).
+        Float = "float",
+        /// A depth texture (`texture_depth_*`).
+        Depth = "depth",
+        /// `i32` texels.
+        Sint = "sint",
+        /// `u32` texels.
+        Uint = "uint",
+    }
+}
+
+closed_set! {
+    /// A storage texture's access mode, as WGSL writes it.
+    StorageAccess {
+        /// `read`.
+        Read = "read",
+        /// `write`.
+        Write = "write",
+        /// `read_write`.
+        ReadWrite = "read_write",
+        /// `atomic`: atomic operations on its texels.
+        Atomic = "atomic",
+    }
+}
+
+closed_set! {
+    /// A storage texture's texel format, as WGSL writes it (`rgba8unorm`).
+    TexelFormat {
+        /// `r8unorm`.
+        R8Unorm = "r8unorm",
+        /// `r8snorm`.
+        R8Snorm = "r8snorm",
+        /// `r8uint`.
+        R8Uint = "r8uint",
+        /// `r8sint`.
+        R8Sint = "r8sint",
+        /// `r16uint`.
+        R16Uint = "r16uint",
+        /// `r16sint`.
+        R16Sint = "r16sint",
+        /// `r16float`.
+        R16Float = "r16float",
+        /// `rg8unorm`.
+        Rg8Unorm = "rg8unorm",
+        /// `rg8snorm`.
+        Rg8Snorm = "rg8snorm",
+        /// `rg8uint`.
+        Rg8Uint = "rg8uint",
+        /// `rg8sint`.
+        Rg8Sint = "rg8sint",
+        /// `r32uint`.
+        R32Uint = "r32uint",
+        /// `r32sint`.
+        R32Sint = "r32sint",
+        /// `r32float`.
+        R32Float = "r32float",
+        /// `rg16uint`.
+        Rg16Uint = "rg16uint",
+        /// `rg16sint`.
+        Rg16Sint = "rg16sint",
+        /// `rg16float`.
+        Rg16Float = "rg16float",
+        /// `rgba8unorm`.
+        Rgba8Unorm = "rgba8unorm",
+        /// `rgba8snorm`.
+        Rgba8Snorm = "rgba8snorm",
+        /// `rgba8uint`.
+        Rgba8Uint = "rgba8uint",
+        /// `rgba8sint`.
+        Rgba8Sint = "rgba8sint",
+        /// `bgra8unorm`.
+        Bgra8Unorm = "bgra8unorm",
+        /// `rgb10a2uint`.
+        Rgb10a2Uint = "rgb10a2uint",
+        /// `rgb10a2unorm`.
+        Rgb10a2Unorm = "rgb10a2unorm",
+        /// `rg11b10ufloat`.
+        Rg11b10Ufloat = "rg11b10ufloat",
+        /// `r64uint`.
+        R64Uint = "r64uint",
+        /// `rg32uint`.
+        Rg32Uint = "rg32uint",
+        /// `rg32sint`.
+        Rg32Sint = "rg32sint",
+        /// `rg32float`.
+        Rg32Float = "rg32float",
+        /// `rgba16uint`.
+        Rgba16Uint = "rgba16uint",
+        /// `rgba16sint`.
+        Rgba16Sint = "rgba16sint",
+        /// `rgba16float`.
+        Rgba16Float = "rgba16float",
+        /// `rgba32uint`.
+        Rgba32Uint = "rgba32uint",
+        /// `rgba32sint`.
+        Rgba32Sint = "rgba32sint",
+        /// `rgba32float`.
+        Rgba32Float = "rgba32float",
+        /// `r16unorm`.
+        R16Unorm = "r16unorm",
+        /// `r16snorm`.
+        R16Snorm = "r16snorm",
+        /// `rg16unorm`.
+        Rg16Unorm = "rg16unorm",
+        /// `rg16snorm`.
+        Rg16Snorm = "rg16snorm",
+        /// `rgba16unorm`.
+        Rgba16Unorm = "rgba16unorm",
+        /// `rgba16snorm`.
+        Rgba16Snorm = "rgba16snorm",
+    }
+}
+
 /// What a binding holds.
 #[derive(Debug, Clone, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
@@ -24,10 +218,10 @@ pub enum Resource {
     Uniform { type_name: String, size: u32 },
     /// `var<storage>`: its type, and whether it is `read`.
     Storage { type_name: String, read_only: bool },
-    /// A sampled texture: `2d`, `cube`, ...; `float`, `depth`, `sint`, `uint`; multisampled.
-    Texture { dimension: String, sample_type: String, multisampled: bool },
+    /// A sampled texture: its dimension, what it returns, whether it is multisampled.
+    Texture { dimension: ViewDimension, sample_type: SampleType, multisampled: bool },
     /// A storage texture: its dimension, texel format and access.
-    StorageTexture { dimension: String, format: String, access: String },
+    StorageTexture { dimension: ViewDimension, format: TexelFormat, access: StorageAccess },
     /// A sampler, comparison or not.
     Sampler { comparison: bool },
     /// Anything else, described.

@@ -3,6 +3,7 @@
 //! types (`crate::manifest`).
 
 pub use crate::manifest::{Attribute, Member, OverrideConstant, Resource, UniformBlock};
+use crate::manifest::{SampleType, StorageAccess, TexelFormat, ViewDimension};
 
 use naga::proc::Layouter;
 use naga::{
@@ -361,20 +362,19 @@ fn resource(module: &Module, layouter: &Layouter, space: AddressSpace, ty: Handl
                 ImageClass::Sampled { kind, multi } => Resource::Texture {
                     dimension,
                     sample_type: match kind {
-                        ScalarKind::Sint => "sint",
-                        ScalarKind::Uint => "uint",
-                        _ => "float",
-                    }
-                    .into(),
+                        ScalarKind::Sint => SampleType::Sint,
+                        ScalarKind::Uint => SampleType::Uint,
+                        _ => SampleType::Float,
+                    },
                     multisampled: *multi,
                 },
                 ImageClass::Depth { multi } => {
-                    Resource::Texture { dimension, sample_type: "depth".into(), multisampled: *multi }
+                    Resource::Texture { dimension, sample_type: SampleType::Depth, multisampled: *multi }
                 }
                 ImageClass::Storage { format, access } => Resource::StorageTexture {
                     dimension,
-                    format: format!("{format:?}").to_lowercase(),
-                    access: format!("{access:?}").to_lowercase(),
+                    format: texel_format(*format),
+                    access: storage_access(*access),
                 },
                 other => Resource::Other { description: format!("{other:?}") },
             }
@@ -383,14 +383,75 @@ fn resource(module: &Module, layouter: &Layouter, space: AddressSpace, ty: Handl
     }
 }
 
-fn dimension(dim: ImageDimension, arrayed: bool) -> String {
-    let base = match dim {
-        ImageDimension::D1 => "1d",
-        ImageDimension::D2 => "2d",
-        ImageDimension::D3 => "3d",
-        ImageDimension::Cube => "cube",
-    };
-    if arrayed { format!("{base}_array") } else { base.to_string() }
+fn dimension(dim: ImageDimension, arrayed: bool) -> ViewDimension {
+    match (dim, arrayed) {
+        (ImageDimension::D1, _) => ViewDimension::D1,
+        (ImageDimension::D2, false) => ViewDimension::D2,
+        (ImageDimension::D2, true) => ViewDimension::D2Array,
+        (ImageDimension::D3, _) => ViewDimension::D3,
+        (ImageDimension::Cube, false) => ViewDimension::Cube,
+        (ImageDimension::Cube, true) => ViewDimension::CubeArray,
+    }
+}
+
+/// WGSL's access mode from naga's flags: `atomic` where texels are used atomically, else by
+/// which of loads and stores the module may do.
+fn storage_access(access: naga::StorageAccess) -> StorageAccess {
+    let (load, store) =
+        (access.contains(naga::StorageAccess::LOAD), access.contains(naga::StorageAccess::STORE));
+    match (access.contains(naga::StorageAccess::ATOMIC), load, store) {
+        (true, _, _) => StorageAccess::Atomic,
+        (false, true, true) => StorageAccess::ReadWrite,
+        (false, true, false) => StorageAccess::Read,
+        (false, false, _) => StorageAccess::Write,
+    }
+}
+
+fn texel_format(format: naga::StorageFormat) -> TexelFormat {
+    use naga::StorageFormat as N;
+    match format {
+        N::R8Unorm => TexelFormat::R8Unorm,
+        N::R8Snorm => TexelFormat::R8Snorm,
+        N::R8Uint => TexelFormat::R8Uint,
+        N::R8Sint => TexelFormat::R8Sint,
+        N::R16Uint => TexelFormat::R16Uint,
+        N::R16Sint => TexelFormat::R16Sint,
+        N::R16Float => TexelFormat::R16Float,
+        N::Rg8Unorm => TexelFormat::Rg8Unorm,
+        N::Rg8Snorm => TexelFormat::Rg8Snorm,
+        N::Rg8Uint => TexelFormat::Rg8Uint,
+        N::Rg8Sint => TexelFormat::Rg8Sint,
+        N::R32Uint => TexelFormat::R32Uint,
+        N::R32Sint => TexelFormat::R32Sint,
+        N::R32Float => TexelFormat::R32Float,
+        N::Rg16Uint => TexelFormat::Rg16Uint,
+        N::Rg16Sint => TexelFormat::Rg16Sint,
+        N::Rg16Float => TexelFormat::Rg16Float,
+        N::Rgba8Unorm => TexelFormat::Rgba8Unorm,
+        N::Rgba8Snorm => TexelFormat::Rgba8Snorm,
+        N::Rgba8Uint => TexelFormat::Rgba8Uint,
+        N::Rgba8Sint => TexelFormat::Rgba8Sint,
+        N::Bgra8Unorm => TexelFormat::Bgra8Unorm,
+        N::Rgb10a2Uint => TexelFormat::Rgb10a2Uint,
+        N::Rgb10a2Unorm => TexelFormat::Rgb10a2Unorm,
+        N::Rg11b10Ufloat => TexelFormat::Rg11b10Ufloat,
+        N::R64Uint => TexelFormat::R64Uint,
+        N::Rg32Uint => TexelFormat::Rg32Uint,
+        N::Rg32Sint => TexelFormat::Rg32Sint,
+        N::Rg32Float => TexelFormat::Rg32Float,
+        N::Rgba16Uint => TexelFormat::Rgba16Uint,
+        N::Rgba16Sint => TexelFormat::Rgba16Sint,
+        N::Rgba16Float => TexelFormat::Rgba16Float,
+        N::Rgba32Uint => TexelFormat::Rgba32Uint,
+        N::Rgba32Sint => TexelFormat::Rgba32Sint,
+        N::Rgba32Float => TexelFormat::Rgba32Float,
+        N::R16Unorm => TexelFormat::R16Unorm,
+        N::R16Snorm => TexelFormat::R16Snorm,
+        N::Rg16Unorm => TexelFormat::Rg16Unorm,
+        N::Rg16Snorm => TexelFormat::Rg16Snorm,
+        N::Rgba16Unorm => TexelFormat::Rgba16Unorm,
+        N::Rgba16Snorm => TexelFormat::Rgba16Snorm,
+    }
 }
 
 /// The WGSL spelling of a type (`array<vec4<f32>, 4>`), or a struct's name.

@@ -1,7 +1,9 @@
 //! wgpu layouts from reflection: bind group and pipeline layouts from a pass's layout entries,
 //! vertex buffer layouts from a vertex stage's inputs.
 
-use crate::manifest::{BindGroup, LayoutEntry};
+use crate::manifest::{
+    BindGroup, LayoutEntry, SampleType, ShaderStage, StorageAccess, TexelFormat, ViewDimension,
+};
 use crate::reflect::Resource;
 
 /// A pass's bind group layouts (groups 0 to the highest it uses, empty ones included) and its
@@ -40,15 +42,13 @@ impl PassLayout {
 
 /// One entry of a bind group layout, for every resource kind kiln reflects.
 pub fn bind_group_layout_entry(entry: &LayoutEntry) -> Result<wgpu::BindGroupLayoutEntry, String> {
-    let mut visibility = wgpu::ShaderStages::NONE;
-    for stage in &entry.visibility {
-        visibility |= match stage.as_str() {
-            "vertex" => wgpu::ShaderStages::VERTEX,
-            "fragment" => wgpu::ShaderStages::FRAGMENT,
-            _ => wgpu::ShaderStages::COMPUTE,
-        };
-    }
-    let unsupported = |what: &str| format!("binding `{}`: {what}", entry.name);
+    let visibility = entry.visibility.iter().fold(wgpu::ShaderStages::NONE, |all, stage| {
+        all | match stage {
+            ShaderStage::Vertex => wgpu::ShaderStages::VERTEX,
+            ShaderStage::Fragment => wgpu::ShaderStages::FRAGMENT,
+            ShaderStage::Compute => wgpu::ShaderStages::COMPUTE,
+        }
+    });
     let ty = match &entry.resource {
         Resource::Uniform { size, .. } => wgpu::BindingType::Buffer {
             ty: wgpu::BufferBindingType::Uniform,
@@ -61,25 +61,25 @@ pub fn bind_group_layout_entry(entry: &LayoutEntry) -> Result<wgpu::BindGroupLay
             min_binding_size: None,
         },
         Resource::Texture { dimension, sample_type, multisampled } => wgpu::BindingType::Texture {
-            sample_type: match sample_type.as_str() {
-                "sint" => wgpu::TextureSampleType::Sint,
-                "uint" => wgpu::TextureSampleType::Uint,
-                "depth" => wgpu::TextureSampleType::Depth,
+            sample_type: match sample_type {
+                SampleType::Sint => wgpu::TextureSampleType::Sint,
+                SampleType::Uint => wgpu::TextureSampleType::Uint,
+                SampleType::Depth => wgpu::TextureSampleType::Depth,
                 // Multisampled float textures cannot be filtered.
-                _ => wgpu::TextureSampleType::Float { filterable: !multisampled },
+                SampleType::Float => wgpu::TextureSampleType::Float { filterable: !multisampled },
             },
-            view_dimension: view_dimension(dimension).ok_or_else(|| unsupported(dimension))?,
+            view_dimension: view_dimension(*dimension),
             multisampled: *multisampled,
         },
         Resource::StorageTexture { dimension, format, access } => wgpu::BindingType::StorageTexture {
-            access: match access.as_str() {
-                "load" => wgpu::StorageTextureAccess::ReadOnly,
-                "store" => wgpu::StorageTextureAccess::WriteOnly,
-                _ => wgpu::StorageTextureAccess::ReadWrite,
+            access: match access {
+                StorageAccess::Read => wgpu::StorageTextureAccess::ReadOnly,
+                StorageAccess::Write => wgpu::StorageTextureAccess::WriteOnly,
+                StorageAccess::ReadWrite => wgpu::StorageTextureAccess::ReadWrite,
+                StorageAccess::Atomic => wgpu::StorageTextureAccess::Atomic,
             },
-            format: texture_format(format)
-                .ok_or_else(|| unsupported(&format!("storage format `{format}`")))?,
-            view_dimension: view_dimension(dimension).ok_or_else(|| unsupported(dimension))?,
+            format: texture_format(*format),
+            view_dimension: view_dimension(*dimension),
         },
         // A comparison sampler samples depth; any other may filter.
         Resource::Sampler { comparison: true } => {
@@ -89,45 +89,69 @@ pub fn bind_group_layout_entry(entry: &LayoutEntry) -> Result<wgpu::BindGroupLay
             wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering)
         }
         Resource::Other { description } => {
-            return Err(unsupported(&format!("no wgpu binding for {description}")));
+            return Err(format!("binding `{}`: no wgpu binding for {description}", entry.name));
         }
     };
     Ok(wgpu::BindGroupLayoutEntry { binding: entry.binding, visibility, ty, count: None })
 }
 
-fn view_dimension(dimension: &str) -> Option<wgpu::TextureViewDimension> {
-    Some(match dimension {
-        "1d" => wgpu::TextureViewDimension::D1,
-        "2d" => wgpu::TextureViewDimension::D2,
-        "2d_array" => wgpu::TextureViewDimension::D2Array,
-        "3d" => wgpu::TextureViewDimension::D3,
-        "cube" => wgpu::TextureViewDimension::Cube,
-        "cube_array" => wgpu::TextureViewDimension::CubeArray,
-        _ => return None,
-    })
+fn view_dimension(dimension: ViewDimension) -> wgpu::TextureViewDimension {
+    match dimension {
+        ViewDimension::D1 => wgpu::TextureViewDimension::D1,
+        ViewDimension::D2 => wgpu::TextureViewDimension::D2,
+        ViewDimension::D2Array => wgpu::TextureViewDimension::D2Array,
+        ViewDimension::D3 => wgpu::TextureViewDimension::D3,
+        ViewDimension::Cube => wgpu::TextureViewDimension::Cube,
+        ViewDimension::CubeArray => wgpu::TextureViewDimension::CubeArray,
+    }
 }
 
-/// naga's storage format names (`rgba8unorm`, from its `Debug`, lowercased) as wgpu formats.
-fn texture_format(name: &str) -> Option<wgpu::TextureFormat> {
+/// The wgpu format of a storage texel format.
+fn texture_format(format: TexelFormat) -> wgpu::TextureFormat {
     use wgpu::TextureFormat as F;
-    Some(match name {
-        "r32float" => F::R32Float,
-        "r32uint" => F::R32Uint,
-        "r32sint" => F::R32Sint,
-        "rg32float" => F::Rg32Float,
-        "rgba8unorm" => F::Rgba8Unorm,
-        "rgba8snorm" => F::Rgba8Snorm,
-        "rgba8uint" => F::Rgba8Uint,
-        "rgba8sint" => F::Rgba8Sint,
-        "rgba16float" => F::Rgba16Float,
-        "rgba16uint" => F::Rgba16Uint,
-        "rgba16sint" => F::Rgba16Sint,
-        "rgba32float" => F::Rgba32Float,
-        "rgba32uint" => F::Rgba32Uint,
-        "rgba32sint" => F::Rgba32Sint,
-        "bgra8unorm" => F::Bgra8Unorm,
-        _ => return None,
-    })
+    match format {
+        TexelFormat::R8Unorm => F::R8Unorm,
+        TexelFormat::R8Snorm => F::R8Snorm,
+        TexelFormat::R8Uint => F::R8Uint,
+        TexelFormat::R8Sint => F::R8Sint,
+        TexelFormat::R16Uint => F::R16Uint,
+        TexelFormat::R16Sint => F::R16Sint,
+        TexelFormat::R16Float => F::R16Float,
+        TexelFormat::Rg8Unorm => F::Rg8Unorm,
+        TexelFormat::Rg8Snorm => F::Rg8Snorm,
+        TexelFormat::Rg8Uint => F::Rg8Uint,
+        TexelFormat::Rg8Sint => F::Rg8Sint,
+        TexelFormat::R32Uint => F::R32Uint,
+        TexelFormat::R32Sint => F::R32Sint,
+        TexelFormat::R32Float => F::R32Float,
+        TexelFormat::Rg16Uint => F::Rg16Uint,
+        TexelFormat::Rg16Sint => F::Rg16Sint,
+        TexelFormat::Rg16Float => F::Rg16Float,
+        TexelFormat::Rgba8Unorm => F::Rgba8Unorm,
+        TexelFormat::Rgba8Snorm => F::Rgba8Snorm,
+        TexelFormat::Rgba8Uint => F::Rgba8Uint,
+        TexelFormat::Rgba8Sint => F::Rgba8Sint,
+        TexelFormat::Bgra8Unorm => F::Bgra8Unorm,
+        TexelFormat::Rgb10a2Uint => F::Rgb10a2Uint,
+        TexelFormat::Rgb10a2Unorm => F::Rgb10a2Unorm,
+        TexelFormat::Rg11b10Ufloat => F::Rg11b10Ufloat,
+        TexelFormat::R64Uint => F::R64Uint,
+        TexelFormat::Rg32Uint => F::Rg32Uint,
+        TexelFormat::Rg32Sint => F::Rg32Sint,
+        TexelFormat::Rg32Float => F::Rg32Float,
+        TexelFormat::Rgba16Uint => F::Rgba16Uint,
+        TexelFormat::Rgba16Sint => F::Rgba16Sint,
+        TexelFormat::Rgba16Float => F::Rgba16Float,
+        TexelFormat::Rgba32Uint => F::Rgba32Uint,
+        TexelFormat::Rgba32Sint => F::Rgba32Sint,
+        TexelFormat::Rgba32Float => F::Rgba32Float,
+        TexelFormat::R16Unorm => F::R16Unorm,
+        TexelFormat::R16Snorm => F::R16Snorm,
+        TexelFormat::Rg16Unorm => F::Rg16Unorm,
+        TexelFormat::Rg16Snorm => F::Rg16Snorm,
+        TexelFormat::Rgba16Unorm => F::Rgba16Unorm,
+        TexelFormat::Rgba16Snorm => F::Rgba16Snorm,
+    }
 }
 
 /// How a pipeline reads its vertex attributes.

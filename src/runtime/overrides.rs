@@ -67,7 +67,7 @@ pub(super) fn stage_constants(
     let mut constants: StageConstants = vec![Vec::new(); stages.len()];
     for (stage, constants) in stages.iter().zip(&mut constants) {
         let Some(stage) = stage else { continue };
-        let name = stage.interface.stage.as_str();
+        let name = stage.interface.stage.name();
         for constant in &stage.interface.overrides {
             let value = match chosen.iter().find(|(set, _)| set.keywords.contains(&constant.name)) {
                 // A `_fragment` keyword keeps its default in the vertex stage, as Unity's does.

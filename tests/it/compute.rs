@@ -23,7 +23,7 @@ fn kernels_are_built_and_reflected_per_variant() {
             .iter()
             .map(|m| {
                 let stage = pass.stage(m.expect("built"));
-                assert_eq!(stage.interface.stage, "compute");
+                assert_eq!(stage.interface.stage, kiln::manifest::ShaderStage::Compute);
                 (stage.interface.entry_point.clone(), stage.interface.workgroup_size)
             })
             .collect();
@@ -42,7 +42,7 @@ fn kernels_are_built_and_reflected_per_variant() {
     }
     // One bind group shared by both kernels of every variant, visible to compute.
     let entries: Vec<_> = pass.layout.iter().flat_map(|g| &g.entries).collect();
-    assert!(entries.iter().all(|e| e.visibility == ["compute"]), "{entries:?}");
+    assert!(entries.iter().all(|e| e.visibility == [kiln::manifest::ShaderStage::Compute]), "{entries:?}");
     assert_eq!(entries.iter().map(|e| e.name.as_str()).collect::<Vec<_>>(), ["params", "values"]);
 }
 
@@ -289,4 +289,114 @@ fn the_generated_module_finds_kernels_and_their_workgroup_sizes() {
          \x20   }\n\
          }\n",
     );
+}
+
+/// `fixtures/storage`: a kernel reading a `read` storage texture and writing a `write` one. The
+/// manifest says each access as WGSL does, and the run time's layout, built from it, is one wgpu
+/// accepts for the pipeline (a read-write `rgba8unorm` layout is refused) and that computes on
+/// the GPU what the CPU does.
+#[test]
+fn a_kernel_reads_one_storage_texture_and_writes_another() {
+    use kiln::manifest::{Resource, StorageAccess, TexelFormat, ViewDimension};
+    let output = built_fixture("storage");
+    let manifest = crate::support::verified_manifest(output.path());
+    let pass = &manifest.shaders.iter().find(|s| s.name == "Texels").expect("built").passes[0];
+    let resources: Vec<(&str, &Resource)> =
+        pass.layout.iter().flat_map(|g| &g.entries).map(|e| (e.name.as_str(), &e.resource)).collect();
+    let storage = |format, access| Resource::StorageTexture { dimension: ViewDimension::D2, format, access };
+    assert_eq!(
+        resources,
+        [
+            ("source", &storage(TexelFormat::R32Float, StorageAccess::Read)),
+            ("destination", &storage(TexelFormat::Rgba8Unorm, StorageAccess::Write))
+        ]
+    );
+    // As the JSON spells it: WGSL's access modes.
+    let json = std::fs::read_to_string(output.path().join("manifest.json")).expect("manifest");
+    assert!(json.contains(r#""access":"read""#) && json.contains(r#""access":"write""#), "{json}");
+
+    let Some(gpu) = gpu("the storage texture test") else { return };
+    let device = &gpu.device;
+    let mut runtime = Runtime::open(device, output.path()).expect("opens");
+    let request = KernelRequest { shader: "Texels", kernel: "Brighten", keywords: &[], overrides: &[] };
+    let kernel = runtime.kernel(&request).expect("wgpu accepts the pipeline with the manifest's layout");
+    let layout = runtime.pass_layout("Texels", 0).expect("layout");
+    let size = wgpu::Extent3d { width: 8, height: 8, depth_or_array_layers: 1 };
+    let values: Vec<f32> = (0..64).map(|i| i as f32 / 63.0).collect();
+    let texture = |format, usage| {
+        device.create_texture(&wgpu::TextureDescriptor {
+            label: None,
+            size,
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format,
+            usage: wgpu::TextureUsages::STORAGE_BINDING | usage,
+            view_formats: &[],
+        })
+    };
+    let source = texture(wgpu::TextureFormat::R32Float, wgpu::TextureUsages::COPY_DST);
+    let target = texture(wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureUsages::COPY_SRC);
+    gpu.queue.write_texture(
+        source.as_image_copy(),
+        &values.iter().flat_map(|v| v.to_le_bytes()).collect::<Vec<u8>>(),
+        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(32), rows_per_image: None },
+        size,
+    );
+    let (source_view, target_view) =
+        (source.create_view(&Default::default()), target.create_view(&Default::default()));
+    let group = &pass.layout[0];
+    let entries: Vec<wgpu::BindGroupEntry> = group
+        .entries
+        .iter()
+        .map(|e| wgpu::BindGroupEntry {
+            binding: e.binding,
+            resource: wgpu::BindingResource::TextureView(if e.name == "source" {
+                &source_view
+            } else {
+                &target_view
+            }),
+        })
+        .collect();
+    let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &layout.groups[group.group as usize],
+        entries: &entries,
+    });
+    let read = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: 256 * 8,
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut compute = encoder.begin_compute_pass(&Default::default());
+        compute.set_pipeline(&kernel.pipeline);
+        compute.set_bind_group(group.group, &bind_group, &[]);
+        let [x, y, z] = kernel.workgroups([8, 8, 1]);
+        compute.dispatch_workgroups(x, y, z);
+    }
+    encoder.copy_texture_to_buffer(
+        target.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &read,
+            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(256), rows_per_image: None },
+        },
+        size,
+    );
+    gpu.queue.submit([encoder.finish()]);
+    read.map_async(wgpu::MapMode::Read, .., |result| result.expect("maps"));
+    device.poll(wgpu::PollType::wait_indefinitely()).expect("poll");
+    let texels = read.get_mapped_range(..).expect("mapped");
+    let unorm = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as i32;
+    for (i, &value) in values.iter().enumerate() {
+        let at = (i / 8) * 256 + (i % 8) * 4;
+        let expected = [unorm(value), unorm(value * 0.5), unorm(1.0 - value), 255];
+        let written: Vec<i32> = texels[at..at + 4].iter().map(|&b| i32::from(b)).collect();
+        assert!(
+            written.iter().zip(expected).all(|(w, e)| (w - e).abs() <= 1),
+            "texel {i}: {written:?}, {expected:?}"
+        );
+    }
 }

@@ -2,16 +2,20 @@
 //! pipeline with the manifest's layout (lavapipe in CI). Without an adapter the test says why and
 //! passes, unless `KILN_REQUIRE_GPU=1` (set by CI) makes that a failure.
 
-use kiln::manifest::{Manifest, PassManifest, StageView};
+use kiln::manifest::{Manifest, PassManifest, ShaderStage, StageView};
 use kiln::project::{BuildMode, build_project};
 use kiln::reflect::Resource;
 use kiln::source::SourceStore;
 use std::path::{Path, PathBuf};
 
-fn layout_entry(binding: u32, visibility: &[String], resource: &Resource) -> wgpu::BindGroupLayoutEntry {
+fn layout_entry(binding: u32, visibility: &[ShaderStage], resource: &Resource) -> wgpu::BindGroupLayoutEntry {
     let mut stages = wgpu::ShaderStages::NONE;
     for stage in visibility {
-        stages |= if stage == "vertex" { wgpu::ShaderStages::VERTEX } else { wgpu::ShaderStages::FRAGMENT };
+        stages |= match stage {
+            ShaderStage::Vertex => wgpu::ShaderStages::VERTEX,
+            ShaderStage::Fragment => wgpu::ShaderStages::FRAGMENT,
+            ShaderStage::Compute => panic!("the example project has no compute pass"),
+        };
     }
     let ty = match resource {
         Resource::Uniform { size, .. } => wgpu::BindingType::Buffer {

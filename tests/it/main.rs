@@ -11,6 +11,7 @@ mod conformance;
 mod cpp;
 mod docs;
 mod dynamic;
+mod fingerprint;
 mod gpu;
 mod hostile;
 mod integrity;
