@@ -195,19 +195,18 @@ impl Runtime {
         self.usage = Some(log);
     }
 
-    /// Uses wgpu's pipeline cache, from `data` saved by [`Runtime::pipeline_cache_data`] on an
-    /// earlier run (`None` the first time). Returns false where the device lacks
-    /// `Features::PIPELINE_CACHE` (only Vulkan has it): pipelines are then created without one.
-    pub fn use_pipeline_cache(&mut self, data: Option<&[u8]>) -> bool {
+    /// Starts an empty wgpu pipeline cache for the pipelines made from now on. Returns false where
+    /// the device lacks `Features::PIPELINE_CACHE` (only Vulkan has it): pipelines are then
+    /// created without one.
+    pub fn new_pipeline_cache(&mut self) -> bool {
         if !self.device.features().contains(wgpu::Features::PIPELINE_CACHE) {
             return false;
         }
-        // SAFETY: `data` comes from `PipelineCache::get_data` of an earlier run (documented on this
-        // method), and `fallback` makes a driver that rejects it start empty instead.
+        // SAFETY: no data: nothing from outside this process reaches the driver.
         let cache = unsafe {
             self.device.create_pipeline_cache(&wgpu::PipelineCacheDescriptor {
                 label: Some("kiln"),
-                data,
+                data: None,
                 fallback: true,
             })
         };
@@ -215,8 +214,16 @@ impl Runtime {
         true
     }
 
+    /// Uses a wgpu pipeline cache the renderer created, from data an earlier run saved
+    /// ([`Runtime::pipeline_cache_data`]): creating it is `unsafe` in wgpu, whose contract (the
+    /// bytes came from `PipelineCache::get_data` on this adapter) only the renderer can keep.
+    pub fn use_pipeline_cache(&mut self, cache: wgpu::PipelineCache) {
+        self.wgpu_cache = Some(cache);
+    }
+
     /// The pipeline cache's data, to save (with `wgpu::util::pipeline_cache_key` naming the file)
-    /// and pass to [`Runtime::use_pipeline_cache`] next run.
+    /// and give back next run through `Device::create_pipeline_cache` and
+    /// [`Runtime::use_pipeline_cache`].
     pub fn pipeline_cache_data(&self) -> Option<Vec<u8>> {
         self.wgpu_cache.as_ref().and_then(wgpu::PipelineCache::get_data)
     }

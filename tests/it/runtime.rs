@@ -196,7 +196,7 @@ fn every_variant_and_preset_of_the_bundled_project_gets_a_pipeline() {
     );
     let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
     // Saved wgpu pipeline cache data is reused where the backend has one (Vulkan).
-    let cached = runtime.use_pipeline_cache(None);
+    let cached = runtime.new_pipeline_cache();
     let library = runtime.library();
     let mut requests = Vec::new();
     // Variants whose modules are the same bytes share a pipeline (for one render state).
@@ -249,7 +249,29 @@ fn every_variant_and_preset_of_the_bundled_project_gets_a_pipeline() {
     if cached {
         let data = runtime.pipeline_cache_data().expect("cache data");
         let mut again = Runtime::open(&gpu.device, output.path()).expect("opens");
-        assert!(again.use_pipeline_cache(Some(&data)));
+        // SAFETY: the data came from `get_data` of a cache on this device, a moment ago.
+        let cache = unsafe {
+            gpu.device.create_pipeline_cache(&wgpu::PipelineCacheDescriptor {
+                label: None,
+                data: Some(&data),
+                fallback: true,
+            })
+        };
+        again.use_pipeline_cache(cache);
+        // A pipeline made through the reloaded cache.
+        let (shader, pass, keywords, material) = &requests[0];
+        let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
+        let request = PipelineRequest {
+            shader,
+            pass: *pass,
+            keywords: &keywords,
+            material,
+            targets: &targets,
+            vertex_layout: None,
+            overrides: &[],
+        };
+        again.pipeline(&request).expect("a pipeline through the reloaded cache");
+        assert_eq!(again.pipelines_created(), 1);
     }
 }
 
