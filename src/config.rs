@@ -3,6 +3,7 @@
 
 use crate::diagnostics::Diagnostic;
 use crate::source::{FileId, SourceStore, Span};
+pub use crate::manifest::Backend;
 use serde::Deserialize;
 use std::path::PathBuf;
 
@@ -101,16 +102,6 @@ impl<'de> Deserialize<'de> for ComputeVariants {
     }
 }
 
-/// A back end kiln writes stage modules for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Backend {
-    /// WGSL text, as naga's writer prints it (with `@align`/`@size` restored).
-    Wgsl,
-    /// SPIR-V binary, for Vulkan.
-    Spirv,
-}
-
 impl Default for ProjectConfig {
     fn default() -> ProjectConfig {
         ProjectConfig {
@@ -118,7 +109,7 @@ impl Default for ProjectConfig {
             materials: vec![PathBuf::from(".")],
             include_paths: Vec::new(),
             output: PathBuf::from("build/kiln"),
-            backends: vec![Backend::Wgsl, Backend::Spirv],
+            backends: Backend::ALL.to_vec(),
             always_include: Vec::new(),
             global_keywords: None,
             strict: false,

@@ -363,7 +363,7 @@ pub(super) fn pass_manifest(
     let mut interface_of: HashMap<StageInterface, usize> = HashMap::new();
     let mut modules: Vec<ModuleManifest> = Vec::new();
     // A module is its interface, its files' hashes and the features it was validated with.
-    type ModuleIdentity = (usize, [Option<String>; 2], Vec<String>);
+    type ModuleIdentity = (usize, PerBackend<Option<String>>, Vec<String>);
     let mut module_of: HashMap<ModuleIdentity, usize> = HashMap::new();
     // For each job, its module (`None` when it failed).
     let mut module_of_job: Vec<Option<usize>> = Vec::with_capacity(jobs.len());
@@ -426,11 +426,11 @@ pub(super) fn pass_manifest(
             })
         };
         // Texts that differ only where compaction removes code give the same module.
-        let hashes = [&stage.wgsl, &stage.spirv].map(|f| f.as_ref().map(|f| f.hash.clone()));
+        let hashes = stage.files.clone().map(|f| f.map(|f| f.hash));
         let module =
             *module_of.entry((interface, hashes, job.allowed.features())).or_insert_with_key(|key| {
-                let (wgsl, spirv) = (file(&stage.wgsl), file(&stage.spirv));
-                modules.push(ModuleManifest { interface, features: key.2.clone(), wgsl, spirv });
+                let files = PerBackend::from_fn(|backend| file(&stage.files[backend]));
+                modules.push(ModuleManifest::with_files(interface, key.2.clone(), files));
                 modules.len() - 1
             });
         module_of_job.push(Some(module));

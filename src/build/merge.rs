@@ -224,7 +224,7 @@ fn damaged(folder: &Path, view: &PassView, hashes: &[String]) -> Option<Diagnost
         })
         .collect();
     for module in &view.modules {
-        for file in [&module.wgsl, &module.spirv].into_iter().flatten() {
+        for file in module.files() {
             // In range and addressable: the part was read through `modules_in_range`.
             if lengths[file.pack].is_none_or(|length| file.offset + file.size > length) {
                 let interface = &view.interfaces[module.interface];

@@ -121,7 +121,7 @@ impl BuildOptions {
             root,
             write,
             threads: Some(1),
-            backends: vec![Backend::Wgsl, Backend::Spirv],
+            backends: Backend::ALL.to_vec(),
             unused_shaders: VariantSelection::Used,
             pretty_manifest: false,
             record: false,

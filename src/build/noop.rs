@@ -25,7 +25,7 @@ pub(super) fn disk_files(store: &SourceStore) -> impl Iterator<Item = FileId> + 
 
 /// Raised when what a build writes changes shape (files added), so that an earlier build's
 /// record no longer passes for a no-op. (A new manifest schema does the same.)
-const OUTPUT_FORMAT: u32 = 2;
+const OUTPUT_FORMAT: u32 = 3;
 
 /// Everything a build's outcome depends on: the options, the texts given in memory (global
 /// keywords from a build script; the bundled library by its digest), and every file

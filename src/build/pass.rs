@@ -11,9 +11,8 @@ use super::{BuildOptions, COMPILER_REVISION, NAGA_VERSION};
 use crate::catalog::Catalog;
 use crate::compile::Mapper;
 use crate::compile::bind::{self, Declared, PassLayout};
-use crate::config::Backend;
 use crate::diagnostics::Diagnostic;
-use crate::manifest::FileRef;
+use crate::manifest::{Backend, FileRef, PerBackend};
 use crate::preprocess::Includes;
 use crate::reflect::{SpirvGap, StageReflection};
 use crate::source::SourceStore;
@@ -46,17 +45,17 @@ impl Built {
     }
 }
 
-/// A stage module made in this build: its bytes per backend (`[wgsl, spirv]`), hashed where it
-/// was made so that packing, which is serial, only concatenates.
+/// A stage module made in this build: its bytes per backend, hashed where it was made so that
+/// packing, which is serial, only concatenates.
 pub(super) struct Compiled {
-    pub modules: [Option<ModuleBytes>; 2],
+    pub modules: PerBackend<Option<ModuleBytes>>,
     pub reflection: StageReflection,
 }
 
 impl Compiled {
     /// About what it holds in memory.
     pub(super) fn size(&self) -> usize {
-        self.modules.iter().flatten().map(|m| m.bytes.len() + m.hash.len()).sum::<usize>() + 1024
+        self.modules.values().flatten().map(|m| m.bytes.len() + m.hash.len()).sum::<usize>() + 1024
     }
 }
 
@@ -167,8 +166,8 @@ pub(super) fn build_pass(
                     _ => reused += 1,
                 }
                 // Packing failed: the error is reported, the stage has no files.
-                let [wgsl, spirv] = files.next().unwrap_or_default();
-                (CachedStage { wgsl, spirv, reflection: module.reflection.clone() }, key)
+                let files = files.next().unwrap_or_default();
+                (CachedStage { files, reflection: module.reflection.clone() }, key)
             }),
             Some(Err(error)) => {
                 diagnostics.push(job.in_stage(error));
@@ -233,8 +232,7 @@ fn stage_key(job: &Job, declared: &[Declared], layout: &PassLayout, options: &Bu
         .iter()
         .filter_map(|d| layout.slots.get(&d.name).map(|(g, b)| format!("{}@{g}/{b}", d.name)))
         .collect();
-    let backends: Vec<&str> =
-        options.backends.iter().map(|b| if *b == Backend::Wgsl { "wgsl" } else { "spirv" }).collect();
+    let backends: Vec<&str> = options.backends.iter().map(|b| b.name()).collect();
     hash(
         format!(
             "{}\n{}\n{}\n{}\n{}\n{}\nkiln {} revision {COMPILER_REVISION}\n{NAGA_VERSION}",
@@ -299,22 +297,22 @@ fn lay_out(
     (!failed).then_some(layout)
 }
 
-/// Packs a pass's newly compiled modules, one pack per backend; returns each module's
-/// `[wgsl, spirv]` files, in order, and the bytes written.
-fn pack_pass(cache: &Cache, compiled: &[&Compiled]) -> std::io::Result<(Vec<[Option<FileRef>; 2]>, u64)> {
-    let mut files: Vec<[Option<FileRef>; 2]> = vec![[None, None]; compiled.len()];
+/// Packs a pass's newly compiled modules, one pack per backend; returns each module's files,
+/// in order, and the bytes written.
+fn pack_pass(cache: &Cache, compiled: &[&Compiled]) -> std::io::Result<(Vec<PerBackend<Option<FileRef>>>, u64)> {
+    let mut files: Vec<PerBackend<Option<FileRef>>> = vec![PerBackend::default(); compiled.len()];
     let mut written = 0;
-    for (slot, extension) in [(0, "wgsl.pack"), (1, "spv.pack")] {
+    for &backend in Backend::ALL {
         let present: Vec<(usize, &ModuleBytes)> =
-            compiled.iter().enumerate().filter_map(|(i, c)| Some((i, c.modules[slot].as_ref()?))).collect();
+            compiled.iter().enumerate().filter_map(|(i, c)| Some((i, c.modules[backend].as_ref()?))).collect();
         if present.is_empty() {
             continue;
         }
         let modules: Vec<&ModuleBytes> = present.iter().map(|(_, m)| *m).collect();
-        let (refs, count) = cache.pack(&modules, extension)?;
+        let (refs, count) = cache.pack(&modules, backend.pack_extension())?;
         written += count;
         for ((i, _), file) in present.iter().zip(refs) {
-            files[*i][slot] = Some(file);
+            files[*i][backend] = Some(file);
         }
     }
     Ok((files, written))

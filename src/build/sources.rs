@@ -162,8 +162,7 @@ impl Naga {
         };
         let output = stage::compile(module, &request, &mapper)?;
         let module = |bytes: Vec<u8>| ModuleBytes { hash: hash(&bytes), bytes };
-        let spirv = output.spirv.map(|words| module(words.iter().flat_map(|w| w.to_le_bytes()).collect()));
-        let modules = [output.wgsl.map(|text| module(text.into_bytes())), spirv];
+        let modules = output.modules.map(|bytes| bytes.map(module));
         let compiled = Arc::new(Compiled { modules, reflection: output.reflection });
         // Asked again now: another pass may have found the text meanwhile.
         if pass.session.texts.shared(&job.text_hash) {

@@ -13,7 +13,7 @@ mod names;
 
 pub use names::NameClash;
 
-use crate::manifest::{Manifest, ModuleFile, PassManifest, ShaderManifest, ShaderStage};
+use crate::manifest::{Backend, Manifest, ModuleFile, PassManifest, PerBackend, ShaderManifest, ShaderStage};
 use crate::reflect::Resource;
 use names::{Case, PRELUDE_NAMES, Scope, doc_text, string_literal};
 use std::collections::BTreeMap;
@@ -290,31 +290,35 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
     );
     out.push_str(PRELUDE);
     // Each pack once, numbered in path order; modules are ranges of them.
-    let mut packs: [BTreeMap<&str, u32>; 2] = Default::default();
+    let mut packs: PerBackend<BTreeMap<&str, u32>> = Default::default();
     for pass in manifest.passes() {
         for module in &pass.modules {
-            for (backend, file) in [&module.wgsl, &module.spirv].into_iter().enumerate() {
-                if let Some(path) = file.as_ref().and_then(|f| pass.packs.get(f.pack)) {
+            for &backend in Backend::ALL {
+                if let Some(path) = module.file(backend).and_then(|f| pass.packs.get(f.pack)) {
                     packs[backend].insert(path, 0);
                 }
             }
         }
     }
-    for numbered in &mut packs {
+    for numbered in packs.values_mut() {
         for (n, index) in numbered.values_mut().enumerate() {
             *index = n as u32;
         }
     }
     let include = |path: &str| string_literal(&format!("{packs_folder}/{path}"));
-    let _ = writeln!(out, "\n/// Every WGSL pack: a pass's compiled modules, concatenated.");
-    let _ = writeln!(out, "static WGSL_PACKS: [&str; {}] = [", packs[0].len());
-    for path in packs[0].keys() {
-        let _ = writeln!(out, "    include_str!({}),", include(path));
-    }
-    let _ = writeln!(out, "];\n\n/// Every SPIR-V pack, aligned so that its modules read as words.");
-    let _ = writeln!(out, "static SPIRV_PACKS: [&Aligned<[u8]>; {}] = [", packs[1].len());
-    for path in packs[1].keys() {
-        let _ = writeln!(out, "    &Aligned(*include_bytes!({})),", include(path));
+    for (backend, numbered) in packs.iter() {
+        let (name, element, include_pack, _) = embedding(backend);
+        if backend != Backend::ALL[0] {
+            out.push_str("];\n");
+        }
+        let doc = match backend {
+            Backend::Wgsl => "Every WGSL pack: a pass's compiled modules, concatenated.",
+            Backend::Spirv => "Every SPIR-V pack, aligned so that its modules read as words.",
+        };
+        let _ = writeln!(out, "\n/// {doc}\nstatic {name}: [{element}; {}] = [", numbered.len());
+        for path in numbered.keys() {
+            let _ = writeln!(out, "    {},", include_pack.replace("{}", &include(path)));
+        }
     }
     out.push_str("];\n");
     let _ = writeln!(
@@ -325,12 +329,13 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
         include(crate::manifest::MATERIALS_FILE)
     );
     let _ = writeln!(out, "\n/// Every pack by its path in the manifest.");
-    let _ = writeln!(out, "pub static PACKS: [(&str, &[u8]); {}] = [", packs[0].len() + packs[1].len());
-    for (n, path) in packs[0].keys().enumerate() {
-        let _ = writeln!(out, "    ({}, WGSL_PACKS[{n}].as_bytes()),", string_literal(path));
-    }
-    for (n, path) in packs[1].keys().enumerate() {
-        let _ = writeln!(out, "    ({}, &SPIRV_PACKS[{n}].0),", string_literal(path));
+    let count: usize = packs.values().map(BTreeMap::len).sum();
+    let _ = writeln!(out, "pub static PACKS: [(&str, &[u8]); {count}] = [");
+    for (backend, numbered) in packs.iter() {
+        let (_, _, _, bytes) = embedding(backend);
+        for (n, path) in numbered.keys().enumerate() {
+            let _ = writeln!(out, "    ({}, {}),", string_literal(path), bytes.replace("{n}", &n.to_string()));
+        }
     }
     out.push_str("];\n");
     let mut top = Scope::new("the top level", PRELUDE_NAMES);
@@ -353,7 +358,16 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
 type VariantRow<'a> = (Vec<u64>, [Option<usize>; 2], &'a [Option<usize>]);
 
 /// The generated module's pack numbers, WGSL and SPIR-V, by path.
-type PackNumbers<'a> = [BTreeMap<&'a str, u32>; 2];
+type PackNumbers<'a> = PerBackend<BTreeMap<&'a str, u32>>;
+
+/// How the generated module embeds a back end's packs: the static's name, its element type, a
+/// pack's inclusion (`{}` its path) and pack `{n}` as bytes.
+fn embedding(backend: Backend) -> (&'static str, &'static str, &'static str, &'static str) {
+    match backend {
+        Backend::Wgsl => ("WGSL_PACKS", "&str", "include_str!({})", "WGSL_PACKS[{n}].as_bytes()"),
+        Backend::Spirv => ("SPIRV_PACKS", "&Aligned<[u8]>", "&Aligned(*include_bytes!({}))", "&SPIRV_PACKS[{n}].0"),
+    }
+}
 
 /// A shader's module, named `module` (the shader, for messages: `place`); returns the names that
 /// clash inside it.
@@ -461,21 +475,16 @@ fn pass_static(
         );
     }
     out.push_str("        ],\n        modules: &[\n");
-    let range = |backend: usize, file: &Option<ModuleFile>| {
-        let number = file.as_ref().and_then(|f| packs[backend].get(pass.packs.get(f.pack)?.as_str()));
+    let range = |backend: Backend, file: Option<&ModuleFile>| {
+        let number = file.and_then(|f| packs[backend].get(pass.packs.get(f.pack)?.as_str()));
         match (file, number) {
             (Some(f), Some(pack)) => format!("{pack}, {}, {}", f.offset, f.offset + f.size),
             _ => "super::NONE, 0, 0".to_string(),
         }
     };
     for module in &pass.modules {
-        let _ = writeln!(
-            out,
-            "            [{}, {}, {}],",
-            module.interface,
-            range(0, &module.wgsl),
-            range(1, &module.spirv)
-        );
+        let ranges: Vec<String> = Backend::ALL.iter().map(|&b| range(b, module.file(b))).collect();
+        let _ = writeln!(out, "            [{}, {}],", module.interface, ranges.join(", "));
     }
     // Variants sorted by key, for binary search.
     let words = pass.keywords.len().div_ceil(64);

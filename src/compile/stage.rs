@@ -7,17 +7,16 @@ use super::layout;
 use super::panics::contain_panics;
 use super::target::Allowed;
 use super::{Mapper, validate};
-use crate::config::Backend;
+use crate::manifest::{Backend, PerBackend};
 use crate::diagnostics::Diagnostic;
 use crate::preprocess::Stage;
 use crate::reflect::{StageReflection, reflect_stage};
 use crate::source::Span;
 use naga::valid::ValidationFlags;
 
-/// What a stage module compiles to.
+/// What a stage module compiles to: its bytes for each back end written.
 pub(crate) struct StageOutput {
-    pub wgsl: Option<String>,
-    pub spirv: Option<Vec<u32>>,
+    pub modules: PerBackend<Option<Vec<u8>>>,
     pub reflection: StageReflection,
 }
 
@@ -112,35 +111,17 @@ fn compile_unguarded(
     if injected("KILN_INJECT_BACKEND_ERROR", request.entry) {
         return Err(backend_error("WGSL", "fault injected by KILN_INJECT_BACKEND_ERROR".into()));
     }
-    let capabilities = request.allowed.capabilities();
-    let wgsl = if request.backends.contains(&Backend::Wgsl) {
-        Some(super::wgsl::write(&module, &info, capabilities, &host)?)
-    } else {
-        None
-    };
-    // naga's SPIR-V writer cannot express specialisation constants: a module with `override`s
-    // is WGSL only, specialised by wgpu (or naga's `process_overrides`) when a pipeline is made.
-    let (spirv, spirv_gap) = if request.backends.contains(&Backend::Spirv) && module.overrides.is_empty() {
-        let options = naga::back::spv::Options {
-            lang_version: spirv_version(capabilities),
-            flags: naga::back::spv::WriterFlags::empty(),
-            ..naga::back::spv::Options::default()
-        };
-        let pipeline =
-            naga::back::spv::PipelineOptions { shader_stage: stage, entry_point: request.entry.to_string() };
-        let written = match gaps::before_writing(&module) {
-            Some(gap) => Err(gap),
-            None => gaps::write(&module, &info, &options, &pipeline),
-        };
-        match written {
-            Ok(words) => (Some(super::spirv::corrected(words)), None),
-            Err(gap) => (None, Some(gap)),
+    let mut modules = PerBackend::default();
+    let mut spirv_gap = None;
+    for &backend in request.backends {
+        match write(backend, &module, &info, request, &host)? {
+            Written::Module(bytes) => modules[backend] = Some(bytes),
+            Written::Gap(gap) => spirv_gap = Some(gap),
+            Written::Nothing => {}
         }
-    } else {
-        (None, None)
-    };
+    }
     // A module that would ship nothing is an error: WGSL-only is the fallback, not an outcome.
-    if let (None, Some(gap)) = (&wgsl, &spirv_gap) {
+    if let (true, Some(gap)) = (modules.values().all(Option::is_none), &spirv_gap) {
         let d = Diagnostic::error("K0415", format!("no SPIR-V for `{}`: {gap}", request.entry))
             .at(request.entry_pragma, "compiling this entry point")
             .help("add `wgsl` to `backends` in kiln.toml to ship this module as WGSL");
@@ -148,7 +129,51 @@ fn compile_unguarded(
     }
     let mut reflection = reflect_stage(&module, request.entry, &|ty| host.alignment(&module, ty));
     reflection.spirv_gap = spirv_gap;
-    Ok(StageOutput { wgsl, spirv, reflection })
+    Ok(StageOutput { modules, reflection })
+}
+
+/// What a back end's writer gives for a module.
+enum Written {
+    Module(Vec<u8>),
+    /// SPIR-V that naga cannot write right: the module ships without it (K0415).
+    Gap(crate::reflect::SpirvGap),
+    /// Nothing, by design: naga's SPIR-V writer cannot express specialisation constants, so a
+    /// module with `override`s is WGSL only, specialised by wgpu when a pipeline is made.
+    Nothing,
+}
+
+/// A validated module in one back end's form.
+fn write(
+    backend: Backend,
+    module: &naga::Module,
+    info: &naga::valid::ModuleInfo,
+    request: &StageRequest,
+    host: &layout::HostLayout,
+) -> Result<Written, Diagnostic> {
+    let capabilities = request.allowed.capabilities();
+    match backend {
+        Backend::Wgsl => Ok(Written::Module(super::wgsl::write(module, info, capabilities, host)?.into_bytes())),
+        Backend::Spirv if !module.overrides.is_empty() => Ok(Written::Nothing),
+        Backend::Spirv => {
+            let options = naga::back::spv::Options {
+                lang_version: spirv_version(capabilities),
+                flags: naga::back::spv::WriterFlags::empty(),
+                ..naga::back::spv::Options::default()
+            };
+            let pipeline = naga::back::spv::PipelineOptions {
+                shader_stage: naga_stage(request.stage),
+                entry_point: request.entry.to_string(),
+            };
+            let written = match gaps::before_writing(module) {
+                Some(gap) => Err(gap),
+                None => gaps::write(module, info, &options, &pipeline),
+            };
+            Ok(match written {
+                Ok(words) => Written::Module(super::spirv::corrected(words).iter().flat_map(|w| w.to_le_bytes()).collect()),
+                Err(gap) => Written::Gap(gap),
+            })
+        }
+    }
 }
 
 /// The entry point or function of `module` whose name is within two edits of `name` (a

@@ -5,9 +5,59 @@
 //! distinct stage interface (entry point, inputs, outputs, bindings) once, and its variants are
 //! keywords and module indices.
 
+/// A closed set of names the manifest writes: an enum, serialised as its name (one list gives
+/// both), so that a value outside the set is refused when a manifest is read, and every use is an
+/// exhaustive `match`.
+macro_rules! closed_set {
+    ($(#[$meta:meta])* $name:ident { $($(#[$vmeta:meta])* $variant:ident = $text:literal,)+ }) => {
+        $(#[$meta])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+        pub enum $name {
+            $($(#[$vmeta])* $variant,)+
+        }
+
+        impl $name {
+            /// Every value, in the set's order.
+            pub const ALL: &'static [$name] = &[$($name::$variant,)+];
+
+            /// Its name in the manifest (and in WGSL, where WGSL has one).
+            pub fn name(self) -> &'static str {
+                match self {
+                    $($name::$variant => $text,)+
+                }
+            }
+        }
+
+        impl std::fmt::Display for $name {
+            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str(self.name())
+            }
+        }
+
+        impl Serialize for $name {
+            fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+                serializer.serialize_str(self.name())
+            }
+        }
+
+        impl<'de> Deserialize<'de> for $name {
+            fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+                let text = String::deserialize(deserializer)?;
+                $name::ALL
+                    .iter()
+                    .copied()
+                    .find(|value| value.name() == text)
+                    .ok_or_else(|| serde::de::Error::unknown_variant(&text, &[$($text,)+]))
+            }
+        }
+    };
+}
+
+mod backend;
 mod reflection;
 pub mod state;
 
+pub use backend::{Backend, PerBackend};
 pub use reflection::{
     Attribute, Member, OverrideConstant, Resource, SampleType, ShaderStage, StorageAccess, TexelFormat,
     UniformBlock, ViewDimension,
@@ -114,7 +164,7 @@ pub fn pack_ends<'a, P: PassFiles + 'a>(
 ) -> std::collections::BTreeMap<String, u64> {
     let mut packs = std::collections::BTreeMap::new();
     for pass in passes {
-        for file in pass.modules().iter().flat_map(|m| [&m.wgsl, &m.spirv]).flatten() {
+        for file in pass.modules().iter().flat_map(ModuleManifest::files) {
             let Some(path) = pass.packs().get(file.pack) else { continue };
             let longest = packs.entry(path.clone()).or_insert(0);
             *longest = (file.offset + file.size).max(*longest);
@@ -435,12 +485,33 @@ pub struct ModuleManifest {
     pub spirv: Option<ModuleFile>,
 }
 
+impl ModuleManifest {
+    /// Its file for `backend`, if written (the schema names each back end's field).
+    pub fn file(&self, backend: Backend) -> Option<&ModuleFile> {
+        match backend {
+            Backend::Wgsl => self.wgsl.as_ref(),
+            Backend::Spirv => self.spirv.as_ref(),
+        }
+    }
+
+    /// Its files, in [`Backend::ALL`]'s order, for the back ends written.
+    pub fn files(&self) -> impl Iterator<Item = &ModuleFile> {
+        Backend::ALL.iter().filter_map(|&backend| self.file(backend))
+    }
+
+    /// A module with these files (one per back end, `None` where not written).
+    pub fn with_files(interface: usize, features: Vec<String>, mut files: PerBackend<Option<ModuleFile>>) -> ModuleManifest {
+        let (wgsl, spirv) = (files[Backend::Wgsl].take(), files[Backend::Spirv].take());
+        ModuleManifest { interface, features, wgsl, spirv }
+    }
+}
+
 /// Whether each module's interface index is below `interfaces`, its files' pack indices below
 /// `packs` (the lengths of its pass's lists), and their ends addressable (every reader adds a
 /// file's offset and size).
 pub fn modules_in_range(modules: &[ModuleManifest], interfaces: usize, packs: usize) -> bool {
     modules.iter().all(|module| {
-        let mut files = [&module.wgsl, &module.spirv].into_iter().flatten();
+        let mut files = module.files();
         module.interface < interfaces
             && files.all(|file| file.pack < packs && file.offset.checked_add(file.size).is_some())
     })
@@ -473,19 +544,24 @@ pub struct StageView<'a> {
 }
 
 impl<'a> StageView<'a> {
+    /// Its file for `backend`, if written.
+    pub fn file(&self, backend: Backend) -> Option<FileRef> {
+        self.module.file(backend).map(|f| self.pass.file(f))
+    }
+
     /// Its WGSL file, if written.
     pub fn wgsl(&self) -> Option<FileRef> {
-        self.module.wgsl.as_ref().map(|f| self.pass.file(f))
+        self.file(Backend::Wgsl)
     }
 
     /// Its SPIR-V file, if written.
     pub fn spirv(&self) -> Option<FileRef> {
-        self.module.spirv.as_ref().map(|f| self.pass.file(f))
+        self.file(Backend::Spirv)
     }
 
     /// Its module files, one per backend written.
     pub fn files(self) -> impl Iterator<Item = FileRef> + 'a {
-        [self.wgsl(), self.spirv()].into_iter().flatten()
+        Backend::ALL.iter().filter_map(move |&backend| self.file(backend))
     }
 }
 

@@ -14,54 +14,6 @@ pub struct Attribute {
     pub format: String,
 }
 
-/// A closed set of names the manifest writes: an enum, serialised as its name (one list gives
-/// both), so that a value outside the set is refused when a manifest is read, and every use is an
-/// exhaustive `match`.
-macro_rules! closed_set {
-    ($(#[$meta:meta])* $name:ident { $($(#[$vmeta:meta])* $variant:ident = $text:literal,)+ }) => {
-        $(#[$meta])*
-        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-        pub enum $name {
-            $($(#[$vmeta])* $variant,)+
-        }
-
-        impl $name {
-            /// Every value, in the set's order.
-            pub const ALL: &'static [$name] = &[$($name::$variant,)+];
-
-            /// Its name in the manifest (and in WGSL, where WGSL has one).
-            pub fn name(self) -> &'static str {
-                match self {
-                    $($name::$variant => $text,)+
-                }
-            }
-        }
-
-        impl std::fmt::Display for $name {
-            fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-                f.write_str(self.name())
-            }
-        }
-
-        impl Serialize for $name {
-            fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-                serializer.serialize_str(self.name())
-            }
-        }
-
-        impl<'de> Deserialize<'de> for $name {
-            fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-                let text = String::deserialize(deserializer)?;
-                $name::ALL
-                    .iter()
-                    .copied()
-                    .find(|value| value.name() == text)
-                    .ok_or_else(|| serde::de::Error::unknown_variant(&text, &[$($text,)+]))
-            }
-        }
-    };
-}
-
 closed_set! {
     /// A pipeline stage (in the order `visibility` lists them).
     ShaderStage {

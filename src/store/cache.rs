@@ -95,7 +95,7 @@ impl Cache {
         let mut index: PassIndex = self.read("pass", pass).unwrap_or_default();
         let damaged: Vec<String> = {
             let paths: BTreeSet<&str> =
-                index.stage.values().flat_map(CachedStage::files).map(|f| f.path.as_str()).collect();
+                index.stage.values().flat_map(CachedStage::written).map(|f| f.path.as_str()).collect();
             let packs: HashMap<&str, Vec<u8>> = paths
                 .into_par_iter()
                 .filter_map(|path| Some((path, std::fs::read(self.output.join(path)).ok()?)))
@@ -107,7 +107,7 @@ impl Cache {
             index
                 .stage
                 .par_iter()
-                .filter(|(_, stage)| !stage.files().all(intact))
+                .filter(|(_, stage)| !stage.written().all(intact))
                 .map(|(key, _)| key.clone())
                 .collect()
         };

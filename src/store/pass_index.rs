@@ -2,7 +2,7 @@
 //! kept on disk with what its stages share written once.
 
 use crate::compile::bind::Declared;
-use crate::manifest::FileRef;
+use crate::manifest::{FileRef, PerBackend};
 use crate::reflect::StageReflection;
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
@@ -32,8 +32,7 @@ struct StoredPassIndex<'a> {
 
 #[derive(Serialize, Deserialize)]
 struct StoredStage<'a> {
-    wgsl: Option<StoredFile<'a>>,
-    spirv: Option<StoredFile<'a>>,
+    files: PerBackend<Option<StoredFile<'a>>>,
     reflection: usize,
 }
 
@@ -90,12 +89,11 @@ impl Serialize for PassIndex {
             self.front.iter().map(|(key, d)| (Cow::from(key.as_str()), declarations.number(d.as_slice())));
         let front = front.collect();
         let stage = self.stage.iter().map(|(key, stage)| {
-            let (wgsl, spirv) =
-                (StoredFile::of(&stage.wgsl, &mut packs), StoredFile::of(&stage.spirv, &mut packs));
-            (
-                Cow::from(key.as_str()),
-                StoredStage { wgsl, spirv, reflection: reflections.number(&stage.reflection) },
-            )
+            let mut files = PerBackend::default();
+            for (backend, file) in stage.files.iter() {
+                files[backend] = StoredFile::of(file, &mut packs);
+            }
+            (Cow::from(key.as_str()), StoredStage { files, reflection: reflections.number(&stage.reflection) })
         });
         let stage = stage.collect();
         let (declarations, reflections, packs) = (declarations.values, reflections.values, packs.values);
@@ -110,15 +108,18 @@ impl<'de> Deserialize<'de> for PassIndex {
             .front
             .into_iter()
             .map(|(key, n)| Ok((key.into_owned(), numbered(&stored.declarations, n)?)));
-        let file = |file: Option<StoredFile>| {
+        let file = |file: &Option<StoredFile>| {
             let Some(f) = file else { return Ok(None) };
             let path = numbered(&stored.packs, f.pack)?;
-            Ok(Some(FileRef { path, offset: f.offset, size: f.size, hash: f.hash.into_owned() }))
+            Ok(Some(FileRef { path, offset: f.offset, size: f.size, hash: f.hash.to_string() }))
         };
-        let stage = stored.stage.into_iter().map(|(key, stage)| {
-            let (wgsl, spirv) = (file(stage.wgsl)?, file(stage.spirv)?);
+        let stage = stored.stage.iter().map(|(key, stage)| {
+            let mut files = PerBackend::default();
+            for (backend, stored) in stage.files.iter() {
+                files[backend] = file(stored)?;
+            }
             let reflection = numbered(&stored.reflections, stage.reflection)?;
-            Ok((key.into_owned(), CachedStage { wgsl, spirv, reflection }))
+            Ok((key.to_string(), CachedStage { files, reflection }))
         });
         let front = front.collect::<Result<_, D::Error>>()?;
         Ok(PassIndex { front, stage: stage.collect::<Result<_, D::Error>>()? })
@@ -128,18 +129,16 @@ impl<'de> Deserialize<'de> for PassIndex {
 /// What the cache remembers of a compiled stage module.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CachedStage {
-    /// Its WGSL, in a pack.
-    pub wgsl: Option<FileRef>,
-    /// Its SPIR-V, in a pack.
-    pub spirv: Option<FileRef>,
+    /// Its module for each back end written, in a pack.
+    pub files: PerBackend<Option<FileRef>>,
     /// Its reflection.
     pub reflection: StageReflection,
 }
 
 impl CachedStage {
     /// Its modules, one per backend written.
-    pub fn files(&self) -> impl Iterator<Item = &FileRef> {
-        [&self.wgsl, &self.spirv].into_iter().flatten()
+    pub fn written(&self) -> impl Iterator<Item = &FileRef> {
+        self.files.values().flatten()
     }
 }
 
@@ -164,8 +163,7 @@ mod tests {
 
     fn stage(offset: u64, reflection: StageReflection) -> CachedStage {
         CachedStage {
-            wgsl: file("modules/a.wgsl.pack", offset),
-            spirv: file("modules/a.spv.pack", offset),
+            files: PerBackend::from_fn(|backend| file(&format!("modules/a.{}", backend.pack_extension()), offset)),
             reflection,
         }
     }

@@ -10,6 +10,7 @@
 use super::cache::{ModuleBytes, hash, seal, sealed, unsealed, write_atomically};
 use crate::compile::bind::Declared;
 use crate::reflect::StageReflection;
+use crate::manifest::PerBackend;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
@@ -25,7 +26,7 @@ struct ObjectHeader {
     key: String,
     compiler: String,
     reflection: StageReflection,
-    modules: [Option<(u64, String)>; 2],
+    modules: PerBackend<Option<(u64, String)>>,
 }
 
 fn object_path(folder: &Path, key: &str) -> PathBuf {
@@ -36,18 +37,18 @@ fn write_object(
     folder: &Path,
     key: &str,
     compiler: &str,
-    modules: &[Option<ModuleBytes>; 2],
+    modules: &PerBackend<Option<ModuleBytes>>,
     reflection: &StageReflection,
 ) -> std::io::Result<u64> {
     let header = ObjectHeader {
         key: key.to_string(),
         compiler: compiler.to_string(),
         reflection: reflection.clone(),
-        modules: [0, 1].map(|i| modules[i].as_ref().map(|m| (m.bytes.len() as u64, m.hash.clone()))),
+        modules: PerBackend::from_fn(|b| modules[b].as_ref().map(|m| (m.bytes.len() as u64, m.hash.clone()))),
     };
     let mut body = serde_json::to_vec(&header).map_err(std::io::Error::other)?;
     body.push(b'\n');
-    for module in modules.iter().flatten() {
+    for module in modules.values().flatten() {
         body.extend_from_slice(&module.bytes);
     }
     let mut bytes = seal(key, &body).into_bytes();
@@ -63,7 +64,7 @@ fn read_object(
     folder: &Path,
     key: &str,
     compiler: Option<&str>,
-) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
+) -> Option<(PerBackend<Option<ModuleBytes>>, StageReflection)> {
     let file = std::fs::read(object_path(folder, key)).ok()?;
     let sealed_at = file.iter().position(|&b| b == b'\n')?;
     let bytes = &file[sealed_at + 1..];
@@ -76,8 +77,8 @@ fn read_object(
         return None;
     }
     let mut at = split + 1;
-    let mut modules: [Option<ModuleBytes>; 2] = [None, None];
-    for (slot, entry) in header.modules.iter().enumerate() {
+    let mut modules: PerBackend<Option<ModuleBytes>> = PerBackend::default();
+    for (slot, entry) in header.modules.iter() {
         let Some((size, expected)) = entry else { continue };
         let body = bytes.get(at..at + *size as usize)?;
         if hash(body) != *expected {
@@ -95,7 +96,7 @@ pub fn fetch_object(
     folder: &Path,
     key: &str,
     compiler: &str,
-) -> Option<([Option<ModuleBytes>; 2], StageReflection)> {
+) -> Option<(PerBackend<Option<ModuleBytes>>, StageReflection)> {
     let found = read_object(folder, key, Some(compiler))?;
     touch(&object_path(folder, key));
     Some(found)
@@ -106,7 +107,7 @@ pub fn publish_object(
     folder: &Path,
     key: &str,
     compiler: &str,
-    modules: &[Option<ModuleBytes>; 2],
+    modules: &PerBackend<Option<ModuleBytes>>,
     reflection: &StageReflection,
 ) {
     // One there already is replaced only when it is not this key's (damaged, misplaced).
