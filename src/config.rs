@@ -2,8 +2,8 @@
 //! Every field has a default, so a folder of `.shader` and `.mat` files needs no file at all.
 
 use crate::diagnostics::Diagnostic;
-use crate::source::{FileId, SourceStore, Span};
 pub use crate::manifest::Backend;
+use crate::source::{FileId, SourceStore, Span};
 use serde::Deserialize;
 use std::path::PathBuf;
 

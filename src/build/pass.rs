@@ -299,12 +299,18 @@ fn lay_out(
 
 /// Packs a pass's newly compiled modules, one pack per backend; returns each module's files,
 /// in order, and the bytes written.
-fn pack_pass(cache: &Cache, compiled: &[&Compiled]) -> std::io::Result<(Vec<PerBackend<Option<FileRef>>>, u64)> {
+fn pack_pass(
+    cache: &Cache,
+    compiled: &[&Compiled],
+) -> std::io::Result<(Vec<PerBackend<Option<FileRef>>>, u64)> {
     let mut files: Vec<PerBackend<Option<FileRef>>> = vec![PerBackend::default(); compiled.len()];
     let mut written = 0;
     for &backend in Backend::ALL {
-        let present: Vec<(usize, &ModuleBytes)> =
-            compiled.iter().enumerate().filter_map(|(i, c)| Some((i, c.modules[backend].as_ref()?))).collect();
+        let present: Vec<(usize, &ModuleBytes)> = compiled
+            .iter()
+            .enumerate()
+            .filter_map(|(i, c)| Some((i, c.modules[backend].as_ref()?)))
+            .collect();
         if present.is_empty() {
             continue;
         }

@@ -334,7 +334,8 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
     for (backend, numbered) in packs.iter() {
         let (_, _, _, bytes) = embedding(backend);
         for (n, path) in numbered.keys().enumerate() {
-            let _ = writeln!(out, "    ({}, {}),", string_literal(path), bytes.replace("{n}", &n.to_string()));
+            let _ =
+                writeln!(out, "    ({}, {}),", string_literal(path), bytes.replace("{n}", &n.to_string()));
         }
     }
     out.push_str("];\n");
@@ -365,7 +366,9 @@ type PackNumbers<'a> = PerBackend<BTreeMap<&'a str, u32>>;
 fn embedding(backend: Backend) -> (&'static str, &'static str, &'static str, &'static str) {
     match backend {
         Backend::Wgsl => ("WGSL_PACKS", "&str", "include_str!({})", "WGSL_PACKS[{n}].as_bytes()"),
-        Backend::Spirv => ("SPIRV_PACKS", "&Aligned<[u8]>", "&Aligned(*include_bytes!({}))", "&SPIRV_PACKS[{n}].0"),
+        Backend::Spirv => {
+            ("SPIRV_PACKS", "&Aligned<[u8]>", "&Aligned(*include_bytes!({}))", "&SPIRV_PACKS[{n}].0")
+        }
     }
 }
 

@@ -7,8 +7,8 @@ use super::layout;
 use super::panics::contain_panics;
 use super::target::Allowed;
 use super::{Mapper, validate};
-use crate::manifest::{Backend, PerBackend};
 use crate::diagnostics::Diagnostic;
+use crate::manifest::{Backend, PerBackend};
 use crate::preprocess::Stage;
 use crate::reflect::{StageReflection, reflect_stage};
 use crate::source::Span;
@@ -152,7 +152,9 @@ fn write(
 ) -> Result<Written, Diagnostic> {
     let capabilities = request.allowed.capabilities();
     match backend {
-        Backend::Wgsl => Ok(Written::Module(super::wgsl::write(module, info, capabilities, host)?.into_bytes())),
+        Backend::Wgsl => {
+            Ok(Written::Module(super::wgsl::write(module, info, capabilities, host)?.into_bytes()))
+        }
         Backend::Spirv if !module.overrides.is_empty() => Ok(Written::Nothing),
         Backend::Spirv => {
             let options = naga::back::spv::Options {
@@ -169,7 +171,9 @@ fn write(
                 None => gaps::write(module, info, &options, &pipeline),
             };
             Ok(match written {
-                Ok(words) => Written::Module(super::spirv::corrected(words).iter().flat_map(|w| w.to_le_bytes()).collect()),
+                Ok(words) => Written::Module(
+                    super::spirv::corrected(words).iter().flat_map(|w| w.to_le_bytes()).collect(),
+                ),
                 Err(gap) => Written::Gap(gap),
             })
         }

@@ -500,7 +500,11 @@ impl ModuleManifest {
     }
 
     /// A module with these files (one per back end, `None` where not written).
-    pub fn with_files(interface: usize, features: Vec<String>, mut files: PerBackend<Option<ModuleFile>>) -> ModuleManifest {
+    pub fn with_files(
+        interface: usize,
+        features: Vec<String>,
+        mut files: PerBackend<Option<ModuleFile>>,
+    ) -> ModuleManifest {
         let (wgsl, spirv) = (files[Backend::Wgsl].take(), files[Backend::Spirv].take());
         ModuleManifest { interface, features, wgsl, spirv }
     }

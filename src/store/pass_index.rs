@@ -93,7 +93,10 @@ impl Serialize for PassIndex {
             for (backend, file) in stage.files.iter() {
                 files[backend] = StoredFile::of(file, &mut packs);
             }
-            (Cow::from(key.as_str()), StoredStage { files, reflection: reflections.number(&stage.reflection) })
+            (
+                Cow::from(key.as_str()),
+                StoredStage { files, reflection: reflections.number(&stage.reflection) },
+            )
         });
         let stage = stage.collect();
         let (declarations, reflections, packs) = (declarations.values, reflections.values, packs.values);
@@ -163,7 +166,9 @@ mod tests {
 
     fn stage(offset: u64, reflection: StageReflection) -> CachedStage {
         CachedStage {
-            files: PerBackend::from_fn(|backend| file(&format!("modules/a.{}", backend.pack_extension()), offset)),
+            files: PerBackend::from_fn(|backend| {
+                file(&format!("modules/a.{}", backend.pack_extension()), offset)
+            }),
             reflection,
         }
     }

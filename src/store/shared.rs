@@ -9,8 +9,8 @@
 
 use super::cache::{ModuleBytes, hash, seal, sealed, unsealed, write_atomically};
 use crate::compile::bind::Declared;
-use crate::reflect::StageReflection;
 use crate::manifest::PerBackend;
+use crate::reflect::StageReflection;
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 
