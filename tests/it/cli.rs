@@ -270,3 +270,24 @@ fn a_kiln_toml_broken_on_its_first_line_is_reported_there() {
         assert!(stderr.contains(&format!("┌─ kiln.toml:1:{column}\n")), "{text:?}: {stderr}");
     }
 }
+
+/// `build`, `watch` and `check` take the same project flags: a check given the shared cache a
+/// build filled compiles nothing, and one given a usage log checks the variant it names.
+#[test]
+fn check_takes_the_project_flags_build_takes() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (cache, output) = (dir.path().join("cache"), dir.path().join("out"));
+    let (cache, output) = (cache.to_str().expect("UTF-8"), output.to_str().expect("UTF-8"));
+    let built = kiln(&["build", "fixtures/project", "--output", output, "--cache-dir", cache]);
+    assert!(built.status.success(), "{}", String::from_utf8_lossy(&built.stderr));
+    let checked = kiln(&["check", "fixtures/project", "--cache-dir", cache, "--threads", "1"]);
+    let stderr = String::from_utf8_lossy(&checked.stderr);
+    assert!(checked.status.success() && stderr.contains("(0 compiled, 19 reused from cache)"), "{stderr}");
+    let log = dir.path().join("usage.jsonl");
+    std::fs::write(&log, "{\"shader\": \"Custom RP/Lit\", \"pass\": 0, \"keywords\": [\"_NO_SUCH\"]}\n")
+        .expect("write");
+    let checked = kiln(&["check", "fixtures/project", "--variants-from", log.to_str().expect("UTF-8")]);
+    let stderr = String::from_utf8_lossy(&checked.stderr);
+    assert_eq!(checked.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("K0533") && stderr.contains("_NO_SUCH"), "{stderr}");
+}

@@ -12,6 +12,42 @@ pub struct Cli {
     pub command: Command,
 }
 
+/// What `build`, `watch` and `check` share: the project and what overrides its `kiln.toml`.
+#[derive(clap::Args)]
+pub struct ProjectArgs {
+    /// The project folder (default: the nearest folder up with a kiln.toml, else this one).
+    pub project: Option<PathBuf>,
+    /// Worker threads, 1 to 1024 (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=1024))]
+    pub threads: Option<u16>,
+    /// Write here instead of the project's `output` folder (`check` reads its cache only).
+    #[arg(long)]
+    pub output: Option<PathBuf>,
+    /// Also build the variants a usage log names (JSON Lines, as `kiln::runtime::UsageLog`
+    /// writes them). Repeatable.
+    #[arg(long = "variants-from", value_name = "FILE")]
+    pub variants_from: Vec<PathBuf>,
+    /// A module cache shared by builds, processes and machines (also `KILN_CACHE_DIR`,
+    /// `cache_dir` in kiln.toml).
+    #[arg(long, value_name = "DIR")]
+    pub cache_dir: Option<PathBuf>,
+}
+
+impl ProjectArgs {
+    /// The project folder and the build mode these arguments give, the rest `BuildMode`'s
+    /// defaults: made here only.
+    pub fn mode(self) -> (PathBuf, kiln::project::BuildMode) {
+        let mode = kiln::project::BuildMode {
+            output: self.output,
+            threads: self.threads.map(usize::from),
+            variant_logs: self.variants_from,
+            cache_dir: self.cache_dir,
+            ..kiln::project::BuildMode::default()
+        };
+        (self.project.unwrap_or_else(kiln::project::default_project), mode)
+    }
+}
+
 #[derive(Subcommand)]
 pub enum Command {
     /// List each shader's passes, keyword sets, and the variants its materials use.
@@ -43,29 +79,15 @@ pub enum Command {
     },
     /// Compile every variant the materials use to WGSL and SPIR-V, with a manifest.
     Build {
-        /// The project folder (default: the nearest folder up with a kiln.toml, else this one).
-        project: Option<PathBuf>,
-        /// Worker threads, 1 to 1024 (default: all cores).
-        #[arg(long, value_parser = clap::value_parser!(u16).range(1..=1024))]
-        threads: Option<u16>,
-        /// Write here instead of the project's `output` folder.
-        #[arg(long)]
-        output: Option<PathBuf>,
+        #[command(flatten)]
+        project: ProjectArgs,
         /// Write `manifest.json` indented, for reading (default: compact).
         #[arg(long)]
         pretty: bool,
-        /// Also build the variants a usage log names (JSON Lines, as `kiln::runtime::UsageLog`
-        /// writes them). Repeatable.
-        #[arg(long = "variants-from", value_name = "FILE")]
-        variants_from: Vec<PathBuf>,
         /// Build only shard I of N (1 <= I <= N) of the stage modules, into the output folder,
         /// for `kiln merge` (docs/scaling.md).
         #[arg(long, value_name = "I/N")]
         shard: Option<String>,
-        /// A module cache shared by builds, processes and machines (also `KILN_CACHE_DIR`,
-        /// `cache_dir` in kiln.toml).
-        #[arg(long, value_name = "DIR")]
-        cache_dir: Option<PathBuf>,
     },
     /// Join the outputs of `kiln build --shard` into the output one `kiln build` would write,
     /// byte for byte, compiling nothing.
@@ -89,23 +111,14 @@ pub enum Command {
     /// looks), printing diagnostics and a summary line per build. A failed build leaves its
     /// diagnostics in the output folder for a running program (`kiln::runtime`) to report.
     Watch {
-        /// The project folder (default: the nearest folder up with a kiln.toml, else this one).
-        project: Option<PathBuf>,
-        /// Write here instead of the project's `output` folder.
-        #[arg(long)]
-        output: Option<PathBuf>,
-        /// Also build the variants a usage log names. Repeatable.
-        #[arg(long = "variants-from", value_name = "FILE")]
-        variants_from: Vec<PathBuf>,
-        /// A module cache shared by builds, processes and machines.
-        #[arg(long, value_name = "DIR")]
-        cache_dir: Option<PathBuf>,
+        #[command(flatten)]
+        project: ProjectArgs,
     },
     /// Validate without writing anything: used variants, and for shaders no material uses, the
     /// default variant and each keyword on its own. Exit 1 on any error.
     Check {
-        /// The project folder (default: the nearest folder up with a kiln.toml, else this one).
-        project: Option<PathBuf>,
+        #[command(flatten)]
+        project: ProjectArgs,
         /// `text` for people, `json` for tools.
         #[arg(long, value_enum, default_value_t = Format::Text)]
         format: Format,

@@ -1,7 +1,7 @@
 //! `kiln build`, `kiln check`, `kiln merge` and `kiln watch`: the library's build with a progress
 //! bar, its diagnostics and a summary line.
 
-use crate::args::Format;
+use crate::args::{Format, ProjectArgs};
 use crate::output::{exit_code, exit_leaving, host_failure, print_out, report};
 use kiln::build::VariantSelection;
 use kiln::diagnostics;
@@ -12,23 +12,9 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 /// `kiln build`.
-pub fn build(
-    project: Option<PathBuf>,
-    threads: Option<u16>,
-    output: Option<PathBuf>,
-    pretty: bool,
-    variants_from: Vec<PathBuf>,
-    shard: Option<String>,
-    cache_dir: Option<PathBuf>,
-) -> ExitCode {
-    let mode = BuildMode {
-        output,
-        threads: threads.map(usize::from),
-        pretty_manifest: pretty,
-        variant_logs: variants_from,
-        cache_dir,
-        ..BuildMode::default()
-    };
+pub fn build(project: ProjectArgs, pretty: bool, shard: Option<String>) -> ExitCode {
+    let (project, mode) = project.mode();
+    let mode = BuildMode { pretty_manifest: pretty, ..mode };
     let part = match shard.as_deref().map(kiln::build::shard::Shard::parse) {
         None => Part::Whole,
         Some(Ok(shard)) => Part::Shard(shard),
@@ -38,13 +24,14 @@ pub fn build(
 }
 
 /// `kiln check`.
-pub fn check(project: Option<PathBuf>, format: Format, all_variants: bool) -> ExitCode {
+pub fn check(project: ProjectArgs, format: Format, all_variants: bool) -> ExitCode {
     let unused_shaders = if all_variants {
         VariantSelection::All { limit: ALL_VARIANTS_LIMIT }
     } else {
         VariantSelection::DefaultsAndEachKeyword
     };
-    run(project, BuildMode { write: false, unused_shaders, ..BuildMode::default() }, format, Part::Whole)
+    let (project, mode) = project.mode();
+    run(project, BuildMode { write: false, unused_shaders, ..mode }, format, Part::Whole)
 }
 
 /// `kiln merge`.
@@ -66,21 +53,15 @@ pub fn merge(output: PathBuf, shards: Vec<PathBuf>, project: Option<PathBuf>, pr
 }
 
 /// `kiln watch`.
-pub fn watch(
-    project: Option<PathBuf>,
-    output: Option<PathBuf>,
-    variants_from: Vec<PathBuf>,
-    cache_dir: Option<PathBuf>,
-) -> ExitCode {
-    let mode = BuildMode { output, variant_logs: variants_from, cache_dir, ..BuildMode::default() };
-    watch_loop(project.unwrap_or_else(kiln::project::default_project), &mode)
+pub fn watch(project: ProjectArgs) -> ExitCode {
+    let (project, mode) = project.mode();
+    watch_loop(project, &mode)
 }
 
 /// `kiln check --all-variants` refuses passes with more variants than this.
 const ALL_VARIANTS_LIMIT: u128 = 4096;
 
-fn run(project: Option<PathBuf>, mode: BuildMode, format: Format, part: Part) -> ExitCode {
-    let project = project.unwrap_or_else(kiln::project::default_project);
+fn run(project: PathBuf, mode: BuildMode, format: Format, part: Part) -> ExitCode {
     let mut store = SourceStore::new();
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = indicatif::ProgressBar::new(0);

@@ -35,14 +35,10 @@ fn main() -> ExitCode {
         }
         Command::Accuracy { plot, samples } => inspect::accuracy(plot, samples),
         Command::Lsp { cache_dir, stdio: _ } => inspect::lsp(cache_dir),
-        Command::Build { project, threads, output, pretty, variants_from, shard, cache_dir } => {
-            build::build(project, threads, output, pretty, variants_from, shard, cache_dir)
-        }
+        Command::Build { project, pretty, shard } => build::build(project, pretty, shard),
         Command::Check { project, format, all_variants } => build::check(project, format, all_variants),
         Command::Merge { output, shards, project, pretty } => build::merge(output, shards, project, pretty),
-        Command::Watch { project, output, variants_from, cache_dir } => {
-            build::watch(project, output, variants_from, cache_dir)
-        }
+        Command::Watch { project } => build::watch(project),
         Command::Cache(command) => cache::run(command),
         Command::Material(command) => material::run(command),
     }
