@@ -148,7 +148,8 @@ fn first_shader_pixels(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(),
 
 #[test]
 fn a_renderer_written_from_the_docs_builds_and_draws() {
-    if crate::support::gpu("a_renderer_written_from_the_docs_builds_and_draws").is_none() {
+    let test = "a_renderer_written_from_the_docs_builds_and_draws";
+    if !crate::support::crate_tests(test) || crate::support::gpu(test).is_none() {
         return;
     }
     let page = std::fs::read_to_string(root().join("docs/renderer.md")).expect("docs/renderer.md");

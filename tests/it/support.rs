@@ -77,6 +77,21 @@ pub fn gpu(test: &str) -> Option<kiln::accuracy::gpu::Gpu> {
     }
 }
 
+/// Whether to run a test that compiles a crate depending on kiln with cargo (a renderer built
+/// from the docs with wgpu, a build script's crate): on 2 cores their first run compiles kiln
+/// and wgpu once more, about 7 minutes. `KILN_CRATE_TESTS=1` (set by CI, implied by
+/// `KILN_REQUIRE_TOOLS=1`) runs them; otherwise they skip with the counted line.
+pub fn crate_tests(test: &str) -> bool {
+    let set = |name| std::env::var(name).as_deref() == Ok("1");
+    let run = set("KILN_CRATE_TESTS") || set("KILN_REQUIRE_TOOLS");
+    if !run {
+        skipped(&format!(
+            "{test}: compiles a crate on kiln (minutes on 2 cores); KILN_CRATE_TESTS=1 runs it"
+        ));
+    }
+    run
+}
+
 /// Reports a skipped check where it stays visible: straight to the process's stderr, which the
 /// test harness does not capture (a passing test's `println!` is hidden), numbered so that the
 /// run shows how many were skipped.

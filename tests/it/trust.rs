@@ -233,6 +233,11 @@ fn tick() {
 
 #[test]
 fn cargo_reruns_the_build_script_for_every_edit_kiln_reads_and_for_new_files_only_then() {
+    if !crate::support::crate_tests(
+        "cargo_reruns_the_build_script_for_every_edit_kiln_reads_and_for_new_files_only_then",
+    ) {
+        return;
+    }
     let dir = tempfile::tempdir().expect("temp dir");
     let krate = scratch_crate(dir.path());
     let (out_dir, runs) = cargo_build(&krate);
