@@ -394,7 +394,7 @@ pub fn device() -> Result<Gpu, String> {
 
 /// [`device`] on these backends only.
 pub fn device_on(backends: wgpu::Backends) -> Result<Gpu, String> {
-    let adapter = crate::runtime::adapter(backends)?;
+    let adapter = crate::runtime::adapter(backends).map_err(|e| e.to_string())?;
     let info = adapter.get_info();
     let required_features = adapter.features()
         & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::SHADER_F16 | wgpu::Features::PIPELINE_CACHE);

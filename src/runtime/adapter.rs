@@ -1,10 +1,22 @@
 //! Which adapter a renderer, the tests and `kiln accuracy` run on.
 
+/// Why there is no adapter to run on.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum AdapterError {
+    /// wgpu found no adapter at all.
+    #[error("no GPU adapter (no Vulkan, Metal or DirectX 12 driver, nor OpenGL)")]
+    NoAdapter,
+    /// Every adapter found is below WebGPU: each named, with what it lacks.
+    #[error("no adapter runs WebGPU in full: {}", .0.join("; "))]
+    BelowWebGpu(Vec<String>),
+}
+
 /// The adapter that runs WebGPU in full, a discrete GPU first and a CPU rasteriser last. An
 /// adapter below WebGPU (wgpu's OpenGL backend on Mesa lacks depth copies, and reads some
 /// layouts wrongly) is named in the error instead of being used: its results would not be
 /// WebGPU's.
-pub fn adapter(backends: wgpu::Backends) -> Result<wgpu::Adapter, String> {
+pub fn adapter(backends: wgpu::Backends) -> Result<wgpu::Adapter, AdapterError> {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
         backends,
         ..wgpu::InstanceDescriptor::new_without_display_handle_from_env()
@@ -23,7 +35,7 @@ pub fn adapter(backends: wgpu::Backends) -> Result<wgpu::Adapter, String> {
         return Ok(best);
     }
     if below.is_empty() {
-        return Err("no GPU adapter (no Vulkan, Metal or DirectX 12 driver, nor OpenGL)".to_string());
+        return Err(AdapterError::NoAdapter);
     }
     let named: Vec<String> = below
         .iter()
@@ -37,5 +49,5 @@ pub fn adapter(backends: wgpu::Backends) -> Result<wgpu::Adapter, String> {
             )
         })
         .collect();
-    Err(format!("no adapter runs WebGPU in full: {}", named.join("; ")))
+    Err(AdapterError::BelowWebGpu(named))
 }

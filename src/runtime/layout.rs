@@ -6,6 +6,20 @@ use crate::manifest::{
 };
 use crate::reflect::Resource;
 
+/// A layout wgpu has no form for.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+// Each variant's fields are named in its message.
+#[allow(missing_docs)]
+pub enum LayoutError {
+    /// A binding of a kind wgpu cannot bind (`Resource::Other`).
+    #[error("binding `{binding}`: no wgpu binding for {description}")]
+    Binding { binding: String, description: String },
+    /// A vertex input of a type no vertex format reads.
+    #[error("vertex input {location}: no vertex format `{format}`")]
+    VertexFormat { location: u32, format: String },
+}
+
 /// A pass's bind group layouts (groups 0 to the highest it uses, empty ones included) and its
 /// pipeline layout. Every variant of a pass shares it.
 #[derive(Debug)]
@@ -18,7 +32,7 @@ pub struct PassLayout {
 
 impl PassLayout {
     /// Creates the layouts of a pass's bind groups.
-    pub fn new(device: &wgpu::Device, layout: &[BindGroup]) -> Result<PassLayout, String> {
+    pub fn new(device: &wgpu::Device, layout: &[BindGroup]) -> Result<PassLayout, LayoutError> {
         let count = layout.iter().map(|g| g.group + 1).max().unwrap_or(0);
         let groups = (0..count)
             .map(|group| {
@@ -29,7 +43,7 @@ impl PassLayout {
                     entries: &entries,
                 }))
             })
-            .collect::<Result<Vec<_>, String>>()?;
+            .collect::<Result<Vec<_>, LayoutError>>()?;
         let refs: Vec<Option<&wgpu::BindGroupLayout>> = groups.iter().map(Some).collect();
         let pipeline = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
             label: Some("kiln pass"),
@@ -41,7 +55,7 @@ impl PassLayout {
 }
 
 /// One entry of a bind group layout, for every resource kind kiln reflects.
-pub fn bind_group_layout_entry(entry: &LayoutEntry) -> Result<wgpu::BindGroupLayoutEntry, String> {
+pub fn bind_group_layout_entry(entry: &LayoutEntry) -> Result<wgpu::BindGroupLayoutEntry, LayoutError> {
     let visibility = entry.visibility.iter().fold(wgpu::ShaderStages::NONE, |all, stage| {
         all | match stage {
             ShaderStage::Vertex => wgpu::ShaderStages::VERTEX,
@@ -89,7 +103,10 @@ pub fn bind_group_layout_entry(entry: &LayoutEntry) -> Result<wgpu::BindGroupLay
             wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering)
         }
         Resource::Other { description } => {
-            return Err(format!("binding `{}`: no wgpu binding for {description}", entry.name));
+            return Err(LayoutError::Binding {
+                binding: entry.name.clone(),
+                description: description.clone(),
+            });
         }
     };
     Ok(wgpu::BindGroupLayoutEntry { binding: entry.binding, visibility, ty, count: None })
@@ -178,14 +195,14 @@ pub struct VertexBuffer {
 
 impl VertexLayout {
     /// The default packing of a vertex stage's inputs (`(location, format)` as reflected).
-    pub fn packed(inputs: &[(u32, String)]) -> Result<VertexLayout, String> {
+    pub fn packed(inputs: &[(u32, String)]) -> Result<VertexLayout, LayoutError> {
         let mut inputs: Vec<&(u32, String)> = inputs.iter().collect();
         inputs.sort_by_key(|(location, _)| *location);
         let mut offset = 0;
         let mut attributes = Vec::new();
         for (location, format) in inputs {
             let format = vertex_format(format)
-                .ok_or_else(|| format!("vertex input {location}: no vertex format `{format}`"))?;
+                .ok_or_else(|| LayoutError::VertexFormat { location: *location, format: format.clone() })?;
             attributes.push(wgpu::VertexAttribute { format, offset, shader_location: *location });
             offset += format.size();
         }

@@ -14,9 +14,9 @@ mod pipelines;
 mod state;
 mod uniforms;
 
-pub use adapter::adapter;
+pub use adapter::{AdapterError, adapter};
 pub use compute::{Kernel, KernelRequest};
-pub use layout::{PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
+pub use layout::{LayoutError, PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
 pub use material::{MATERIAL_GROUP, MaterialBindGroup, MaterialTextures};
 pub use pipelines::{PipelineRequest, Reload, Runtime, Targets, UsageLog};
 pub use state::{

@@ -260,8 +260,9 @@ impl Runtime {
         let layout = match self.layouts.get(&layout_key) {
             Some(layout) => layout.clone(),
             None => {
-                let layout = PassLayout::new(&self.device, &manifest.layout)
-                    .map_err(|message| RuntimeError::Layout { shader: shader.to_string(), pass, message })?;
+                let layout = PassLayout::new(&self.device, &manifest.layout).map_err(|error| {
+                    RuntimeError::Layout { shader: shader.to_string(), pass, message: error.to_string() }
+                })?;
                 let layout = Arc::new(layout);
                 self.layouts.insert(layout_key, layout.clone());
                 layout
@@ -294,7 +295,7 @@ impl Runtime {
             None => {
                 let inputs: Vec<(u32, String)> =
                     vertex.interface.inputs.iter().map(|a| (a.location, a.format.clone())).collect();
-                VertexLayout::packed(&inputs).map_err(layout_error)?
+                VertexLayout::packed(&inputs).map_err(|error| layout_error(error.to_string()))?
             }
         };
         let constants = stage_constants(
