@@ -289,6 +289,16 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
         manifest.kiln_version
     );
     out.push_str(PRELUDE);
+    let _ = writeln!(
+        out,
+        "\n/// The bind groups kiln gives every pass's resources, by how often they change: bind the\n\
+         /// per-frame buffers at `FRAME_GROUP`, a material at `MATERIAL_GROUP`, per-draw ones at\n\
+         /// `OBJECT_GROUP`.\n\
+         pub const FRAME_GROUP: u32 = {};\npub const MATERIAL_GROUP: u32 = {};\npub const OBJECT_GROUP: u32 = {};",
+        crate::manifest::FRAME_GROUP,
+        crate::manifest::MATERIAL_GROUP,
+        crate::manifest::OBJECT_GROUP
+    );
     // Each pack once, numbered in path order; modules are ranges of them.
     let mut packs: PerBackend<BTreeMap<&str, u32>> = Default::default();
     for pass in manifest.passes() {

@@ -2,19 +2,13 @@
 //! per frame, 1 per material, 2 per object), the same for every variant of a pass so that one
 //! bind group layout serves all of them. Explicit attributes win and are checked for clashes.
 
+use crate::manifest::{FRAME_GROUP, MATERIAL_GROUP, OBJECT_GROUP};
 use naga::{
     AddressSpace, Expression, GlobalVariable, Handle, Module, ResourceBinding, ShaderStage, Statement,
 };
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::collections::HashSet;
-
-/// Group of resources the renderer binds once per frame (camera, lights).
-pub const PER_FRAME: u32 = 0;
-/// Group of a material's resources (its uniform block and textures).
-pub const PER_MATERIAL: u32 = 1;
-/// Group of resources bound per draw (the object's transform).
-pub const PER_OBJECT: u32 = 2;
 
 /// Resources the renderer updates once per frame, and once per object; everything else is the
 /// material's.
@@ -34,11 +28,11 @@ pub struct GroupNames {
 /// The group a resource without an explicit `@group` goes to.
 pub fn group_for(name: &str, names: &GroupNames) -> u32 {
     if PER_FRAME_NAMES.contains(&name) || names.per_frame.iter().any(|n| n == name) {
-        PER_FRAME
+        FRAME_GROUP
     } else if PER_OBJECT_NAMES.contains(&name) || names.per_object.iter().any(|n| n == name) {
-        PER_OBJECT
+        OBJECT_GROUP
     } else {
-        PER_MATERIAL
+        MATERIAL_GROUP
     }
 }
 

@@ -70,6 +70,14 @@ use std::path::Path;
 /// Raised whenever a field changes meaning or is removed (adding fields keeps it).
 pub const SCHEMA_VERSION: u32 = 8;
 
+/// The bind group of the resources a renderer binds once per frame (camera, lights): kiln puts
+/// every resource of a pass in one of three groups by how often it changes (docs/project.md).
+pub const FRAME_GROUP: u32 = 0;
+/// The bind group of a material's resources (its uniform blocks and textures).
+pub const MATERIAL_GROUP: u32 = 1;
+/// The bind group of the resources bound per draw (the object's transform).
+pub const OBJECT_GROUP: u32 = 2;
+
 /// The manifest's file name, at the top of the output folder.
 pub const FILE_NAME: &str = "manifest.json";
 

@@ -7,9 +7,7 @@ use crate::manifest::MaterialManifest;
 use crate::reflect::Resource;
 use wgpu::util::DeviceExt;
 
-/// The bind group every pass gives its material's resources (README: group 0 per frame, 1 per
-/// material, 2 per object).
-pub const MATERIAL_GROUP: u32 = 1;
+pub use crate::manifest::MATERIAL_GROUP;
 
 /// The renderer's textures and samplers, as materials name them.
 pub trait MaterialTextures {

@@ -14,6 +14,7 @@ mod pipelines;
 mod state;
 mod uniforms;
 
+pub use crate::manifest::{FRAME_GROUP, OBJECT_GROUP};
 pub use adapter::{AdapterError, adapter};
 pub use compute::{Kernel, KernelRequest};
 pub use layout::{LayoutError, PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};

@@ -298,8 +298,9 @@ pub fn render_frames(
     let frame_buffers = [uniform(bytemuck::bytes_of(&per_frame)), uniform(bytemuck::bytes_of(&light))];
     // Per frame and per object: the renderer's buffers, bound by their names in the layout.
     let frame_buffers = [("UnityPerFrame", &frame_buffers[0]), ("_CustomLight", &frame_buffers[1])];
-    let frame_group =
-        runtime.buffer_bind_group(scene::SHADER, 0, 0, &frame_buffers).map_err(|e| e.to_string())?;
+    let frame_group = runtime
+        .buffer_bind_group(scene::SHADER, 0, shaders::FRAME_GROUP, &frame_buffers)
+        .map_err(|e| e.to_string())?;
 
     // The runtime's default vertex packing of the pass's inputs (position, normal, uv) is the
     // mesh's interleaving.
@@ -380,7 +381,7 @@ pub fn render_frames(
         };
         let draw_buffer = uniform(bytemuck::bytes_of(&draw));
         let draw_group = runtime
-            .buffer_bind_group(scene::SHADER, 0, 2, &[("UnityPerDraw", &draw_buffer)])
+            .buffer_bind_group(scene::SHADER, 0, shaders::OBJECT_GROUP, &[("UnityPerDraw", &draw_buffer)])
             .map_err(|e| e.to_string())?;
         let groups = [material_group.bind_group, draw_group];
         draws.push((pipeline, groups));
@@ -438,13 +439,13 @@ pub fn render_frames(
             timestamp_writes,
             ..Default::default()
         });
-        render_pass.set_bind_group(0, &frame_group, &[]);
+        render_pass.set_bind_group(shaders::FRAME_GROUP, &frame_group, &[]);
         render_pass.set_vertex_buffer(0, vertex_buffer.slice(..));
         render_pass.set_index_buffer(index_buffer.slice(..), wgpu::IndexFormat::Uint32);
         for (pipeline, groups) in &draws {
             render_pass.set_pipeline(pipeline);
-            render_pass.set_bind_group(1, &groups[0], &[]);
-            render_pass.set_bind_group(2, &groups[1], &[]);
+            render_pass.set_bind_group(shaders::MATERIAL_GROUP, &groups[0], &[]);
+            render_pass.set_bind_group(shaders::OBJECT_GROUP, &groups[1], &[]);
             render_pass.draw_indexed(0..indices.len() as u32, 0, 0..1);
         }
     }

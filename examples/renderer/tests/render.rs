@@ -134,6 +134,15 @@ fn a_material_bind_group_follows_its_material() {
     let material = runtime.library().material("object00").expect("a scene material").clone();
     let group = runtime.material_bind_group(&material, 0, &textures).expect("binds");
     assert_eq!(group.group, kiln::runtime::MATERIAL_GROUP);
+    // The generated module's group constants are the run time's.
+    assert_eq!(
+        [
+            kiln_renderer::shaders::FRAME_GROUP,
+            kiln_renderer::shaders::MATERIAL_GROUP,
+            kiln_renderer::shaders::OBJECT_GROUP
+        ],
+        [kiln::runtime::FRAME_GROUP, group.group, kiln::runtime::OBJECT_GROUP]
+    );
     let read = |buffer: &wgpu::Buffer| {
         let size = buffer.size();
         let staging = device.create_buffer(&wgpu::BufferDescriptor {
