@@ -17,11 +17,21 @@ pub enum AdapterError {
 /// layouts wrongly) is named in the error instead of being used: its results would not be
 /// WebGPU's.
 pub fn adapter(backends: wgpu::Backends) -> Result<wgpu::Adapter, AdapterError> {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
-        backends,
-        ..wgpu::InstanceDescriptor::new_without_display_handle_from_env()
-    });
-    let adapters = pollster::block_on(instance.enumerate_adapters(backends));
+    let adapters = |backends: wgpu::Backends| {
+        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+            backends,
+            ..wgpu::InstanceDescriptor::new_without_display_handle_from_env()
+        });
+        pollster::block_on(instance.enumerate_adapters(backends))
+    };
+    // Vulkan, Metal and DirectX 12 first: only where none runs WebGPU is OpenGL asked (its EGL
+    // probe prints to stderr), to name what it lacks.
+    let primary = adapters(backends & wgpu::Backends::PRIMARY);
+    let rest = match primary.iter().any(|a| a.get_downlevel_capabilities().is_webgpu_compliant()) {
+        true => Vec::new(),
+        false => adapters(backends - wgpu::Backends::PRIMARY),
+    };
+    let adapters = primary.into_iter().chain(rest);
     let rank = |adapter: &wgpu::Adapter| match adapter.get_info().device_type {
         wgpu::DeviceType::DiscreteGpu => 0,
         wgpu::DeviceType::IntegratedGpu => 1,
@@ -30,7 +40,7 @@ pub fn adapter(backends: wgpu::Backends) -> Result<wgpu::Adapter, AdapterError> 
         wgpu::DeviceType::Cpu => 4,
     };
     let (full, below): (Vec<_>, Vec<_>) =
-        adapters.into_iter().partition(|a| a.get_downlevel_capabilities().is_webgpu_compliant());
+        adapters.partition(|a| a.get_downlevel_capabilities().is_webgpu_compliant());
     if let Some(best) = full.into_iter().min_by_key(rank) {
         return Ok(best);
     }
