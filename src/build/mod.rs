@@ -3,7 +3,7 @@
 //! texts from [`jobs`], each front and stage module from the first of an ordered list of
 //! [`sources`] that has it, one pack per backend), and emits the manifest or, for a shard, its
 //! passes' parts ([`emit`], [`shard`]); a merge joins shards' parts without compiling
-//! ([`merge`]). Before any of it, [`unchanged`] tells from the last clean build's record that
+//! (`merge`). Before any of it, [`unchanged`] tells from the last clean build's record that
 //! nothing needs doing ([`noop`]). The manifest keeps catalogue order, so output never depends on
 //! the thread count or on how the work was split.
 

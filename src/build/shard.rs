@@ -1,6 +1,6 @@
 //! Sharded builds: `kiln build --shard I/N` builds the passes that fall to shard I, exactly as a
 //! whole build builds them (packs and cache in its output folder), and leaves their parts of the
-//! manifest in `shard.json`; `kiln merge` joins the parts ([`super::merge`]). A shard decides what
+//! manifest in `shard.json`; `kiln merge` joins the parts (`build::merge`). A shard decides what
 //! it owns from the catalogue alone, before preprocessing anything: passes are dealt out by their
 //! weight (distinct stage requests, [`super::plan::weights`]), heaviest first, each to the shard
 //! with the least so far, so no shard reads, preprocesses or parses another shard's texts.
