@@ -27,8 +27,8 @@ pub struct ProjectConfig {
     /// Shaders built with every variant, whether or not a material uses them (by shader name).
     pub always_include: Vec<String>,
     /// The renderer's global keyword state, when it is known (a scene's light setup, say): each
-    /// `multi_compile` set is then built only with the option these choose (see
-    /// [`crate::keywords::GlobalKeywords`]). Unset: every option of every set.
+    /// `multi_compile` set is then built only with the option these choose (docs/keywords.md).
+    /// Unset: every option of every set.
     pub global_keywords: Option<Vec<toml::Spanned<String>>>,
     /// Warnings count as errors.
     pub strict: bool,

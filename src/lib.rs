@@ -31,6 +31,9 @@
 // matters; boxing each one would only add noise.
 #![allow(clippy::result_large_err)]
 #![warn(missing_docs, unreachable_pub, clippy::print_stdout, clippy::print_stderr)]
+// The stages' module docs link their private parts for maintainers, who read them with
+// `cargo doc --document-private-items`.
+#![allow(rustdoc::private_intra_doc_links)]
 
 #[doc(hidden)]
 pub mod accuracy;

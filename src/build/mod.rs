@@ -140,7 +140,7 @@ pub enum Part {
     #[default]
     Whole,
     /// `kiln build --shard I/N`: the passes that fall to this shard, built as a whole build
-    /// builds them, and their parts of the manifest (`shard.json`) for `kiln merge` ([`merge`]).
+    /// builds them, and their parts of the manifest (`shard.json`) for `kiln merge` (`merge`).
     Shard(Shard),
 }
 

@@ -132,7 +132,7 @@ impl<'a> Structs<'a, '_> {
             };
             let _ = writeln!(
                 fields,
-                "        /// `{}`: {} at offset {}.",
+                "        /// `{}`: `{}` at offset {}.",
                 doc_text(&member.name),
                 doc_text(&member.ty),
                 member.offset

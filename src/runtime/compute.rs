@@ -15,7 +15,7 @@ pub struct KernelRequest<'a> {
     pub kernel: &'a str,
     /// The variant's keywords (the renderer's global ones and its own), `dynamic_branch` ones too.
     pub keywords: &'a [&'a str],
-    /// Values of the module's own `override` constants, as [`PipelineRequest::overrides`].
+    /// Values of the module's own `override` constants, as [`PipelineRequest::overrides`](super::PipelineRequest::overrides).
     pub overrides: &'a [(&'a str, f64)],
 }
 

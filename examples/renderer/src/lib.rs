@@ -590,7 +590,7 @@ fn mesh_hit(origin: r::Vec3, ray: r::Vec3, q: r::Vec3) -> Option<(f64, r::Vec3)>
     best
 }
 
-/// [`reference`] with the geometry and the target chosen: the analytic spheres or the triangles
+/// [`reference()`] with the geometry and the target chosen: the analytic spheres or the triangles
 /// the GPU draws, exact colours or 8-bit ones between draws. Each choice emulates one thing the
 /// GPU does besides the shader's arithmetic, so that its share of the difference can be measured.
 /// The silhouette mask is always the analytic one, so every choice compares the same pixels.

@@ -2,10 +2,10 @@
     #[repr(C)]
     #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Inner {
-        /// `x`: f32 at offset 0.
+        /// `x`: `f32` at offset 0.
         pub x: f32,
         pub _pad0: [u8; 12],
-        /// `y`: vec3<f32> at offset 16.
+        /// `y`: `vec3<f32>` at offset 16.
         pub y: [f32; 3],
         pub _pad1: [u8; 4],
     }
@@ -16,11 +16,11 @@
     #[repr(C)]
     #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Light {
-        /// `color`: vec3<f32> at offset 0.
+        /// `color`: `vec3<f32>` at offset 0.
         pub color: [f32; 3],
-        /// `intensity`: f32 at offset 12.
+        /// `intensity`: `f32` at offset 12.
         pub intensity: f32,
-        /// `dir`: vec3<f32> at offset 16.
+        /// `dir`: `vec3<f32>` at offset 16.
         pub dir: [f32; 3],
         pub _pad0: [u8; 4],
     }
@@ -39,25 +39,25 @@
     #[repr(C)]
     #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Block {
-        /// `a`: vec3<f32> at offset 0.
+        /// `a`: `vec3<f32>` at offset 0.
         pub a: [f32; 3],
-        /// `b`: f32 at offset 12.
+        /// `b`: `f32` at offset 12.
         pub b: f32,
-        /// `c`: mat3x3<f32> at offset 16.
+        /// `c`: `mat3x3<f32>` at offset 16.
         pub c: [[f32; 4]; 3],
-        /// `d`: array<vec4<f32>, 3> at offset 64.
+        /// `d`: `array<vec4<f32>, 3>` at offset 64.
         pub d: [[f32; 4]; 3],
-        /// `e`: vec2<f32> at offset 112.
+        /// `e`: `vec2<f32>` at offset 112.
         pub e: [f32; 2],
         pub _pad0: [u8; 8],
-        /// `f`: Inner at offset 128.
+        /// `f`: `Inner` at offset 128.
         pub f: Inner,
-        /// `g`: f32 at offset 160.
+        /// `g`: `f32` at offset 160.
         pub g: f32,
         pub _pad1: [u8; 12],
-        /// `lights`: array<Light, 4> at offset 176.
+        /// `lights`: `array<Light, 4>` at offset 176.
         pub lights: [Light; 4],
-        /// `v3s`: array<vec3<f32>, 2> at offset 304.
+        /// `v3s`: `array<vec3<f32>, 2>` at offset 304.
         pub v3s: [Block_v3s_Element; 2],
     }
     const _: () = assert!(::core::mem::size_of::<Block>() == 336);
@@ -74,13 +74,13 @@
     #[repr(C)]
     #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Cascade {
-        /// `view_proj`: mat4x4<f32> at offset 0.
+        /// `view_proj`: `mat4x4<f32>` at offset 0.
         pub view_proj: [[f32; 4]; 4],
-        /// `split`: vec2<f32> at offset 64.
+        /// `split`: `vec2<f32>` at offset 64.
         pub split: [f32; 2],
-        /// `index`: u32 at offset 72.
+        /// `index`: `u32` at offset 72.
         pub index: u32,
-        /// `flags`: i32 at offset 76.
+        /// `flags`: `i32` at offset 76.
         pub flags: i32,
     }
     const _: () = assert!(::core::mem::size_of::<Cascade>() == 80);
@@ -92,15 +92,15 @@
     #[repr(C)]
     #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Shadow {
-        /// `uv`: mat2x2<f32> at offset 0.
+        /// `uv`: `mat2x2<f32>` at offset 0.
         pub uv: [[f32; 2]; 2],
-        /// `cascades`: array<Cascade, 2> at offset 16.
+        /// `cascades`: `array<Cascade, 2>` at offset 16.
         pub cascades: [Cascade; 2],
-        /// `counts`: vec3<u32> at offset 176.
+        /// `counts`: `vec3<u32>` at offset 176.
         pub counts: [u32; 3],
-        /// `bias`: f32 at offset 188.
+        /// `bias`: `f32` at offset 188.
         pub bias: f32,
-        /// `inner`: Inner at offset 192.
+        /// `inner`: `Inner` at offset 192.
         pub inner: Inner,
     }
     const _: () = assert!(::core::mem::size_of::<Shadow>() == 224);
@@ -113,11 +113,11 @@
     #[repr(C)]
     #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Particle {
-        /// `position`: vec3<f32> at offset 0.
+        /// `position`: `vec3<f32>` at offset 0.
         pub position: [f32; 3],
-        /// `age`: f32 at offset 12.
+        /// `age`: `f32` at offset 12.
         pub age: f32,
-        /// `velocity`: vec3<f32> at offset 16.
+        /// `velocity`: `vec3<f32>` at offset 16.
         pub velocity: [f32; 3],
         pub _pad0: [u8; 4],
     }
@@ -129,10 +129,10 @@
     #[repr(C)]
     #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Particles {
-        /// `count`: u32 at offset 0.
+        /// `count`: `u32` at offset 0.
         pub count: u32,
         pub _pad0: [u8; 4],
-        /// `scale`: vec2<f32> at offset 8.
+        /// `scale`: `vec2<f32>` at offset 8.
         pub scale: [f32; 2],
         // `items`: array<Particle> from offset 16, stride 32, elements `Particle`: not a field (its length is the buffer's).
     }
@@ -178,10 +178,10 @@ pub mod test_halfblocks {
     #[repr(C)]
     #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct HalfPair {
-        /// `a`: f16 at offset 0.
+        /// `a`: `f16` at offset 0.
         pub a: u16,
         pub _pad0: [u8; 6],
-        /// `b`: vec3<f16> at offset 8.
+        /// `b`: `vec3<f16>` at offset 8.
         pub b: [u16; 3],
         pub _pad1: [u8; 2],
     }
@@ -192,22 +192,22 @@ pub mod test_halfblocks {
     #[repr(C)]
     #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
     pub struct Halves {
-        /// `h`: f16 at offset 0.
+        /// `h`: `f16` at offset 0.
         pub h: u16,
         pub _pad0: [u8; 2],
-        /// `v2`: vec2<f16> at offset 4.
+        /// `v2`: `vec2<f16>` at offset 4.
         pub v2: [u16; 2],
-        /// `v3`: vec3<f16> at offset 8.
+        /// `v3`: `vec3<f16>` at offset 8.
         pub v3: [u16; 3],
         pub _pad1: [u8; 2],
-        /// `v4`: vec4<f16> at offset 16.
+        /// `v4`: `vec4<f16>` at offset 16.
         pub v4: [u16; 4],
-        /// `tail`: f32 at offset 24.
+        /// `tail`: `f32` at offset 24.
         pub tail: f32,
         pub _pad2: [u8; 4],
-        /// `pair`: HalfPair at offset 32.
+        /// `pair`: `HalfPair` at offset 32.
         pub pair: HalfPair,
-        /// `last`: f16 at offset 48.
+        /// `last`: `f16` at offset 48.
         pub last: u16,
         pub _pad3: [u8; 6],
     }
