@@ -6,7 +6,7 @@ use super::emit::{BuiltPass, pass_manifest, write_failure};
 use super::jobs::{Job, PassJobs, pass_jobs};
 use super::plan::{PassWork, pass_key};
 use super::session::Session;
-use super::sources::{self, Front, ModuleAsk, PassSources};
+use super::sources::{Front, ModuleAsk, PassSources};
 use super::{BuildOptions, COMPILER_REVISION, NAGA_VERSION};
 use crate::catalog::Catalog;
 use crate::compile::Mapper;
@@ -16,7 +16,7 @@ use crate::manifest::{Backend, FileRef, PerBackend};
 use crate::preprocess::Includes;
 use crate::reflect::{SpirvGap, StageReflection};
 use crate::source::SourceStore;
-use crate::store::{Cache, CachedStage, ModuleBytes, PassIndex, hash, shared};
+use crate::store::{Cache, CachedStage, ModuleBytes, PassIndex, hash};
 use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -99,12 +99,10 @@ pub(super) fn build_pass(
         index: &index,
         shared_fronts: OnceLock::new(),
     };
-    let mut fronts: Vec<Front> = jobs.par_iter().map(|job| sources::front(&sources, job)).collect();
+    let mut fronts: Vec<Front> = jobs.par_iter().map(|job| session.sources.front(&sources, job)).collect();
     // What was parsed now is published for every other build of the pass.
-    if let Some(dir) = &options.cache_dir
-        && fronts.iter().any(|f| matches!(f, Ok((_, Some(_)))))
-    {
-        shared::publish_layouts(dir, &key, &declared_by_text(&jobs, &fronts));
+    if fronts.iter().any(|f| matches!(f, Ok((_, Some(_))))) {
+        session.sources.publish_fronts(&key, &declared_by_text(&jobs, &fronts));
     }
     let layout = lay_out(&jobs, &fronts, store, &options.groups, &mut diagnostics);
     let requests: usize = jobs.iter().map(|j| j.requests).sum();
@@ -117,7 +115,7 @@ pub(super) fn build_pass(
                 Ok((declared, parsed)) => layout.as_ref().map(|layout| {
                     let key = stage_key(job, declared, layout, options);
                     let mut ask = ModuleAsk { job, key: &key, layout, parsed: parsed.take() };
-                    sources::module(&sources, &mut ask).map(|built| (built, key))
+                    session.sources.module(&sources, &mut ask).map(|built| (built, key))
                 }),
                 Err(_) => None,
             };
@@ -152,15 +150,7 @@ pub(super) fn build_pass(
                 match built {
                     Built::Compiled(_) => {
                         compiled_count += 1;
-                        if let Some(dir) = &options.cache_dir {
-                            shared::publish_object(
-                                dir,
-                                &key,
-                                super::compiler_id(),
-                                &module.modules,
-                                &module.reflection,
-                            );
-                        }
+                        session.sources.publish_module(&key, module);
                     }
                     Built::Shared(_) => shared += 1,
                     _ => reused += 1,

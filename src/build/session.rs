@@ -4,6 +4,7 @@
 
 use super::BuildOptions;
 use super::pass::Compiled;
+use super::sources::Sources;
 use crate::compile::bind::Declared;
 use crate::store::Cache;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -12,6 +13,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// passes compiled and parsed lately.
 pub(super) struct Session<'a> {
     pub cache: Cache,
+    /// Where fronts and modules are looked for before naga makes them.
+    pub sources: Sources,
     pub progress: Progress<'a>,
     /// Only texts more than one pass has are kept for sharing.
     pub texts: TextCounts,
@@ -32,6 +35,7 @@ impl<'a> Session<'a> {
     ) -> Session<'a> {
         Session {
             cache: Cache::new(&options.output, options.write),
+            sources: Sources::new(options),
             progress: Progress { report, done: AtomicUsize::new(0), total },
             texts: TextCounts::new(RECENT_SHARDS),
             compiled: Recent::new(SHARED_MODULE_BYTES, RECENT_SHARDS),

@@ -3,8 +3,9 @@
 //! builds and shards compile alike (a shard is a whole build of the passes it owns), so there is
 //! one list of each; a merge compiles nothing and has none.
 //!
-//! A new source is a type implementing [`FrontSource`] or [`ModuleSource`] and its place in
-//! [`FRONTS`] or [`MODULES`].
+//! A new source is a type implementing [`FrontSource`] or [`ModuleSource`] (with `publish`
+//! where it keeps what naga made), holding its own configuration, and its place in
+//! [`Sources::new`], made once per build from its options.
 
 use super::BuildOptions;
 use super::jobs::Job;
@@ -17,6 +18,7 @@ use crate::diagnostics::Diagnostic;
 use crate::source::SourceStore;
 use crate::store::{ModuleBytes, PassIndex, hash, shared};
 use std::collections::BTreeMap;
+use std::path::PathBuf;
 use std::sync::{Arc, OnceLock};
 
 /// Outcome of a job's front end: its declared resources, and the parsed module when it had to be
@@ -35,9 +37,12 @@ pub(super) struct PassSources<'a> {
 }
 
 /// A source of fronts.
-pub(super) trait FrontSource: Sync {
+pub(super) trait FrontSource: Send + Sync {
     /// The resources `job`'s text declares, if this source knows them.
     fn front(&self, pass: &PassSources, job: &Job) -> Option<Front>;
+
+    /// Keeps what naga parsed for a pass (`declared`, by text), for later builds.
+    fn publish(&self, _pass_key: &str, _declared: &BTreeMap<String, Vec<Declared>>) {}
 }
 
 /// A stage module wanted: its job, its content key, its pass's layout, and the module its front
@@ -50,25 +55,63 @@ pub(super) struct ModuleAsk<'a> {
 }
 
 /// A source of stage modules.
-pub(super) trait ModuleSource: Sync {
+pub(super) trait ModuleSource: Send + Sync {
     /// The module asked for, if this source has it (or an error when making it failed).
     fn module(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>>;
+
+    /// Keeps a module naga compiled under its content key, for later builds.
+    fn publish(&self, _key: &str, _compiled: &Compiled) {}
 }
 
-/// Where fronts are looked for, in order, before naga parses the text.
-pub(super) const FRONTS: &[&dyn FrontSource] = &[&OutputCache, &SharedCache, &OtherPasses];
-
-/// Where stage modules are looked for, in order, before naga compiles them.
-pub(super) const MODULES: &[&dyn ModuleSource] = &[&OutputCache, &SharedCache, &OtherPasses];
-
-/// The first front a source has, or naga's parse.
-pub(super) fn front(pass: &PassSources, job: &Job) -> Front {
-    FRONTS.iter().find_map(|source| source.front(pass, job)).unwrap_or_else(|| Naga.parse(pass, job))
+/// The sources a build asks, in order, before naga parses or compiles: made once from its
+/// options, each holding its own configuration (the shared cache its folder).
+pub(super) struct Sources {
+    fronts: Vec<Arc<dyn FrontSource>>,
+    modules: Vec<Arc<dyn ModuleSource>>,
 }
 
-/// The first module a source has, or naga's compile.
-pub(super) fn module(pass: &PassSources, ask: &mut ModuleAsk) -> Result<Built, Diagnostic> {
-    MODULES.iter().find_map(|source| source.module(pass, ask)).unwrap_or_else(|| Naga.compile(pass, ask))
+impl Sources {
+    /// The output folder's cache, the shared cache where the build has one, then what the
+    /// build's other passes made.
+    pub(super) fn new(options: &BuildOptions) -> Sources {
+        let shared = options.cache_dir.clone().map(|dir| Arc::new(SharedCache { dir }));
+        let mut fronts: Vec<Arc<dyn FrontSource>> = vec![Arc::new(OutputCache)];
+        let mut modules: Vec<Arc<dyn ModuleSource>> = vec![Arc::new(OutputCache)];
+        if let Some(shared) = shared {
+            fronts.push(shared.clone());
+            modules.push(shared);
+        }
+        fronts.push(Arc::new(OtherPasses));
+        modules.push(Arc::new(OtherPasses));
+        Sources { fronts, modules }
+    }
+
+    /// The first front a source has, or naga's parse.
+    pub(super) fn front(&self, pass: &PassSources, job: &Job) -> Front {
+        self.fronts.iter().find_map(|source| source.front(pass, job)).unwrap_or_else(|| Naga.parse(pass, job))
+    }
+
+    /// The first module a source has, or naga's compile.
+    pub(super) fn module(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Result<Built, Diagnostic> {
+        self.modules
+            .iter()
+            .find_map(|source| source.module(pass, ask))
+            .unwrap_or_else(|| Naga.compile(pass, ask))
+    }
+
+    /// Offers what naga parsed for a pass to every source that keeps fronts.
+    pub(super) fn publish_fronts(&self, pass_key: &str, declared: &BTreeMap<String, Vec<Declared>>) {
+        for source in &self.fronts {
+            source.publish(pass_key, declared);
+        }
+    }
+
+    /// Offers a module naga compiled to every source that keeps modules.
+    pub(super) fn publish_module(&self, key: &str, compiled: &Compiled) {
+        for source in &self.modules {
+            source.publish(key, compiled);
+        }
+    }
 }
 
 /// What the last build into the output folder left for the pass (`.cache/pass`).
@@ -87,22 +130,30 @@ impl ModuleSource for OutputCache {
     }
 }
 
-/// The module cache builds share (`cache_dir`).
-struct SharedCache;
+/// The module cache builds share: a folder (`cache_dir`).
+struct SharedCache {
+    dir: PathBuf,
+}
 
 impl FrontSource for SharedCache {
     fn front(&self, pass: &PassSources, job: &Job) -> Option<Front> {
-        let dir = pass.options.cache_dir.as_ref()?;
-        let fronts = pass.shared_fronts.get_or_init(|| shared::read_layouts(dir, pass.pass_key));
+        let fronts = pass.shared_fronts.get_or_init(|| shared::read_layouts(&self.dir, pass.pass_key));
         fronts.get(&job.front_key()).map(|declared| Ok((declared.clone(), None)))
+    }
+
+    fn publish(&self, pass_key: &str, declared: &BTreeMap<String, Vec<Declared>>) {
+        shared::publish_layouts(&self.dir, pass_key, declared);
     }
 }
 
 impl ModuleSource for SharedCache {
-    fn module(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>> {
-        let dir = pass.options.cache_dir.as_ref()?;
-        let (modules, reflection) = shared::fetch_object(dir, ask.key, super::compiler_id())?;
+    fn module(&self, _pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>> {
+        let (modules, reflection) = shared::fetch_object(&self.dir, ask.key, super::compiler_id())?;
         Some(Ok(Built::Fetched(Arc::new(Compiled { modules, reflection }))))
+    }
+
+    fn publish(&self, key: &str, compiled: &Compiled) {
+        shared::publish_object(&self.dir, key, super::compiler_id(), &compiled.modules, &compiled.reflection);
     }
 }
 
