@@ -90,12 +90,7 @@ fn dispatch_with(
         contents: &bytes,
         usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
     });
-    let read = device.create_buffer(&wgpu::BufferDescriptor {
-        label: None,
-        size: bytes.len() as u64,
-        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-        mapped_at_creation: false,
-    });
+    let read = crate::support::readback(device, bytes.len() as u64);
     // Bindings by name, where the manifest's layout put them.
     let group = &pass.layout[0];
     let entries: Vec<wgpu::BindGroupEntry> = group
@@ -324,16 +319,7 @@ fn a_kernel_reads_one_storage_texture_and_writes_another() {
     let size = wgpu::Extent3d { width: 8, height: 8, depth_or_array_layers: 1 };
     let values: Vec<f32> = (0..64).map(|i| i as f32 / 63.0).collect();
     let texture = |format, usage| {
-        device.create_texture(&wgpu::TextureDescriptor {
-            label: None,
-            size,
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format,
-            usage: wgpu::TextureUsages::STORAGE_BINDING | usage,
-            view_formats: &[],
-        })
+        crate::support::texture(device, size, format, wgpu::TextureUsages::STORAGE_BINDING | usage)
     };
     let source = texture(wgpu::TextureFormat::R32Float, wgpu::TextureUsages::COPY_DST);
     let target = texture(wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureUsages::COPY_SRC);
@@ -363,12 +349,7 @@ fn a_kernel_reads_one_storage_texture_and_writes_another() {
         layout: &layout.groups[group.group as usize],
         entries: &entries,
     });
-    let read = device.create_buffer(&wgpu::BufferDescriptor {
-        label: None,
-        size: 256 * 8,
-        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-        mapped_at_creation: false,
-    });
+    let read = crate::support::readback(device, 256 * 8);
     let mut encoder = device.create_command_encoder(&Default::default());
     {
         let mut compute = encoder.begin_compute_pass(&Default::default());

@@ -92,12 +92,21 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         });
         {render_pass}
     }
+    queue.submit([encoder.finish()]);
+    let [r, g, b, a] = pixel(&device, &queue, &target)?;
+    println!("pixel {r} {g} {b} {a}");
+    first_shader_pixels(&device, &queue)
+}
+
+/// The pixel at (4, 4) of an 8 x 8 `Rgba8Unorm` target, read back.
+fn pixel(device: &wgpu::Device, queue: &wgpu::Queue, target: &wgpu::Texture) -> Result<[u8; 4], Box<dyn std::error::Error>> {
     let readback = device.create_buffer(&wgpu::BufferDescriptor {
         label: None,
         size: 256 * 8,
         usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
         mapped_at_creation: false,
     });
+    let mut encoder = device.create_command_encoder(&Default::default());
     encoder.copy_texture_to_buffer(
         target.as_image_copy(),
         wgpu::TexelCopyBufferInfo { buffer: &readback, layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(256), rows_per_image: None } },
@@ -107,9 +116,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     readback.map_async(wgpu::MapMode::Read, .., |_| {});
     device.poll(wgpu::PollType::wait_indefinitely())?;
     let bytes = readback.get_mapped_range(..)?;
-    let pixel = &bytes[4 * 256 + 4 * 4..4 * 256 + 4 * 4 + 4];
-    println!("pixel {} {} {} {}", pixel[0], pixel[1], pixel[2], pixel[3]);
-    first_shader_pixels(&device, &queue)
+    Ok(bytes[4 * 256 + 4 * 4..4 * 256 + 4 * 4 + 4].try_into()?)
 }
 
 /// docs/first-shader.md's `draw_flat` for each material named on the command line, run in the
@@ -121,23 +128,7 @@ fn first_shader_pixels(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<(),
     for material in arguments {
         let target = texture(device, wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC);
         draw_flat(device, queue, &target.create_view(&Default::default()), &material)?;
-        let readback = device.create_buffer(&wgpu::BufferDescriptor {
-            label: None,
-            size: 256 * 8,
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        });
-        let mut encoder = device.create_command_encoder(&Default::default());
-        encoder.copy_texture_to_buffer(
-            target.as_image_copy(),
-            wgpu::TexelCopyBufferInfo { buffer: &readback, layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(256), rows_per_image: None } },
-            target.size(),
-        );
-        queue.submit([encoder.finish()]);
-        readback.map_async(wgpu::MapMode::Read, .., |_| {});
-        device.poll(wgpu::PollType::wait_indefinitely())?;
-        let bytes = readback.get_mapped_range(..)?;
-        let pixel = &bytes[4 * 256 + 4 * 4..4 * 256 + 4 * 4 + 4];
+        let pixel = pixel(device, queue, &target)?;
         println!("first-shader {material} {} {} {} {}", pixel[0], pixel[1], pixel[2], pixel[3]);
     }
     Ok(())

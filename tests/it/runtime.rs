@@ -56,16 +56,12 @@ pub(crate) fn draw_pass(
     let device = &gpu.device;
     let size = wgpu::Extent3d { width: 4, height: 4, depth_or_array_layers: 1 };
     let texture = |format, usage| {
-        device.create_texture(&wgpu::TextureDescriptor {
-            label: None,
+        crate::support::texture(
+            device,
             size,
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
             format,
-            usage: usage | wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-            view_formats: &[],
-        })
+            usage | wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        )
     };
     let color = texture(targets.colors[0], wgpu::TextureUsages::empty());
     let depth = texture(wgpu::TextureFormat::Depth32Float, wgpu::TextureUsages::empty());
@@ -77,15 +73,8 @@ pub(crate) fn draw_pass(
         usage: wgpu::BufferUsages::VERTEX,
     });
     // Four rows of 256 bytes (the copy alignment); both formats have 4 bytes a pixel.
-    let readback = || {
-        device.create_buffer(&wgpu::BufferDescriptor {
-            label: None,
-            size: 256 * 4,
-            usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-            mapped_at_creation: false,
-        })
-    };
-    let (color_out, depth_out) = (readback(), readback());
+    let (color_out, depth_out) =
+        (crate::support::readback(device, 256 * 4), crate::support::readback(device, 256 * 4));
     let mut encoder = device.create_command_encoder(&Default::default());
     {
         let (color_view, depth_view) =
@@ -225,18 +214,24 @@ fn every_variant_and_preset_of_the_bundled_project_gets_a_pipeline() {
         }
     }
     let targets = targets();
-    for (shader, pass, keywords, material) in &requests {
-        let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
-        let request = PipelineRequest {
-            shader,
-            pass: *pass,
-            keywords: &keywords,
-            material,
-            targets: &targets,
-            vertex_layout: None,
-            overrides: &[],
+    // A request's pipeline, from `runtime`.
+    let pipeline =
+        |runtime: &mut Runtime,
+         (shader, pass, keywords, material): &(String, usize, Vec<String>, MaterialManifest)| {
+            let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
+            let request = PipelineRequest {
+                shader,
+                pass: *pass,
+                keywords: &keywords,
+                material,
+                targets: &targets,
+                vertex_layout: None,
+                overrides: &[],
+            };
+            runtime.pipeline(&request).map_err(|e| format!("{shader} {keywords:?} {}: {e}", material.name))
         };
-        runtime.pipeline(&request).unwrap_or_else(|e| panic!("{shader} {keywords:?} {}: {e}", material.name));
+    for request in &requests {
+        pipeline(&mut runtime, request).unwrap_or_else(|e| panic!("{e}"));
     }
     println!(
         "{} requests, {} pipelines created on {} (wgpu pipeline cache: {cached})",
@@ -259,18 +254,7 @@ fn every_variant_and_preset_of_the_bundled_project_gets_a_pipeline() {
         };
         again.use_pipeline_cache(cache);
         // A pipeline made through the reloaded cache.
-        let (shader, pass, keywords, material) = &requests[0];
-        let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
-        let request = PipelineRequest {
-            shader,
-            pass: *pass,
-            keywords: &keywords,
-            material,
-            targets: &targets,
-            vertex_layout: None,
-            overrides: &[],
-        };
-        again.pipeline(&request).expect("a pipeline through the reloaded cache");
+        pipeline(&mut again, &requests[0]).expect("a pipeline through the reloaded cache");
         assert_eq!(again.pipelines_created(), 1);
     }
 }

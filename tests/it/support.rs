@@ -92,6 +92,35 @@ pub fn crate_tests(test: &str) -> bool {
     run
 }
 
+/// A one-level 2D texture of `size`.
+pub fn texture(
+    device: &wgpu::Device,
+    size: wgpu::Extent3d,
+    format: wgpu::TextureFormat,
+    usage: wgpu::TextureUsages,
+) -> wgpu::Texture {
+    device.create_texture(&wgpu::TextureDescriptor {
+        label: None,
+        size,
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage,
+        view_formats: &[],
+    })
+}
+
+/// A buffer of `size` bytes to copy results into and map for reading.
+pub fn readback(device: &wgpu::Device, size: u64) -> wgpu::Buffer {
+    device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size,
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    })
+}
+
 /// Reports a skipped check where it stays visible: straight to the process's stderr, which the
 /// test harness does not capture (a passing test's `println!` is hidden), numbered so that the
 /// run shows how many were skipped.
