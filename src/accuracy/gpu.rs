@@ -34,12 +34,18 @@ const EVALUATIONS: u32 = 256;
 /// dimension of workgroups allows (65,535 of 64), so that its times are not launch-bound.
 /// `KILN_ACCURACY_INVOCATIONS` sets another count (docs/accuracy.md).
 fn timing_invocations(device_type: wgpu::DeviceType) -> u32 {
+    let asked = std::env::var("KILN_ACCURACY_INVOCATIONS").ok().and_then(|v| v.parse().ok());
+    invocations_for(device_type, asked)
+}
+
+/// [`timing_invocations`] with the count asked for, if any (capped at what one dispatch holds).
+fn invocations_for(device_type: wgpu::DeviceType, asked: Option<u32>) -> u32 {
     let most = 65_535 * 64;
     let sized = match device_type {
         wgpu::DeviceType::Cpu => 64 * 1024,
         _ => most,
     };
-    std::env::var("KILN_ACCURACY_INVOCATIONS").ok().and_then(|v| v.parse().ok()).unwrap_or(sized).min(most)
+    asked.unwrap_or(sized).min(most)
 }
 
 /// The WGSL kiln emits for each kernel of the harness's variant with these keywords, and where
@@ -516,4 +522,21 @@ pub fn search(gpu: &Gpu) -> Result<Vec<(Formulation, super::Found)>, String> {
         found.push((formulation, super::search(formulation, &mut evaluate)));
     }
     Ok(found)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_gpu_gets_the_largest_dispatch_and_a_cpu_rasteriser_a_small_one() {
+        assert_eq!(invocations_for(wgpu::DeviceType::Cpu, None), 65_536);
+        for gpu in
+            [wgpu::DeviceType::DiscreteGpu, wgpu::DeviceType::IntegratedGpu, wgpu::DeviceType::VirtualGpu]
+        {
+            assert_eq!(invocations_for(gpu, None), 4_194_240);
+        }
+        assert_eq!(invocations_for(wgpu::DeviceType::Cpu, Some(1_000)), 1_000);
+        assert_eq!(invocations_for(wgpu::DeviceType::DiscreteGpu, Some(u32::MAX)), 4_194_240, "capped");
+    }
 }

@@ -273,3 +273,32 @@ impl std::hash::Hash for OverrideConstant {
         (&self.name, self.id, &self.ty, self.default.map(f64::to_bits), self.required).hash(state);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_closed_set_reads_its_names_and_refuses_any_other() {
+        let read = |json: &str| serde_json::from_str::<Resource>(json);
+        let storage = r#"{"kind": "storage_texture", "dimension": "2d_array", "format": "rgba8unorm", "access": "read"}"#;
+        assert_eq!(
+            read(storage).expect("WGSL's names"),
+            Resource::StorageTexture {
+                dimension: ViewDimension::D2Array,
+                format: TexelFormat::Rgba8Unorm,
+                access: StorageAccess::Read
+            }
+        );
+        // What schema 7 wrote for a `read` texture: refused, naming the set.
+        let old = storage.replace(r#""read""#, r#""storageaccess(load)""#);
+        let error = read(&old).expect_err("not an access mode").to_string();
+        assert!(error.contains("storageaccess(load)") && error.contains("read_write"), "{error}");
+        assert!(read(&storage.replace("2d_array", "4d")).is_err());
+        // Every value writes the name it reads back from.
+        for &format in TexelFormat::ALL {
+            let json = serde_json::to_string(&format).expect("writes");
+            assert_eq!(serde_json::from_str::<TexelFormat>(&json).expect("reads"), format, "{json}");
+        }
+    }
+}
