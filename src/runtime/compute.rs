@@ -2,19 +2,19 @@
 //! per (module, layout, `override` values) by the same runtime, usage log and reload as render
 //! pipelines, and the workgroup count for a problem size.
 
-use super::RuntimeError;
 use super::overrides::{ConstantRequest, stage_constants};
-use super::pipelines::{Runtime, constant_bits, logged_variant, shader_module, validated, wgpu_constants};
+use super::pipelines::{Runtime, constant_bits, hash_overrides, request_key, validated, wgpu_constants};
+use super::{RuntimeError, VariantId};
+use std::hash::Hash as _;
 use std::sync::Arc;
 
 /// What a dispatch needs a compute pipeline for.
 pub struct KernelRequest<'a> {
-    /// The compute shader's name (a `.compute` file's stem).
-    pub shader: &'a str,
+    /// The compute shader's variant ([`Runtime::variant`] of its pass 0, looked up once), with
+    /// its `dynamic_branch` keywords.
+    pub variant: VariantId,
     /// The kernel (`#pragma kernel NAME`).
     pub kernel: &'a str,
-    /// The variant's keywords (the renderer's global ones and its own), `dynamic_branch` ones too.
-    pub keywords: &'a [&'a str],
     /// Values of the module's own `override` constants, as [`PipelineRequest::overrides`](super::PipelineRequest::overrides).
     pub overrides: &'a [(&'a str, f64)],
 }
@@ -50,15 +50,22 @@ pub(super) struct KernelKey {
 
 impl Runtime {
     /// The compute pipeline of a kernel of a compute shader's variant, created the first time it
-    /// is asked for (the variant recorded in the usage log, as for render pipelines).
-    pub fn kernel(&mut self, request: &KernelRequest) -> Result<Kernel, RuntimeError> {
-        let shader = request.shader;
-        let facts = self.pass_facts(shader, 0)?;
+    /// is asked for; asked for again, it is found by the request's hash, allocating nothing.
+    pub fn kernel(&self, request: &KernelRequest) -> Result<Kernel, RuntimeError> {
         let library = &self.library;
-        let variant = logged_variant(library, &mut self.usage, shader, 0, request.keywords)?;
-        let pass = library.pass(shader, 0)?;
+        let pass = library.pass_of(request.variant.pass())?;
+        let request_key = request_key(|hasher| {
+            (request.variant, request.kernel).hash(hasher);
+            hash_overrides(request.overrides, hasher);
+        });
+        if let Some(kernel) = self.made().kernel_requests.get(&request_key) {
+            return Ok(kernel.clone());
+        }
+        let shader = library.shader_name(request.variant.pass());
+        let facts = self.pass_facts(request.variant.pass())?;
+        let variant = library.variant_of(request.variant)?;
         let layout_error =
-            |message: String| RuntimeError::Layout { shader: shader.to_string(), pass: 0, message };
+            |message: String| RuntimeError::Layout { shader: shader.to_string(), pass: pass.index, message };
         let Some(index) = pass.kernels.iter().position(|k| k == request.kernel) else {
             return Err(RuntimeError::UnknownKernel {
                 shader: shader.to_string(),
@@ -72,8 +79,9 @@ impl Runtime {
         let module = variant.kernels.get(index).copied().flatten();
         let stage =
             module.map(|m| pass.stage(m)).ok_or_else(|| layout_error("the kernel was not built".into()))?;
+        let dynamic: Vec<&str> = library.dynamic_keywords(request.variant)?.collect();
         let constants = stage_constants(
-            &ConstantRequest { shader, pass, keywords: request.keywords, overrides: request.overrides },
+            &ConstantRequest { shader, pass, keywords: &dynamic, overrides: request.overrides },
             std::slice::from_ref(&Some(stage)),
         )?;
         // A size an `override` gives is that constant's value in this pipeline.
@@ -93,36 +101,43 @@ impl Runtime {
             layout: facts.layout_key,
             constants: constant_bits(&constants).remove(0),
         };
-        if let Some(pipeline) = self.kernels.get(&key) {
-            return Ok(Kernel { pipeline: pipeline.clone(), workgroup_size });
-        }
-        let module =
-            shader_module(&self.device, library, &mut self.modules, shader, &stage).map_err(layout_error)?;
-        let pipeline = validated(&self.device, |device| {
-            device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                label: Some(&format!("{shader} kernel {} [{}]", request.kernel, variant.keywords.join(" "))),
-                layout: Some(&facts.layout.pipeline),
-                module: &module,
-                entry_point: Some(request.kernel),
-                compilation_options: wgpu::PipelineCompilationOptions {
-                    constants: &wgpu_constants(&constants[0]),
-                    ..Default::default()
-                },
-                cache: self.wgpu_cache.as_ref(),
-            })
-        })
-        .map_err(layout_error)?;
-        let pipeline = Arc::new(pipeline);
-        self.created += 1;
-        self.kernels.insert(key, pipeline.clone());
-        Ok(Kernel { pipeline, workgroup_size })
+        let found = self.made().kernels.get(&key).cloned();
+        let pipeline = match found {
+            Some(pipeline) => pipeline,
+            None => {
+                let module = self.shader_module(shader, &stage).map_err(layout_error)?;
+                let pipeline = validated(&self.device, |device| {
+                    device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                        label: Some(&format!(
+                            "{shader} kernel {} [{}]",
+                            request.kernel,
+                            variant.keywords.join(" ")
+                        )),
+                        layout: Some(&facts.layout.pipeline),
+                        module: &module,
+                        entry_point: Some(request.kernel),
+                        compilation_options: wgpu::PipelineCompilationOptions {
+                            constants: &wgpu_constants(&constants[0]),
+                            ..Default::default()
+                        },
+                        cache: self.wgpu_cache.as_ref(),
+                    })
+                })
+                .map_err(layout_error)?;
+                self.count_created();
+                self.made().kernels.entry(key).or_insert_with(|| Arc::new(pipeline)).clone()
+            }
+        };
+        let kernel = Kernel { pipeline, workgroup_size };
+        self.made().kernel_requests.insert(request_key, kernel.clone());
+        Ok(kernel)
     }
 
     /// Creates, ahead of the first dispatch, the compute pipeline of each request (a scene's
     /// kernels, or those a usage log names). Returns how many kernel pipelines exist afterwards,
     /// or every request that failed.
-    pub fn warm_up_kernels(&mut self, requests: &[KernelRequest]) -> Result<usize, Vec<RuntimeError>> {
+    pub fn warm_up_kernels(&self, requests: &[KernelRequest]) -> Result<usize, Vec<RuntimeError>> {
         let errors: Vec<RuntimeError> = requests.iter().filter_map(|r| self.kernel(r).err()).collect();
-        if errors.is_empty() { Ok(self.kernels.len()) } else { Err(errors) }
+        if errors.is_empty() { Ok(self.made().kernels.len()) } else { Err(errors) }
     }
 }

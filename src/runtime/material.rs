@@ -2,7 +2,7 @@
 //! with its uniform blocks filled from the material's values, and its textures and samplers by
 //! property name from the renderer, so a renderer writes no binding code per material.
 
-use super::{Library, Runtime, RuntimeError};
+use super::{Library, PassId, Runtime, RuntimeError};
 use crate::manifest::MaterialManifest;
 use crate::reflect::Resource;
 use wgpu::util::DeviceExt;
@@ -62,20 +62,25 @@ impl MaterialBindGroup {
 }
 
 impl Runtime {
-    /// The material's bind group for pass `pass` of its shader: each uniform block filled by
+    /// The material's bind group for a pass of its shader: each uniform block filled by
     /// [`Library::material_uniform`], each texture and sampler from `textures` by property name.
-    /// A resource the renderer does not provide is an error naming it.
+    /// A resource the renderer does not provide, or a pass of another shader, is an error naming
+    /// it.
     pub fn material_bind_group(
-        &mut self,
+        &self,
         material: &MaterialManifest,
-        pass: usize,
+        pass: PassId,
         textures: &dyn MaterialTextures,
     ) -> Result<MaterialBindGroup, RuntimeError> {
-        let shader = material.shader.as_str();
-        let layout = self.pass_facts(shader, pass)?.layout;
-        let manifest = self.library.pass(shader, pass)?;
+        let shader = self.library.shader_name(pass);
+        let manifest = self.library.pass_of(pass)?;
+        let layout = self.pass_facts(pass)?.layout;
+        let pass = manifest.index;
         let layout_error =
             |message: String| RuntimeError::Layout { shader: shader.to_string(), pass, message };
+        if material.shader != shader {
+            return Err(layout_error(format!("`{}` is a material of `{}`", material.name, material.shader)));
+        }
         let entries =
             manifest.layout.iter().find(|g| g.group == MATERIAL_GROUP).map_or(&[][..], |g| &g.entries[..]);
         let group_layout = layout.groups.get(MATERIAL_GROUP as usize).ok_or_else(|| {
@@ -139,14 +144,15 @@ impl Runtime {
     /// binding numbers. A binding of the group without a buffer, or a name the group does not
     /// have, is an error naming it.
     pub fn buffer_bind_group(
-        &mut self,
-        shader: &str,
-        pass: usize,
+        &self,
+        pass: PassId,
         group: u32,
         buffers: &[(&str, &wgpu::Buffer)],
     ) -> Result<wgpu::BindGroup, RuntimeError> {
-        let layout = self.pass_facts(shader, pass)?.layout;
-        let manifest = self.library.pass(shader, pass)?;
+        let shader = self.library.shader_name(pass);
+        let manifest = self.library.pass_of(pass)?;
+        let layout = self.pass_facts(pass)?.layout;
+        let pass = manifest.index;
         let layout_error =
             |message: String| RuntimeError::Layout { shader: shader.to_string(), pass, message };
         let entries = manifest.layout.iter().find(|g| g.group == group).map_or(&[][..], |g| &g.entries[..]);

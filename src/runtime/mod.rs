@@ -32,6 +32,41 @@ use crate::material::ShaderEntries;
 use std::borrow::Cow;
 use std::collections::{BTreeSet, HashMap};
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU32, Ordering};
+
+/// A built pass, looked up once by [`Library::pass_id`] and given to every request after it.
+/// It holds positions in one build: after [`Runtime::reload`] swaps the build, a handle from the
+/// old one is refused ([`RuntimeError::StaleHandle`]) rather than read as another pass.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct PassId {
+    build: u32,
+    shader: u32,
+    pass: u32,
+}
+
+/// A built variant of a pass with its `dynamic_branch` keywords chosen, looked up once by
+/// [`Library::variant_id`] (or [`Runtime::variant`], which logs it) and given to every pipeline
+/// request after it: a draw looks nothing up by name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct VariantId {
+    pass: PassId,
+    variant: u32,
+    /// Bit i: the pass's i-th `dynamic_branch` keyword ([`Library::dynamic_keywords`]) is on.
+    dynamic: u64,
+}
+
+impl VariantId {
+    /// Its pass.
+    pub fn pass(&self) -> PassId {
+        self.pass
+    }
+}
+
+/// The most `dynamic_branch` keywords one pass may have (bits of [`VariantId`]).
+pub const MAX_DYNAMIC_KEYWORDS: usize = 64;
+
+/// Tells builds apart, so that a handle outlives no build it was made for.
+static BUILDS: AtomicU32 = AtomicU32::new(0);
 
 /// A module whose bytes in `packs` are not what `manifest` names, if any (checked in parallel).
 fn first_damaged(
@@ -58,6 +93,7 @@ fn same_build(manifest: &Manifest, materials: &[u8]) -> Result<(), String> {
 
 /// Why the runtime could not do what was asked.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 // Variant fields are named in each variant's message.
 #[allow(missing_docs)]
 pub enum RuntimeError {
@@ -127,9 +163,22 @@ pub enum RuntimeError {
     /// The pass's layout cannot be made on this device.
     #[error("`{shader}` pass {pass}: {message}")]
     Layout { shader: String, pass: usize, message: String },
+    /// A handle made for a build the runtime no longer holds.
+    #[error("a {0} handle from an earlier build (before `reload` swapped it): look it up again")]
+    StaleHandle(&'static str),
+    /// More `dynamic_branch` keywords than a handle holds.
+    #[error(
+        "`{shader}` pass {pass} has more than {MAX_DYNAMIC_KEYWORDS} `dynamic_branch` keywords; `{keyword}` is past them (split the pass's sets)"
+    )]
+    TooManyDynamicKeywords { shader: String, pass: usize, keyword: String },
     /// The last build failed (its diagnostics, from `errors.txt`).
     #[error("the build failed; the last good pipelines stay in use:\n{0}")]
     BuildFailed(String),
+}
+
+/// A pass's `dynamic_branch` keywords, in the order of a [`VariantId`]'s bits.
+fn dynamic_keywords(pass: &PassManifest) -> impl Iterator<Item = &String> {
+    pass.dynamic_sets().flat_map(|set| &set.keywords).filter(|k| *k != "_")
 }
 
 /// What values an override type holds, for [`RuntimeError::OverrideValue`].
@@ -145,6 +194,8 @@ fn type_hint(ty: &str) -> &'static str {
 /// materials; from an output folder or from the generated module.
 #[derive(Debug)]
 pub struct Library {
+    /// Which build this is, for handles ([`PassId`]).
+    build: u32,
     manifest: Manifest,
     packs: HashMap<String, Cow<'static, [u8]>>,
     materials: Vec<MaterialManifest>,
@@ -245,6 +296,7 @@ impl Library {
             }
         }
         Library {
+            build: BUILDS.fetch_add(1, Ordering::Relaxed),
             manifest,
             packs,
             materials,
@@ -293,40 +345,103 @@ impl Library {
         Ok((s, p.ok_or_else(|| RuntimeError::NoPass { shader: shader.to_string(), pass })?))
     }
 
-    /// The variant built with exactly these keywords (any order): strict, never a near match.
-    /// The pass's `dynamic_branch` keywords may be among them; they choose no variant.
+    /// A pass's handle, by its shader's name and its index (`PassManifest::index`, as `PASS_0`
+    /// of the generated module).
+    pub fn pass_id(&self, shader: &str, pass: usize) -> Result<PassId, RuntimeError> {
+        let (s, p) = self.pass_position(shader, pass)?;
+        Ok(PassId { build: self.build, shader: s as u32, pass: p as u32 })
+    }
+
+    /// The pass a handle stands for.
+    pub fn pass_of(&self, id: PassId) -> Result<&PassManifest, RuntimeError> {
+        if id.build != self.build {
+            return Err(RuntimeError::StaleHandle("pass"));
+        }
+        Ok(&self.manifest.shaders[id.shader as usize].passes[id.pass as usize])
+    }
+
+    /// The name of a handle's shader, for messages.
+    pub(crate) fn shader_name(&self, id: PassId) -> &str {
+        &self.manifest.shaders[id.shader as usize].name
+    }
+
+    /// The variant built with exactly these keywords (any order), as a handle: strict, never a
+    /// near match. The pass's `dynamic_branch` keywords may be among them: they choose no
+    /// variant but the pipeline's constants, at most one of each set.
+    pub fn variant_id(&self, pass: PassId, keywords: &[&str]) -> Result<VariantId, RuntimeError> {
+        let manifest = self.pass_of(pass)?;
+        let (shader, index) = (self.shader_name(pass), manifest.index);
+        // A keyword the pass does not have is a typo, not a variant to build.
+        let known = &manifest.keywords;
+        let dynamic: Vec<&String> = dynamic_keywords(manifest).collect();
+        if let Some(unknown) =
+            keywords.iter().find(|k| !known.iter().chain(dynamic.iter().copied()).any(|known| known == *k))
+        {
+            let names = known.iter().chain(dynamic.iter().copied()).map(String::as_str);
+            return Err(RuntimeError::UnknownKeyword {
+                shader: shader.to_string(),
+                pass: index,
+                keyword: unknown.to_string(),
+                suggestion: crate::diagnostics::closest(unknown, names),
+            });
+        }
+        for set in manifest.dynamic_sets() {
+            let mut on = keywords.iter().filter(|k| set.keywords.iter().any(|s| s == *k));
+            if let (Some(first), Some(second)) = (on.next(), on.next()) {
+                return Err(RuntimeError::TwoKeywordsOfOneSet {
+                    shader: shader.to_string(),
+                    pass: index,
+                    first: first.to_string(),
+                    second: second.to_string(),
+                });
+            }
+        }
+        let mut mask = 0u64;
+        for keyword in keywords {
+            let Some(bit) = dynamic.iter().position(|k| k == keyword) else { continue };
+            if bit >= MAX_DYNAMIC_KEYWORDS {
+                return Err(RuntimeError::TooManyDynamicKeywords {
+                    shader: shader.to_string(),
+                    pass: index,
+                    keyword: keyword.to_string(),
+                });
+            }
+            mask |= 1 << bit;
+        }
+        // `dynamic_branch` keywords choose constants, not variants.
+        let wanted: BTreeSet<String> =
+            keywords.iter().filter(|k| !manifest.is_dynamic(k)).map(|k| k.to_string()).collect();
+        match self.variants[&(pass.shader as usize, pass.pass as usize)].get(&wanted) {
+            Some(&v) => Ok(VariantId { pass, variant: v as u32, dynamic: mask }),
+            None => Err(RuntimeError::MissingVariant {
+                shader: shader.to_string(),
+                pass: index,
+                keywords: wanted.into_iter().collect(),
+            }),
+        }
+    }
+
+    /// The variant a handle stands for.
+    pub fn variant_of(&self, id: VariantId) -> Result<&VariantManifest, RuntimeError> {
+        Ok(&self.pass_of(id.pass)?.variants[id.variant as usize])
+    }
+
+    /// The `dynamic_branch` keywords a handle turns on.
+    pub fn dynamic_keywords(&self, id: VariantId) -> Result<impl Iterator<Item = &str>, RuntimeError> {
+        let pass = self.pass_of(id.pass)?;
+        let on = dynamic_keywords(pass).enumerate().filter(move |(bit, _)| id.dynamic & (1 << bit) != 0);
+        Ok(on.map(|(_, keyword)| keyword.as_str()))
+    }
+
+    /// The variant built with exactly these keywords (any order): [`Library::variant_id`] by
+    /// names, for a look at its manifest.
     pub fn variant(
         &self,
         shader: &str,
         pass: usize,
         keywords: &[&str],
     ) -> Result<&VariantManifest, RuntimeError> {
-        let (s, p) = self.pass_position(shader, pass)?;
-        // A keyword the pass does not have is a typo, not a variant to build.
-        let manifest = &self.manifest.shaders[s].passes[p];
-        let known = &manifest.keywords;
-        let dynamic = || manifest.dynamic_sets().flat_map(|set| &set.keywords).filter(|k| *k != "_");
-        if let Some(unknown) =
-            keywords.iter().find(|k| !known.iter().chain(dynamic()).any(|known| known == *k))
-        {
-            let names = known.iter().chain(dynamic()).map(String::as_str);
-            return Err(RuntimeError::UnknownKeyword {
-                shader: shader.to_string(),
-                pass,
-                keyword: unknown.to_string(),
-                suggestion: crate::diagnostics::closest(unknown, names),
-            });
-        }
-        // `dynamic_branch` keywords choose constants, not variants.
-        let wanted: BTreeSet<String> =
-            keywords.iter().filter(|k| !manifest.is_dynamic(k)).map(|k| k.to_string()).collect();
-        let found = self.variants[&(s, p)].get(&wanted);
-        let missing = || RuntimeError::MissingVariant {
-            shader: shader.to_string(),
-            pass,
-            keywords: wanted.iter().cloned().collect(),
-        };
-        found.map(|&v| &self.manifest.shaders[s].passes[p].variants[v]).ok_or_else(missing)
+        self.variant_of(self.variant_id(self.pass_id(shader, pass)?, keywords)?)
     }
 
     /// A module's bytes, from its pack.

@@ -13,6 +13,7 @@ pub(super) type StageConstants = Vec<Vec<(String, f64)>>;
 pub(super) struct ConstantRequest<'a> {
     pub shader: &'a str,
     pub pass: &'a PassManifest,
+    /// The `dynamic_branch` keywords on, at most one of each set ([`super::Library::variant_id`]).
     pub keywords: &'a [&'a str],
     pub overrides: &'a [(&'a str, f64)],
 }
@@ -51,18 +52,9 @@ pub(super) fn stage_constants(
     // Each dynamic set with the keyword it has on (the request's, else its default).
     let mut chosen: Vec<(&KeywordSetManifest, Option<&str>)> = Vec::new();
     for set in request.pass.dynamic_sets() {
-        let requested: Vec<&str> =
-            request.keywords.iter().copied().filter(|k| set.keywords.iter().any(|s| s == k)).collect();
-        if let [first, second, ..] = requested[..] {
-            return Err(RuntimeError::TwoKeywordsOfOneSet {
-                shader: shader.to_string(),
-                pass,
-                first: first.to_string(),
-                second: second.to_string(),
-            });
-        }
+        let requested = request.keywords.iter().copied().find(|k| set.keywords.iter().any(|s| s == k));
         let default = || set.keywords.first().filter(|_| !set.keywords.iter().any(|k| k == "_"));
-        chosen.push((set, requested.first().copied().or_else(|| default().map(String::as_str))));
+        chosen.push((set, requested.or_else(|| default().map(String::as_str))));
     }
     let mut constants: StageConstants = vec![Vec::new(); stages.len()];
     for (stage, constants) in stages.iter().zip(&mut constants) {

@@ -4,12 +4,14 @@
 
 use super::layout::{PassLayout, VertexLayout};
 use super::overrides::{ConstantRequest, stage_constants};
-use super::{Library, RuntimeError};
+use super::{Library, PassId, RuntimeError, VariantId, dynamic_keywords};
 use crate::manifest::{ERRORS_FILE, FILE_NAME, MaterialManifest, StageView};
 use std::collections::{HashMap, HashSet};
+use std::hash::{Hash, Hasher};
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
 
 /// The attachments a pipeline renders to.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
@@ -24,12 +26,8 @@ pub struct Targets {
 
 /// What a draw needs a pipeline for.
 pub struct PipelineRequest<'a> {
-    /// The shader's name.
-    pub shader: &'a str,
-    /// The pass's index (`PASS_0` in the generated module is 0).
-    pub pass: usize,
-    /// The variant: the material's keywords and the renderer's global ones.
-    pub keywords: &'a [&'a str],
+    /// The variant, with its `dynamic_branch` keywords: [`Runtime::variant`], looked up once.
+    pub variant: VariantId,
     /// Whose property values decide the render state (`Blend [_SrcBlend] [_DstBlend]`).
     pub material: &'a MaterialManifest,
     /// The render targets the pipeline draws into.
@@ -38,7 +36,7 @@ pub struct PipelineRequest<'a> {
     pub vertex_layout: Option<&'a VertexLayout>,
     /// Values of the modules' own `override` constants, by name (or `@id` in decimal), as wgpu
     /// takes them (a generated `PassNOverrides` struct's `constants()`); `dynamic_branch` keywords
-    /// come from `keywords`.
+    /// come with the variant.
     pub overrides: &'a [(&'a str, f64)],
 }
 
@@ -111,26 +109,6 @@ impl UsageLog {
     }
 }
 
-/// The variant with exactly these keywords, looked up once and recorded in the usage log (when
-/// there is one) as found or missing; a misspelt name is not recorded.
-pub(super) fn logged_variant<'l>(
-    library: &'l Library,
-    usage: &mut Option<UsageLog>,
-    shader: &str,
-    pass: usize,
-    keywords: &[&str],
-) -> Result<&'l crate::manifest::VariantManifest, RuntimeError> {
-    let found = library.variant(shader, pass, keywords);
-    // A typo (an unknown shader, pass or keyword) is no variant to build later: not logged.
-    let missing = matches!(found, Err(RuntimeError::MissingVariant { .. }));
-    if let Some(log) = usage
-        && (found.is_ok() || missing)
-    {
-        log.record(shader, pass, keywords, missing);
-    }
-    found
-}
-
 /// What a pass needs once, not per pipeline request: its layout and its render state, read.
 #[derive(Clone)]
 pub(super) struct PassFacts {
@@ -139,22 +117,36 @@ pub(super) struct PassFacts {
     state: Arc<super::state::PassState>,
 }
 
+/// What the runtime has made, behind one lock so that every method but configuration takes
+/// `&self` and pipelines can be asked for from several threads.
+#[derive(Default)]
+pub(super) struct Made {
+    /// By the hash of the pass's layout entry: passes laid out alike share one.
+    layouts: HashMap<blake3::Hash, Arc<PassLayout>>,
+    /// Per pass: what is worked out once.
+    passes: HashMap<PassId, PassFacts>,
+    /// By the hash of the module's WGSL.
+    pub(super) modules: HashMap<String, wgpu::ShaderModule>,
+    /// By a request's hash ([`request_key`]): a draw's lookup, allocating nothing.
+    requests: HashMap<[u8; 32], Arc<wgpu::RenderPipeline>>,
+    /// By what makes the pipeline: requests that come to one pipeline share it.
+    pipelines: HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>,
+    /// A dispatch's lookup, as `requests`.
+    pub(super) kernel_requests: HashMap<[u8; 32], super::Kernel>,
+    pub(super) kernels: HashMap<super::compute::KernelKey, Arc<wgpu::ComputePipeline>>,
+}
+
 /// A device's pipelines for one build, created once each and kept across reloads of unchanged
-/// modules.
+/// modules. Its methods take `&self` (it is `Sync`), except those that configure it or swap its
+/// build.
 pub struct Runtime {
     pub(super) device: wgpu::Device,
     pub(super) library: Library,
     /// The output folder the build came from, and its manifest's hash (for [`Runtime::reload`]).
     source: Option<(PathBuf, blake3::Hash)>,
-    /// By the hash of the pass's layout entry: passes laid out alike share one.
-    layouts: HashMap<blake3::Hash, Arc<PassLayout>>,
-    /// Per shader, per pass index: what is worked out once (looked up without allocating).
-    passes: HashMap<String, HashMap<usize, PassFacts>>,
-    pub(super) modules: HashMap<String, wgpu::ShaderModule>,
-    pipelines: HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>,
-    pub(super) kernels: HashMap<super::compute::KernelKey, Arc<wgpu::ComputePipeline>>,
-    pub(super) created: usize,
-    pub(super) usage: Option<UsageLog>,
+    made: Mutex<Made>,
+    created: AtomicUsize,
+    usage: Mutex<Option<UsageLog>>,
     pub(super) wgpu_cache: Option<wgpu::PipelineCache>,
 }
 
@@ -165,13 +157,9 @@ impl Runtime {
             device: device.clone(),
             library,
             source: None,
-            layouts: HashMap::new(),
-            passes: HashMap::new(),
-            modules: HashMap::new(),
-            pipelines: HashMap::new(),
-            kernels: HashMap::new(),
-            created: 0,
-            usage: None,
+            made: Mutex::default(),
+            created: AtomicUsize::new(0),
+            usage: Mutex::new(None),
             wgpu_cache: None,
         }
     }
@@ -190,9 +178,15 @@ impl Runtime {
         &self.library
     }
 
+    /// What the runtime has made; a panic on another thread while it held the lock left nothing
+    /// half-inserted, so the maps are used as they are.
+    pub(super) fn made(&self) -> MutexGuard<'_, Made> {
+        self.made.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+
     /// Records every variant asked for (and those missing) from now on.
     pub fn log_usage(&mut self, log: UsageLog) {
-        self.usage = Some(log);
+        *self.usage.get_mut().unwrap_or_else(PoisonError::into_inner) = Some(log);
     }
 
     /// Starts an empty wgpu pipeline cache for the pipelines made from now on. Returns false where
@@ -228,64 +222,109 @@ impl Runtime {
         self.wgpu_cache.as_ref().and_then(wgpu::PipelineCache::get_data)
     }
 
-    /// How many pipelines this runtime has created.
+    /// How many pipelines (render and compute) this runtime has created.
     pub fn pipelines_created(&self) -> usize {
-        self.created
+        self.created.load(Ordering::Relaxed)
     }
 
-    /// The variant with exactly these keywords, recorded in the usage log.
-    pub fn variant(
-        &mut self,
-        shader: &str,
-        pass: usize,
-        keywords: &[&str],
-    ) -> Result<&crate::manifest::VariantManifest, RuntimeError> {
-        logged_variant(&self.library, &mut self.usage, shader, pass, keywords)
+    pub(super) fn count_created(&self) {
+        self.created.fetch_add(1, Ordering::Relaxed);
+    }
+
+    /// A pass's handle ([`Library::pass_id`]).
+    pub fn pass(&self, shader: &str, pass: usize) -> Result<PassId, RuntimeError> {
+        self.library.pass_id(shader, pass)
+    }
+
+    /// The variant with exactly these keywords, as a handle for pipeline requests
+    /// ([`Library::variant_id`]), recorded in the usage log as found or missing; a misspelt
+    /// name is not recorded.
+    pub fn variant(&self, shader: &str, pass: usize, keywords: &[&str]) -> Result<VariantId, RuntimeError> {
+        let found = self.library.pass_id(shader, pass).and_then(|id| self.library.variant_id(id, keywords));
+        // A typo (an unknown shader, pass or keyword) is no variant to build later: not logged.
+        let missing = matches!(found, Err(RuntimeError::MissingVariant { .. }));
+        if found.is_ok() || missing {
+            let mut usage = self.usage.lock().unwrap_or_else(PoisonError::into_inner);
+            if let Some(log) = usage.as_mut() {
+                log.record(shader, pass, keywords, missing);
+            }
+        }
+        found
     }
 
     /// The bind group and pipeline layouts of a pass.
-    pub fn pass_layout(&mut self, shader: &str, pass: usize) -> Result<Arc<PassLayout>, RuntimeError> {
-        Ok(self.pass_facts(shader, pass)?.layout)
+    pub fn pass_layout(&self, pass: PassId) -> Result<Arc<PassLayout>, RuntimeError> {
+        Ok(self.pass_facts(pass)?.layout)
     }
 
     /// What is worked out once per pass: its layout (shared by passes laid out alike) and its
     /// render state, read.
-    pub(super) fn pass_facts(&mut self, shader: &str, pass: usize) -> Result<PassFacts, RuntimeError> {
-        if let Some(facts) = self.passes.get(shader).and_then(|p| p.get(&pass)) {
+    pub(super) fn pass_facts(&self, id: PassId) -> Result<PassFacts, RuntimeError> {
+        let manifest = self.library.pass_of(id)?;
+        let mut made = self.made();
+        if let Some(facts) = made.passes.get(&id) {
             return Ok(facts.clone());
         }
-        let manifest = self.library.pass(shader, pass)?;
         let layout_key = blake3::hash(serde_json::to_string(&manifest.layout).unwrap_or_default().as_bytes());
         let state = super::state::PassState::new(manifest);
-        let layout = match self.layouts.get(&layout_key) {
+        let layout = match made.layouts.get(&layout_key) {
             Some(layout) => layout.clone(),
             None => {
                 let layout = PassLayout::new(&self.device, &manifest.layout).map_err(|error| {
-                    RuntimeError::Layout { shader: shader.to_string(), pass, message: error.to_string() }
+                    RuntimeError::Layout {
+                        shader: self.library.shader_name(id).to_string(),
+                        pass: manifest.index,
+                        message: error.to_string(),
+                    }
                 })?;
                 let layout = Arc::new(layout);
-                self.layouts.insert(layout_key, layout.clone());
+                made.layouts.insert(layout_key, layout.clone());
                 layout
             }
         };
         let facts = PassFacts { layout_key, layout, state: Arc::new(state) };
-        self.passes.entry(shader.to_string()).or_default().insert(pass, facts.clone());
+        made.passes.insert(id, facts.clone());
         Ok(facts)
     }
 
-    /// The pipeline for a draw, created the first time it is asked for.
-    pub fn pipeline(&mut self, request: &PipelineRequest) -> Result<Arc<wgpu::RenderPipeline>, RuntimeError> {
-        let (shader, pass_index) = (request.shader, request.pass);
-        let facts = self.pass_facts(shader, pass_index)?;
+    /// The pipeline for a draw, created the first time it is asked for. A request asked for
+    /// before is found by its hash, allocating nothing.
+    pub fn pipeline(&self, request: &PipelineRequest) -> Result<Arc<wgpu::RenderPipeline>, RuntimeError> {
         let library = &self.library;
-        let variant = logged_variant(library, &mut self.usage, shader, pass_index, request.keywords)?;
-        let pass = library.pass(shader, pass_index)?;
-        let layout_error =
-            |message: String| RuntimeError::Layout { shader: shader.to_string(), pass: pass_index, message };
+        let pass = library.pass_of(request.variant.pass())?;
+        let (shader, pass_index) = (library.shader_name(request.variant.pass()), pass.index);
+        let facts = self.pass_facts(request.variant.pass())?;
         let state = facts
             .state
             .resolve(&|property| request.material.number(property))
             .map_err(|error| RuntimeError::State { shader: shader.to_string(), pass: pass_index, error })?;
+        let request_key = request_key(|hasher| {
+            (request.variant, &state, request.targets, request.vertex_layout).hash(hasher);
+            hash_overrides(request.overrides, hasher);
+        });
+        if let Some(pipeline) = self.made().requests.get(&request_key) {
+            return Ok(pipeline.clone());
+        }
+        let pipeline = self.create_pipeline(request, pass, &facts, state)?;
+        self.made().requests.insert(request_key, pipeline.clone());
+        Ok(pipeline)
+    }
+
+    /// A request's pipeline the first time it is asked for: the one of an earlier request that
+    /// comes to the same (its modules, layout, state, targets, vertex layout and constants), or a
+    /// new one.
+    fn create_pipeline(
+        &self,
+        request: &PipelineRequest,
+        pass: &crate::manifest::PassManifest,
+        facts: &PassFacts,
+        state: super::RenderState,
+    ) -> Result<Arc<wgpu::RenderPipeline>, RuntimeError> {
+        let library = &self.library;
+        let (shader, pass_index) = (library.shader_name(request.variant.pass()), pass.index);
+        let layout_error =
+            |message: String| RuntimeError::Layout { shader: shader.to_string(), pass: pass_index, message };
+        let variant = library.variant_of(request.variant)?;
         let stages = pass.variant_stages(variant);
         let [Some(vertex), fragment] = stages else {
             return Err(layout_error("the variant has no vertex stage".into()));
@@ -298,8 +337,9 @@ impl Runtime {
                 VertexLayout::packed(&inputs).map_err(|error| layout_error(error.to_string()))?
             }
         };
+        let dynamic: Vec<&str> = library.dynamic_keywords(request.variant)?.collect();
         let constants = stage_constants(
-            &ConstantRequest { shader, pass, keywords: request.keywords, overrides: request.overrides },
+            &ConstantRequest { shader, pass, keywords: &dynamic, overrides: request.overrides },
             &stages,
         )?;
         let key = PipelineKey {
@@ -311,7 +351,7 @@ impl Runtime {
             vertex_layout,
             constants: constant_bits(&constants),
         };
-        if let Some(pipeline) = self.pipelines.get(&key) {
+        if let Some(pipeline) = self.made().pipelines.get(&key) {
             return Ok(pipeline.clone());
         }
         let missing_feature =
@@ -323,13 +363,12 @@ impl Runtime {
                 "the variant needs `{feature}`, which the device was not created with"
             )));
         }
-        let mut module = |stage: &StageView| {
-            let module = shader_module(&self.device, library, &mut self.modules, shader, stage)
-                .map_err(layout_error)?;
+        let module = |stage: &StageView| {
+            let module = self.shader_module(shader, stage).map_err(layout_error)?;
             Ok::<_, RuntimeError>((module, stage.interface.entry_point.clone()))
         };
         let (vertex_module, vertex_entry) = module(&vertex)?;
-        let fragment_module = fragment.as_ref().map(&mut module).transpose()?;
+        let fragment_module = fragment.as_ref().map(module).transpose()?;
         let targets: Vec<Option<wgpu::ColorTargetState>> = key
             .targets
             .colors
@@ -376,24 +415,22 @@ impl Runtime {
             })
         })
         .map_err(layout_error)?;
-        let pipeline = Arc::new(pipeline);
-        self.created += 1;
-        self.pipelines.insert(key, pipeline.clone());
-        Ok(pipeline)
+        self.count_created();
+        // Another thread may have made the same one meanwhile: the first kept is the one used.
+        Ok(self.made().pipelines.entry(key).or_insert_with(|| Arc::new(pipeline)).clone())
     }
 
     /// Creates, ahead of the first frame, the pipeline of every pass each material's variant has
-    /// (with `global_keywords` added to its keywords). Returns how many exist afterwards, or every
-    /// request that failed.
+    /// (with `global_keywords` added to its keywords, those its pass declares). Returns how many
+    /// render pipelines exist afterwards, or every request that failed.
     pub fn warm_up(
-        &mut self,
+        &self,
         materials: &[&MaterialManifest],
         global_keywords: &[&str],
         targets: &Targets,
     ) -> Result<usize, Vec<RuntimeError>> {
         let mut errors = Vec::new();
         for material in materials {
-            let mut keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
             let passes: Vec<usize> = match self.library.shader(&material.shader) {
                 Ok(shader) => shader.passes.iter().map(|p| p.index).collect(),
                 Err(error) => {
@@ -402,35 +439,38 @@ impl Runtime {
                 }
             };
             for pass in passes {
-                let declared: Vec<String> = self
-                    .library
-                    .pass(&material.shader, pass)
-                    .map(|p| {
-                        p.keywords.iter().chain(p.dynamic_sets().flat_map(|s| &s.keywords)).cloned().collect()
-                    })
-                    .unwrap_or_default();
-                let globals = global_keywords.iter().filter(|k| declared.iter().any(|d| d == *k));
-                keywords.extend(globals);
-                let request = PipelineRequest {
-                    shader: &material.shader,
-                    pass,
-                    keywords: &keywords,
-                    material,
-                    targets,
-                    vertex_layout: None,
-                    overrides: &[],
+                let declared = |keyword: &&str| {
+                    self.library
+                        .pass(&material.shader, pass)
+                        .is_ok_and(|p| p.keywords.iter().chain(dynamic_keywords(p)).any(|d| d == keyword))
                 };
-                if let Err(error) = self.pipeline(&request) {
+                let keywords: Vec<&str> = material
+                    .keywords
+                    .iter()
+                    .map(String::as_str)
+                    .chain(global_keywords.iter().copied().filter(declared))
+                    .collect();
+                let pipeline = self.variant(&material.shader, pass, &keywords).and_then(|variant| {
+                    self.pipeline(&PipelineRequest {
+                        variant,
+                        material,
+                        targets,
+                        vertex_layout: None,
+                        overrides: &[],
+                    })
+                });
+                if let Err(error) = pipeline {
                     errors.push(error);
                 }
             }
         }
-        if errors.is_empty() { Ok(self.pipelines.len()) } else { Err(errors) }
+        if errors.is_empty() { Ok(self.made().pipelines.len()) } else { Err(errors) }
     }
 
     /// Loads the output folder's build if it changed since the one in use. A build that failed
     /// (`kiln watch` leaves its diagnostics in the folder) is an error with those diagnostics,
-    /// and the build in use stays, with its pipelines.
+    /// and the build in use stays, with its pipelines. Handles of the old build are refused
+    /// afterwards ([`RuntimeError::StaleHandle`]): look them up again.
     pub fn reload(&mut self) -> Result<Reload, RuntimeError> {
         let Some((output, current)) = self.source.clone() else { return Ok(Reload::Unchanged) };
         if let Ok(errors) = std::fs::read_to_string(output.join(ERRORS_FILE)) {
@@ -442,16 +482,67 @@ impl Runtime {
         }
         let library = Library::open(&output)?;
         let hashes: HashSet<String> = library.manifest().files().into_iter().map(|f| f.hash).collect();
-        let before = self.pipelines.len() + self.kernels.len();
-        self.pipelines.retain(|key, _| key.modules.iter().flatten().all(|h| hashes.contains(h)));
-        self.kernels.retain(|key, _| hashes.contains(&key.module));
-        self.modules.retain(|hash, _| hashes.contains(hash));
-        // Layouts and render state are read again from the new manifest.
-        self.passes.clear();
-        let dropped_pipelines = before - self.pipelines.len() - self.kernels.len();
+        let made = self.made.get_mut().unwrap_or_else(PoisonError::into_inner);
+        let before = made.pipelines.len() + made.kernels.len();
+        made.pipelines.retain(|key, _| key.modules.iter().flatten().all(|h| hashes.contains(h)));
+        made.kernels.retain(|key, _| hashes.contains(&key.module));
+        made.modules.retain(|hash, _| hashes.contains(hash));
+        // Requests name the old build's variants; layouts and render state are read again from
+        // the new manifest.
+        made.requests.clear();
+        made.kernel_requests.clear();
+        made.passes.clear();
+        let dropped_pipelines = before - made.pipelines.len() - made.kernels.len();
         self.library = library;
         self.source = Some((output, hash));
         Ok(Reload::Swapped { dropped_pipelines })
+    }
+
+    /// A stage's WGSL module, created once per module (by its hash) and kept across pipelines.
+    pub(super) fn shader_module(
+        &self,
+        shader: &str,
+        stage: &StageView,
+    ) -> Result<wgpu::ShaderModule, String> {
+        let file = stage.module.wgsl.as_ref().ok_or("the build has no WGSL for it")?;
+        if let Some(module) = self.made().modules.get(&file.hash) {
+            return Ok(module.clone());
+        }
+        let bytes = self.library.bytes(stage.pass, file).ok_or("its module is missing from its pack")?;
+        let text = std::str::from_utf8(bytes).map_err(|e| e.to_string())?;
+        let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(&format!("{shader} {}", stage.interface.entry_point)),
+            source: wgpu::ShaderSource::Wgsl(text.into()),
+        });
+        Ok(self.made().modules.entry(file.hash.clone()).or_insert(module).clone())
+    }
+}
+
+/// A request's 256-bit key: what `hash` feeds, through BLAKE3 (no allocation, no collision to
+/// fear where a 64-bit `Hasher` would need the request kept to compare).
+pub(super) fn request_key(hash: impl FnOnce(&mut KeyHasher)) -> [u8; 32] {
+    let mut hasher = KeyHasher(blake3::Hasher::new());
+    hash(&mut hasher);
+    *hasher.0.finalize().as_bytes()
+}
+
+/// Feeds `Hash` values into BLAKE3.
+pub(super) struct KeyHasher(blake3::Hasher);
+
+impl Hasher for KeyHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        self.0.update(bytes);
+    }
+    fn finish(&self) -> u64 {
+        let hash = self.0.finalize();
+        u64::from_le_bytes(hash.as_bytes()[..8].try_into().unwrap_or_default())
+    }
+}
+
+/// Override values by name and bits, in the order given.
+pub(super) fn hash_overrides(overrides: &[(&str, f64)], hasher: &mut KeyHasher) {
+    for (name, value) in overrides {
+        (name, value.to_bits()).hash(hasher);
     }
 }
 
@@ -477,28 +568,6 @@ pub(super) fn constant_bits(constants: &[Vec<(String, f64)>]) -> Vec<Vec<(String
 /// A stage's constants as wgpu takes them.
 pub(super) fn wgpu_constants(constants: &[(String, f64)]) -> Vec<(&str, f64)> {
     constants.iter().map(|(k, v)| (k.as_str(), *v)).collect()
-}
-
-/// A stage's WGSL module, created once per module (by its hash) and kept across pipelines.
-pub(super) fn shader_module(
-    device: &wgpu::Device,
-    library: &Library,
-    modules: &mut HashMap<String, wgpu::ShaderModule>,
-    shader: &str,
-    stage: &StageView,
-) -> Result<wgpu::ShaderModule, String> {
-    let file = stage.module.wgsl.as_ref().ok_or("the build has no WGSL for it")?;
-    if let Some(module) = modules.get(&file.hash) {
-        return Ok(module.clone());
-    }
-    let bytes = library.bytes(stage.pass, file).ok_or("its module is missing from its pack")?;
-    let text = std::str::from_utf8(bytes).map_err(|e| e.to_string())?;
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some(&format!("{shader} {}", stage.interface.entry_point)),
-        source: wgpu::ShaderSource::Wgsl(text.into()),
-    });
-    modules.insert(file.hash.clone(), module.clone());
-    Ok(module)
 }
 
 fn manifest_hash(output: &Path) -> Result<blake3::Hash, RuntimeError> {

@@ -48,25 +48,20 @@ fn kernels_are_built_and_reflected_per_variant() {
 
 /// Runs a kernel of a variant over `input` with `offset`; returns the numbers read back.
 fn dispatch(
-    runtime: &mut Runtime,
+    runtime: &Runtime,
     gpu: &kiln::accuracy::gpu::Gpu,
     kernel: &str,
     keywords: &[&str],
     input: &[f32],
     offset: f32,
 ) -> Vec<f32> {
-    dispatch_with(
-        runtime,
-        gpu,
-        &KernelRequest { shader: SHADER, kernel, keywords, overrides: &[] },
-        input,
-        offset,
-    )
+    let variant = runtime.variant(SHADER, 0, keywords).expect("built");
+    dispatch_with(runtime, gpu, &KernelRequest { variant, kernel, overrides: &[] }, input, offset)
 }
 
 /// [`dispatch`] of any request (override values too).
 fn dispatch_with(
-    runtime: &mut Runtime,
+    runtime: &Runtime,
     gpu: &kiln::accuracy::gpu::Gpu,
     request: &KernelRequest,
     input: &[f32],
@@ -75,8 +70,8 @@ fn dispatch_with(
     let device = &gpu.device;
     let kernel = request.kernel;
     let kernel_pipeline = runtime.kernel(request).expect("pipeline");
-    let layout = runtime.pass_layout(SHADER, 0).expect("layout");
-    let pass = runtime.library().pass(SHADER, 0).expect("pass").clone();
+    let layout = runtime.pass_layout(request.variant.pass()).expect("layout");
+    let pass = runtime.library().pass_of(request.variant.pass()).expect("pass").clone();
     let mut params = offset.to_le_bytes().to_vec();
     params.extend((input.len() as u32).to_le_bytes());
     let uniform = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -136,20 +131,19 @@ fn dispatch_with(
 fn every_kernel_variant_computes_what_the_cpu_computes() {
     let Some(gpu) = gpu("the compute kernels test") else { return };
     let output = built_fixture("compute");
-    let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
+    let runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
     // Warmed up ahead of the dispatches: every kernel of both variants, created once.
     let requests: Vec<KernelRequest> = [&[][..], &["_SQUARE"][..]]
         .into_iter()
         .flat_map(|keywords| {
-            ["Double", "AddOffset"].map(|kernel| KernelRequest {
-                shader: SHADER,
-                kernel,
-                keywords,
-                overrides: &[],
-            })
+            let variant = runtime.variant(SHADER, 0, keywords).expect("built");
+            ["Double", "AddOffset"].map(|kernel| KernelRequest { variant, kernel, overrides: &[] })
         })
         .collect();
     assert_eq!(runtime.warm_up_kernels(&requests).expect("warms up"), 4);
+    // A kernel asked for again is found by its handle, allocating nothing.
+    let again = crate::support::allocations_in(|| drop(runtime.kernel(&requests[3]).expect("warm")));
+    assert_eq!(again, 0, "a kernel asked for again allocates");
     // 1,000 numbers: more than one workgroup, not a multiple of its size.
     let input: Vec<f32> = (0..1000).map(|i| (i as f32) * 0.25 - 100.0).collect();
     let offset = 3.5;
@@ -159,32 +153,32 @@ fn every_kernel_variant_computes_what_the_cpu_computes() {
             ("Double", &(|x: f32| shaped(x) * 2.0) as &dyn Fn(f32) -> f32),
             ("AddOffset", &|x: f32| shaped(x) + offset),
         ] {
-            let gpu_values = dispatch(&mut runtime, &gpu, kernel, keywords, &input, offset);
+            let gpu_values = dispatch(&runtime, &gpu, kernel, keywords, &input, offset);
             let expected: Vec<f32> = input.iter().map(|&x| cpu(x)).collect();
             assert_eq!(gpu_values, expected, "{kernel} {keywords:?}");
         }
     }
     // The keyword changes the result: squaring is visible.
     assert_ne!(
-        dispatch(&mut runtime, &gpu, "Double", &[], &input, offset),
-        dispatch(&mut runtime, &gpu, "Double", &["_SQUARE"], &input, offset)
+        dispatch(&runtime, &gpu, "Double", &[], &input, offset),
+        dispatch(&runtime, &gpu, "Double", &["_SQUARE"], &input, offset)
     );
     // Reverse, in blocks of the pipeline's `block` (its workgroup size and the tile it uses).
     let numbers: Vec<f32> = (0..32).map(|i| i as f32).collect();
     for block in [8u32, 16] {
         let overrides = [("block", f64::from(block))];
-        let request =
-            KernelRequest { shader: SHADER, kernel: "Reverse", keywords: &[], overrides: &overrides };
+        let variant = runtime.variant(SHADER, 0, &[]).expect("built");
+        let request = KernelRequest { variant, kernel: "Reverse", overrides: &overrides };
         assert_eq!(runtime.kernel(&request).expect("pipeline").workgroup_size, [block, 1, 1]);
-        let reversed = dispatch_with(&mut runtime, &gpu, &request, &numbers, 0.0);
+        let reversed = dispatch_with(&runtime, &gpu, &request, &numbers, 0.0);
         let expected: Vec<f32> =
             numbers.chunks(block as usize).flat_map(|c| c.iter().rev().copied()).collect();
         assert_eq!(reversed, expected, "block {block}");
     }
     // One pipeline per kernel variant and override value, each created once.
     assert_eq!(runtime.pipelines_created(), 6);
-    let unknown =
-        runtime.kernel(&KernelRequest { shader: SHADER, kernel: "Dubble", keywords: &[], overrides: &[] });
+    let variant = runtime.variant(SHADER, 0, &[]).expect("built");
+    let unknown = runtime.kernel(&KernelRequest { variant, kernel: "Dubble", overrides: &[] });
     assert_eq!(
         unknown.expect_err("no such kernel").to_string(),
         "`Scale` has no kernel `Dubble` (did you mean `Double`?)"
@@ -234,8 +228,7 @@ fn a_missing_kernel_variant_is_logged_built_from_the_log_and_an_edited_kernel_re
     let mut runtime = Runtime::open(&gpu.device, &output).expect("opens");
     let missing = dir.path().join("missing.jsonl");
     runtime.log_usage(kiln::runtime::UsageLog::new(None, Some(&missing)).expect("log"));
-    let request = |keywords| KernelRequest { shader: SHADER, kernel: "Double", keywords, overrides: &[] };
-    let error = runtime.kernel(&request(&["_SQUARE"])).expect_err("not built");
+    let error = runtime.variant(SHADER, 0, &["_SQUARE"]).expect_err("not built");
     assert!(matches!(error, kiln::runtime::RuntimeError::MissingVariant { .. }), "{error}");
     assert_eq!(
         std::fs::read_to_string(&missing).expect("missing log"),
@@ -245,13 +238,13 @@ fn a_missing_kernel_variant_is_logged_built_from_the_log_and_an_edited_kernel_re
     build(&[&missing]);
     assert!(matches!(runtime.reload(), Ok(kiln::runtime::Reload::Swapped { .. })));
     let input = [1.0, 2.0, 3.0];
-    assert_eq!(dispatch(&mut runtime, &gpu, "Double", &["_SQUARE"], &input, 0.0), [2.0, 8.0, 18.0]);
+    assert_eq!(dispatch(&runtime, &gpu, "Double", &["_SQUARE"], &input, 0.0), [2.0, 8.0, 18.0]);
     // An edited kernel: rebuilt, reloaded, its new code runs.
     std::fs::write(project.join("Scale.compute"), source.replace("* 2.0;", "* 3.0;")).expect("edit");
     build(&[&missing]);
     assert!(matches!(runtime.reload(), Ok(kiln::runtime::Reload::Swapped { .. })));
-    assert_eq!(dispatch(&mut runtime, &gpu, "Double", &["_SQUARE"], &input, 0.0), [3.0, 12.0, 27.0]);
-    assert_eq!(dispatch(&mut runtime, &gpu, "Double", &[], &input, 0.0), [3.0, 6.0, 9.0]);
+    assert_eq!(dispatch(&runtime, &gpu, "Double", &["_SQUARE"], &input, 0.0), [3.0, 12.0, 27.0]);
+    assert_eq!(dispatch(&runtime, &gpu, "Double", &[], &input, 0.0), [3.0, 6.0, 9.0]);
 }
 
 #[test]
@@ -312,10 +305,11 @@ fn a_kernel_reads_one_storage_texture_and_writes_another() {
 
     let Some(gpu) = gpu("the storage texture test") else { return };
     let device = &gpu.device;
-    let mut runtime = Runtime::open(device, output.path()).expect("opens");
-    let request = KernelRequest { shader: "Texels", kernel: "Brighten", keywords: &[], overrides: &[] };
+    let runtime = Runtime::open(device, output.path()).expect("opens");
+    let variant = runtime.variant("Texels", 0, &[]).expect("built");
+    let request = KernelRequest { variant, kernel: "Brighten", overrides: &[] };
     let kernel = runtime.kernel(&request).expect("wgpu accepts the pipeline with the manifest's layout");
-    let layout = runtime.pass_layout("Texels", 0).expect("layout");
+    let layout = runtime.pass_layout(variant.pass()).expect("layout");
     let size = wgpu::Extent3d { width: 8, height: 8, depth_or_array_layers: 1 };
     let values: Vec<f32> = (0..64).map(|i| i as f32 / 63.0).collect();
     let texture = |format, usage| {

@@ -168,8 +168,7 @@ fn keyword_values_and_overrides_draw_the_right_pixels_with_one_module() {
     for (material, (globals, overrides), expected) in cases {
         let keywords: Vec<&str> =
             material.keywords.iter().map(String::as_str).chain(globals.iter().copied()).collect();
-        let (pixel, _) =
-            draw_pass(&mut runtime, &gpu, SHADER, material, &keywords, overrides).expect("draws");
+        let (pixel, _) = draw_pass(&runtime, &gpu, SHADER, material, &keywords, overrides).expect("draws");
         assert_colour(pixel, expected, &format!("{} {globals:?} {overrides:?}", material.name));
     }
     // One pipeline per distinct value set: seven, the repeat reused.
@@ -203,7 +202,7 @@ fn reflect_shows_overrides_and_takes_dynamic_keywords() {
 fn wrong_keywords_and_override_values_are_refused_with_what_to_do() {
     let Some(gpu) = gpu("the override errors test") else { return };
     let output = built_fixture("dynamic");
-    let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
+    let runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
     let plain = runtime.library().material("Plain").expect("built").clone();
     let cases: [Ask; 7] = [
         (&["_TINT_RED", "_TINT_GREEN"], &[]),
@@ -216,16 +215,20 @@ fn wrong_keywords_and_override_values_are_refused_with_what_to_do() {
     ];
     let mut shown = String::new();
     for (keywords, overrides) in cases {
-        let error = draw_pass(&mut runtime, &gpu, SHADER, &plain, keywords, overrides).expect_err("refused");
+        let error = draw_pass(&runtime, &gpu, SHADER, &plain, keywords, overrides).expect_err("refused");
         assert!(!matches!(error, RuntimeError::Layout { .. }), "refused before wgpu: {error}");
         shown.push_str(&format!("{keywords:?} {overrides:?}\n  {error}\n"));
     }
     // An override without a default must be given; given, it draws.
-    let error = draw_pass(&mut runtime, &gpu, "Test/Required", &plain, &[], &[]).expect_err("refused");
+    let error = draw_pass(&runtime, &gpu, "Test/Required", &plain, &[], &[]).expect_err("refused");
     shown.push_str(&format!("Test/Required [] []\n  {error}\n"));
     assert_eq!(runtime.pipelines_created(), 0);
     let (pixel, _) =
-        draw_pass(&mut runtime, &gpu, "Test/Required", &plain, &[], &[("level", 0.25)]).expect("draws");
+        draw_pass(&runtime, &gpu, "Test/Required", &plain, &[], &[("level", 0.25)]).expect("draws");
     assert_colour(pixel, [0.25; 3], "level 0.25");
+    // A material is bound to its own shader's passes only.
+    let required = runtime.pass("Test/Required", 0).expect("built");
+    let error = runtime.material_bind_group(&plain, required, &()).expect_err("another shader's pass");
+    shown.push_str(&format!("material_bind_group(Plain, Test/Required pass 0)\n  {error}\n"));
     expect_file![root().join("tests/golden/runtime/overrides.txt")].assert_eq(&shown);
 }

@@ -1,6 +1,9 @@
 //! kiln's integration tests: one binary, one module per concern. Golden files are regenerated
 //! with `UPDATE_EXPECT=1 cargo test`, then reviewed like code.
 
+#[global_allocator]
+static ALLOCATOR: support::CountingAllocator = support::CountingAllocator;
+
 mod accuracy;
 mod bad;
 mod build;

@@ -24,7 +24,7 @@ pub(crate) fn targets() -> Targets {
 /// Draws `Test/Blend` with a material over the background into a 4 x 4 target cleared to depth
 /// 1; returns the centre pixel and its depth.
 fn draw(
-    runtime: &mut Runtime,
+    runtime: &Runtime,
     gpu: &Gpu,
     material: &MaterialManifest,
     keywords: &[&str],
@@ -35,7 +35,7 @@ fn draw(
 /// Draws pass 0 of a shader whose vertex stage takes a `vec2<f32>` position at location 0, as
 /// [`draw`] does.
 pub(crate) fn draw_pass(
-    runtime: &mut Runtime,
+    runtime: &Runtime,
     gpu: &Gpu,
     shader: &str,
     material: &MaterialManifest,
@@ -44,9 +44,7 @@ pub(crate) fn draw_pass(
 ) -> Result<([u8; 4], f32), RuntimeError> {
     let targets = targets();
     let request = PipelineRequest {
-        shader,
-        pass: 0,
-        keywords,
+        variant: runtime.variant(shader, 0, keywords)?,
         material,
         targets: &targets,
         vertex_layout: None,
@@ -144,7 +142,7 @@ fn presets_blend_and_write_depth_as_their_properties_say() {
     let Some(gpu) = gpu("the render state test") else { return };
     let output = tempfile::tempdir().expect("temp dir");
     built(&root().join("fixtures/runtime"), output.path());
-    let mut runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
+    let runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
     // The fragment is (1, 0.5, 0) with alpha 0.5 (premultiplied to (0.5, 0.25, 0) with
     // _PREMULTIPLY_ALPHA), over blue (0, 0, 1), depth 0.5 against a cleared 1.
     let cases = [
@@ -158,7 +156,7 @@ fn presets_blend_and_write_depth_as_their_properties_say() {
     for (name, expected, expected_depth) in cases {
         let material = runtime.library().material(name).expect("built material").clone();
         let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
-        let (pixel, depth) = draw(&mut runtime, &gpu, &material, &keywords).expect("draws");
+        let (pixel, depth) = draw(&runtime, &gpu, &material, &keywords).expect("draws");
         for (channel, want) in pixel.iter().zip(expected) {
             assert!(
                 (f64::from(*channel) / 255.0 - want).abs() <= 1.5 / 255.0,
@@ -170,7 +168,7 @@ fn presets_blend_and_write_depth_as_their_properties_say() {
     // A pipeline is created once per distinct (variant, state, targets): asking again reuses it.
     let created = runtime.pipelines_created();
     let opaque = runtime.library().material("Opaque").expect("material").clone();
-    draw(&mut runtime, &gpu, &opaque, &[]).expect("draws");
+    draw(&runtime, &gpu, &opaque, &[]).expect("draws");
     assert_eq!(runtime.pipelines_created(), created);
 }
 
@@ -216,22 +214,16 @@ fn every_variant_and_preset_of_the_bundled_project_gets_a_pipeline() {
     let targets = targets();
     // A request's pipeline, from `runtime`.
     let pipeline =
-        |runtime: &mut Runtime,
+        |runtime: &Runtime,
          (shader, pass, keywords, material): &(String, usize, Vec<String>, MaterialManifest)| {
             let keywords: Vec<&str> = keywords.iter().map(String::as_str).collect();
-            let request = PipelineRequest {
-                shader,
-                pass: *pass,
-                keywords: &keywords,
-                material,
-                targets: &targets,
-                vertex_layout: None,
-                overrides: &[],
-            };
+            let variant = runtime.variant(shader, *pass, &keywords).map_err(|e| e.to_string())?;
+            let request =
+                PipelineRequest { variant, material, targets: &targets, vertex_layout: None, overrides: &[] };
             runtime.pipeline(&request).map_err(|e| format!("{shader} {keywords:?} {}: {e}", material.name))
         };
     for request in &requests {
-        pipeline(&mut runtime, request).unwrap_or_else(|e| panic!("{e}"));
+        pipeline(&runtime, request).unwrap_or_else(|e| panic!("{e}"));
     }
     println!(
         "{} requests, {} pipelines created on {} (wgpu pipeline cache: {cached})",
@@ -254,7 +246,7 @@ fn every_variant_and_preset_of_the_bundled_project_gets_a_pipeline() {
         };
         again.use_pipeline_cache(cache);
         // A pipeline made through the reloaded cache.
-        pipeline(&mut again, &requests[0]).expect("a pipeline through the reloaded cache");
+        pipeline(&again, &requests[0]).expect("a pipeline through the reloaded cache");
         assert_eq!(again.pipelines_created(), 1);
     }
 }
@@ -358,9 +350,10 @@ fn a_running_program_swaps_in_a_rebuilt_shader_and_keeps_the_last_good_one_on_er
     rebuild();
     let mut runtime = Runtime::open(&gpu.device, &output).expect("opens");
     let material = runtime.library().material("Opaque").expect("material").clone();
-    let (before, _) = draw(&mut runtime, &gpu, &material, &[]).expect("draws");
+    let (before, _) = draw(&runtime, &gpu, &material, &[]).expect("draws");
     assert_eq!(before[0], 255);
     assert_eq!(runtime.reload().expect("reloads"), Reload::Unchanged);
+    let old_handle = runtime.variant("Test/Blend", 0, &[]).expect("built");
 
     // An edit: the colour's red half as strong.
     let shader = project.path().join("Blend.shader");
@@ -369,8 +362,19 @@ fn a_running_program_swaps_in_a_rebuilt_shader_and_keeps_the_last_good_one_on_er
         .expect("edit");
     rebuild();
     assert!(matches!(runtime.reload().expect("reloads"), Reload::Swapped { dropped_pipelines: 1 }));
+    // A handle of the old build is refused, never read as a variant of the new one.
+    let targets = targets();
+    let request = PipelineRequest {
+        variant: old_handle,
+        material: &material,
+        targets: &targets,
+        vertex_layout: None,
+        overrides: &[],
+    };
+    let error = runtime.pipeline(&request).expect_err("a stale handle");
+    assert!(matches!(error, RuntimeError::StaleHandle("pass")), "{error}");
     let created = runtime.pipelines_created();
-    let (after, _) = draw(&mut runtime, &gpu, &material, &[]).expect("draws");
+    let (after, _) = draw(&runtime, &gpu, &material, &[]).expect("draws");
     assert_eq!(runtime.pipelines_created(), created + 1, "a new pipeline for the new module");
     assert!((i32::from(after[0]) - 128).abs() <= 1, "{after:?}");
 
@@ -379,13 +383,13 @@ fn a_running_program_swaps_in_a_rebuilt_shader_and_keeps_the_last_good_one_on_er
     rebuild();
     let error = runtime.reload().expect_err("the build failed").to_string();
     assert!(error.contains("Blend.shader:40:"), "{error}");
-    let (kept, _) = draw(&mut runtime, &gpu, &material, &[]).expect("draws");
+    let (kept, _) = draw(&runtime, &gpu, &material, &[]).expect("draws");
     assert_eq!(kept, after);
     // Fixed again: the errors are gone and the fix is in.
     std::fs::write(&shader, &text).expect("edit");
     rebuild();
     assert!(matches!(runtime.reload(), Ok(Reload::Swapped { .. })));
-    assert_eq!(draw(&mut runtime, &gpu, &material, &[]).expect("draws").0, before);
+    assert_eq!(draw(&runtime, &gpu, &material, &[]).expect("draws").0, before);
 }
 
 #[test]
@@ -398,8 +402,8 @@ fn a_logged_missing_variant_is_built_by_variants_from() {
     let mut runtime = Runtime::open(&gpu.device, &output).expect("opens");
     runtime.log_usage(UsageLog::new(Some(&requested), Some(&missing)).expect("log"));
     let material = runtime.library().material("Opaque").expect("material").clone();
-    draw(&mut runtime, &gpu, &material, &[]).expect("draws");
-    let error = draw(&mut runtime, &gpu, &material, &["_TINT"]).expect_err("not built");
+    draw(&runtime, &gpu, &material, &[]).expect("draws");
+    let error = draw(&runtime, &gpu, &material, &["_TINT"]).expect_err("not built");
     assert!(matches!(error, RuntimeError::MissingVariant { .. }), "{error}");
     let missing_text = std::fs::read_to_string(&missing).expect("missing log");
     assert_eq!(missing_text, "{\"keywords\":[\"_TINT\"],\"pass\":0,\"shader\":\"Test/Blend\"}\n");
@@ -417,7 +421,7 @@ fn a_logged_missing_variant_is_built_by_variants_from() {
     let run = kiln(&args);
     assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
     assert!(matches!(runtime.reload(), Ok(Reload::Swapped { .. })));
-    let (pixel, _) = draw(&mut runtime, &gpu, &material, &["_TINT"]).expect("built now");
+    let (pixel, _) = draw(&runtime, &gpu, &material, &["_TINT"]).expect("built now");
     assert_eq!(pixel, [0, 255, 0, 128], "the _TINT variant's green, alpha written as is");
 
     // A line naming what does not exist is an error at that line.
@@ -439,6 +443,47 @@ fn a_logged_missing_variant_is_built_by_variants_from() {
             && stderr.contains("did you mean `_TINT`"),
         "{stderr}"
     );
+}
+
+/// A renderer asks for each draw's pipeline every frame: asked for again it is found by its
+/// handle and state, allocating nothing; threads asking at once share one pipeline.
+#[test]
+fn a_pipeline_asked_for_again_allocates_nothing_and_threads_share_it() {
+    let Some(gpu) = gpu("the pipeline lookup test") else { return };
+    let output = tempfile::tempdir().expect("temp dir");
+    built(&root().join("fixtures/runtime"), output.path());
+    let runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
+    let material = runtime.library().material("Transparent").expect("material").clone();
+    let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
+    let variant = runtime.variant(&material.shader, 0, &keywords).expect("built");
+    let targets = targets();
+    let request = PipelineRequest {
+        variant,
+        material: &material,
+        targets: &targets,
+        vertex_layout: None,
+        overrides: &[],
+    };
+    let pipelines: Vec<_> = std::thread::scope(|scope| {
+        let threads: Vec<_> =
+            (0..4).map(|_| scope.spawn(|| runtime.pipeline(&request).expect("a pipeline"))).collect();
+        threads.into_iter().map(|thread| thread.join().expect("joins")).collect()
+    });
+    assert!(
+        pipelines.windows(2).all(|pair| std::sync::Arc::ptr_eq(&pair[0], &pair[1])),
+        "one pipeline for all"
+    );
+    let allocations = crate::support::allocations_in(|| {
+        for _ in 0..100 {
+            let again = runtime.pipeline(&request).expect("the same pipeline");
+            assert!(std::sync::Arc::ptr_eq(&again, &pipelines[0]));
+        }
+    });
+    assert_eq!(allocations, 0, "a pipeline asked for again allocates");
+    // The allocator counts: the first request of another state allocates.
+    let opaque = runtime.library().material("Opaque").expect("material").clone();
+    let other = PipelineRequest { material: &opaque, ..request };
+    assert!(crate::support::allocations_in(|| drop(runtime.pipeline(&other).expect("made"))) > 0);
 }
 
 #[test]

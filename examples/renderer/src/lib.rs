@@ -298,8 +298,9 @@ pub fn render_frames(
     let frame_buffers = [uniform(bytemuck::bytes_of(&per_frame)), uniform(bytemuck::bytes_of(&light))];
     // Per frame and per object: the renderer's buffers, bound by their names in the layout.
     let frame_buffers = [("UnityPerFrame", &frame_buffers[0]), ("_CustomLight", &frame_buffers[1])];
+    let lit_pass = runtime.pass(scene::SHADER, 0).map_err(|e| e.to_string())?;
     let frame_group = runtime
-        .buffer_bind_group(scene::SHADER, 0, shaders::FRAME_GROUP, &frame_buffers)
+        .buffer_bind_group(lit_pass, shaders::FRAME_GROUP, &frame_buffers)
         .map_err(|e| e.to_string())?;
 
     // The runtime's default vertex packing of the pass's inputs (position, normal, uv) is the
@@ -349,10 +350,9 @@ pub fn render_frames(
             runtime.library().material(&format!("object{index:02}")).map_err(|e| e.to_string())?.clone();
         let keywords: Vec<&str> =
             material.keywords.iter().map(String::as_str).chain(scene.global_keywords()).collect();
+        let variant = runtime.variant(scene::SHADER, 0, &keywords).map_err(|e| e.to_string())?;
         let request = PipelineRequest {
-            shader: scene::SHADER,
-            pass: 0,
-            keywords: &keywords,
+            variant,
             material: &material,
             targets: &targets,
             vertex_layout: None,
@@ -363,7 +363,7 @@ pub fn render_frames(
         // (`tests/render.rs` checks the bytes against the generated struct), its texture and
         // sampler from `textures`.
         let material_group =
-            runtime.material_bind_group(&material, 0, &textures).map_err(|e| e.to_string())?;
+            runtime.material_bind_group(&material, lit_pass, &textures).map_err(|e| e.to_string())?;
         let (p, s) = (object.position, object.radius);
         let draw = lit::PerDraw {
             unity_ObjectToWorld: mat_f32(&[
@@ -381,7 +381,7 @@ pub fn render_frames(
         };
         let draw_buffer = uniform(bytemuck::bytes_of(&draw));
         let draw_group = runtime
-            .buffer_bind_group(scene::SHADER, 0, shaders::OBJECT_GROUP, &[("UnityPerDraw", &draw_buffer)])
+            .buffer_bind_group(lit_pass, shaders::OBJECT_GROUP, &[("UnityPerDraw", &draw_buffer)])
             .map_err(|e| e.to_string())?;
         let groups = [material_group.bind_group, draw_group];
         draws.push((pipeline, groups));

@@ -126,13 +126,14 @@ impl kiln::runtime::MaterialTextures for Textures {
 #[test]
 fn a_material_bind_group_follows_its_material() {
     let Some((device, queue, _)) = common::gpu("the material bind group test") else { return };
-    let mut runtime = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
+    let runtime = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
+    let lit = runtime.pass("Custom RP/Lit", 0).expect("the lit pass");
     let textures = Textures {
         view: Some(kiln_renderer::white_texture(&device, &queue)),
         sampler: device.create_sampler(&Default::default()),
     };
     let material = runtime.library().material("object00").expect("a scene material").clone();
-    let group = runtime.material_bind_group(&material, 0, &textures).expect("binds");
+    let group = runtime.material_bind_group(&material, lit, &textures).expect("binds");
     assert_eq!(group.group, kiln::runtime::MATERIAL_GROUP);
     // The generated module's group constants are the run time's.
     assert_eq!(
@@ -168,7 +169,7 @@ fn a_material_bind_group_follows_its_material() {
     assert_ne!(uniform(&changed), uniform(&material));
     // No texture for a texture property: an error naming it.
     let none = Textures { view: None, sampler: device.create_sampler(&Default::default()) };
-    let error = runtime.material_bind_group(&material, 0, &none).expect_err("no texture").to_string();
+    let error = runtime.material_bind_group(&material, lit, &none).expect_err("no texture").to_string();
     assert!(error.contains("no texture for `_BaseMap` (`white`)"), "{error}");
 }
 
@@ -177,29 +178,29 @@ fn a_material_bind_group_follows_its_material() {
 #[test]
 fn buffer_groups_bind_by_name_and_name_what_is_wrong() {
     let Some((device, _queue, _)) = common::gpu("the buffer bind group test") else { return };
-    let mut runtime = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
+    let runtime = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
     let buffer = device.create_buffer(&wgpu::BufferDescriptor {
         label: None,
         size: 1024,
         usage: wgpu::BufferUsages::UNIFORM,
         mapped_at_creation: false,
     });
-    let shader = "Custom RP/Lit";
+    let lit = runtime.pass("Custom RP/Lit", 0).expect("the lit pass");
     runtime
-        .buffer_bind_group(shader, 0, 0, &[("UnityPerFrame", &buffer), ("_CustomLight", &buffer)])
+        .buffer_bind_group(lit, 0, &[("UnityPerFrame", &buffer), ("_CustomLight", &buffer)])
         .expect("binds");
-    runtime.buffer_bind_group(shader, 0, 2, &[("UnityPerDraw", &buffer)]).expect("binds");
-    let error = |group, buffers: &[(&str, &wgpu::Buffer)], runtime: &mut kiln::runtime::Runtime| {
-        runtime.buffer_bind_group(shader, 0, group, buffers).expect_err("refused").to_string()
+    runtime.buffer_bind_group(lit, 2, &[("UnityPerDraw", &buffer)]).expect("binds");
+    let error = |group, buffers: &[(&str, &wgpu::Buffer)]| {
+        runtime.buffer_bind_group(lit, group, buffers).expect_err("refused").to_string()
     };
-    let misspelt = error(0, &[("UnityPerFrme", &buffer), ("_CustomLight", &buffer)], &mut runtime);
+    let misspelt = error(0, &[("UnityPerFrme", &buffer), ("_CustomLight", &buffer)]);
     assert!(
         misspelt.ends_with("group 0 has no binding `UnityPerFrme` (did you mean `UnityPerFrame`?)"),
         "{misspelt}"
     );
-    let missing = error(0, &[("UnityPerFrame", &buffer)], &mut runtime);
+    let missing = error(0, &[("UnityPerFrame", &buffer)]);
     assert!(missing.ends_with("no buffer for `_CustomLight` in group 0"), "{missing}");
-    let no_group = error(5, &[], &mut runtime);
+    let no_group = error(5, &[]);
     assert!(no_group.ends_with("the pass has no bind group 5"), "{no_group}");
 }
 
