@@ -721,9 +721,8 @@ pub fn build_part(
     progress: &(dyn Fn(usize, usize) + Sync),
     part: Part,
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
-    let Given { workspace, mut includes, input, mut diagnostics, mut options } =
-        load_given(store, paths, mode)?;
-    options.part = part;
+    let Given { workspace, mut includes, input, mut diagnostics, options } =
+        load_given(store, paths, mode, part)?;
     // Held until the build is done: another build into the folder waits.
     let _lock = mode.write.then(|| crate::store::OutputLock::acquire(&options.output));
     if diagnostics.is_empty()
@@ -735,9 +734,7 @@ pub fn build_part(
     let (catalog, found) = catalog(store, &mut includes, &input);
     diagnostics.extend(found);
     diagnostics.extend(unknown_group_names(store, &workspace.group_names));
-    options.write = mode.write && !diagnostics::has_errors(&diagnostics);
-    options.record = diagnostics.is_empty();
-    let result = build(store, &includes, &catalog, &options, progress);
+    let result = build(store, &includes, &catalog, &options, &diagnostics, progress);
     // At 100,000 variants, freeing the catalogue takes a twentieth of a second nobody waits for.
     std::thread::spawn(move || drop((catalog, includes)));
     if workspace.strict {
@@ -774,13 +771,12 @@ pub fn check_project(
     narrow: impl FnOnce(&mut Catalog),
 ) -> Result<Checked, ProjectError> {
     let mode = BuildMode { write: false, ..mode.clone() };
-    let Given { workspace, mut includes, input, mut diagnostics, mut options } =
-        load_given(store, paths, &mode)?;
+    let Given { workspace, mut includes, input, mut diagnostics, options } =
+        load_given(store, paths, &mode, Part::Whole)?;
     let (mut catalog, found) = catalog(store, &mut includes, &input);
     diagnostics.extend(found);
     narrow(&mut catalog);
-    options.record = false;
-    let result = build(store, &includes, &catalog, &options, &|_, _| {});
+    let result = build(store, &includes, &catalog, &options, &diagnostics, &|_, _| {});
     diagnostics.extend(result.diagnostics);
     if workspace.strict {
         diagnostics::promote_warnings(&mut diagnostics);
@@ -805,7 +801,14 @@ struct Given {
     options: BuildOptions,
 }
 
-fn load_given(store: &mut SourceStore, paths: &[PathBuf], mode: &BuildMode) -> Result<Given, ProjectError> {
+/// The project at `paths` loaded, and the options of a build of `part` of it, made once from
+/// `mode` and the project's `kiln.toml`.
+fn load_given(
+    store: &mut SourceStore,
+    paths: &[PathBuf],
+    mode: &BuildMode,
+    part: Part,
+) -> Result<Given, ProjectError> {
     let (workspace, mut diagnostics) = open_workspace(store, paths)?;
     // Not after a broken kiln.toml: its error says why nothing was found.
     if workspace.shaders.is_empty() && !diagnostics::has_errors(&diagnostics) {
@@ -833,13 +836,13 @@ fn load_given(store: &mut SourceStore, paths: &[PathBuf], mode: &BuildMode) -> R
     let options = BuildOptions {
         output: mode.output.clone().unwrap_or_else(|| workspace.output.clone()),
         root: workspace.root.clone(),
-        write: mode.write && !diagnostics::has_errors(&diagnostics),
+        write: mode.write,
         threads: mode.threads,
         backends: workspace.backends.clone(),
         unused_shaders: mode.unused_shaders,
         pretty_manifest: mode.pretty_manifest,
-        record: diagnostics.is_empty(),
-        part: Part::Whole,
+        record: true,
+        part,
         cache_dir: workspace
             .shared_cache_dir(mode.cache_dir.clone())
             .or_else(|| mode.fallback_cache_dir.clone()),
@@ -883,21 +886,23 @@ pub fn merge_shards(
     let ((merge, read), given) = match project {
         Some(project) => {
             let read_shards = || records().map(|merge| (merge.read_shards(), merge));
-            let (shards, given) = rayon::join(read_shards, || load_given(store, &[project], mode));
+            let (shards, given) =
+                rayon::join(read_shards, || load_given(store, &[project], mode, Part::Whole));
             let (read, merge) = shards?;
             ((merge, read), given?)
         }
         None => {
             let merge = records()?;
             let project = PathBuf::from(&merge.shards[0].1.project);
-            let (read, given) = rayon::join(|| merge.read_shards(), || load_given(store, &[project], mode));
+            let (read, given) =
+                rayon::join(|| merge.read_shards(), || load_given(store, &[project], mode, Part::Whole));
             ((merge, read), given?)
         }
     };
     let Given { workspace, mut diagnostics, options, .. } = given;
     // As a build holds its output folder: another build or merge into it waits.
     let _lock = crate::store::OutputLock::acquire(&options.output);
-    let result = crate::build::merge(store, &options, &merge, read);
+    let result = crate::build::merge(store, &options, &diagnostics, &merge, read);
     // The shards' parts are many small strings: freeing them would hold up the answer for a
     // tenth of a second at 100,000 variants, which a process about to exit need not wait for.
     std::thread::spawn(move || drop(merge));
@@ -966,18 +971,22 @@ pub fn reflect_variant(
         }
     }
     let folder = request.shader.parent().map(Path::to_path_buf).unwrap_or_default();
-    let mut options = BuildOptions::one_off(folder.clone(), folder.join(".kiln-reflect-unused"), false);
     // Bindings as the project's build gives them: its `[bind_groups]` move resources between
     // groups. Only its `kiln.toml` is read: the project's files are not walked for one shader.
+    let mut groups = Default::default();
     let project = request.project.clone().or_else(|| config_folder_above(&request.shader));
     let config = project.map(|p| p.join(crate::config::FILE_NAME)).filter(|c| c.is_file());
     if let Some(config) = config {
         let file = store.load(&config)?;
         let (config, problems) = crate::config::parse_config(store, file);
         diagnostics.extend(problems);
-        diagnostics.extend(bind_group_names(&config.bind_groups, file, &mut options.groups));
+        diagnostics.extend(bind_group_names(&config.bind_groups, file, &mut groups));
     }
-    let result = build(store, &includes, &catalog, &options, &|_, _| {});
+    let options = BuildOptions {
+        groups,
+        ..BuildOptions::one_off(folder.clone(), folder.join(".kiln-reflect-unused"), false)
+    };
+    let result = build(store, &includes, &catalog, &options, &diagnostics, &|_, _| {});
     diagnostics.extend(result.diagnostics);
     let pass = result.manifest.as_ref().and_then(|m| m.passes().next());
     let json = pass.filter(|_| !diagnostics::has_errors(&diagnostics)).and_then(|p| {

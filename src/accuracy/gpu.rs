@@ -69,7 +69,7 @@ pub fn harness_kernels(keywords: &[&str]) -> Result<Kernels, String> {
         backends: vec![crate::config::Backend::Wgsl],
         ..BuildOptions::one_off(scratch.clone(), scratch.clone(), true)
     };
-    let result = build(&store, &includes, &catalog, &options, &|_, _| {});
+    let result = build(&store, &includes, &catalog, &options, &problems, &|_, _| {});
     problems.extend(result.diagnostics);
     let read = || -> Result<Kernels, String> {
         if crate::diagnostics::has_errors(&problems) {

@@ -96,8 +96,8 @@ pub struct BuildOptions {
     pub unused_shaders: VariantSelection,
     /// Write `manifest.json` indented (default: compact).
     pub pretty_manifest: bool,
-    /// Record the inputs for the next build's no-op check ([`unchanged`]). Only when the
-    /// catalogue reported nothing: a no-op build reports nothing either.
+    /// Record the inputs for the next build's no-op check ([`unchanged`]) when nothing is
+    /// reported ([`build`]'s `earlier`, and the build's own).
     pub record: bool,
     /// The whole build, one shard of it, or a merge of shards.
     pub part: Part,
@@ -113,6 +113,16 @@ pub struct BuildOptions {
 }
 
 impl BuildOptions {
+    /// What a build with these options may do after `earlier` findings: write nothing after an
+    /// error, record no no-op after any finding.
+    fn after(&self, earlier: &[Diagnostic]) -> BuildOptions {
+        BuildOptions {
+            write: self.write && !crate::diagnostics::has_errors(earlier),
+            record: self.record && earlier.is_empty(),
+            ..self.clone()
+        }
+    }
+
     /// A one-off build of what a caller catalogued itself (a shader to reflect, the accuracy
     /// harness): one thread, both back ends, nothing recorded for a no-op, no shared cache.
     pub fn one_off(root: PathBuf, output: PathBuf, write: bool) -> BuildOptions {
@@ -224,14 +234,18 @@ impl BuildResult {
 }
 
 /// Builds (or, without `write`, checks) every WGSL pass of the catalogue, or the part of it
-/// `options.part` names. `progress` is told (variants done, variants in all).
+/// `options.part` names. `earlier` is what was reported before it (the project's and the
+/// catalogue's findings): after an error nothing is written, after any finding no no-op is
+/// recorded (a no-op build reports nothing). `progress` is told (variants done, variants in all).
 pub fn build(
     store: &SourceStore,
     includes: &Includes,
     catalog: &Catalog,
     options: &BuildOptions,
+    earlier: &[Diagnostic],
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> BuildResult {
+    let options = &options.after(earlier);
     timed_in_pool(options, || build_passes(store, includes, catalog, options, progress))
 }
 
@@ -250,9 +264,11 @@ impl Merge {
 pub fn merge(
     store: &mut SourceStore,
     options: &BuildOptions,
+    earlier: &[Diagnostic],
     shards: &Merge,
     read: ShardsRead,
 ) -> BuildResult {
+    let options = &options.after(earlier);
     timed_in_pool(options, || merge::merge(store, options, shards, read))
 }
 
