@@ -1,0 +1,437 @@
+//! What the given paths hold: the project folders and their `kiln.toml`, the shader, material
+//! and usage-log files found under them, loaded into the store.
+
+use super::ProjectError;
+use crate::catalog::CatalogInput;
+use crate::config::ProjectConfig;
+use crate::diagnostics::Diagnostic;
+use crate::preprocess::IncludeConfig;
+use crate::source::{FileId, LoadError, SourceStore, Span, Spanned};
+use std::path::{Path, PathBuf};
+
+/// The project a command without a path works on, as cargo finds its package: the nearest folder
+/// from the current one up with a `kiln.toml` (written relative, `.`, `..`, ..., so diagnostics
+/// show short paths), else the current folder (a project of defaults).
+pub fn default_project() -> PathBuf {
+    let Ok(current) = std::env::current_dir() else { return PathBuf::from(".") };
+    let found = current.ancestors().position(|a| a.join(crate::config::FILE_NAME).is_file());
+    match found {
+        None | Some(0) => PathBuf::from("."),
+        Some(levels) => (0..levels).map(|_| "..").collect(),
+    }
+}
+
+/// What the given paths hold: folders are projects (with their `kiln.toml`, or the defaults), files
+/// are shaders (or materials, by their `.mat` extension).
+#[derive(Debug, Default)]
+pub struct Workspace {
+    /// The project folder (the first folder given, or the folder of the first file): what the
+    /// build records about files is relative to it.
+    pub root: PathBuf,
+    /// Where builds write: the first project folder's `output` (default `build/kiln` in it).
+    pub output: PathBuf,
+    /// The back ends stage modules are written for.
+    pub backends: Vec<crate::config::Backend>,
+    /// The shader files found.
+    pub shaders: Vec<PathBuf>,
+    /// The material files found.
+    pub materials: Vec<PathBuf>,
+    /// Include folders and roots, when `kiln.toml` sets them.
+    pub include: Option<IncludeConfig>,
+    /// Shaders built in full though no material uses them.
+    pub always_include: Vec<String>,
+    /// `kiln.toml`'s `global_keywords`, gathered from every project folder that sets it.
+    pub global_keywords: Option<Vec<Spanned<String>>>,
+    /// Warnings are errors.
+    pub strict: bool,
+    /// `kiln.toml`'s `variant_logs`, relative to the working folder.
+    pub variant_logs: Vec<PathBuf>,
+    /// The first project folder's `cache_dir`.
+    pub cache_dir: Option<PathBuf>,
+    /// The compute shader variants `kiln.toml` lists (`[compute.NAME] variants`).
+    pub listed_variants: Vec<crate::catalog::ListedVariant>,
+    /// The names `kiln.toml` adds to the per-frame and per-object bind groups.
+    pub groups: crate::compile::bind::GroupNames,
+    /// The same names, where `kiln.toml` writes them.
+    pub group_names: Vec<Spanned<String>>,
+}
+
+impl Workspace {
+    /// The shared module cache a command uses: the folder given, else `KILN_CACHE_DIR`, else
+    /// the project's `cache_dir`.
+    pub fn shared_cache_dir(&self, given: Option<PathBuf>) -> Option<PathBuf> {
+        named_cache_dir(given).or_else(|| self.cache_dir.clone())
+    }
+
+    /// What the catalogue is built from: the loaded shader and material files, with this
+    /// workspace's settings.
+    pub fn catalog_input(&self, shaders: Vec<FileId>, materials: Vec<FileId>) -> CatalogInput {
+        CatalogInput {
+            shaders,
+            materials,
+            always_include: self.always_include.clone(),
+            global_keywords: self.global_keywords.clone(),
+            variant_logs: Vec::new(),
+            listed_variants: self.listed_variants.clone(),
+        }
+    }
+}
+
+/// Adds `[bind_groups]`'s names to `groups`; a name in both groups is an error at its second
+/// place (a resource has one update frequency).
+pub(super) fn bind_group_names(
+    config: &crate::config::BindGroupsConfig,
+    file: FileId,
+    groups: &mut crate::compile::bind::GroupNames,
+) -> Vec<Diagnostic> {
+    let mut diagnostics = Vec::new();
+    for name in &config.per_object {
+        if let Some(first) = config.per_frame.iter().find(|f| f.get_ref() == name.get_ref()) {
+            diagnostics.push(
+                Diagnostic::error("K0010", format!("`{}` is named in two bind groups", name.get_ref()))
+                    .at(Span::new(file, name.span()), "bound per object here")
+                    .label(Span::new(file, first.span()), "bound per frame here")
+                    .help("a resource is updated at one frequency: keep it in one list"),
+            );
+        }
+    }
+    groups.per_frame.extend(config.per_frame.iter().map(|n| n.get_ref().clone()));
+    groups.per_object.extend(config.per_object.iter().map(|n| n.get_ref().clone()));
+    diagnostics
+}
+
+/// `[bind_groups]` names that no shader or include of the project mentions: a misspelt resource
+/// (`ObjectDta`) would silently stay in the material's group, and the run time would bind it
+/// wrongly. A warning at the name, with the closest resource a file declares (`var` names).
+pub(super) fn unknown_group_names(store: &SourceStore, names: &[Spanned<String>]) -> Vec<Diagnostic> {
+    // The shader texts: not `kiln.toml` (which names them) nor the materials (which cannot).
+    let is_text = |file: &FileId| {
+        store.path(*file).is_some_and(|p| {
+            !p.ends_with(crate::config::FILE_NAME)
+                && !p.extension().is_some_and(|e| e.eq_ignore_ascii_case("mat"))
+        })
+    };
+    let words_of = |file: FileId| {
+        store.text(file).split(|c: char| !(c.is_alphanumeric() || c == '_')).filter(|w| !w.is_empty())
+    };
+    let mut missing: Vec<&Spanned<String>> = names.iter().collect();
+    for file in store.ids().filter(is_text) {
+        if missing.is_empty() {
+            return Vec::new();
+        }
+        let words: std::collections::HashSet<&str> = words_of(file).collect();
+        missing.retain(|name| !words.contains(name.value.as_str()));
+    }
+    if missing.is_empty() {
+        return Vec::new();
+    }
+    // What the files declare, for the suggestion: after `var`, the first word that is not an
+    // address space or access mode.
+    const SPACES: [&str; 7] =
+        ["uniform", "storage", "read", "read_write", "private", "workgroup", "function"];
+    let mut declared = std::collections::BTreeSet::new();
+    for file in store.ids().filter(is_text) {
+        let mut after_var = false;
+        for word in words_of(file) {
+            if word == "var" {
+                after_var = true;
+            } else if after_var && !SPACES.contains(&word) {
+                declared.insert(word);
+                after_var = false;
+            }
+        }
+    }
+    missing
+        .into_iter()
+        .map(|name| {
+            let d = Diagnostic::warning(
+                "K0012",
+                format!("`[bind_groups]` names `{}`, which no shader or include declares", name.value),
+            )
+            .at(name.span, "not a resource of this project");
+            match crate::diagnostics::closest(&name.value, declared.iter().copied()) {
+                Some(suggestion) => d.help(format!("did you mean `{suggestion}`?")),
+                None => d.help("name a resource's variable, as `var<uniform> Name` declares it"),
+            }
+        })
+        .collect()
+}
+
+/// A `kiln.toml` path that leads out of the project folder, at the place the file names it.
+fn outside_the_project(store: &SourceStore, file: FileId, folder: &Path) -> Diagnostic {
+    let written = folder.to_string_lossy();
+    let text = store.text(file);
+    let at = ['"', '\'']
+        .iter()
+        .find_map(|quote| text.find(&format!("{quote}{written}{quote}")))
+        .map_or(0..0, |at| at..at + written.len() + 2);
+    Diagnostic::error("K0011", format!("`{}` is outside the project", written.escape_debug()))
+        .at(Span::new(file, at), "this path leads out of the project folder")
+        .note(
+            "kiln reads a project's shaders, materials, includes and usage logs only from inside its folder",
+        )
+        .help("move or link the files into the project, or give the folder to kiln as a path of its own")
+}
+
+/// Gathers the shaders, materials and include settings of `paths` (see [`Workspace`]); a
+/// malformed `kiln.toml` is a diagnostic, its defaults used instead.
+pub fn open_workspace(
+    store: &mut SourceStore,
+    paths: &[PathBuf],
+) -> Result<(Workspace, Vec<Diagnostic>), ProjectError> {
+    let mut workspace = Workspace::default();
+    let mut diagnostics = Vec::new();
+    let mut roots = Vec::new();
+    let mut include_paths = Vec::new();
+    // How many files and folders the shaders and the materials were gathered from.
+    let (mut shader_sources, mut material_sources) = (0, 0);
+    for path in paths {
+        if !path.exists() {
+            return Err(ProjectError::NotFound(path.clone()));
+        }
+        if path.is_file() {
+            let is_material = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("mat"));
+            if is_material { &mut workspace.materials } else { &mut workspace.shaders }.push(path.clone());
+            *if is_material { &mut material_sources } else { &mut shader_sources } += 1;
+            roots.push(path.parent().map(Path::to_path_buf).unwrap_or_default());
+            continue;
+        }
+        let config_path = path.join(crate::config::FILE_NAME);
+        let mut config_file = None;
+        let config = if config_path.is_file() {
+            let file = store.load(&config_path)?;
+            config_file = Some(file);
+            diagnostics.extend(crate::diagnostics::text_warnings(store, file));
+            let (config, problems) = crate::config::parse_config(store, file);
+            diagnostics.extend(problems);
+            if let Some(global) = &config.global_keywords {
+                let spanned =
+                    global.iter().map(|k| Spanned::new(k.get_ref().clone(), Span::new(file, k.span())));
+                workspace.global_keywords.get_or_insert_with(Vec::new).extend(spanned);
+            }
+            diagnostics.extend(bind_group_names(&config.bind_groups, file, &mut workspace.groups));
+            let spanned = config.bind_groups.per_frame.iter().chain(&config.bind_groups.per_object);
+            workspace
+                .group_names
+                .extend(spanned.map(|n| Spanned::new(n.get_ref().clone(), Span::new(file, n.span()))));
+            for (name, compute) in &config.compute {
+                match &compute.variants {
+                    crate::config::ComputeVariants::All => workspace.always_include.push(name.clone()),
+                    crate::config::ComputeVariants::Listed(lists) => {
+                        workspace.listed_variants.extend(lists.iter().map(|keywords| {
+                            crate::catalog::ListedVariant {
+                                shader: name.clone(),
+                                pass: 0,
+                                keywords: keywords.get_ref().clone(),
+                                span: Span::new(file, keywords.span()),
+                            }
+                        }))
+                    }
+                }
+            }
+            config
+        } else {
+            ProjectConfig::default()
+        };
+        // Every path the file names is confined to the project folder, as includes are: a
+        // project (one cloned from anywhere) must not make `kiln check` read and quote other files.
+        let root = std::fs::canonicalize(path).unwrap_or_else(|_| path.clone());
+        let mut under = |folders: &[PathBuf]| -> Vec<PathBuf> {
+            let mut inside = Vec::new();
+            for folder in folders {
+                let joined = crate::source::normalize_lexically(&path.join(folder));
+                let resolved = std::fs::canonicalize(&joined)
+                    .unwrap_or_else(|_| crate::source::normalize_lexically(&root.join(folder)));
+                if resolved.starts_with(&root) {
+                    inside.push(joined);
+                } else if let Some(file) = config_file {
+                    diagnostics.push(outside_the_project(store, file, folder));
+                }
+            }
+            inside
+        };
+        let (shader_folders, material_folders) = (under(&config.shaders), under(&config.materials));
+        let (include_folders, variant_logs) = (under(&config.include_paths), under(&config.variant_logs));
+        workspace.shaders.extend(find_files(&shader_folders, &SHADER_EXTENSIONS)?);
+        workspace.materials.extend(find_files(&material_folders, &["mat"])?);
+        for folder in shader_folders.iter().chain(&material_folders).chain(&include_folders) {
+            store.record_searched(folder.clone());
+        }
+        shader_sources += config.shaders.len();
+        material_sources += config.materials.len();
+        include_paths.extend(include_folders);
+        if workspace.output.as_os_str().is_empty() {
+            workspace.output = crate::source::normalize_lexically(&path.join(&config.output));
+            workspace.backends = config.backends.clone();
+        }
+        workspace.always_include.extend(config.always_include);
+        workspace.variant_logs.extend(variant_logs);
+        if workspace.cache_dir.is_none() {
+            workspace.cache_dir =
+                config.cache_dir.as_ref().map(|c| crate::source::normalize_lexically(&path.join(c)));
+        }
+        workspace.strict |= config.strict;
+        roots.push(path.clone());
+    }
+    // A shader under two roots (`.` and `shaders`) is still one shader. One root cannot list a
+    // file twice (links are not followed), which spares a large project a canonical path per file.
+    for (files, sources) in
+        [(&mut workspace.shaders, shader_sources), (&mut workspace.materials, material_sources)]
+    {
+        if sources > 1 {
+            use rayon::prelude::*;
+            let canonical: Vec<PathBuf> =
+                files.par_iter().map(|f| std::fs::canonicalize(f).unwrap_or_else(|_| f.clone())).collect();
+            let mut seen = std::collections::HashSet::new();
+            let mut keep = canonical.into_iter().map(|c| seen.insert(c));
+            files.retain(|_| keep.next().unwrap_or(true));
+        }
+    }
+    workspace.root = roots.first().cloned().unwrap_or_default();
+    if workspace.output.as_os_str().is_empty() {
+        let defaults = ProjectConfig::default();
+        let folder = workspace.root.clone();
+        workspace.output = crate::source::normalize_lexically(&folder.join(defaults.output));
+        workspace.backends = defaults.backends;
+    }
+    let mut include = include_config(&roots);
+    include.include_paths = include_paths;
+    workspace.include = Some(include);
+    Ok((workspace, diagnostics))
+}
+
+/// Where includes may come from for shaders found under `paths`: each folder given (or the folder
+/// of each file given) is a root, searched after the including file's own folder.
+pub fn include_config(paths: &[PathBuf]) -> IncludeConfig {
+    let roots = paths
+        .iter()
+        .map(|p| if p.is_dir() { p.clone() } else { p.parent().map(Path::to_path_buf).unwrap_or_default() })
+        .map(|p| if p.as_os_str().is_empty() { PathBuf::from(".") } else { p })
+        .collect();
+    IncludeConfig::new(roots)
+}
+
+/// The shared module cache named without a project: the folder given, else `KILN_CACHE_DIR`
+/// (a project's `cache_dir` comes after both: [`Workspace::shared_cache_dir`]).
+pub fn named_cache_dir(given: Option<PathBuf>) -> Option<PathBuf> {
+    given.or_else(|| std::env::var_os("KILN_CACHE_DIR").map(PathBuf::from))
+}
+
+/// The files a project's shader folders are searched for: `.shader` files and compute shaders.
+pub const SHADER_EXTENSIONS: [&str; 2] = ["shader", crate::shaderlab::compute::EXTENSION];
+
+/// Every file with one of these extensions under the given files and folders, folder by folder
+/// in name order; a file named directly is taken whatever its extension, and symbolic links are
+/// not followed. A folder that does not exist contributes nothing (a project without materials
+/// is fine).
+pub fn find_files(paths: &[PathBuf], extensions: &[&str]) -> Result<Vec<PathBuf>, ProjectError> {
+    let mut files = Vec::new();
+    for path in paths.iter().filter(|p| p.exists()) {
+        if path.is_file() {
+            files.push(path.clone());
+        } else {
+            find_under(path, extensions, &mut files)?;
+        }
+    }
+    Ok(files)
+}
+
+/// The files with one of `extensions` in `folder` and its subfolders, each folder's entries by
+/// name, links not followed. By hand rather than with walkdir: every build, shard and merge walks
+/// the material folders, and at 50,000 materials walkdir's path per entry took twice as long.
+fn find_under(folder: &Path, extensions: &[&str], files: &mut Vec<PathBuf>) -> Result<(), ProjectError> {
+    let walk_error =
+        |e: std::io::Error| ProjectError::Walk { path: folder.to_path_buf(), message: e.to_string() };
+    let mut entries: Vec<(std::ffi::OsString, std::fs::FileType)> = std::fs::read_dir(folder)
+        .and_then(|entries| {
+            entries.map(|entry| entry.and_then(|e| Ok((e.file_name(), e.file_type()?)))).collect()
+        })
+        .map_err(walk_error)?;
+    entries.sort_unstable_by(|(a, _), (b, _)| a.cmp(b));
+    for (name, kind) in entries {
+        if kind.is_dir() {
+            find_under(&folder.join(&name), extensions, files)?;
+        } else if kind.is_file()
+            && Path::new(&name)
+                .extension()
+                .is_some_and(|ext| extensions.iter().any(|wanted| ext.eq_ignore_ascii_case(wanted)))
+        {
+            files.push(folder.join(name));
+        }
+    }
+    Ok(())
+}
+
+/// Loads usage logs into the store for the catalogue; one that cannot be read is a diagnostic.
+pub(super) fn load_variant_logs<'a>(
+    store: &mut SourceStore,
+    paths: impl Iterator<Item = &'a PathBuf>,
+    input: &mut CatalogInput,
+    diagnostics: &mut Vec<Diagnostic>,
+) {
+    for path in paths {
+        match store.load(path) {
+            Ok(file) => input.variant_logs.push(file),
+            Err(error) => diagnostics.push(load_error(&error)),
+        }
+    }
+}
+
+/// Loads files into the store. Unreadable files and files that are not text become diagnostics,
+/// not failures, so the rest of the project is still checked; a file read with problems (bytes
+/// that are not UTF-8, NULs) comes with its warnings.
+pub fn load_files(store: &mut SourceStore, paths: &[PathBuf]) -> (Vec<FileId>, Vec<Diagnostic>) {
+    let mut ids = Vec::new();
+    let mut diagnostics = Vec::new();
+    for loaded in store.load_all(paths) {
+        match loaded {
+            Ok(id) => {
+                diagnostics.extend(crate::diagnostics::text_warnings(store, id));
+                ids.push(id);
+            }
+            Err(error) => diagnostics.push(load_error(&error)),
+        }
+    }
+    (ids, diagnostics)
+}
+
+/// The diagnostic for a file that could not be loaded.
+pub fn load_error(error: &LoadError) -> Diagnostic {
+    let code = match error {
+        LoadError::NotText { .. } => "K0005",
+        LoadError::Io { .. } => "K0002",
+        LoadError::TooLarge { .. } => "K0004",
+    };
+    let diagnostic = Diagnostic::error(code, error.to_string());
+    match error {
+        LoadError::NotText { .. } => diagnostic
+            .note("it is not UTF-8 and has NUL bytes near its start, as binary data does")
+            .help("only text files belong where kiln looks for shaders and materials"),
+        _ => diagnostic,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn found_files_come_folder_by_folder_in_name_order_without_following_links() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let root = dir.path();
+        for file in ["b.shader", "a.SHADER", "d.txt", "sub/z/c.shader", "sub/b.shader", "sub.shader"] {
+            let path = root.join(file);
+            std::fs::create_dir_all(path.parent().expect("parent")).expect("folder");
+            std::fs::write(path, "").expect("write");
+        }
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink(root.join("b.shader"), root.join("link.shader")).expect("link");
+            std::os::unix::fs::symlink(root.join("sub"), root.join("linked")).expect("link");
+        }
+        let found = find_files(&[root.to_path_buf()], &SHADER_EXTENSIONS).expect("walk");
+        let names: Vec<String> = found.iter().map(|p| crate::source::relative_to(p, root)).collect();
+        // Entries by their names' bytes: `sub` before `sub.shader`, a folder's files where it sorts.
+        assert_eq!(names, ["a.SHADER", "b.shader", "sub/b.shader", "sub/z/c.shader", "sub.shader"]);
+    }
+}
