@@ -13,7 +13,7 @@ use crate::material::{Material, MaterialValue};
 use crate::preprocess::Stage;
 use crate::reflect::{Resource, UniformBlock};
 use crate::shaderlab::ast::Property;
-use crate::shaderlab::pragma::{KeywordKind, KeywordScope};
+use crate::shaderlab::pragma::KeywordKind;
 use crate::source::{SourceStore, relative_to};
 use crate::store::{Cache, CachedStage, Digest, Hashed, Recorded, RecordedFile};
 use rayon::prelude::*;
@@ -499,9 +499,9 @@ pub(super) fn pass_manifest(
             .iter()
             .chain(work.program.pragmas.keyword_sets.iter().filter(|s| s.kind == KeywordKind::DynamicBranch))
             .map(|set| KeywordSetManifest {
-                kind: set.kind.name().to_string(),
-                scope: if set.scope == KeywordScope::Local { "local" } else { "global" }.to_string(),
-                stage: set.stage.name().to_string(),
+                kind: set.kind,
+                scope: set.scope,
+                stage: set.stage,
                 keywords: set
                     .options
                     .iter()

@@ -13,7 +13,9 @@ mod names;
 
 pub use names::NameClash;
 
-use crate::manifest::{Backend, Manifest, ModuleFile, PassManifest, PerBackend, ShaderManifest, ShaderStage};
+use crate::manifest::{
+    Backend, Manifest, ModuleFile, OverrideType, PassManifest, PerBackend, ShaderManifest, ShaderStage,
+};
 use crate::reflect::Resource;
 use names::{Case, PRELUDE_NAMES, Scope, doc_text, string_literal};
 use std::collections::BTreeMap;
@@ -85,6 +87,11 @@ impl Variant {
     /// Its keywords, in the pass's keyword order.
     pub fn keywords(&self) -> Vec<&'static str> {
         self.pass.keywords_of(self.index)
+    }
+
+    /// Its key: bit i stands for `pass.keywords[i]` (the manifest's order), in words of 64 bits.
+    pub fn key(&self) -> &'static [u64] {
+        self.pass.key(self.index)
     }
 
     /// A compute shader's kernel of this variant, by name (`None`: no such kernel, or it failed).
@@ -196,15 +203,36 @@ impl ::core::fmt::Display for MissingVariant {
 
 impl ::std::error::Error for MissingVariant {}
 
+/// A pass's own keyword type (`PassNKeyword` in each shader's module), which names its pass: a
+/// lookup through it ([`variant`]) takes that pass's keywords and no other's.
+pub trait PassKeyword: Copy {
+    /// The pass whose keywords these are.
+    fn pass() -> &'static Pass;
+    /// The keyword as the shader writes it.
+    fn name(self) -> &'static str;
+}
+
+/// The variant of the keywords' pass with exactly these keywords (in any order), as
+/// [`Pass::variant`]: `variant(&[custom_rp_lit::Pass0Keyword::_CLIPPING])`. A keyword of another
+/// pass does not compile.
+#[allow(dead_code)]
+pub fn variant<K: PassKeyword>(keywords: &[K]) -> Result<Variant, MissingVariant> {
+    K::pass().find(keywords.iter().map(|k| k.name()))
+}
+
 #[allow(dead_code)]
 impl Pass {
     /// The variant with exactly these keywords (in any order), or an error naming what is missing.
     /// `dynamic_branch` keywords among them choose no variant.
     pub fn variant(&'static self, keywords: &[&str]) -> Result<Variant, MissingVariant> {
+        self.find(keywords.iter().copied())
+    }
+
+    fn find<'k>(&'static self, keywords: impl Iterator<Item = &'k str> + Clone) -> Result<Variant, MissingVariant> {
         let mut key = vec![0u64; self.key_words];
         let mut undeclared = Vec::new();
-        for keyword in keywords.iter().filter(|k| !self.dynamic_keywords.contains(k)) {
-            match self.keywords.iter().position(|k| k == keyword) {
+        for keyword in keywords.clone().filter(|k| !self.dynamic_keywords.contains(k)) {
+            match self.keywords.iter().position(|k| *k == keyword) {
                 Some(bit) => key[bit / 64] |= 1 << (bit % 64),
                 None => undeclared.push(keyword.to_string()),
             }
@@ -220,7 +248,7 @@ impl Pass {
                 }
             }
         }
-        let mut requested: Vec<String> = keywords.iter().map(|k| k.to_string()).collect();
+        let mut requested: Vec<String> = keywords.map(str::to_string).collect();
         requested.sort_unstable();
         requested.dedup();
         undeclared.sort_unstable();
@@ -402,10 +430,11 @@ fn shader_module(
     for pass in &shader.passes {
         scope.reserve(&format!("PASS_{}", pass.index));
         scope.reserve(&format!("Pass{}Overrides", pass.index));
+        scope.reserve(&format!("Pass{}Keyword", pass.index));
     }
     let mut clashes = handles::handles(out, shader, module, &mut scope, place);
     for pass in &shader.passes {
-        clashes.extend(pass_static(out, pass, packs, &mut scope, place));
+        clashes.extend(pass_static(out, pass, packs, module, &mut scope, place));
     }
     layout::uniform_structs(out, shader, &mut scope, place);
     clashes.extend(scope.clashes);
@@ -417,6 +446,7 @@ fn pass_static(
     out: &mut String,
     pass: &PassManifest,
     packs: &PackNumbers,
+    module: &str,
     scope: &mut Scope,
     place: &str,
 ) -> Vec<NameClash> {
@@ -533,7 +563,9 @@ fn pass_static(
     }
     out.push_str("        ],\n    };\n");
     handles::kernel_constants(out, pass, scope, place);
-    overrides_struct(out, pass, place)
+    let mut clashes = handles::pass_keywords(out, pass, module, place);
+    clashes.extend(overrides_struct(out, pass, place));
+    clashes
 }
 
 /// `PassNOverrides`: the pass's own `override` constants (its `dynamic_branch` keywords are set
@@ -548,11 +580,14 @@ fn overrides_struct(out: &mut String, pass: &PassManifest, place: &str) -> Vec<N
     if constants.is_empty() {
         return Vec::new();
     }
-    let rust_type = |ty: &str| match ty {
-        "bool" => "bool",
-        "i32" => "i32",
-        "u32" => "u32",
-        _ => "f32",
+    let rust_type = |ty: OverrideType| match ty {
+        OverrideType::Bool => "bool",
+        OverrideType::I32 => "i32",
+        OverrideType::U32 => "u32",
+        // wgpu sets every constant from an f64; the struct holds floats as the renderer writes them.
+        OverrideType::I64 | OverrideType::U64 | OverrideType::F16 | OverrideType::F32 | OverrideType::F64 => {
+            "f32"
+        }
     };
     let name = format!("Pass{}Overrides", pass.index);
     let mut fields = Scope::new(format!("struct `{name}`"), &[]);
@@ -568,10 +603,10 @@ fn overrides_struct(out: &mut String, pass: &PassManifest, place: &str) -> Vec<N
     );
     let _ = writeln!(out, "    #[derive(Debug, Clone, Copy, PartialEq)]\n    pub struct {name} {{");
     for (c, field) in &constants {
-        let _ = writeln!(out, "        pub {field}: {},", rust_type(&c.ty));
+        let _ = writeln!(out, "        pub {field}: {},", rust_type(c.ty));
     }
     out.push_str("    }\n");
-    let literal = |c: &crate::manifest::OverrideConstant, value: f64| match c.ty.as_str() {
+    let literal = |c: &crate::manifest::OverrideConstant, value: f64| match rust_type(c.ty) {
         "bool" => (value != 0.0).to_string(),
         "i32" | "u32" => format!("{value}"),
         _ => format!("{value:?}_f32"),
@@ -589,8 +624,8 @@ fn overrides_struct(out: &mut String, pass: &PassManifest, place: &str) -> Vec<N
     let values: Vec<String> = constants
         .iter()
         .map(|(c, field)| {
-            let value = match c.ty.as_str() {
-                "bool" => format!("f64::from(u8::from(self.{field}))"),
+            let value = match c.ty {
+                OverrideType::Bool => format!("f64::from(u8::from(self.{field}))"),
                 _ => format!("f64::from(self.{field})"),
             };
             format!("({}, {value})", string_literal(&c.key()))

@@ -54,13 +54,15 @@ macro_rules! closed_set {
 }
 
 mod backend;
+mod keywords;
 mod reflection;
 pub mod state;
 
 pub use backend::{Backend, PerBackend};
+pub use keywords::{KeywordKind, KeywordScope, KeywordSetManifest, KeywordStage};
 pub use reflection::{
-    Attribute, Member, OverrideConstant, Resource, SampleType, ShaderStage, StorageAccess, TexelFormat,
-    UniformBlock, ViewDimension,
+    Attribute, Member, OverrideConstant, OverrideType, Resource, SampleType, ShaderStage, StorageAccess,
+    TexelFormat, UniformBlock, ViewDimension,
 };
 pub use state::*;
 
@@ -344,7 +346,7 @@ impl PassManifest {
 
     /// Its `dynamic_branch` sets.
     pub fn dynamic_sets(&self) -> impl Iterator<Item = &KeywordSetManifest> {
-        self.keyword_sets.iter().filter(|set| set.kind == "dynamic_branch")
+        self.keyword_sets.iter().filter(|set| set.kind == KeywordKind::DynamicBranch)
     }
 
     /// Whether `keyword` is one of its `dynamic_branch` keywords (an `override` of its modules,
@@ -383,20 +385,6 @@ impl PassManifest {
             hash: file.hash.clone(),
         }
     }
-}
-
-/// A render-state command: as written (for messages), structured, and with the properties it
-/// refers to and their defaults.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct KeywordSetManifest {
-    /// `multi_compile`, `shader_feature` or `dynamic_branch`.
-    pub kind: String,
-    /// `global` or `local`.
-    pub scope: String,
-    /// `all`, `vertex` or `fragment`.
-    pub stage: String,
-    /// `_` is the all-off choice.
-    pub keywords: Vec<String>,
 }
 
 /// One bind group of a pass's layout.

@@ -225,6 +225,28 @@ pub struct Member {
     pub members: Vec<Member>,
 }
 
+closed_set! {
+    /// The scalar type of an `override` constant (WGSL's, and the 64-bit ones naga allows).
+    OverrideType {
+        /// `bool`: 0 or 1.
+        Bool = "bool",
+        /// `i32`.
+        I32 = "i32",
+        /// `u32`.
+        U32 = "u32",
+        /// `i64` (naga's extension).
+        I64 = "i64",
+        /// `u64` (naga's extension).
+        U64 = "u64",
+        /// `f16` (`enable f16;`).
+        F16 = "f16",
+        /// `f32`.
+        F32 = "f32",
+        /// `f64` (naga's extension).
+        F64 = "f64",
+    }
+}
+
 /// A pipeline-overridable constant (WGSL `override`) a stage module uses, set by name (or by its
 /// `@id`) when a pipeline is created. One named after a `dynamic_branch` keyword of its pass is
 /// that keyword (kiln declares it).
@@ -234,9 +256,9 @@ pub struct OverrideConstant {
     pub name: String,
     /// Its `@id`, if it has one: a pipeline then sets it by that number, written in decimal.
     pub id: Option<u16>,
-    /// `bool`, `i32`, `u32`, `f32` or `f16`.
+    /// Its scalar type.
     #[serde(rename = "type")]
-    pub ty: String,
+    pub ty: OverrideType,
     /// Its default as a number (`bool`: 0 or 1) when the WGSL gives it as a literal; `None` when
     /// it has none or computes it from other overrides.
     pub default: Option<f64>,
@@ -254,13 +276,16 @@ impl OverrideConstant {
     /// for the integers, finite and in range for the floats.
     pub fn accepts(&self, value: f64) -> bool {
         let whole = value.fract() == 0.0;
-        match self.ty.as_str() {
-            "bool" => value == 0.0 || value == 1.0,
-            "i32" => whole && (f64::from(i32::MIN)..=f64::from(i32::MAX)).contains(&value),
-            "u32" => whole && (0.0..=f64::from(u32::MAX)).contains(&value),
-            "f32" => value.is_finite() && value.abs() <= f64::from(f32::MAX),
-            "f16" => value.is_finite() && value.abs() <= 65504.0,
-            _ => false,
+        match self.ty {
+            OverrideType::Bool => value == 0.0 || value == 1.0,
+            OverrideType::I32 => whole && (f64::from(i32::MIN)..=f64::from(i32::MAX)).contains(&value),
+            OverrideType::U32 => whole && (0.0..=f64::from(u32::MAX)).contains(&value),
+            // As wgpu passes them: an f64, whole, that the 64-bit integer holds.
+            OverrideType::I64 => whole && (-(2f64.powi(63))..2f64.powi(63)).contains(&value),
+            OverrideType::U64 => whole && (0.0..2f64.powi(64)).contains(&value),
+            OverrideType::F16 => value.is_finite() && value.abs() <= 65504.0,
+            OverrideType::F32 => value.is_finite() && value.abs() <= f64::from(f32::MAX),
+            OverrideType::F64 => value.is_finite(),
         }
     }
 }
@@ -300,5 +325,24 @@ mod tests {
             let json = serde_json::to_string(&format).expect("writes");
             assert_eq!(serde_json::from_str::<TexelFormat>(&json).expect("reads"), format, "{json}");
         }
+    }
+
+    #[test]
+    fn an_override_s_type_is_a_scalar_and_bounds_its_values() {
+        let constant = |ty: &str| {
+            serde_json::from_str::<OverrideConstant>(&format!(
+                r#"{{"name": "n", "id": null, "type": "{ty}", "default": null, "required": true}}"#
+            ))
+        };
+        assert!(constant("vec2<f32>").is_err(), "not a scalar");
+        for &ty in OverrideType::ALL {
+            let read = constant(ty.name()).expect("a scalar type");
+            assert_eq!(read.ty, ty);
+            assert!(read.accepts(1.0) && !read.accepts(f64::NAN), "{ty}");
+        }
+        let accepts = |ty: &str, value: f64| constant(ty).expect("reads").accepts(value);
+        assert!(!accepts("bool", 2.0) && !accepts("u32", -1.0) && !accepts("i32", 0.5));
+        assert!(accepts("u64", 2f64.powi(40)) && !accepts("u32", 2f64.powi(40)));
+        assert!(accepts("f32", 1e30) && !accepts("f16", 1e30) && accepts("f64", 1e300));
     }
 }

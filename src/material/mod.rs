@@ -547,7 +547,7 @@ impl ShaderEntry {
             .iter()
             .flat_map(|pass| &pass.keyword_sets)
             .map(|set| EntrySet {
-                material_chooses: set.kind != crate::shaderlab::pragma::KeywordKind::MultiCompile.name(),
+                material_chooses: set.kind != crate::manifest::KeywordKind::MultiCompile,
                 keywords: set.keywords.iter().filter(|k| *k != "_").cloned().collect(),
                 off_option: set.keywords.iter().any(|k| k == "_"),
                 span: None,

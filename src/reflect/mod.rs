@@ -3,7 +3,7 @@
 //! types (`crate::manifest`).
 
 pub use crate::manifest::{Attribute, Member, OverrideConstant, Resource, UniformBlock};
-use crate::manifest::{SampleType, StorageAccess, TexelFormat, ViewDimension};
+use crate::manifest::{OverrideType, SampleType, StorageAccess, TexelFormat, ViewDimension};
 
 use naga::proc::Layouter;
 use naga::{
@@ -298,9 +298,25 @@ fn override_constant(module: &Module, constant: &naga::Override) -> OverrideCons
     OverrideConstant {
         name: constant.name.clone().unwrap_or_default(),
         id: constant.id,
-        ty: type_name(module, constant.ty),
+        ty: override_type(module, constant.ty),
         default,
         required: constant.init.is_none(),
+    }
+}
+
+/// An `override`'s scalar type (naga validates that it is a scalar; a 32-bit float stands for
+/// the abstract types, which the front end has made concrete by then).
+fn override_type(module: &Module, ty: Handle<Type>) -> OverrideType {
+    let TypeInner::Scalar(scalar) = module.types[ty].inner else { return OverrideType::F32 };
+    match (scalar.kind, scalar.width) {
+        (ScalarKind::Bool, _) => OverrideType::Bool,
+        (ScalarKind::Sint, 8) => OverrideType::I64,
+        (ScalarKind::Sint, _) => OverrideType::I32,
+        (ScalarKind::Uint, 8) => OverrideType::U64,
+        (ScalarKind::Uint, _) => OverrideType::U32,
+        (ScalarKind::Float, 2) => OverrideType::F16,
+        (ScalarKind::Float, 8) => OverrideType::F64,
+        (ScalarKind::Float | ScalarKind::AbstractFloat | ScalarKind::AbstractInt, _) => OverrideType::F32,
     }
 }
 

@@ -25,8 +25,8 @@ pub use state::{
 };
 
 use crate::manifest::{
-    FILE_NAME, MATERIALS_FILE, Manifest, MaterialManifest, ModuleFile, PassManifest, ShaderManifest,
-    VariantManifest,
+    FILE_NAME, MATERIALS_FILE, Manifest, MaterialManifest, ModuleFile, OverrideType, PassManifest,
+    ShaderManifest, VariantManifest,
 };
 use crate::material::ShaderEntries;
 use std::borrow::Cow;
@@ -136,12 +136,12 @@ pub enum RuntimeError {
     /// An override value its constant's type cannot hold.
     #[error(
         "`{shader}` pass {pass}: override `{name}` is `{ty}`, which cannot hold {value}{}",
-        type_hint(ty)
+        type_hint(*ty)
     )]
-    OverrideValue { shader: String, pass: usize, name: String, ty: String, value: f64 },
+    OverrideValue { shader: String, pass: usize, name: String, ty: OverrideType, value: f64 },
     /// An override without a default that the request does not set.
     #[error("`{shader}` pass {pass}: override `{name}: {ty}` has no default; give it a value")]
-    OverrideRequired { shader: String, pass: usize, name: String, ty: String },
+    OverrideRequired { shader: String, pass: usize, name: String, ty: OverrideType },
     /// A kernel the compute shader does not have.
     #[error(
         "`{shader}` has no kernel `{kernel}`{}",
@@ -182,11 +182,13 @@ fn dynamic_keywords(pass: &PassManifest) -> impl Iterator<Item = &String> {
 }
 
 /// What values an override type holds, for [`RuntimeError::OverrideValue`].
-fn type_hint(ty: &str) -> &'static str {
+fn type_hint(ty: OverrideType) -> &'static str {
     match ty {
-        "bool" => " (0 or 1)",
-        "i32" | "u32" => " (a whole number in its range)",
-        _ => " (a finite number in its range)",
+        OverrideType::Bool => " (0 or 1)",
+        OverrideType::I32 | OverrideType::U32 | OverrideType::I64 | OverrideType::U64 => {
+            " (a whole number in its range)"
+        }
+        OverrideType::F16 | OverrideType::F32 | OverrideType::F64 => " (a finite number in its range)",
     }
 }
 

@@ -44,7 +44,7 @@ pub(super) fn stage_constants(
                 shader: shader.to_string(),
                 pass,
                 name: name.to_string(),
-                ty: constant.ty.clone(),
+                ty: constant.ty,
                 value,
             });
         }
@@ -59,11 +59,10 @@ pub(super) fn stage_constants(
     let mut constants: StageConstants = vec![Vec::new(); stages.len()];
     for (stage, constants) in stages.iter().zip(&mut constants) {
         let Some(stage) = stage else { continue };
-        let name = stage.interface.stage.name();
         for constant in &stage.interface.overrides {
             let value = match chosen.iter().find(|(set, _)| set.keywords.contains(&constant.name)) {
                 // A `_fragment` keyword keeps its default in the vertex stage, as Unity's does.
-                Some((set, _)) if set.stage != "all" && set.stage != name => continue,
+                Some((set, _)) if !set.stage.includes(stage.interface.stage) => continue,
                 Some((_, on)) => Some(f64::from(u8::from(*on == Some(constant.name.as_str())))),
                 None => {
                     request.overrides.iter().rev().find(|(key, _)| *key == constant.key()).map(|&(_, v)| v)
@@ -76,7 +75,7 @@ pub(super) fn stage_constants(
                         shader: shader.to_string(),
                         pass,
                         name: constant.name.clone(),
-                        ty: constant.ty.clone(),
+                        ty: constant.ty,
                     });
                 }
                 None => {}

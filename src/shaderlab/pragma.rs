@@ -10,55 +10,7 @@ use crate::shaderlab::ast::ProgramBlock;
 use crate::shaderlab::one_of;
 use crate::source::{Span, Spanned};
 
-/// How a keyword set makes variants.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum KeywordKind {
-    /// Every keyword of the set is built.
-    MultiCompile,
-    /// Only the keywords materials use are built.
-    ShaderFeature,
-    /// No variants: the keyword is a run-time 0/1 the shader branches on.
-    DynamicBranch,
-}
-
-impl KeywordKind {
-    /// The pragma's name (`multi_compile`, `shader_feature`, `dynamic_branch`).
-    pub fn name(self) -> &'static str {
-        match self {
-            KeywordKind::MultiCompile => "multi_compile",
-            KeywordKind::ShaderFeature => "shader_feature",
-            KeywordKind::DynamicBranch => "dynamic_branch",
-        }
-    }
-}
-
-/// Whether a keyword is global to the project or local to its shader (`_local`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum KeywordScope {
-    /// Counts toward the project's global keywords.
-    Global,
-    /// `_local`: the shader's own.
-    Local,
-}
-
-/// The stage a keyword affects (`_vertex`, `_fragment`, ...); `All` when no suffix is given.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum KeywordStage {
-    /// Both stages see it.
-    All,
-    /// `_vertex`: only the vertex stage.
-    Vertex,
-    /// `_fragment`: only the fragment stage.
-    Fragment,
-    /// `_geometry` (no WGSL stage).
-    Geometry,
-    /// `_hull` (no WGSL stage).
-    Hull,
-    /// `_domain` (no WGSL stage).
-    Domain,
-    /// `_raytracing` (no WGSL stage).
-    RayTracing,
-}
+pub use crate::manifest::{KeywordKind, KeywordScope, KeywordStage};
 
 impl KeywordStage {
     const SUFFIXES: [(&'static str, KeywordStage); 6] = [
@@ -69,19 +21,6 @@ impl KeywordStage {
         ("_domain", KeywordStage::Domain),
         ("_raytracing", KeywordStage::RayTracing),
     ];
-
-    /// The suffix's stage name (`all` without one).
-    pub fn name(self) -> &'static str {
-        match self {
-            KeywordStage::All => "all",
-            KeywordStage::Vertex => "vertex",
-            KeywordStage::Fragment => "fragment",
-            KeywordStage::Geometry => "geometry",
-            KeywordStage::Hull => "hull",
-            KeywordStage::Domain => "domain",
-            KeywordStage::RayTracing => "raytracing",
-        }
-    }
 }
 
 /// One choice of a keyword set: a keyword, or `None` for the all-off choice (`_`).

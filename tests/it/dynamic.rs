@@ -28,7 +28,7 @@ fn one_module_serves_every_keyword_value_and_its_overrides_are_reflected() {
         .interface
         .overrides
         .iter()
-        .map(|o| (o.name.as_str(), o.id, o.ty.as_str(), o.default))
+        .map(|o| (o.name.as_str(), o.id, o.ty.name(), o.default))
         .collect();
     assert_eq!(
         overrides,
@@ -89,8 +89,32 @@ fn the_generated_module_has_typed_overrides_that_compile() {
          \x20   use shaders::test_dynamic::keywords::{_FOG, _TINT_RED};\n\
          \x20   assert!(shaders::test_dynamic::PASS_0.variant(&[_FOG, _TINT_RED]).is_ok());\n\
          \x20   assert_eq!(constants(), [(\"brightness\", 0.5), (\"7\", 0.0), (\"steps\", 1.0)]);\n\
+         }\n\
+         #[test]\n\
+         fn typed_keywords_find_their_pass_s_variant() {\n\
+         \x20   use shaders::test_dynamic::Pass0Keyword as K;\n\
+         \x20   let typed = shaders::variant(&[K::_FOG, K::_TINT_RED]).expect(\"built\");\n\
+         \x20   let named = shaders::test_dynamic::PASS_0.variant(&[\"_FOG\", \"_TINT_RED\"]).expect(\"built\");\n\
+         \x20   assert_eq!((typed.pass.shader, typed.index, typed.key()), (named.pass.shader, named.index, named.key()));\n\
+         \x20   assert_eq!(typed.pass.shader, \"Test/Dynamic\");\n\
          }\n",
     );
+    // A keyword of one pass given to another's lookup does not compile.
+    let lib = std::fs::read_to_string(krate.join("src/lib.rs")).expect("lib.rs");
+    let crossed = lib.replace(
+        "shaders::variant(&[K::_FOG, K::_TINT_RED])",
+        "shaders::variant::<shaders::test_required::Pass0Keyword>(&[K::_FOG])",
+    );
+    assert_ne!(crossed, lib);
+    std::fs::write(krate.join("src/lib.rs"), crossed).expect("lib.rs");
+    let run = crate::support::cargo_scratch(&krate, &["test", "--no-run"]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(!run.status.success(), "another pass's keyword compiles");
+    assert!(
+        stderr.contains("mismatched types") && stderr.contains("test_required::Pass0Keyword"),
+        "{stderr}"
+    );
+    std::fs::write(krate.join("src/lib.rs"), lib).expect("lib.rs");
     // A misspelt keyword constant does not compile: the typo is found before any frame.
     let lib = std::fs::read_to_string(krate.join("src/lib.rs")).expect("lib.rs");
     std::fs::write(
