@@ -423,6 +423,32 @@ impl Library {
         }
     }
 
+    /// The handle of a variant the generated module found: its `Variant::key()`, a bit per keyword
+    /// of the pass's `keywords` in words of 64, so no keyword passes through a string; every
+    /// `dynamic_branch` keyword at its default ([`Library::variant_id`] chooses them).
+    pub fn variant_id_by_key(&self, pass: PassId, key: &[u64]) -> Result<VariantId, RuntimeError> {
+        let manifest = self.pass_of(pass)?;
+        let bit = |keyword: &String| manifest.keywords.iter().position(|k| k == keyword);
+        let key_of = |variant: &VariantManifest| {
+            let mut words = vec![0u64; manifest.keywords.len().div_ceil(64)];
+            for b in variant.keywords.iter().filter_map(bit) {
+                words[b / 64] |= 1 << (b % 64);
+            }
+            words
+        };
+        match manifest.variants.iter().position(|v| key_of(v) == key) {
+            Some(v) => Ok(VariantId { pass, variant: v as u32, dynamic: 0 }),
+            None => Err(RuntimeError::MissingVariant {
+                shader: self.shader_name(pass).to_string(),
+                pass: manifest.index,
+                keywords: (0..manifest.keywords.len())
+                    .filter(|b| key.get(b / 64).is_some_and(|w| w & (1 << (b % 64)) != 0))
+                    .map(|b| manifest.keywords[b].clone())
+                    .collect(),
+            }),
+        }
+    }
+
     /// The variant a handle stands for.
     pub fn variant_of(&self, id: VariantId) -> Result<&VariantManifest, RuntimeError> {
         Ok(&self.pass_of(id.pass)?.variants[id.variant as usize])

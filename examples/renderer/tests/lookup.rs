@@ -45,3 +45,26 @@ fn a_combination_not_built_names_what_is_missing() {
     assert_eq!(error.undeclared, ["_CLIPING"]);
     assert!(error.to_string().contains("the pass declares no keyword _CLIPING"), "{error}");
 }
+
+/// A pass's own keyword type finds its variants (another pass's keyword does not compile:
+/// `tests/it/dynamic.rs`), and the run time takes a variant the generated module found by its key.
+#[test]
+fn typed_keywords_find_the_variant_the_run_time_takes_by_its_key() {
+    use kiln_renderer::shaders::{self, custom_rp_lit::Pass0Keyword};
+    let typed = shaders::variant(&[Pass0Keyword::_CLIPPING]).expect("built");
+    let named = PASS_0.variant(&["_CLIPPING"]).expect("built");
+    assert_eq!((typed.index, typed.key()), (named.index, named.key()));
+
+    let library = kiln_renderer::library().expect("embedded build");
+    let pass = library.pass_id(typed.pass.shader, typed.pass.index).expect("the pass");
+    for variant in PASS_0.variants() {
+        let id = library.variant_id_by_key(pass, variant.key()).expect("the same variant");
+        assert_eq!(id, library.variant_id(pass, &variant.keywords()).expect("by its names"));
+        assert_eq!(library.variant_of(id).expect("built").keywords, variant.keywords());
+    }
+    let unbuilt = PASS_0.keywords.iter().position(|k| *k == "_PREMULTIPLY_ALPHA").expect("declared");
+    let clipping = PASS_0.keywords.iter().position(|k| *k == "_CLIPPING").expect("declared");
+    let key = [(1u64 << unbuilt) | (1 << clipping)];
+    let error = library.variant_id_by_key(pass, &key).expect_err("no material uses both");
+    assert!(error.to_string().contains("_CLIPPING, _PREMULTIPLY_ALPHA"), "{error}");
+}
