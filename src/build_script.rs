@@ -52,6 +52,7 @@ pub struct BuildOutput {
 #[derive(thiserror::Error)]
 // Each variant's fields are named in its message.
 #[allow(missing_docs)]
+#[non_exhaustive]
 pub enum BuildError {
     #[error("kiln found errors in the shaders:\n{rendered}")]
     Diagnostics { rendered: String, cargo_lines: Vec<String> },

@@ -92,6 +92,7 @@ pub struct LineCol {
 #[derive(Debug, thiserror::Error)]
 // Each variant's fields are named in its message.
 #[allow(missing_docs)]
+#[non_exhaustive]
 pub enum LoadError {
     #[error("cannot read `{path}`: {source}")]
     Io { path: PathBuf, source: std::io::Error },

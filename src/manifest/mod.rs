@@ -108,6 +108,7 @@ pub struct Manifest<P = PassManifest> {
 
 /// Why a text is not a manifest kiln could use.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum ManifestError {
     /// Not JSON of the schema.
     #[error(transparent)]

@@ -29,6 +29,7 @@ use std::path::PathBuf;
 #[derive(Debug, thiserror::Error)]
 // Each variant's fields are named in its message.
 #[allow(missing_docs)]
+#[non_exhaustive]
 pub enum ProjectError {
     #[error("`{0}` does not exist")]
     NotFound(PathBuf),

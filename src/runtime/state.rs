@@ -106,6 +106,7 @@ impl RenderState {
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 // Variant fields are named in each variant's message.
 #[allow(missing_docs)]
+#[non_exhaustive]
 pub enum StateError {
     /// A command wgpu cannot express.
     #[error("`{command}`: wgpu has no {what}")]
