@@ -195,6 +195,8 @@ pub(super) const PRELUDE_NAMES: &[&str] = &[
     "BindingEntry",
     "Pass",
     "MissingVariant",
+    "PassKeyword",
+    "variant",
     "WGSL_PACKS",
     "SPIRV_PACKS",
     "MANIFEST_JSON",

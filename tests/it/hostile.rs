@@ -26,7 +26,7 @@ fn shader(name: &str, keyword: &str, struct_name: &str, members: &str) -> String
 /// Shader names, keywords, struct and member names that the issue found breaking the generated
 /// module, each in a shader of its own.
 fn hostile_project(root: &Path) {
-    let cases: [(&str, &str, &str, &str); 10] = [
+    let cases: [(&str, &str, &str, &str); 11] = [
         ("Inject/Doc", "_A", "S", ""),
         ("Core", "in", "S", "_pad0: f32, dyn: vec4<f32>,"),
         ("Box", "_B", "materials", "gen: f32, dyn_: f32,"),
@@ -37,6 +37,8 @@ fn hostile_project(root: &Path) {
         ("\u{212b}", "_G", "S", ""),
         ("Bidi \u{202e}kcilc", "_H", "Option", ""),
         ("Quote */ /* x", "_I", "S", ""),
+        // The prelude's `variant`, the pass's keyword type and its `name` method.
+        ("Variant", "name", "Pass0Keyword", ""),
     ];
     let mut names = Vec::new();
     for (n, (name, keyword, struct_name, members)) in cases.into_iter().enumerate() {
@@ -68,6 +70,7 @@ fn names_are_the_shaders_own() {
         shaders::u212b::NAME,
         shaders::bidi_u202e_kcilc::NAME,
         shaders::quote_x::NAME,
+        shaders::variant_::NAME,
     ];
     assert_eq!(names[4], "着色器");
     assert_eq!(names[6], "\u{c5}");
@@ -80,6 +83,10 @@ fn names_are_the_shaders_own() {
     let _ = shaders::r#box::materials_ { r#gen: 0.0, dyn_: 0.0, last: 0.0 };
     let _ = shaders::self_::Default_ { self_: 0, last: 0.0 };
     let _ = shaders::bidi_u202e_kcilc::Option_ { last: 0.0 };
+    let _ = shaders::variant_::Pass0Keyword_ { last: 0.0 };
+    use shaders::PassKeyword as _;
+    assert_eq!(shaders::variant_::Pass0Keyword::name_.name(), "name");
+    assert!(shaders::variant(&[shaders::variant_::Pass0Keyword::name_]).is_ok());
 }
 "#;
 
@@ -90,7 +97,7 @@ fn hostile_names_make_a_generated_module_that_compiles_with_nothing_injected() {
     hostile_project(&project);
     let out = dir.path().join("out");
     let built = kiln::Build::new(&project).out_dir(&out).execute().expect("the hostile project builds");
-    assert_eq!(built.manifest.shaders.len(), 10, "every shader built");
+    assert_eq!(built.manifest.shaders.len(), 11, "every shader built");
     // A manifest is input too (`Build::prebuilt` takes another machine's): a file name with a
     // line break must not end the doc comment that names it.
     let mut manifest = built.manifest;
