@@ -1,5 +1,9 @@
 //! What a build leaves: the manifest (its passes' parts in catalogue order), the materials, and
 //! the record of a clean build for the next no-op check; JSON streamed and written atomically.
+//!
+//! Long because the manifest's parts are made here from the catalogue and the compiled passes
+//! (`pass_manifest`, the materials), then staged and committed in one order that keeps the
+//! output folder whole.
 
 use super::error::BuildLayerError;
 use super::jobs::Job;

@@ -4,6 +4,10 @@
 //! Its size follows distinct modules, not variants: a pass lists each stage module once, each
 //! distinct stage interface (entry point, inputs, outputs, bindings) once, and its variants are
 //! keywords and module indices.
+//!
+//! Long because the schema's top is one piece: the manifest, its shaders, passes, modules and
+//! variants, the checks a manifest read from disk gets, and the closed-set macro the submodules
+//! (`reflection`, `keywords`, `state`) share.
 
 /// A closed set of names the manifest writes: an enum, serialised as its name (one list gives
 /// both), so that a value outside the set is refused when a manifest is read, and every use is an
