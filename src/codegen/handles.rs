@@ -89,7 +89,8 @@ pub(super) fn kernel_constants(out: &mut String, pass: &PassManifest, scope: &mu
 
 /// `PassNKeyword`: the pass's keywords (variant and `dynamic_branch` ones) as constants of a type
 /// of its own, which names the pass, so that the prelude's `variant` finds the pass from the
-/// keywords and one pass's keyword given to another does not compile.
+/// keywords and one pass's keyword given to another does not compile (the prelude's
+/// `pass_keywords!` writes the type).
 pub(super) fn pass_keywords(
     out: &mut String,
     pass: &PassManifest,
@@ -98,24 +99,18 @@ pub(super) fn pass_keywords(
 ) -> Vec<NameClash> {
     let n = pass.index;
     let ty = format!("Pass{n}Keyword");
-    let _ = writeln!(
-        out,
-        "\n    /// A keyword of pass {n}: `super::variant(&[{ty}::...])` looks up its variants.\n    \
-         #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]\n    pub struct {ty}(&'static str);\n\n    impl {ty} {{"
-    );
     let mut constants = Scope::new(format!("type `{module}::{ty}`"), PRELUDE_NAMES);
     constants.reserve("name");
-    constants.reserve("pass");
     let dynamic = pass.dynamic_sets().flat_map(|set| &set.keywords).filter(|k| *k != "_");
-    for keyword in pass.keywords.iter().chain(dynamic) {
-        let constant = constants.claim(keyword, Case::AsIs, &format!("a keyword of {place}"));
-        let _ = writeln!(out, "        pub const {constant}: {ty} = {ty}({});", string_literal(keyword));
-    }
-    let _ = writeln!(
-        out,
-        "    }}\n\n    impl super::PassKeyword for {ty} {{\n        \
-         fn pass() -> &'static super::Pass {{\n            &PASS_{n}\n        }}\n        \
-         fn name(self) -> &'static str {{\n            self.0\n        }}\n    }}"
-    );
+    let pairs: Vec<String> = pass
+        .keywords
+        .iter()
+        .chain(dynamic)
+        .map(|keyword| {
+            let constant = constants.claim(keyword, Case::AsIs, &format!("a keyword of {place}"));
+            format!("{constant} = {}", string_literal(keyword))
+        })
+        .collect();
+    let _ = writeln!(out, "    pass_keywords!({ty}, PASS_{n}, {});", pairs.join(", "));
     constants.clashes
 }

@@ -192,6 +192,29 @@ pub trait PassKeyword: Copy {
     fn name(self) -> &'static str;
 }
 
+/// A pass's keyword type, its keywords as constants and its pass: one line per pass in each
+/// shader's module, so the types cost little of the module's size.
+macro_rules! pass_keywords {
+    ($ty:ident, $pass:ident, $($constant:ident = $name:literal),*) => {
+        /// A keyword of the pass: `super::variant(&[...])` looks up its variants.
+        #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+        pub struct $ty(&'static str);
+
+        impl $ty {
+            $(pub const $constant: $ty = $ty($name);)*
+        }
+
+        impl super::PassKeyword for $ty {
+            fn pass() -> &'static super::Pass {
+                &$pass
+            }
+            fn name(self) -> &'static str {
+                self.0
+            }
+        }
+    };
+}
+
 /// The variant of the keywords' pass with exactly these keywords (in any order), as
 /// [`Pass::variant`]: `variant(&[custom_rp_lit::Pass0Keyword::_CLIPPING])`. A keyword of another
 /// pass does not compile.
