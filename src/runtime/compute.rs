@@ -4,6 +4,7 @@
 
 use super::overrides::{ConstantRequest, stage_constants};
 use super::pipelines::{Runtime, constant_bits, hash_overrides, request_key, validated, wgpu_constants};
+use super::trace::{TRACE_VERSION, TraceEntry, TracedPipeline};
 use super::{RuntimeError, VariantId};
 use std::hash::Hash as _;
 use std::sync::Arc;
@@ -106,13 +107,11 @@ impl Runtime {
             Some(pipeline) => pipeline,
             None => {
                 let module = self.shader_module(shader, &stage).map_err(layout_error)?;
+                let label = format!("{shader} kernel {} [{}]", request.kernel, variant.keywords.join(" "));
+                let started = std::time::Instant::now();
                 let pipeline = validated(&self.device, |device| {
                     device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-                        label: Some(&format!(
-                            "{shader} kernel {} [{}]",
-                            request.kernel,
-                            variant.keywords.join(" ")
-                        )),
+                        label: Some(&label),
                         layout: Some(&facts.layout.pipeline),
                         module: &module,
                         entry_point: Some(request.kernel),
@@ -124,12 +123,22 @@ impl Runtime {
                     })
                 })
                 .map_err(layout_error)?;
-                self.count_created();
+                self.count_created(&label, started);
                 self.made().kernels.entry(key).or_insert_with(|| Arc::new(pipeline)).clone()
             }
         };
         let kernel = Kernel { pipeline, workgroup_size };
         self.made().kernel_requests.insert(request_key, kernel.clone());
+        self.trace(|| {
+            Some(TraceEntry {
+                version: TRACE_VERSION,
+                shader: shader.to_string(),
+                pass: pass.index,
+                keywords: self.traced_keywords(request.variant)?,
+                overrides: request.overrides.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
+                pipeline: TracedPipeline::Compute { kernel: request.kernel.to_string() },
+            })
+        });
         Ok(kernel)
     }
 

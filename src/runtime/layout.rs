@@ -176,14 +176,14 @@ fn texture_format(format: TexelFormat) -> wgpu::TextureFormat {
 /// The default ([`VertexLayout::packed`]) is one interleaved buffer, attributes in location order,
 /// each right after the last (`float32x3` position at 0, `float32x3` normal at 12, `float32x2` uv
 /// at 24: stride 32). A renderer with its own layout passes it instead.
-#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub struct VertexLayout {
     /// The vertex buffers, in slot order.
     pub buffers: Vec<VertexBuffer>,
 }
 
 /// One vertex buffer's layout.
-#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub struct VertexBuffer {
     /// Bytes between vertices.
     pub stride: u64,

@@ -12,6 +12,7 @@ mod material;
 mod overrides;
 mod pipelines;
 mod state;
+mod trace;
 mod uniforms;
 
 pub use crate::manifest::{FRAME_GROUP, OBJECT_GROUP};
@@ -19,10 +20,11 @@ pub use adapter::{AdapterError, adapter};
 pub use compute::{Kernel, KernelRequest};
 pub use layout::{LayoutError, PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
 pub use material::{MATERIAL_GROUP, MaterialBindGroup, MaterialTextures};
-pub use pipelines::{PipelineRequest, Reload, Runtime, Targets, UsageLog};
+pub use pipelines::{Creation, PipelineRequest, Reload, Runtime, Targets, UsageLog};
 pub use state::{
     MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state,
 };
+pub use trace::{PipelineTrace, TRACE_VERSION, TraceEntry, TracedPipeline, WarmUp, read_trace};
 
 use crate::manifest::{
     FILE_NAME, MATERIALS_FILE, Manifest, MaterialManifest, ModuleFile, OverrideType, PassManifest,

@@ -4,17 +4,19 @@
 
 use super::layout::{PassLayout, VertexLayout};
 use super::overrides::{ConstantRequest, stage_constants};
+use super::trace::{PipelineTrace, TRACE_VERSION, TraceEntry, TracedPipeline};
 use super::{Library, PassId, RuntimeError, VariantId, dynamic_keywords};
 use crate::manifest::{ERRORS_FILE, FILE_NAME, MaterialManifest, StageView};
 use std::collections::{HashMap, HashSet};
 use std::hash::{Hash, Hasher};
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard, PoisonError};
+use std::time::{Duration, Instant};
 
 /// The attachments a pipeline renders to.
-#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub struct Targets {
     /// The colour target formats.
     pub colors: Vec<wgpu::TextureFormat>,
@@ -147,7 +149,22 @@ pub struct Runtime {
     made: Mutex<Made>,
     created: AtomicUsize,
     usage: Mutex<Option<UsageLog>>,
+    pub(super) trace: Mutex<Option<PipelineTrace>>,
+    /// Set when a warm-up finished: pipelines created after it are misses.
+    warm: AtomicBool,
+    misses: Mutex<Vec<Creation>>,
     pub(super) wgpu_cache: Option<wgpu::PipelineCache>,
+}
+
+/// A pipeline created after warm-up: what a trace should have had.
+#[derive(Debug, Clone)]
+pub struct Creation {
+    /// The pipeline's label (shader, pass or kernel, keywords).
+    pub label: String,
+    /// The thread that waited for it (its name, else its id).
+    pub thread: String,
+    /// How long creating it took.
+    pub duration: Duration,
 }
 
 impl Runtime {
@@ -160,6 +177,9 @@ impl Runtime {
             made: Mutex::default(),
             created: AtomicUsize::new(0),
             usage: Mutex::new(None),
+            trace: Mutex::new(None),
+            warm: AtomicBool::new(false),
+            misses: Mutex::new(Vec::new()),
             wgpu_cache: None,
         }
     }
@@ -227,8 +247,40 @@ impl Runtime {
         self.created.load(Ordering::Relaxed)
     }
 
-    pub(super) fn count_created(&self) {
+    /// Counts a pipeline created (after warm-up, with its thread and time, as a miss).
+    pub(super) fn count_created(&self, label: &str, started: Instant) {
         self.created.fetch_add(1, Ordering::Relaxed);
+        if self.warm.load(Ordering::Relaxed) {
+            let thread = std::thread::current();
+            let creation = Creation {
+                label: label.to_string(),
+                thread: thread.name().map_or_else(|| format!("{:?}", thread.id()), str::to_string),
+                duration: started.elapsed(),
+            };
+            self.misses.lock().unwrap_or_else(PoisonError::into_inner).push(creation);
+        }
+    }
+
+    /// From now on, a pipeline created is a miss of the warm-up ([`Runtime::created_after_warm_up`]);
+    /// a warm-up from a trace says so itself when it is done.
+    pub fn mark_warm(&self) {
+        self.warm.store(true, Ordering::Relaxed);
+    }
+
+    /// The pipelines created since warm-up finished, each with the thread that waited and how
+    /// long: Unreal's run-time creations, what the shipped trace lacked.
+    pub fn created_after_warm_up(&self) -> Vec<Creation> {
+        self.misses.lock().unwrap_or_else(PoisonError::into_inner).clone()
+    }
+
+    /// Writes a trace line for a request seen for the first time, when recording.
+    pub(super) fn trace(&self, entry: impl FnOnce() -> Option<TraceEntry>) {
+        let mut trace = self.trace.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some(trace) = trace.as_mut()
+            && let Some(entry) = entry()
+        {
+            trace.record(&entry);
+        }
     }
 
     /// A pass's handle ([`Library::pass_id`]).
@@ -307,6 +359,23 @@ impl Runtime {
         }
         let pipeline = self.create_pipeline(request, pass, &facts, state)?;
         self.made().requests.insert(request_key, pipeline.clone());
+        self.trace(|| {
+            let keywords = self.traced_keywords(request.variant)?;
+            let state = pass.render_state.iter().flat_map(|c| &c.properties);
+            let state = state.filter_map(|p| Some((p.name.clone(), request.material.number(&p.name)?)));
+            Some(TraceEntry {
+                version: TRACE_VERSION,
+                shader: shader.to_string(),
+                pass: pass_index,
+                keywords,
+                overrides: request.overrides.iter().map(|(k, v)| (k.to_string(), *v)).collect(),
+                pipeline: TracedPipeline::Render {
+                    state: state.collect(),
+                    targets: request.targets.clone(),
+                    vertex_layout: request.vertex_layout.cloned(),
+                },
+            })
+        });
         Ok(pipeline)
     }
 
@@ -381,6 +450,7 @@ impl Runtime {
         let buffers = key.vertex_layout.wgpu();
         let [vertex_constants, fragment_constants] = [0, 1].map(|stage| wgpu_constants(&constants[stage]));
         let label = format!("{shader} pass {pass_index} [{}]", variant.keywords.join(" "));
+        let started = Instant::now();
         let pipeline = validated(&self.device, |device| {
             device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                 label: Some(&label),
@@ -415,9 +485,18 @@ impl Runtime {
             })
         })
         .map_err(layout_error)?;
-        self.count_created();
+        self.count_created(&label, started);
         // Another thread may have made the same one meanwhile: the first kept is the one used.
         Ok(self.made().pipelines.entry(key).or_insert_with(|| Arc::new(pipeline)).clone())
+    }
+
+    /// A handle's keywords as a trace names them: the variant's and the `dynamic_branch` ones on,
+    /// sorted.
+    pub(super) fn traced_keywords(&self, variant: VariantId) -> Option<Vec<String>> {
+        let mut keywords = self.library.variant_of(variant).ok()?.keywords.clone();
+        keywords.extend(self.library.dynamic_keywords(variant).ok()?.map(str::to_string));
+        keywords.sort();
+        Some(keywords)
     }
 
     /// Creates, ahead of the first frame, the pipeline of every pass each material's variant has

@@ -498,3 +498,92 @@ fn a_misspelt_keyword_is_named_with_the_one_meant_not_a_missing_variant() {
     let error = library.variant("Test/Blend", 0, &["_TINT", "_PREMULTIPLY_ALPHA"]).expect_err("not built");
     assert!(matches!(error, RuntimeError::MissingVariant { .. }), "{error}");
 }
+
+/// A scene's pipelines traced in one run are made by a warm-up from the trace in the next (on
+/// worker threads, or a few per frame): the scene then creates none. What the trace lacked is
+/// counted with its thread and time, a stale entry is named and skipped, and `kiln build
+/// --variants-from` reads the trace as a usage log.
+#[test]
+fn a_traced_scene_warms_up_the_next_run_and_creates_nothing_after() {
+    use kiln::runtime::{PipelineTrace, WarmUp, read_trace};
+    let Some(gpu) = gpu("the pipeline trace test") else { return };
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = dir.path().join("out");
+    built(&root().join("fixtures/runtime"), &output);
+    let trace = dir.path().join("trace.jsonl");
+    let scene = ["Opaque", "Fade", "Transparent"];
+    let draw_scene = |runtime: &Runtime| {
+        for name in scene {
+            let material = runtime.library().material(name).expect("built").clone();
+            let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
+            draw(runtime, &gpu, &material, &keywords).expect("draws");
+        }
+    };
+    // Development: the scene drawn once, every pipeline traced as it is created.
+    let mut first = Runtime::open(&gpu.device, &output).expect("opens");
+    first.record_pipelines(PipelineTrace::append(&trace).expect("trace"));
+    draw_scene(&first);
+    draw_scene(&first);
+    let created = first.pipelines_created();
+    drop(first);
+    let text = std::fs::read_to_string(&trace).expect("trace written");
+    let (entries, skipped) = read_trace(&text);
+    assert!(skipped.is_empty(), "{skipped:?}");
+    assert_eq!(entries.len(), scene.len(), "one line per distinct request:\n{text}");
+    assert!(
+        text.lines().all(|l| l.contains(r#""kind":"render""#) && l.contains(r#""shader":"Test/Blend""#)),
+        "{text}"
+    );
+    // Appending the same pipelines again (another run) writes nothing twice.
+    let mut again = Runtime::open(&gpu.device, &output).expect("opens");
+    again.record_pipelines(PipelineTrace::append(&trace).expect("trace"));
+    draw_scene(&again);
+    drop(again);
+    assert_eq!(std::fs::read_to_string(&trace).expect("trace"), text);
+
+    // The shipped game: warm-up on two threads before the first frame, then the scene.
+    let mut stale = entries.clone();
+    stale[0].keywords.push("_GONE".into());
+    stale.extend(entries.iter().cloned());
+    let second = Runtime::open(&gpu.device, &output).expect("opens");
+    let errors = second.warm_up_trace(&stale, 2);
+    assert_eq!(errors.len(), 1, "{errors:?}");
+    assert_eq!(errors[0].0, 0);
+    assert!(errors[0].1.to_string().contains("`_GONE` is not a keyword"), "{}", errors[0].1);
+    assert_eq!(second.pipelines_created(), created);
+    draw_scene(&second);
+    assert_eq!(second.pipelines_created(), created, "the scene created no pipeline after warm-up");
+    assert!(second.created_after_warm_up().is_empty());
+    // A request the trace lacked: made when asked, and counted as a miss on the thread that waited.
+    let mut brighter = second.library().material("Opaque").expect("built").clone();
+    brighter.values.insert("_SrcBlend".into(), serde_json::json!(5.0));
+    draw(&second, &gpu, &brighter, &[]).expect("draws");
+    let misses = second.created_after_warm_up();
+    assert_eq!(misses.len(), 1, "{misses:?}");
+    assert!(misses[0].label.starts_with("Test/Blend pass 0"), "{misses:?}");
+    let thread = std::thread::current();
+    assert_eq!(Some(misses[0].thread.as_str()), thread.name(), "{misses:?}");
+
+    // A loading screen: one pipeline a frame.
+    let third = Runtime::open(&gpu.device, &output).expect("opens");
+    let mut warm_up = WarmUp::new(&entries);
+    let mut frames = 1;
+    while !warm_up.step(&third, 1) {
+        frames += 1;
+    }
+    assert_eq!((frames, warm_up.progress(), third.pipelines_created()), (scene.len(), (3, 3), created));
+    draw_scene(&third);
+    assert!(third.created_after_warm_up().is_empty());
+
+    // The trace is a usage log for the build.
+    let project = root().join("fixtures/runtime");
+    let run = kiln(&[
+        "build",
+        project.to_str().expect("utf-8"),
+        "--output",
+        output.to_str().expect("utf-8"),
+        "--variants-from",
+        trace.to_str().expect("utf-8"),
+    ]);
+    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+}
