@@ -95,7 +95,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     queue.submit([encoder.finish()]);
     let [r, g, b, a] = pixel(&device, &queue, &target)?;
     println!("pixel {r} {g} {b} {a}");
+    no_hitches(&device)?;
     first_shader_pixels(&device, &queue)
+}
+
+/// Section 8: a trace recorded, then a warm-up from it.
+#[allow(unused)]
+fn no_hitches(device: &wgpu::Device) -> Result<(), Box<dyn std::error::Error>> {
+    {no_hitches}
+    Ok(())
 }
 
 /// The pixel at (4, 4) of an 8 x 8 `Rgba8Unorm` target, read back.
@@ -146,7 +154,7 @@ fn a_renderer_written_from_the_docs_builds_and_draws() {
     let page = std::fs::read_to_string(root().join("docs/renderer.md")).expect("docs/renderer.md");
     let rust = code_blocks(&page, "rust");
     let toml = code_blocks(&page, "toml");
-    let [build_rs, generated_module, materials, per_frame, render_pass] = &rust[..] else {
+    let [build_rs, generated_module, materials, per_frame, render_pass, no_hitches] = &rust[..] else {
         panic!("docs/renderer.md's Rust blocks changed: {} of them", rust.len());
     };
     let dir = tempfile::tempdir().expect("tempdir");
@@ -176,7 +184,8 @@ fn a_renderer_written_from_the_docs_builds_and_draws() {
         .replace("{generated_module}", &format!("use wgpu::util::DeviceExt as _;\n{generated_module}"))
         .replace("{materials_to_bind_groups}", materials)
         .replace("{per_frame_and_per_object}", per_frame)
-        .replace("{render_pass}", render_pass);
+        .replace("{render_pass}", render_pass)
+        .replace("{no_hitches}", no_hitches);
     main.push_str(&readme_functions());
     write(&krate.join("src/main.rs"), &main);
     let mut arguments = vec!["run", "--quiet", "--", first_project.to_str().expect("UTF-8")];
