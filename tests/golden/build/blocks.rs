@@ -174,6 +174,7 @@ pub mod test_halfblocks {
         kernel_modules: &[
         ],
     };
+    pass_keywords!(Pass0Keyword, PASS_0, );
     /// The struct `HalfPair` (16 bytes).
     #[repr(C)]
     #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
