@@ -381,6 +381,8 @@ pub struct Gpu {
     pub queue: wgpu::Queue,
     /// The adapter's name, type and backend.
     pub adapter: String,
+    /// The adapter's own description (vendor, device, driver, backend).
+    pub info: wgpu::AdapterInfo,
     /// Its type: a CPU rasteriser gets smaller timing dispatches than a GPU.
     pub device_type: wgpu::DeviceType,
     /// Whether the device has timestamp queries.
@@ -416,6 +418,7 @@ pub fn device_on(backends: wgpu::Backends) -> Result<Gpu, String> {
         timestamps: required_features.contains(wgpu::Features::TIMESTAMP_QUERY),
         f16: required_features.contains(wgpu::Features::SHADER_F16),
         kernels: Default::default(),
+        info,
     })
 }
 

@@ -7,6 +7,7 @@
 
 mod adapter;
 mod compute;
+mod driver_cache;
 mod layout;
 mod material;
 mod overrides;
@@ -18,6 +19,7 @@ mod uniforms;
 pub use crate::manifest::{FRAME_GROUP, OBJECT_GROUP};
 pub use adapter::{AdapterError, adapter};
 pub use compute::{Kernel, KernelRequest};
+pub use driver_cache::CacheFile;
 pub use layout::{LayoutError, PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
 pub use material::{MATERIAL_GROUP, MaterialBindGroup, MaterialTextures};
 pub use pipelines::{Creation, PipelineRequest, Reload, Runtime, Targets, UsageLog};

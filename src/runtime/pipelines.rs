@@ -154,6 +154,8 @@ pub struct Runtime {
     warm: AtomicBool,
     misses: Mutex<Vec<Creation>>,
     pub(super) wgpu_cache: Option<wgpu::PipelineCache>,
+    /// Where [`Runtime::save_pipeline_cache`] writes `wgpu_cache`.
+    pub(super) cache_file: Option<PathBuf>,
 }
 
 /// A pipeline created after warm-up: what a trace should have had.
@@ -181,6 +183,7 @@ impl Runtime {
             warm: AtomicBool::new(false),
             misses: Mutex::new(Vec::new()),
             wgpu_cache: None,
+            cache_file: None,
         }
     }
 

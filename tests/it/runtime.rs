@@ -587,3 +587,64 @@ fn a_traced_scene_warms_up_the_next_run_and_creates_nothing_after() {
     ]);
     assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
 }
+
+/// The driver's pipeline cache kept between runs: a file per adapter in the folder the program
+/// names, written whole after the scene's pipelines are made, loaded by the next run; a damaged
+/// file is no crash (wgpu's header check starts an empty cache).
+#[test]
+fn the_driver_s_pipeline_cache_is_a_file_per_adapter_written_whole() {
+    use kiln::runtime::CacheFile;
+    let Some(gpu) = gpu("the pipeline cache file test") else { return };
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = dir.path().join("out");
+    built(&root().join("fixtures/runtime"), &output);
+    let caches = dir.path().join("caches");
+    let scene = |runtime: &Runtime| {
+        for name in ["Opaque", "Fade", "Transparent"] {
+            let material = runtime.library().material(name).expect("built").clone();
+            let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
+            draw(runtime, &gpu, &material, &keywords).expect("draws");
+        }
+    };
+    let mut first = Runtime::open(&gpu.device, &output).expect("opens");
+    // SAFETY: the folder is new: no file is read.
+    let path = match unsafe { first.open_pipeline_cache(&gpu.info, &caches) } {
+        CacheFile::Empty { path } => path,
+        CacheFile::Unsupported => {
+            let vulkan = gpu.info.backend == wgpu::Backend::Vulkan
+                && gpu.device.features().contains(wgpu::Features::PIPELINE_CACHE);
+            assert!(!vulkan, "Vulkan with PIPELINE_CACHE keeps a cache file");
+            crate::support::skipped(&format!(
+                "the pipeline cache file test: {} keeps no pipeline cache",
+                gpu.adapter
+            ));
+            return;
+        }
+        loaded => panic!("a new folder holds no cache: {loaded:?}"),
+    };
+    let key = wgpu::util::pipeline_cache_key(&gpu.info).expect("a Vulkan key");
+    assert_eq!(path, caches.join(key));
+    scene(&first);
+    let bytes = first.save_pipeline_cache().expect("writes").expect("the driver's data");
+    assert_eq!(std::fs::metadata(&path).expect("written").len(), bytes);
+    let files: Vec<_> =
+        std::fs::read_dir(&caches).expect("folder").map(|e| e.expect("entry").path()).collect();
+    assert_eq!(files, std::slice::from_ref(&path), "the cache file alone, no temporary left");
+
+    // The next run: the file is loaded, and pipelines are made through it.
+    let mut second = Runtime::open(&gpu.device, &output).expect("opens");
+    // SAFETY: `save_pipeline_cache` wrote it a moment ago, on this adapter.
+    let loaded = unsafe { second.open_pipeline_cache(&gpu.info, &caches) };
+    assert_eq!(loaded, CacheFile::Loaded { path: path.clone(), bytes });
+    scene(&second);
+    assert_eq!(second.pipelines_created(), first.pipelines_created());
+
+    // Torn: wgpu's header names the data's size, so it starts an empty cache instead.
+    let data = std::fs::read(&path).expect("cache");
+    std::fs::write(&path, &data[..data.len() / 2]).expect("tear");
+    let mut third = Runtime::open(&gpu.device, &output).expect("opens");
+    // SAFETY: the file is this adapter's cache, cut short: wgpu's header check refuses it.
+    assert!(matches!(unsafe { third.open_pipeline_cache(&gpu.info, &caches) }, CacheFile::Loaded { .. }));
+    scene(&third);
+    assert!(third.save_pipeline_cache().expect("writes").is_some());
+}
