@@ -257,6 +257,26 @@ pub fn render_with(
     Ok(render_frames(runtime, device, queue, scene, 1)?.0)
 }
 
+/// The scene as a game meets it: frame k draws its first k objects, so each material's pipeline
+/// is first asked for on the frame its object appears. Returns, per frame, the pipelines created
+/// during it (on this thread, the render thread) and the frame's wall time, and the last image.
+pub fn introduce(
+    runtime: &mut Runtime,
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    scene: &Scene,
+) -> Result<(Vec<(usize, std::time::Duration)>, Image), String> {
+    let mut frames = Vec::new();
+    let mut image = None;
+    for count in 1..=scene.objects.len() {
+        let partial = Scene { objects: scene.objects[..count].to_vec(), ..scene.clone() };
+        let (before, started) = (runtime.pipelines_created(), std::time::Instant::now());
+        image = Some(render_with(runtime, device, queue, &partial)?);
+        frames.push((runtime.pipelines_created() - before, started.elapsed()));
+    }
+    Ok((frames, image.ok_or("the scene has no objects")?))
+}
+
 /// Renders the scene `frames` times in one submission (each frame clears and draws every
 /// object) and returns the last image with the GPU time per frame in nanoseconds, measured with
 /// timestamp queries where the device has them (`device()` asks for them).

@@ -5,6 +5,11 @@
 //! (`target/kiln-watch`, shaders from `fixtures/project/shaders`), waits for `kiln watch` to build
 //! it, and draws `renderer.png` again from the new build whenever a shader edit rebuilds it; a
 //! broken edit prints its diagnostics and the last good pipelines stay.
+//!
+//! `-- --introduce [--trace FILE] [--warm-up FILE]` draws the scene as a game meets it, one more
+//! object a frame, and prints per frame the pipelines created on the render thread and the frame
+//! time: `--trace` records every pipeline created (docs/trace.md), `--warm-up` makes a trace's
+//! pipelines on worker threads before the first frame.
 
 use kiln::runtime::{Reload, Runtime};
 use kiln_renderer::{
@@ -18,6 +23,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (device, queue, adapter) = device()?;
     if std::env::args().nth(1).as_deref() == Some("--watch") {
         return watch(&scene, &device, &queue);
+    }
+    if std::env::args().nth(1).as_deref() == Some("--introduce") {
+        return introduce(&scene, &device, &queue);
     }
     let output = std::env::args().nth(1).map_or_else(|| PathBuf::from("renderer.png"), PathBuf::from);
     let image = render(&device, &queue, &scene)?;
@@ -63,6 +71,44 @@ fn explain(scene: &Scene, image: &[[f64; 3]], analytic: &[[f64; 3]], edge: &[boo
     }
     let d = difference(image, &tessellated, &stored.left_out_unless(true));
     report("image against the drawn triangles blending exact colours, blended pixels", d);
+}
+
+fn introduce(
+    scene: &Scene,
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().collect();
+    let value = |flag: &str| args.iter().position(|a| a == flag).and_then(|at| args.get(at + 1));
+    let mut runtime = Runtime::new(device, kiln_renderer::library()?);
+    if let Some(path) = value("--trace") {
+        runtime.record_pipelines(kiln::runtime::PipelineTrace::append(Path::new(path))?);
+    }
+    if let Some(path) = value("--warm-up") {
+        let (entries, skipped) = kiln::runtime::read_trace(&std::fs::read_to_string(path)?);
+        let started = std::time::Instant::now();
+        let errors = runtime.warm_up_trace(&entries, 4);
+        println!(
+            "warm-up: {} pipelines from {} entries on 4 threads in {:.1} ms ({} entries skipped, {} failed)",
+            runtime.pipelines_created(),
+            entries.len(),
+            started.elapsed().as_secs_f64() * 1e3,
+            skipped.len(),
+            errors.len()
+        );
+    }
+    let (frames, _) = kiln_renderer::introduce(&mut runtime, device, queue, scene)?;
+    for (frame, (created, time)) in frames.iter().enumerate() {
+        println!(
+            "frame {}: {created} pipelines created on the render thread, {:.2} ms",
+            frame + 1,
+            time.as_secs_f64() * 1e3
+        );
+    }
+    let worst = frames.iter().map(|(_, time)| time.as_secs_f64() * 1e3).fold(0.0, f64::max);
+    let created: usize = frames.iter().map(|(created, _)| created).sum();
+    println!("{created} pipelines created on the render thread; worst frame {worst:.2} ms");
+    Ok(())
 }
 
 fn watch(

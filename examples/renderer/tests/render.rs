@@ -226,3 +226,29 @@ fn the_rest_is_tessellation_and_the_8_bit_target() {
     let (analytic, edge) = reference(&scene);
     assert!(difference(&image, &analytic, &edge).max > 2.0 * step);
 }
+
+/// The example scene as a game meets it (one more object a frame), traced in one run and warmed
+/// up from the trace in the next: the second run creates no pipeline on the render thread, and
+/// draws the same image.
+#[test]
+fn a_warm_up_from_the_scene_s_trace_leaves_the_render_thread_nothing_to_create() {
+    let Some((device, queue, _)) = common::gpu("the scene trace test") else { return };
+    let scene = kiln_renderer::Scene::parse(include_str!("../scene.toml")).expect("scene");
+    let dir = tempfile::tempdir().expect("temp dir");
+    let trace = dir.path().join("pipelines.jsonl");
+    let mut first = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
+    first.record_pipelines(kiln::runtime::PipelineTrace::append(&trace).expect("trace"));
+    let (cold, cold_image) = kiln_renderer::introduce(&mut first, &device, &queue, &scene).expect("draws");
+    let created: usize = cold.iter().map(|(created, _)| created).sum();
+    assert!(created > 1, "the scene's materials need several pipelines: {cold:?}");
+
+    let (entries, skipped) = kiln::runtime::read_trace(&std::fs::read_to_string(&trace).expect("trace"));
+    assert!(skipped.is_empty(), "{skipped:?}");
+    let mut second = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
+    assert!(second.warm_up_trace(&entries, 4).is_empty());
+    assert_eq!(second.pipelines_created(), created);
+    let (warm, warm_image) = kiln_renderer::introduce(&mut second, &device, &queue, &scene).expect("draws");
+    assert!(warm.iter().all(|(created, _)| *created == 0), "{warm:?}");
+    assert!(second.created_after_warm_up().is_empty());
+    assert!(cold_image.colors() == warm_image.colors(), "the same image");
+}
