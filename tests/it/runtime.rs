@@ -499,6 +499,18 @@ fn a_misspelt_keyword_is_named_with_the_one_meant_not_a_missing_variant() {
     assert!(matches!(error, RuntimeError::MissingVariant { .. }), "{error}");
 }
 
+/// The fixture's materials, one per preset.
+const PRESETS: [&str; 3] = ["Opaque", "Fade", "Transparent"];
+
+/// Draws each of [`PRESETS`] with its own keywords.
+fn draw_presets(runtime: &Runtime, gpu: &Gpu) {
+    for name in PRESETS {
+        let material = runtime.library().material(name).expect("built").clone();
+        let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
+        draw(runtime, gpu, &material, &keywords).expect("draws");
+    }
+}
+
 /// A scene's pipelines traced in one run are made by a warm-up from the trace in the next (on
 /// worker threads, or a few per frame): the scene then creates none. What the trace lacked is
 /// counted with its thread and time, a stale entry is named and skipped, and `kiln build
@@ -511,14 +523,8 @@ fn a_traced_scene_warms_up_the_next_run_and_creates_nothing_after() {
     let output = dir.path().join("out");
     built(&root().join("fixtures/runtime"), &output);
     let trace = dir.path().join("trace.jsonl");
-    let scene = ["Opaque", "Fade", "Transparent"];
-    let draw_scene = |runtime: &Runtime| {
-        for name in scene {
-            let material = runtime.library().material(name).expect("built").clone();
-            let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
-            draw(runtime, &gpu, &material, &keywords).expect("draws");
-        }
-    };
+    let scene = PRESETS;
+    let draw_scene = |runtime: &Runtime| draw_presets(runtime, &gpu);
     // Development: the scene drawn once, every pipeline traced as it is created.
     let mut first = Runtime::open(&gpu.device, &output).expect("opens");
     first.record_pipelines(PipelineTrace::append(&trace).expect("trace"));
@@ -599,13 +605,7 @@ fn the_driver_s_pipeline_cache_is_a_file_per_adapter_written_whole() {
     let output = dir.path().join("out");
     built(&root().join("fixtures/runtime"), &output);
     let caches = dir.path().join("caches");
-    let scene = |runtime: &Runtime| {
-        for name in ["Opaque", "Fade", "Transparent"] {
-            let material = runtime.library().material(name).expect("built").clone();
-            let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
-            draw(runtime, &gpu, &material, &keywords).expect("draws");
-        }
-    };
+    let scene = |runtime: &Runtime| draw_presets(runtime, &gpu);
     let mut first = Runtime::open(&gpu.device, &output).expect("opens");
     // SAFETY: the folder is new: no file is read.
     let path = match unsafe { first.open_pipeline_cache(&gpu.info, &caches) } {

@@ -179,7 +179,7 @@ pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
     let name = adapter.get_info().name;
     let descriptor = wgpu::DeviceDescriptor {
         required_features: adapter.features()
-            & (wgpu::Features::SHADER_F16 | wgpu::Features::TIMESTAMP_QUERY),
+            & (wgpu::Features::SHADER_F16 | wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::PIPELINE_CACHE),
         ..wgpu::DeviceDescriptor::default()
     };
     let (device, queue) =

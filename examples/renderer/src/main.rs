@@ -9,7 +9,8 @@
 //! `-- --introduce [--trace FILE] [--warm-up FILE]` draws the scene as a game meets it, one more
 //! object a frame, and prints per frame the pipelines created on the render thread and the frame
 //! time: `--trace` records every pipeline created (docs/trace.md), `--warm-up` makes a trace's
-//! pipelines on worker threads before the first frame.
+//! pipelines on worker threads before the first frame, `--cache DIR` keeps the driver's pipeline
+//! cache in DIR (loaded first, saved after warm-up and at the end).
 
 use kiln::runtime::{Reload, Runtime};
 use kiln_renderer::{
@@ -84,6 +85,12 @@ fn introduce(
     if let Some(path) = value("--trace") {
         runtime.record_pipelines(kiln::runtime::PipelineTrace::append(Path::new(path))?);
     }
+    if let Some(dir) = value("--cache") {
+        let info = kiln::runtime::adapter(wgpu::Backends::from_env().unwrap_or_default())?.get_info();
+        // SAFETY: the folder holds only what this program's `save_pipeline_cache` wrote.
+        let opened = unsafe { runtime.open_pipeline_cache(&info, Path::new(dir)) };
+        println!("pipeline cache: {opened:?}");
+    }
     if let Some(path) = value("--warm-up") {
         let (entries, skipped) = kiln::runtime::read_trace(&std::fs::read_to_string(path)?);
         let started = std::time::Instant::now();
@@ -96,6 +103,7 @@ fn introduce(
             skipped.len(),
             errors.len()
         );
+        runtime.save_pipeline_cache()?;
     }
     let (frames, _) = kiln_renderer::introduce(&mut runtime, device, queue, scene)?;
     for (frame, (created, time)) in frames.iter().enumerate() {
@@ -108,6 +116,7 @@ fn introduce(
     let worst = frames.iter().map(|(_, time)| time.as_secs_f64() * 1e3).fold(0.0, f64::max);
     let created: usize = frames.iter().map(|(created, _)| created).sum();
     println!("{created} pipelines created on the render thread; worst frame {worst:.2} ms");
+    runtime.save_pipeline_cache()?;
     Ok(())
 }
 
