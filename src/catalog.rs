@@ -58,6 +58,9 @@ pub struct ListedVariant {
     pub keywords: Vec<String>,
     /// Where it is written, for diagnostics.
     pub span: Span,
+    /// A pipeline trace's line (it has a `version`): one the project no longer has is skipped
+    /// with a warning (K0534), as a run time's warm-up skips it, not an error.
+    pub from_trace: bool,
 }
 
 /// The analysis every job shares (see the module's comment).
@@ -157,6 +160,8 @@ fn logged_variants(
         shader: String,
         pass: usize,
         keywords: Vec<String>,
+        /// Only a pipeline trace's lines have one (docs/trace.md).
+        version: Option<u32>,
     }
     let mut listed = Vec::new();
     let lines = logs.iter().flat_map(|&log| {
@@ -172,8 +177,8 @@ fn logged_variants(
             continue;
         }
         match serde_json::from_str::<Logged>(line) {
-            Ok(Logged { shader, pass, keywords }) => {
-                listed.push(ListedVariant { shader, pass, keywords, span })
+            Ok(Logged { shader, pass, keywords, version }) => {
+                listed.push(ListedVariant { shader, pass, keywords, span, from_trace: version.is_some() })
             }
             Err(e) => {
                 // serde counts lines and columns within the line; the label has the real place.
@@ -192,7 +197,7 @@ fn logged_variants(
 
 /// Adds the variants usage logs and project files name to the passes' variants, each exactly as
 /// named; one naming a shader, pass or keyword that does not exist is an error where it is
-/// written.
+/// written (a warning for a trace's line, which is skipped).
 fn add_listed_variants(listed: &[ListedVariant], shaders: &mut [CatalogShader]) -> Vec<Diagnostic> {
     let mut diagnostics = Vec::new();
     // Found once, not per line: the shaders by name, the added variants by program.
@@ -201,7 +206,12 @@ fn add_listed_variants(listed: &[ListedVariant], shaders: &mut [CatalogShader]) 
     let mut added: HashMap<(usize, usize), Vec<Variant>> = HashMap::new();
     for logged in listed {
         let error = |code, message: String, label: &str| {
-            Diagnostic::error(code, message).at(logged.span, label.to_string())
+            match logged.from_trace {
+            false => Diagnostic::error(code, message).at(logged.span, label.to_string()),
+            true => Diagnostic::warning("K0534", format!("{message}: this trace entry is skipped"))
+                .at(logged.span, label.to_string())
+                .note("a pipeline trace names what a run created; the project has changed since (docs/trace.md)"),
+        }
         };
         let Some(&index) = by_name.get(&logged.shader) else {
             diagnostics.push(error(

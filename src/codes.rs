@@ -124,6 +124,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0531", "variant log names no shader"),
     ("K0532", "variant log names no pass"),
     ("K0533", "variant log names an unknown keyword"),
+    ("K0534", "pipeline trace entry no longer in the project (warning)"),
 ];
 
 /// Whether `code` is registered.

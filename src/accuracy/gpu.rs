@@ -56,6 +56,7 @@ pub fn harness_kernels(keywords: &[&str]) -> Result<Kernels, String> {
     let file = store.add(HARNESS_FILE, HARNESS);
     let mut includes = Includes::new(IncludeConfig::new(Vec::new()));
     let listed = ListedVariant {
+        from_trace: false,
         shader: HARNESS_FILE.trim_end_matches(".compute").to_string(),
         pass: 0,
         keywords: keywords.iter().map(|k| k.to_string()).collect(),

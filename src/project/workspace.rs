@@ -224,6 +224,7 @@ pub fn open_workspace(
                                 pass: 0,
                                 keywords: keywords.get_ref().clone(),
                                 span: Span::new(file, keywords.span()),
+                                from_trace: false,
                             }
                         }))
                     }

@@ -648,3 +648,33 @@ fn the_driver_s_pipeline_cache_is_a_file_per_adapter_written_whole() {
     scene(&third);
     assert!(third.save_pipeline_cache().expect("writes").is_some());
 }
+
+/// A trace line the project no longer has is skipped with a warning where it is written, the
+/// rest built; the same line in a usage log is an error.
+#[test]
+fn a_stale_trace_entry_is_a_warning_and_a_stale_usage_log_line_an_error() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let trace = dir.path().join("trace.jsonl");
+    let line = |keywords: &str, version: &str| {
+        format!(
+            "{{{version}\"shader\":\"Test/Blend\",\"pass\":0,\"keywords\":[{keywords}],\"kind\":\"render\",\"state\":{{}},\"targets\":{{\"colors\":[\"rgba8unorm\"],\"depth\":null,\"samples\":1}}}}\n"
+        )
+    };
+    std::fs::write(&trace, line("\"_GONE\"", "\"version\":1,") + &line("\"_TINT\"", "\"version\":1,"))
+        .expect("write");
+    let project = root().join("fixtures/runtime");
+    let check = |log: &Path| {
+        kiln(&["check", project.to_str().expect("utf-8"), "--variants-from", log.to_str().expect("utf-8")])
+    };
+    let run = check(&trace);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("warning[K0534]") && stderr.contains("trace.jsonl:1:1"), "{stderr}");
+    assert!(stderr.contains("this trace entry is skipped"), "{stderr}");
+    let log = dir.path().join("usage.jsonl");
+    std::fs::write(&log, line("\"_GONE\"", "")).expect("write");
+    let run = check(&log);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("error[K0533]") && stderr.contains("usage.jsonl:1:1"), "{stderr}");
+}
