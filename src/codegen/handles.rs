@@ -101,11 +101,10 @@ pub(super) fn pass_keywords(
     let ty = format!("Pass{n}Keyword");
     let mut constants = Scope::new(format!("type `{module}::{ty}`"), PRELUDE_NAMES);
     constants.reserve("name");
-    let dynamic = pass.dynamic_sets().flat_map(|set| &set.keywords).filter(|k| *k != "_");
     let pairs: Vec<String> = pass
         .keywords
         .iter()
-        .chain(dynamic)
+        .chain(pass.dynamic_keywords())
         .map(|keyword| {
             let constant = constants.claim(keyword, Case::AsIs, &format!("a keyword of {place}"));
             format!("{constant} = {}", string_literal(keyword))

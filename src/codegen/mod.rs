@@ -180,8 +180,7 @@ fn pass_static(
     let _ = writeln!(out, "        shader: NAME,\n        index: {},\n        name: {name},", pass.index);
     let _ = writeln!(out, "        keywords: &[{}],", quoted(&pass.keywords));
     let _ = writeln!(out, "        kernels: &[{}],", quoted(&pass.kernels));
-    let dynamic: Vec<String> =
-        pass.dynamic_sets().flat_map(|set| &set.keywords).filter(|k| *k != "_").cloned().collect();
+    let dynamic: Vec<String> = pass.dynamic_keywords().cloned().collect();
     let _ = writeln!(out, "        dynamic_keywords: &[{}],", quoted(&dynamic));
     out.push_str("        layout: &[\n");
     for group in &pass.layout {

@@ -354,6 +354,12 @@ impl PassManifest {
         self.keyword_sets.iter().filter(|set| set.kind == KeywordKind::DynamicBranch)
     }
 
+    /// Its `dynamic_branch` keywords, set by set (no `_`): the order of the generated `Pass`'s
+    /// `dynamic_keywords` and of a run-time handle's bits.
+    pub fn dynamic_keywords(&self) -> impl Iterator<Item = &String> {
+        self.dynamic_sets().flat_map(|set| &set.keywords).filter(|k| *k != "_")
+    }
+
     /// Whether `keyword` is one of its `dynamic_branch` keywords (an `override` of its modules,
     /// not a variant).
     pub fn is_dynamic(&self, keyword: &str) -> bool {

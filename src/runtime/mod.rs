@@ -180,11 +180,6 @@ pub enum RuntimeError {
     BuildFailed(String),
 }
 
-/// A pass's `dynamic_branch` keywords, in the order of a [`VariantId`]'s bits.
-fn dynamic_keywords(pass: &PassManifest) -> impl Iterator<Item = &String> {
-    pass.dynamic_sets().flat_map(|set| &set.keywords).filter(|k| *k != "_")
-}
-
 /// What values an override type holds, for [`RuntimeError::OverrideValue`].
 fn type_hint(ty: OverrideType) -> &'static str {
     match ty {
@@ -379,7 +374,7 @@ impl Library {
         let (shader, index) = (self.shader_name(pass), manifest.index);
         // A keyword the pass does not have is a typo, not a variant to build.
         let known = &manifest.keywords;
-        let dynamic: Vec<&String> = dynamic_keywords(manifest).collect();
+        let dynamic: Vec<&String> = manifest.dynamic_keywords().collect();
         if let Some(unknown) =
             keywords.iter().find(|k| !known.iter().chain(dynamic.iter().copied()).any(|known| known == *k))
         {
@@ -461,7 +456,7 @@ impl Library {
     /// The `dynamic_branch` keywords a handle turns on.
     pub fn dynamic_keywords(&self, id: VariantId) -> Result<impl Iterator<Item = &str>, RuntimeError> {
         let pass = self.pass_of(id.pass)?;
-        let on = dynamic_keywords(pass).enumerate().filter(move |(bit, _)| id.dynamic & (1 << bit) != 0);
+        let on = pass.dynamic_keywords().enumerate().filter(move |(bit, _)| id.dynamic & (1 << bit) != 0);
         Ok(on.map(|(_, keyword)| keyword.as_str()))
     }
 

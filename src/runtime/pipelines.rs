@@ -5,7 +5,7 @@
 use super::layout::{PassLayout, VertexLayout};
 use super::overrides::{ConstantRequest, stage_constants};
 use super::trace::{PipelineTrace, TRACE_VERSION, TraceEntry, TracedPipeline};
-use super::{Library, PassId, RuntimeError, VariantId, dynamic_keywords};
+use super::{Library, PassId, RuntimeError, VariantId};
 use crate::manifest::{ERRORS_FILE, FILE_NAME, MaterialManifest, StageView};
 use std::collections::{HashMap, HashSet};
 use std::hash::{Hash, Hasher};
@@ -524,7 +524,7 @@ impl Runtime {
                 let declared = |keyword: &&str| {
                     self.library
                         .pass(&material.shader, pass)
-                        .is_ok_and(|p| p.keywords.iter().chain(dynamic_keywords(p)).any(|d| d == keyword))
+                        .is_ok_and(|p| p.keywords.iter().chain(p.dynamic_keywords()).any(|d| d == keyword))
                 };
                 let keywords: Vec<&str> = material
                     .keywords
