@@ -220,7 +220,7 @@ fn pass_static(
     let pairs = |attributes: &[crate::reflect::Attribute]| {
         attributes
             .iter()
-            .map(|a| format!("({}, {})", a.location, string_literal(&a.format)))
+            .map(|a| format!("({}, {})", a.location, string_literal(a.format.name())))
             .collect::<Vec<_>>()
             .join(", ")
     };

@@ -65,8 +65,8 @@ pub mod state;
 pub use backend::{Backend, PerBackend};
 pub use keywords::{KeywordKind, KeywordScope, KeywordSetManifest, KeywordStage};
 pub use reflection::{
-    Attribute, Member, OverrideConstant, OverrideType, Resource, SampleType, ShaderStage, StorageAccess,
-    TexelFormat, UniformBlock, ViewDimension,
+    Attribute, AttributeFormat, Member, OverrideConstant, OverrideType, Resource, SampleType, ShaderStage,
+    StorageAccess, TexelFormat, UniformBlock, ViewDimension,
 };
 pub use state::*;
 

@@ -10,8 +10,89 @@ pub struct Attribute {
     pub location: u32,
     /// Its name in the WGSL struct or parameter.
     pub name: String,
-    /// WebGPU vertex or texel format, such as `float32x3`.
-    pub format: String,
+    /// Its format, as WebGPU names vertex formats (`float32x3`).
+    pub format: AttributeFormat,
+}
+
+closed_set! {
+    /// A vertex input's or a colour output's format: a scalar or vector of a WGSL (or naga's
+    /// 64-bit) type, as WebGPU names vertex formats; `unsupported` for a type none names.
+    AttributeFormat {
+        /// `float16`.
+        Float16 = "float16",
+        /// `float16x2`.
+        Float16x2 = "float16x2",
+        /// `float16x3`.
+        Float16x3 = "float16x3",
+        /// `float16x4`.
+        Float16x4 = "float16x4",
+        /// `float32`.
+        Float32 = "float32",
+        /// `float32x2`.
+        Float32x2 = "float32x2",
+        /// `float32x3`.
+        Float32x3 = "float32x3",
+        /// `float32x4`.
+        Float32x4 = "float32x4",
+        /// `float64`.
+        Float64 = "float64",
+        /// `float64x2`.
+        Float64x2 = "float64x2",
+        /// `float64x3`.
+        Float64x3 = "float64x3",
+        /// `float64x4`.
+        Float64x4 = "float64x4",
+        /// `sint32`.
+        Sint32 = "sint32",
+        /// `sint32x2`.
+        Sint32x2 = "sint32x2",
+        /// `sint32x3`.
+        Sint32x3 = "sint32x3",
+        /// `sint32x4`.
+        Sint32x4 = "sint32x4",
+        /// `sint64`.
+        Sint64 = "sint64",
+        /// `sint64x2`.
+        Sint64x2 = "sint64x2",
+        /// `sint64x3`.
+        Sint64x3 = "sint64x3",
+        /// `sint64x4`.
+        Sint64x4 = "sint64x4",
+        /// `uint32`.
+        Uint32 = "uint32",
+        /// `uint32x2`.
+        Uint32x2 = "uint32x2",
+        /// `uint32x3`.
+        Uint32x3 = "uint32x3",
+        /// `uint32x4`.
+        Uint32x4 = "uint32x4",
+        /// `uint64`.
+        Uint64 = "uint64",
+        /// `uint64x2`.
+        Uint64x2 = "uint64x2",
+        /// `uint64x3`.
+        Uint64x3 = "uint64x3",
+        /// `uint64x4`.
+        Uint64x4 = "uint64x4",
+        /// A type no format names.
+        Unsupported = "unsupported",
+    }
+}
+
+impl AttributeFormat {
+    /// The format of a `count`-component vector of `kind` (`float`, `sint`, `uint`) scalars of
+    /// `bits` bits.
+    pub fn of(kind: &str, bits: u32, count: u32) -> AttributeFormat {
+        let name = match count {
+            1 => format!("{kind}{bits}"),
+            _ => format!("{kind}{bits}x{count}"),
+        };
+        AttributeFormat::ALL
+            .iter()
+            .copied()
+            .find(|f| f.name() == name)
+            .unwrap_or(AttributeFormat::Unsupported)
+    }
 }
 
 closed_set! {
@@ -325,6 +406,18 @@ mod tests {
             let json = serde_json::to_string(&format).expect("writes");
             assert_eq!(serde_json::from_str::<TexelFormat>(&json).expect("reads"), format, "{json}");
         }
+    }
+
+    #[test]
+    fn an_attribute_s_format_is_webgpu_s_name_or_unsupported() {
+        assert_eq!(AttributeFormat::of("float", 32, 3), AttributeFormat::Float32x3);
+        assert_eq!(AttributeFormat::of("uint", 32, 1), AttributeFormat::Uint32);
+        assert_eq!(AttributeFormat::of("sint", 8, 2), AttributeFormat::Unsupported);
+        for &format in AttributeFormat::ALL {
+            let json = serde_json::to_string(&format).expect("writes");
+            assert_eq!(serde_json::from_str::<AttributeFormat>(&json).expect("reads"), format, "{json}");
+        }
+        assert!(serde_json::from_str::<AttributeFormat>(r#""float32x5""#).is_err());
     }
 
     #[test]

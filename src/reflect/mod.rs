@@ -3,7 +3,7 @@
 //! types (`crate::manifest`).
 
 pub use crate::manifest::{Attribute, Member, OverrideConstant, Resource, UniformBlock};
-use crate::manifest::{OverrideType, SampleType, StorageAccess, TexelFormat, ViewDimension};
+use crate::manifest::{AttributeFormat, OverrideType, SampleType, StorageAccess, TexelFormat, ViewDimension};
 
 use naga::proc::Layouter;
 use naga::{
@@ -346,20 +346,19 @@ fn locations(
 }
 
 /// The WebGPU vertex format of a scalar or vector type (`float32x3`).
-fn format(inner: &TypeInner) -> String {
+fn format(inner: &TypeInner) -> AttributeFormat {
     let (scalar, count) = match inner {
         TypeInner::Scalar(scalar) => (*scalar, 1),
         TypeInner::Vector { size, scalar } => (*scalar, *size as u32),
-        _ => return "unsupported".into(),
+        _ => return AttributeFormat::Unsupported,
     };
     let kind = match scalar.kind {
         ScalarKind::Float => "float",
         ScalarKind::Sint => "sint",
         ScalarKind::Uint => "uint",
-        _ => "unsupported",
+        _ => return AttributeFormat::Unsupported,
     };
-    let bits = u32::from(scalar.width) * 8;
-    if count == 1 { format!("{kind}{bits}") } else { format!("{kind}{bits}x{count}") }
+    AttributeFormat::of(kind, u32::from(scalar.width) * 8, count)
 }
 
 fn resource(module: &Module, layouter: &Layouter, space: AddressSpace, ty: Handle<Type>) -> Resource {

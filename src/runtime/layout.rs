@@ -2,7 +2,8 @@
 //! vertex buffer layouts from a vertex stage's inputs.
 
 use crate::manifest::{
-    BindGroup, LayoutEntry, SampleType, ShaderStage, StorageAccess, TexelFormat, ViewDimension,
+    AttributeFormat, BindGroup, LayoutEntry, SampleType, ShaderStage, StorageAccess, TexelFormat,
+    ViewDimension,
 };
 use crate::reflect::Resource;
 
@@ -17,7 +18,7 @@ pub enum LayoutError {
     Binding { binding: String, description: String },
     /// A vertex input of a type no vertex format reads.
     #[error("vertex input {location}: no vertex format `{format}`")]
-    VertexFormat { location: u32, format: String },
+    VertexFormat { location: u32, format: AttributeFormat },
 }
 
 /// A pass's bind group layouts (groups 0 to the highest it uses, empty ones included) and its
@@ -195,14 +196,14 @@ pub struct VertexBuffer {
 
 impl VertexLayout {
     /// The default packing of a vertex stage's inputs (`(location, format)` as reflected).
-    pub fn packed(inputs: &[(u32, String)]) -> Result<VertexLayout, LayoutError> {
-        let mut inputs: Vec<&(u32, String)> = inputs.iter().collect();
+    pub fn packed(inputs: &[(u32, AttributeFormat)]) -> Result<VertexLayout, LayoutError> {
+        let mut inputs: Vec<&(u32, AttributeFormat)> = inputs.iter().collect();
         inputs.sort_by_key(|(location, _)| *location);
         let mut offset = 0;
         let mut attributes = Vec::new();
         for (location, format) in inputs {
-            let format = vertex_format(format)
-                .ok_or_else(|| LayoutError::VertexFormat { location: *location, format: format.clone() })?;
+            let format = vertex_format(*format)
+                .ok_or(LayoutError::VertexFormat { location: *location, format: *format })?;
             attributes.push(wgpu::VertexAttribute { format, offset, shader_location: *location });
             offset += format.size();
         }
@@ -231,23 +232,40 @@ impl VertexLayout {
 }
 
 /// A reflected vertex format (`float32x3`) as wgpu's.
-fn vertex_format(name: &str) -> Option<wgpu::VertexFormat> {
+fn vertex_format(format: AttributeFormat) -> Option<wgpu::VertexFormat> {
+    use AttributeFormat as A;
     use wgpu::VertexFormat as V;
-    Some(match name {
-        "float32" => V::Float32,
-        "float32x2" => V::Float32x2,
-        "float32x3" => V::Float32x3,
-        "float32x4" => V::Float32x4,
-        "float16x2" => V::Float16x2,
-        "float16x4" => V::Float16x4,
-        "sint32" => V::Sint32,
-        "sint32x2" => V::Sint32x2,
-        "sint32x3" => V::Sint32x3,
-        "sint32x4" => V::Sint32x4,
-        "uint32" => V::Uint32,
-        "uint32x2" => V::Uint32x2,
-        "uint32x3" => V::Uint32x3,
-        "uint32x4" => V::Uint32x4,
-        _ => return None,
+    Some(match format {
+        A::Float16x2 => V::Float16x2,
+        A::Float16x4 => V::Float16x4,
+        A::Float32 => V::Float32,
+        A::Float32x2 => V::Float32x2,
+        A::Float32x3 => V::Float32x3,
+        A::Float32x4 => V::Float32x4,
+        A::Sint32 => V::Sint32,
+        A::Sint32x2 => V::Sint32x2,
+        A::Sint32x3 => V::Sint32x3,
+        A::Sint32x4 => V::Sint32x4,
+        A::Uint32 => V::Uint32,
+        A::Uint32x2 => V::Uint32x2,
+        A::Uint32x3 => V::Uint32x3,
+        A::Uint32x4 => V::Uint32x4,
+        // WebGPU has no three-component 16-bit format and no 64-bit integer one; the default
+        // packing leaves single 16-bit and 64-bit floats to a renderer's own layout.
+        A::Float16
+        | A::Float16x3
+        | A::Float64
+        | A::Float64x2
+        | A::Float64x3
+        | A::Float64x4
+        | A::Sint64
+        | A::Sint64x2
+        | A::Sint64x3
+        | A::Sint64x4
+        | A::Uint64
+        | A::Uint64x2
+        | A::Uint64x3
+        | A::Uint64x4
+        | A::Unsupported => return None,
     })
 }

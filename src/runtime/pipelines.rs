@@ -6,7 +6,7 @@ use super::layout::{PassLayout, VertexLayout};
 use super::overrides::{ConstantRequest, stage_constants};
 use super::trace::{PipelineTrace, TRACE_VERSION, TraceEntry, TracedPipeline};
 use super::{Library, PassId, RuntimeError, VariantId};
-use crate::manifest::{ERRORS_FILE, FILE_NAME, MaterialManifest, StageView};
+use crate::manifest::{AttributeFormat, ERRORS_FILE, FILE_NAME, MaterialManifest, StageView};
 use std::collections::{HashMap, HashSet};
 use std::hash::{Hash, Hasher};
 use std::io::Write as _;
@@ -404,8 +404,8 @@ impl Runtime {
         let vertex_layout = match request.vertex_layout {
             Some(layout) => layout.clone(),
             None => {
-                let inputs: Vec<(u32, String)> =
-                    vertex.interface.inputs.iter().map(|a| (a.location, a.format.clone())).collect();
+                let inputs: Vec<(u32, AttributeFormat)> =
+                    vertex.interface.inputs.iter().map(|a| (a.location, a.format)).collect();
                 VertexLayout::packed(&inputs).map_err(|error| layout_error(error.to_string()))?
             }
         };

@@ -168,18 +168,25 @@ impl Runtime {
     /// ([`Runtime::created_after_warm_up`]). Returns the entries that could not be made, by
     /// index.
     pub fn warm_up_trace(&self, entries: &[TraceEntry], threads: usize) -> Vec<(usize, RuntimeError)> {
-        let threads = threads.clamp(1, entries.len().max(1));
-        let chunk = entries.len().div_ceil(threads).max(1);
+        // An entry given twice (traces concatenated) is made once: two threads making one
+        // pipeline at once would both pay for it.
+        let mut seen = HashSet::new();
+        let unique: Vec<(usize, &TraceEntry)> = entries
+            .iter()
+            .enumerate()
+            .filter(|(_, entry)| serde_json::to_string(entry).is_ok_and(|line| seen.insert(line)))
+            .collect();
+        let threads = threads.clamp(1, unique.len().max(1));
+        let chunk = unique.len().div_ceil(threads).max(1);
         let mut errors: Vec<(usize, RuntimeError)> = std::thread::scope(|scope| {
-            let workers: Vec<_> = entries
+            let workers: Vec<_> = unique
                 .chunks(chunk)
                 .enumerate()
                 .map(|(c, part)| {
                     std::thread::Builder::new().name(format!("kiln warm-up {c}")).spawn_scoped(
                         scope,
                         move || {
-                            let replayed =
-                                part.iter().enumerate().map(|(i, entry)| (c * chunk + i, self.replay(entry)));
+                            let replayed = part.iter().map(|&(i, entry)| (i, self.replay(entry)));
                             replayed.filter_map(|(i, made)| made.err().map(|e| (i, e))).collect::<Vec<_>>()
                         },
                     )

@@ -100,7 +100,7 @@ fn pipelines(device: &wgpu::Device, output: &Path, pass: &PassManifest, source: 
             .inputs
             .iter()
             .map(|input| {
-                let format = vertex_format(&input.format);
+                let format = vertex_format(input.format.name());
                 let attribute = wgpu::VertexAttribute { format, offset, shader_location: input.location };
                 offset += format.size();
                 attribute
