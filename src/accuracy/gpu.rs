@@ -405,11 +405,19 @@ pub fn device() -> Result<Gpu, String> {
 pub fn device_on(backends: wgpu::Backends) -> Result<Gpu, String> {
     let adapter = crate::runtime::adapter(backends).map_err(|e| e.to_string())?;
     let info = adapter.get_info();
-    let required_features = adapter.features()
-        & (wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::SHADER_F16 | wgpu::Features::PIPELINE_CACHE);
-    let (device, queue) = pollster::block_on(
-        adapter.request_device(&wgpu::DeviceDescriptor { required_features, ..Default::default() }),
-    )
+    let wanted = wgpu::Features::TIMESTAMP_QUERY
+        | wgpu::Features::SHADER_F16
+        | wgpu::Features::PIPELINE_CACHE
+        | wgpu::Features::IMMEDIATES;
+    let required_features = adapter.features() & wanted;
+    // An ubershader's keywords (runtime::UBERSHADER_IMMEDIATE_SIZE), where the adapter has them.
+    let immediates = adapter.limits().max_immediate_size.min(8);
+    let required_limits = wgpu::Limits { max_immediate_size: immediates, ..Default::default() };
+    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+        required_features,
+        required_limits,
+        ..Default::default()
+    }))
     .map_err(|e| format!("no device: {e}"))?;
     Ok(Gpu {
         device,

@@ -355,6 +355,7 @@ pub(super) fn pass_manifest(
     work: &PassWork,
     jobs: &[Job],
     stages: &[Vec<Option<usize>>],
+    ubershader: Option<&[Option<usize>]>,
     built: &[Option<CachedStage>],
 ) -> PassManifest {
     let shader = &work.shader.shader;
@@ -439,28 +440,39 @@ pub(super) fn pass_manifest(
             });
         module_of_job.push(Some(module));
     }
+    // A variant's modules, from its jobs: a compute pass's entries are its kernels, a render
+    // pass's its two stages.
+    let variant_modules = |jobs: &[Option<usize>]| {
+        let module = |job: Option<&Option<usize>>| job.copied().flatten().and_then(|j| module_of_job[j]);
+        let (vertex, fragment, kernels) = if compute {
+            (None, None, (0..jobs.len()).map(|k| module(jobs.get(k))).collect())
+        } else {
+            (module(jobs.first()), module(jobs.get(1)), Vec::new())
+        };
+        VariantManifest {
+            key: String::new(),
+            keywords: Vec::new(),
+            materials: Vec::new(),
+            vertex,
+            fragment,
+            kernels,
+        }
+    };
     let variants = work
         .variants
         .iter()
         .zip(stages)
-        .map(|(variant, jobs)| {
-            let module = |job: Option<&Option<usize>>| job.copied().flatten().and_then(|j| module_of_job[j]);
-            // A compute pass's entries are its kernels; a render pass's its two stages.
-            let (vertex, fragment, kernels) = if compute {
-                (None, None, (0..jobs.len()).map(|k| module(jobs.get(k))).collect())
-            } else {
-                (module(jobs.first()), module(jobs.get(1)), Vec::new())
-            };
-            VariantManifest {
-                key: variant.bits.key(),
-                keywords: work.program.keywords.keywords(&variant.bits).map(str::to_string).collect(),
-                materials: variant.materials.iter().map(|&m| catalog.materials[m].name.clone()).collect(),
-                vertex,
-                fragment,
-                kernels,
-            }
+        .map(|(variant, jobs)| VariantManifest {
+            key: variant.bits.key(),
+            keywords: work.program.keywords.keywords(&variant.bits).map(str::to_string).collect(),
+            materials: variant.materials.iter().map(|&m| catalog.materials[m].name.clone()).collect(),
+            ..variant_modules(jobs)
         })
         .collect();
+    let ubershader = ubershader.map(|jobs| Ubershader {
+        keywords: work.program.pragmas.ubershader_keywords().into_iter().map(str::to_string).collect(),
+        modules: variant_modules(jobs),
+    });
     let mut groups: BTreeMap<u32, Vec<LayoutEntry>> = BTreeMap::new();
     for ((group, _), mut entry) in entries {
         entry.visibility.sort();
@@ -521,6 +533,7 @@ pub(super) fn pass_manifest(
         interfaces,
         modules,
         variants,
+        ubershader,
     }
 }
 

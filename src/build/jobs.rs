@@ -6,7 +6,9 @@ use crate::compile::target::Allowed;
 use crate::diagnostics;
 use crate::diagnostics::{Diagnostic, PassId};
 use crate::keywords::KeywordBits;
-use crate::preprocess::{Includes, SourceMap, Stage, preprocess};
+use crate::preprocess::{
+    Includes, MAX_UBERSHADER_KEYWORDS, SourceMap, Stage, keyword_macros, preprocess_with, ubershader_macros,
+};
 use crate::shaderlab::pragma::ProgramPragmas;
 use crate::source::{SourceStore, Span, Spanned};
 use crate::store::hash;
@@ -53,6 +55,8 @@ impl Job<'_> {
 pub(super) struct PassJobs<'a> {
     pub jobs: Vec<Job<'a>>,
     pub stages: Vec<Vec<Option<usize>>>,
+    /// The ubershader's jobs, as a variant's, when the pass has `#pragma ubershader`.
+    pub ubershader: Option<Vec<Option<usize>>>,
 }
 
 /// The entry points each variant of a pass compiles, in the order the manifest lists its modules:
@@ -72,6 +76,8 @@ struct Request<'a> {
     allowed: Allowed,
     /// The variant's keywords, for diagnostics.
     variant: String,
+    /// The pass's ubershader (`keywords` unused): every keyword read at run time.
+    ubershader: bool,
 }
 
 /// Where in its pass a stage is: `, fragment stage` (and a kernel's name).
@@ -91,7 +97,7 @@ pub(super) fn pass_jobs<'a>(
     let (shader, pass, program) = (work.shader, work.pass, work.program);
     let mut jobs: Vec<Job<'a>> = Vec::new();
     let Some(wgsl) = program.wgsl.as_ref() else {
-        return PassJobs { jobs, stages: vec![Vec::new(); work.variants.len()] };
+        return PassJobs { jobs, stages: vec![Vec::new(); work.variants.len()], ubershader: None };
     };
     let mut requests: Vec<Request> = Vec::new();
     let mut request_of: HashMap<(Stage, &str, &KeywordBits, String), usize> = HashMap::new();
@@ -114,17 +120,40 @@ pub(super) fn pass_jobs<'a>(
                     keywords: program.keywords.keywords(bits).map(str::to_string).collect(),
                     allowed: allowed.clone(),
                     variant: shown,
+                    ubershader: false,
                 });
                 requests.len() - 1
             }))
         });
         per_variant.push(variant_jobs.collect());
     }
+    let pragmas = &program.pragmas;
+    let ubershader_keywords = pragmas.ubershader_keywords();
+    // Past the immediate data's bits the pass has its error (K0336) and no ubershader.
+    if pragmas.ubershader.is_some() && ubershader_keywords.len() <= MAX_UBERSHADER_KEYWORDS {
+        let allowed = Allowed::for_variant(pragmas, &ubershader_keywords).with_immediates();
+        let stages = entries.iter().map(|&(stage, entry)| {
+            requests.push(Request {
+                stage,
+                entry: entry?,
+                keywords: Vec::new(),
+                allowed: allowed.clone(),
+                variant: "(ubershader)".to_string(),
+                ubershader: true,
+            });
+            Some(requests.len() - 1)
+        });
+        per_variant.push(stages.collect());
+    }
     let outputs: Vec<_> = requests
         .par_iter()
         .map(|r| {
             let keywords: Vec<&str> = r.keywords.iter().map(String::as_str).collect();
-            let out = preprocess(includes, store, wgsl, &keywords, r.stage);
+            let macros = match r.ubershader {
+                true => ubershader_macros(&program.pragmas, r.stage).unwrap_or_default(),
+                false => keyword_macros(&program.pragmas, &keywords),
+            };
+            let out = preprocess_with(includes, store, wgsl, &macros, r.stage);
             let text_hash = hash(out.text.as_bytes());
             (out, text_hash)
         })
@@ -160,9 +189,10 @@ pub(super) fn pass_jobs<'a>(
         jobs[job].requests += 1;
         job_of_request.push(Some(job));
     }
-    let stages = per_variant
+    let mut stages: Vec<Vec<Option<usize>>> = per_variant
         .into_iter()
         .map(|stages| stages.into_iter().map(|r| r.and_then(|r| job_of_request[r])).collect())
         .collect();
-    PassJobs { jobs, stages }
+    let ubershader = (stages.len() > work.variants.len()).then(|| stages.pop()).flatten();
+    PassJobs { jobs, stages, ubershader }
 }

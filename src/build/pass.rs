@@ -85,7 +85,7 @@ pub(super) fn build_pass(
 ) -> PassBuilt {
     let (cache, progress) = (&session.cache, &session.progress);
     let mut diagnostics = Vec::new();
-    let PassJobs { jobs, stages } = pass_jobs(store, includes, work, &mut diagnostics);
+    let PassJobs { jobs, stages, ubershader } = pass_jobs(store, includes, work, &mut diagnostics);
     for job in &jobs {
         session.texts.add(&job.text_hash);
     }
@@ -181,7 +181,10 @@ pub(super) fn build_pass(
         let _ = cache.put_pass_index(&key, &fresh);
     }
     PassBuilt {
-        part: BuiltPass::new(pass_manifest(store, catalog, work, &jobs, &stages, &modules), options),
+        part: BuiltPass::new(
+            pass_manifest(store, catalog, work, &jobs, &stages, ubershader.as_deref(), &modules),
+            options,
+        ),
         diagnostics,
         modules: jobs.len(),
         compiled: compiled_count,

@@ -22,6 +22,10 @@ pub const REQUIREMENT_CAPABILITIES: [(&str, Capabilities, Option<&str>); 11] = [
     ("waveshuffle", Capabilities::SUBGROUP, Some("subgroup")),
 ];
 
+/// wgpu's feature for immediate data, which kiln grants an ubershader (no `#pragma require`
+/// names it).
+pub const IMMEDIATES: &str = "immediates";
+
 /// What wgpu lets every WebGPU-compliant device's shaders use: its mapping from no optional
 /// features and the compliant downlevel flags to naga capabilities.
 pub fn webgpu_baseline() -> Capabilities {
@@ -68,6 +72,12 @@ impl Allowed {
         Allowed { level, features }
     }
 
+    /// These, and immediate data (an ubershader's keywords): wgpu's `immediates` feature.
+    pub fn with_immediates(mut self) -> Allowed {
+        self.features.push(IMMEDIATES.to_string());
+        self
+    }
+
     fn has(&self, feature: &str) -> bool {
         self.features.iter().any(|f| f == feature)
     }
@@ -82,6 +92,9 @@ impl Allowed {
                 capabilities |= capability;
             }
         }
+        if self.has(IMMEDIATES) {
+            capabilities |= Capabilities::IMMEDIATES;
+        }
         capabilities
     }
 
@@ -91,6 +104,7 @@ impl Allowed {
             .iter()
             .filter(|(name, _, feature)| feature.is_some() && self.has(name))
             .filter_map(|(_, _, feature)| feature.map(str::to_string))
+            .chain(self.has(IMMEDIATES).then(|| IMMEDIATES.to_string()))
             .collect();
         features.sort();
         features.dedup();

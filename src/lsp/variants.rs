@@ -111,7 +111,9 @@ pub(super) fn expansion_at(
         let (_, variant) = selections.active(&name, program)?;
         let stage = if program.pragmas.kernels.is_empty() { Stage::Fragment } else { Stage::Compute };
         let keywords: Vec<&str> = program.keywords.keywords(program.keywords_for(variant, stage)).collect();
-        let out = crate::preprocess::preprocess(&checked.includes, &analysis.store, wgsl, &keywords, stage);
+        let macros = crate::preprocess::keyword_macros(&program.pragmas, &keywords);
+        let out =
+            crate::preprocess::preprocess_with(&checked.includes, &analysis.store, wgsl, &macros, stage);
         let range = out.source_map.expansion_at(file, offset)?;
         let place = format!(
             "`{}` pass {}, variant `{}`",

@@ -324,6 +324,10 @@ pub struct PassManifest {
     pub modules: Vec<ModuleManifest>,
     /// Its built variants.
     pub variants: Vec<VariantManifest>,
+    /// Its ubershader (`#pragma ubershader`): modules that read every keyword at run time, the
+    /// fallback drawn while a variant's pipeline is created (docs/keywords.md).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ubershader: Option<Ubershader>,
 }
 
 impl PassManifest {
@@ -342,6 +346,7 @@ impl PassManifest {
         let stages = self
             .variants
             .iter()
+            .chain(self.ubershader.iter().map(|u| &u.modules))
             .flat_map(|v| [v.vertex, v.fragment].into_iter().chain(v.kernels.iter().copied()));
         let mut blocks = self.interfaces.iter().flat_map(|i| &i.uniform_blocks);
         modules_in_range(&self.modules, self.interfaces.len(), self.packs.len())
@@ -436,6 +441,29 @@ pub struct VariantManifest {
     /// A compute pass: each kernel's module (in the pass's `kernels` order), `None` when it failed.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub kernels: Vec<Option<usize>>,
+}
+
+/// A pass's ubershader: its modules, as a variant's, and the keywords its immediate data holds.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Ubershader {
+    /// Keyword i is on when bit i of the immediate data (two `u32`s, 8 bytes) is set: the pass's
+    /// variant keywords, then its `dynamic_branch` ones.
+    pub keywords: Vec<String>,
+    /// Its vertex, fragment and kernel modules (`key`, `keywords` and `materials` empty).
+    pub modules: VariantManifest,
+}
+
+impl Ubershader {
+    /// The bytes of its immediate data that turn `keywords` on (those it does not read are off).
+    pub fn immediates<'k>(&self, keywords: impl IntoIterator<Item = &'k str>) -> [u8; 8] {
+        let mut bits = 0u64;
+        for keyword in keywords {
+            if let Some(bit) = self.keywords.iter().position(|k| k == keyword) {
+                bits |= 1 << bit;
+            }
+        }
+        bits.to_le_bytes()
+    }
 }
 
 /// What a stage module exposes to the pipeline that uses it; modules of a pass that differ only

@@ -4,6 +4,7 @@
 use super::BUILTIN_MACROS;
 use super::error::PreprocessError;
 use super::include::{Includes, Program};
+use super::pass::MAX_UBERSHADER_KEYWORDS;
 use super::scan::{BranchKind, Condition, Item, Target, identifiers};
 use crate::diagnostics::Diagnostic;
 use crate::shaderlab::pragma::{KeywordKind, PragmaSource, ProgramPragmas};
@@ -86,7 +87,27 @@ pub(super) fn analyze_keywords(
         }
     }
 
+    let ubershader_keywords = pragmas.ubershader.map(|_| pragmas.ubershader_keywords()).unwrap_or_default();
+    if let Some(pragma) = pragmas.ubershader
+        && ubershader_keywords.len() > MAX_UBERSHADER_KEYWORDS
+    {
+        warnings
+            .push(PreprocessError::UbershaderTooManyKeywords { pragma, count: ubershader_keywords.len() });
+    }
     for (name, span) in conditions {
+        if let Some(pragma) = pragmas.ubershader
+            && ubershader_keywords.contains(&name)
+            && !pragmas.is_dynamic(name)
+        {
+            let mut declared = pragmas.keyword_sets.iter().flat_map(|set| &set.options);
+            let declared = declared.find(|o| o.keyword.as_deref() == Some(name)).map_or(pragma, |o| o.span);
+            warnings.push(PreprocessError::UbershaderKeywordInCondition {
+                span,
+                keyword: name.to_string(),
+                declared,
+                pragma,
+            });
+        }
         let dynamic = pragmas.keyword_sets.iter().filter(|set| set.kind == KeywordKind::DynamicBranch);
         let declaration = dynamic.flat_map(|set| &set.options).find(|o| o.keyword.as_deref() == Some(name));
         if let Some(declaration) = declaration {
@@ -106,7 +127,9 @@ pub(super) fn analyze_keywords(
             let first_declaration = declared.insert(keyword);
             // With an include missing, what it tests is unknown: not reported as untested.
             let untested = all_loaded && !tested.contains(keyword);
-            if first_declaration && set.kind != KeywordKind::DynamicBranch && untested {
+            // An ubershader's keywords are tested by `if`, as `dynamic_branch` ones are.
+            let by_if = set.kind == KeywordKind::DynamicBranch || pragmas.ubershader.is_some();
+            if first_declaration && !by_if && untested {
                 warnings.push(PreprocessError::KeywordNeverTested {
                     span: option.span,
                     keyword: keyword.to_string(),

@@ -1,5 +1,6 @@
 //! Every mistake the preprocessor reports, as a typed enum turned into diagnostics here.
 
+use super::pass::MAX_UBERSHADER_KEYWORDS;
 use crate::diagnostics::Diagnostic;
 use crate::shaderlab::error::one_of;
 use crate::source::Span;
@@ -153,6 +154,18 @@ pub enum PreprocessError {
         span: Span,
         keyword: String,
         declared: Span,
+    },
+    /// A variant keyword of a pass with `#pragma ubershader` tested by a conditional.
+    UbershaderKeywordInCondition {
+        span: Span,
+        keyword: String,
+        declared: Span,
+        pragma: Span,
+    },
+    /// More keywords than an ubershader's immediate data has bits.
+    UbershaderTooManyKeywords {
+        pragma: Span,
+        count: usize,
     },
     /// Tokens after `#else` or `#endif`.
     ExtraTokens {
@@ -362,6 +375,22 @@ impl From<PreprocessError> for Diagnostic {
             .label(declared, "declared `dynamic_branch` here")
             .note("one module serves every value of a `dynamic_branch` keyword, so it is never a macro; it is an `override` constant set when the pipeline is created")
             .help(format!("branch with `if ({keyword}) {{ ... }}`, or declare it `shader_feature` to compile a variant for it")),
+            UbershaderKeywordInCondition { span, keyword, declared, pragma } => Diagnostic::error(
+                "K0335",
+                format!("`{keyword}` is a keyword of a pass with an ubershader: the preprocessor cannot test it"),
+            )
+            .at(span, "tested by the preprocessor here")
+            .label(declared, "declared here")
+            .label(pragma, "the pass builds an ubershader here")
+            .note("the ubershader reads every keyword at run time, so in this pass each is `true` or `false`, never a condition of `#if`")
+            .help(format!("branch with `if ({keyword}) {{ ... }}`, or remove `#pragma ubershader`")),
+            UbershaderTooManyKeywords { pragma, count } => Diagnostic::error(
+                "K0336",
+                format!("an ubershader reads at most {MAX_UBERSHADER_KEYWORDS} keywords; this pass has {count}"),
+            )
+            .at(pragma, "the pass builds an ubershader here")
+            .note("each keyword is one bit of the ubershader's immediate data")
+            .help("remove `#pragma ubershader`, or split the pass's keywords between passes"),
             ExtraTokens { span, directive } => {
                 Diagnostic::warning("K0333", format!("tokens after `#{directive}` are ignored"))
                     .at(span, "ignored")

@@ -19,7 +19,10 @@ mod source_map;
 pub use error::PreprocessError;
 pub use include::{IncludeConfig, Includes, LIBRARY_PREFIX, Program};
 pub(crate) use macros::{Kind, lex};
-pub use pass::{DynamicKeyword, PassProgram, finish_pass, load_blocks, load_pass, load_pass_text};
+pub use pass::{
+    DynamicKeyword, KeywordMacros, MAX_UBERSHADER_KEYWORDS, PassProgram, UBERSHADER_DATA, finish_pass,
+    keyword_macros, load_blocks, load_pass, load_pass_text, ubershader_macros,
+};
 pub use run::MAX_INCLUDE_DEPTH;
 pub use run::Skipped;
 pub use scan::MAX_CONDITIONAL_DEPTH;
@@ -85,6 +88,17 @@ pub fn preprocess(
     keywords: &[&str],
     stage: Stage,
 ) -> Preprocessed {
+    run::run(includes, store, program, &KeywordMacros::on(keywords), stage)
+}
+
+/// [`preprocess`] with the keywords given as macros ([`keyword_macros`], [`ubershader_macros`]).
+pub fn preprocess_with(
+    includes: &Includes,
+    store: &SourceStore,
+    program: &Program,
+    keywords: &KeywordMacros,
+    stage: Stage,
+) -> Preprocessed {
     run::run(includes, store, program, keywords, stage)
 }
 
@@ -97,5 +111,13 @@ pub fn inactive_regions(
     keywords: &[&str],
     stage: Stage,
 ) -> Skipped {
-    run::run_recording(includes, store, program, keywords, stage, Some(Skipped::default())).1
+    run::run_recording(
+        includes,
+        store,
+        program,
+        &KeywordMacros::on(keywords),
+        stage,
+        Some(Skipped::default()),
+    )
+    .1
 }

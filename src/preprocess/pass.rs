@@ -1,12 +1,15 @@
 //! A pass's WGSL program as the rest of the pipeline sees it: its blocks with everything they
 //! can include, the pragmas that count for it, and the keyword warnings about it.
 
+use super::Stage;
 use super::analysis::{analyze_keywords, pragma_sources};
 use super::include::{Includes, Program};
 use crate::diagnostics::Diagnostic;
+use crate::manifest::ShaderStage;
 use crate::shaderlab::ast::ProgramBlock;
 use crate::shaderlab::pragma::{KeywordKind, KeywordStage, ProgramPragmas, collect_pragmas};
 use crate::source::{SourceStore, Span};
+use std::borrow::Cow;
 
 /// A pass's program, ready to be preprocessed once per variant and stage.
 #[derive(Debug, Clone)]
@@ -103,4 +106,71 @@ impl DynamicKeyword {
     pub fn declaration(&self) -> String {
         format!("override {}: bool = {};", self.name, self.default_on)
     }
+}
+
+/// How one stage's text sees its pass's keywords: each keyword macro and what it stands for.
+#[derive(Debug, Clone, Default)]
+pub struct KeywordMacros<'a> {
+    /// Each macro and its replacement.
+    pub defines: Vec<(&'a str, Cow<'static, str>)>,
+    /// An ubershader's `#pragma ubershader` line: its immediate data ([`UBERSHADER_DATA`]) is
+    /// declared at the end of the text, mapped there, and its `dynamic_branch` keywords are
+    /// macros rather than `override` constants.
+    pub ubershader: Option<Span>,
+}
+
+impl<'a> KeywordMacros<'a> {
+    /// The keywords on, each defined as `1` (Unity's way); the others undefined.
+    pub fn on(keywords: &[&'a str]) -> KeywordMacros<'a> {
+        KeywordMacros {
+            defines: keywords.iter().map(|&k| (k, Cow::Borrowed("1"))).collect(),
+            ubershader: None,
+        }
+    }
+}
+
+/// The most keywords an ubershader reads: the bits of its immediate data.
+pub const MAX_UBERSHADER_KEYWORDS: usize = 64;
+
+/// What an ubershader's text declares: the bits of the keywords on, in
+/// [`ProgramPragmas::ubershader_keywords`] order, as immediate data the draw sets.
+pub const UBERSHADER_DATA: &str = "var<immediate> kiln_keywords: vec2<u32>;";
+
+/// The macros a variant's `stage` is preprocessed with, `on` being the stage's keywords on. In a
+/// pass with `#pragma ubershader`, every variant keyword is a macro, `true` or `false`, so that
+/// the program tests it with `if` as its ubershader does (docs/keywords.md).
+pub fn keyword_macros<'a>(pragmas: &'a ProgramPragmas, on: &[&'a str]) -> KeywordMacros<'a> {
+    if pragmas.ubershader.is_none() {
+        return KeywordMacros::on(on);
+    }
+    let variant = pragmas.ubershader_keywords().into_iter().filter(|k| !pragmas.is_dynamic(k));
+    let defines = variant.map(|k| (k, Cow::Borrowed(if on.contains(&k) { "true" } else { "false" })));
+    KeywordMacros { defines: defines.collect(), ubershader: None }
+}
+
+/// The macros of a pass's ubershader for `stage`: each keyword the stage sees tests its bit of
+/// the immediate data; one it does not see is what a variant's stage sees (`false`, or a
+/// `dynamic_branch` keyword's default). `None` when the pass has no `#pragma ubershader`.
+pub fn ubershader_macros(pragmas: &ProgramPragmas, stage: Stage) -> Option<KeywordMacros<'_>> {
+    let pragma = pragmas.ubershader?;
+    let shader_stage = match stage {
+        Stage::Vertex => ShaderStage::Vertex,
+        Stage::Fragment => ShaderStage::Fragment,
+        Stage::Compute => ShaderStage::Compute,
+    };
+    let dynamic = DynamicKeyword::of(pragmas);
+    let defines = pragmas.ubershader_keywords().into_iter().enumerate().map(|(bit, keyword)| {
+        let mut sets = pragmas.keyword_sets.iter().filter(|set| set.keywords().any(|k| k == keyword));
+        // A kernel sees every keyword, as its variants' kernels do.
+        let seen = stage == Stage::Compute || sets.any(|set| set.stage.includes(shader_stage));
+        let value = if seen {
+            let word = if bit < 32 { 'x' } else { 'y' };
+            Cow::Owned(format!("((kiln_keywords.{word} & {:#x}u) != 0u)", 1u32 << (bit % 32)))
+        } else {
+            let on = dynamic.iter().any(|d| d.name == keyword && d.default_on);
+            Cow::Borrowed(if on { "true" } else { "false" })
+        };
+        (keyword, value)
+    });
+    Some(KeywordMacros { defines: defines.collect(), ubershader: Some(pragma) })
 }

@@ -8,6 +8,7 @@ use super::macros::{
     ExpandError, Expander, HideSets, Lexer, MAX_EXPANSION_DEPTH, MacroDef, Macros, glues, splice_len,
     unspliced,
 };
+use super::pass::{KeywordMacros, UBERSHADER_DATA};
 use super::scan::{BranchKind, Condition, Item, Target};
 use super::source_map::{ROOT, SourceMap};
 use super::{Preprocessed, Stage};
@@ -30,7 +31,7 @@ pub(super) fn run<'a>(
     includes: &'a Includes,
     store: &'a SourceStore,
     program: &Program,
-    keywords: &[&'a str],
+    keywords: &'a KeywordMacros<'a>,
     stage: Stage,
 ) -> Preprocessed {
     run_recording(includes, store, program, keywords, stage, None).0
@@ -50,7 +51,7 @@ pub(super) fn run_recording<'a>(
     includes: &'a Includes,
     store: &'a SourceStore,
     program: &Program,
-    keywords: &[&'a str],
+    keywords: &'a KeywordMacros<'a>,
     stage: Stage,
     skipped: Option<Skipped>,
 ) -> (Preprocessed, Skipped) {
@@ -69,8 +70,8 @@ pub(super) fn run_recording<'a>(
         over_budget: false,
     };
     runner.macros.insert(stage.macro_name(), MacroDef::object("1"));
-    for keyword in keywords {
-        runner.macros.insert(keyword, MacroDef::object("1"));
+    for (keyword, value) in &keywords.defines {
+        runner.macros.insert(keyword, MacroDef::object(value));
     }
     for &block in &program.blocks {
         runner.stack.push(block);
@@ -79,10 +80,20 @@ pub(super) fn run_recording<'a>(
     }
     // Module-scope declarations may come in any order in WGSL: at the end, nothing shifts. Every
     // stage's text has every function, so each declares them all; the pipeline sets a stage's own.
-    for keyword in &program.dynamic_keywords {
+    // An ubershader reads them from its immediate data instead (a macro each).
+    let declared = program
+        .dynamic_keywords
+        .iter()
+        .filter(|k| keywords.ubershader.is_none() || !keywords.defines.iter().any(|(d, _)| *d == k.name));
+    for keyword in declared {
         runner.out.push('\n');
         runner.map.expanded(runner.out.len(), keyword.span, None, ROOT);
         runner.out.push_str(&keyword.declaration());
+    }
+    if let Some(pragma) = keywords.ubershader {
+        runner.out.push('\n');
+        runner.map.expanded(runner.out.len(), pragma, None, ROOT);
+        runner.out.push_str(UBERSHADER_DATA);
     }
     runner.map.finish(runner.out.len());
     let skipped = runner.skipped.unwrap_or_default();

@@ -9,7 +9,7 @@ use crate::catalog::{Catalog, CatalogInput, CatalogProgram, catalog};
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{Variant, select_variant};
 use crate::manifest::StageView;
-use crate::preprocess::{Includes, Preprocessed, Stage, preprocess};
+use crate::preprocess::{Includes, Preprocessed, Stage, keyword_macros, preprocess_with};
 use crate::reflect::UniformBlock;
 use crate::shaderlab::ast::ProgramLanguage;
 use crate::source::SourceStore;
@@ -99,7 +99,8 @@ pub fn preprocess_variant(
     let Some(wgsl) = program.wgsl.as_ref() else { return Ok((None, diagnostics)) };
     let keywords: Vec<&str> =
         program.keywords.keywords(program.keywords_for(&requested.variant, request.stage)).collect();
-    let output = preprocess(&requested.includes, store, wgsl, &keywords, request.stage);
+    let macros = keyword_macros(&program.pragmas, &keywords);
+    let output = preprocess_with(&requested.includes, store, wgsl, &macros, request.stage);
     diagnostics.extend(output.diagnostics.iter().cloned());
     let ok = !diagnostics::has_errors(&output.diagnostics);
     Ok((ok.then_some(output), diagnostics))

@@ -14,6 +14,7 @@ mod overrides;
 mod pipelines;
 mod state;
 mod trace;
+mod ubershader;
 mod uniforms;
 
 pub use crate::manifest::{FRAME_GROUP, OBJECT_GROUP};
@@ -27,6 +28,7 @@ pub use state::{
     MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state,
 };
 pub use trace::{PipelineTrace, TRACE_VERSION, TraceEntry, TracedPipeline, WarmUp, read_trace};
+pub use ubershader::{Drawable, UBERSHADER_IMMEDIATE_SIZE};
 
 use crate::manifest::{
     FILE_NAME, MATERIALS_FILE, Manifest, MaterialManifest, ModuleFile, OverrideType, PassManifest,

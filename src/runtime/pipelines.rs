@@ -55,6 +55,24 @@ struct PipelineKey {
     constants: Vec<Vec<(String, u64)>>,
 }
 
+/// Which modules of a pass a pipeline is made of.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Modules {
+    /// The request's variant's.
+    Variant,
+    /// The pass's ubershader's.
+    Ubershader,
+}
+
+/// A request resolved against its pass ([`Runtime::resolve`]).
+pub(super) struct Resolved<'a> {
+    pub(super) pass: &'a crate::manifest::PassManifest,
+    pub(super) facts: PassFacts,
+    pub(super) state: super::RenderState,
+    /// The request's hash: its key in [`Made::requests`].
+    pub(super) key: [u8; 32],
+}
+
 /// What [`Runtime::reload`] found.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum Reload {
@@ -130,12 +148,19 @@ pub(super) struct Made {
     /// By the hash of the module's WGSL.
     pub(super) modules: HashMap<String, wgpu::ShaderModule>,
     /// By a request's hash ([`request_key`]): a draw's lookup, allocating nothing.
-    requests: HashMap<[u8; 32], Arc<wgpu::RenderPipeline>>,
+    pub(super) requests: HashMap<[u8; 32], Arc<wgpu::RenderPipeline>>,
     /// By what makes the pipeline: requests that come to one pipeline share it.
     pipelines: HashMap<PipelineKey, Arc<wgpu::RenderPipeline>>,
     /// A dispatch's lookup, as `requests`.
     pub(super) kernel_requests: HashMap<[u8; 32], super::Kernel>,
     pub(super) kernels: HashMap<super::compute::KernelKey, Arc<wgpu::ComputePipeline>>,
+    /// An ubershader's pipeline layout (its pass's, with immediate data), by the pass layout's key.
+    pub(super) ubershader_layouts: HashMap<blake3::Hash, Arc<wgpu::PipelineLayout>>,
+    /// An ubershader's pipeline, by the hash of what decides it (the request without its keywords).
+    pub(super) ubershaders: HashMap<[u8; 32], Arc<wgpu::RenderPipeline>>,
+    /// Requests whose pipeline a worker is creating (by their hash), and those it failed to.
+    pub(super) pending: HashSet<[u8; 32]>,
+    pub(super) failed: HashSet<[u8; 32]>,
 }
 
 /// A device's pipelines for one build, created once each and kept across reloads of unchanged
@@ -345,23 +370,44 @@ impl Runtime {
     /// The pipeline for a draw, created the first time it is asked for. A request asked for
     /// before is found by its hash, allocating nothing.
     pub fn pipeline(&self, request: &PipelineRequest) -> Result<Arc<wgpu::RenderPipeline>, RuntimeError> {
+        let resolved = self.resolve(request)?;
+        if let Some(pipeline) = self.made().requests.get(&resolved.key) {
+            return Ok(pipeline.clone());
+        }
+        self.create_requested(request, resolved)
+    }
+
+    /// What a request comes to: its pass, the pass's facts, the resolved render state and the
+    /// request's hash.
+    pub(super) fn resolve<'a>(&'a self, request: &PipelineRequest) -> Result<Resolved<'a>, RuntimeError> {
         let library = &self.library;
         let pass = library.pass_of(request.variant.pass())?;
-        let (shader, pass_index) = (library.shader_name(request.variant.pass()), pass.index);
         let facts = self.pass_facts(request.variant.pass())?;
-        let state = facts
-            .state
-            .resolve(&|property| request.material.number(property))
-            .map_err(|error| RuntimeError::State { shader: shader.to_string(), pass: pass_index, error })?;
-        let request_key = request_key(|hasher| {
+        let state = facts.state.resolve(&|property| request.material.number(property)).map_err(|error| {
+            RuntimeError::State {
+                shader: library.shader_name(request.variant.pass()).to_string(),
+                pass: pass.index,
+                error,
+            }
+        })?;
+        let key = request_key(|hasher| {
             (request.variant, &state, request.targets, request.vertex_layout).hash(hasher);
             hash_overrides(request.overrides, hasher);
         });
-        if let Some(pipeline) = self.made().requests.get(&request_key) {
-            return Ok(pipeline.clone());
-        }
-        let pipeline = self.create_pipeline(request, pass, &facts, state)?;
-        self.made().requests.insert(request_key, pipeline.clone());
+        Ok(Resolved { pass, facts, state, key })
+    }
+
+    /// Creates a request's pipeline (not asked for before), keeps it under the request's hash
+    /// and traces it.
+    pub(super) fn create_requested(
+        &self,
+        request: &PipelineRequest,
+        resolved: Resolved,
+    ) -> Result<Arc<wgpu::RenderPipeline>, RuntimeError> {
+        let Resolved { pass, facts, state, key } = resolved;
+        let (shader, pass_index) = (self.library.shader_name(request.variant.pass()), pass.index);
+        let pipeline = self.create_pipeline(request, pass, &facts, state, Modules::Variant)?;
+        self.made().requests.insert(key, pipeline.clone());
         self.trace(|| {
             let keywords = self.traced_keywords(request.variant)?;
             let state = pass.render_state.iter().flat_map(|c| &c.properties);
@@ -385,19 +431,26 @@ impl Runtime {
     /// A request's pipeline the first time it is asked for: the one of an earlier request that
     /// comes to the same (its modules, layout, state, targets, vertex layout and constants), or a
     /// new one.
-    fn create_pipeline(
+    pub(super) fn create_pipeline(
         &self,
         request: &PipelineRequest,
         pass: &crate::manifest::PassManifest,
         facts: &PassFacts,
         state: super::RenderState,
+        modules: Modules,
     ) -> Result<Arc<wgpu::RenderPipeline>, RuntimeError> {
         let library = &self.library;
         let (shader, pass_index) = (library.shader_name(request.variant.pass()), pass.index);
         let layout_error =
             |message: String| RuntimeError::Layout { shader: shader.to_string(), pass: pass_index, message };
         let variant = library.variant_of(request.variant)?;
-        let stages = pass.variant_stages(variant);
+        let ubershader = match modules {
+            Modules::Variant => None,
+            Modules::Ubershader => Some(
+                pass.ubershader.as_ref().ok_or_else(|| layout_error("the pass has no ubershader".into()))?,
+            ),
+        };
+        let stages = pass.variant_stages(ubershader.map_or(variant, |u| &u.modules));
         let [Some(vertex), fragment] = stages else {
             return Err(layout_error("the variant has no vertex stage".into()));
         };
@@ -409,7 +462,11 @@ impl Runtime {
                 VertexLayout::packed(&inputs).map_err(|error| layout_error(error.to_string()))?
             }
         };
-        let dynamic: Vec<&str> = library.dynamic_keywords(request.variant)?.collect();
+        // The ubershader reads them from its immediate data.
+        let dynamic: Vec<&str> = match ubershader {
+            None => library.dynamic_keywords(request.variant)?.collect(),
+            Some(_) => Vec::new(),
+        };
         let constants = stage_constants(
             &ConstantRequest { shader, pass, keywords: &dynamic, overrides: request.overrides },
             &stages,
@@ -428,7 +485,12 @@ impl Runtime {
         }
         let missing_feature =
             vertex.module.features.iter().chain(fragment.iter().flat_map(|f| &f.module.features)).find(|f| {
-                f.as_str() == "shader-f16" && !self.device.features().contains(wgpu::Features::SHADER_F16)
+                let needs = match f.as_str() {
+                    "shader-f16" => wgpu::Features::SHADER_F16,
+                    crate::compile::target::IMMEDIATES => wgpu::Features::IMMEDIATES,
+                    _ => wgpu::Features::empty(),
+                };
+                !self.device.features().contains(needs)
             });
         if let Some(feature) = missing_feature {
             return Err(layout_error(format!(
@@ -452,12 +514,23 @@ impl Runtime {
             .collect();
         let buffers = key.vertex_layout.wgpu();
         let [vertex_constants, fragment_constants] = [0, 1].map(|stage| wgpu_constants(&constants[stage]));
-        let label = format!("{shader} pass {pass_index} [{}]", variant.keywords.join(" "));
+        let label = match ubershader {
+            None => format!("{shader} pass {pass_index} [{}]", variant.keywords.join(" ")),
+            Some(_) => format!("{shader} pass {pass_index} (ubershader)"),
+        };
+        let ubershader_layout;
+        let layout = match ubershader {
+            None => &facts.layout.pipeline,
+            Some(_) => {
+                ubershader_layout = self.ubershader_layout(facts);
+                &*ubershader_layout
+            }
+        };
         let started = Instant::now();
         let pipeline = validated(&self.device, |device| {
             device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
                 label: Some(&label),
-                layout: Some(&facts.layout.pipeline),
+                layout: Some(layout),
                 vertex: wgpu::VertexState {
                     module: &vertex_module,
                     entry_point: Some(&vertex_entry),

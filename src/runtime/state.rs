@@ -536,6 +536,7 @@ mod tests {
             interfaces: Vec::new(),
             modules: Vec::new(),
             variants: Vec::new(),
+            ubershader: None,
         }
     }
 

@@ -100,6 +100,9 @@ pub struct ProgramPragmas {
     pub instancing_options: Vec<Spanned<String>>,
     /// Any other pragma: its name and the rest of the line.
     pub other: Vec<(Spanned<String>, String)>,
+    /// `#pragma ubershader` (the first): the pass also builds one module that reads every keyword
+    /// at run time, its fallback while a variant's pipeline is created (docs/keywords.md).
+    pub ubershader: Option<Span>,
 }
 
 /// Target levels and the requirements each adds to the previous one (DESIGN.md).
@@ -492,6 +495,9 @@ fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<Pragma
             pragmas.requires.push(Require { features, keywords });
         }
         "skip_variants" => pragmas.skip_variants.extend(line.args),
+        "ubershader" => {
+            pragmas.ubershader.get_or_insert(line.span);
+        }
         "instancing_options" => pragmas.instancing_options.extend(line.args),
         _ => {
             if let Some(&(shorthand, sets)) = SHORTHANDS.iter().find(|(short, _)| *short == name) {
@@ -564,13 +570,22 @@ const UNITY_PRAGMAS: [&str; 20] = [
 /// The pragma `name` is likely a misspelling of: one kiln reads (or Unity knows) within two
 /// edits, for a name of four letters or more that is none of them.
 fn misspelt(name: &str) -> Option<String> {
-    let mut known: Vec<String> =
-        ["vertex", "fragment", "kernel", "target", "require", "skip_variants", "instancing_options", "once"]
-            .iter()
-            .chain(&UNITY_PRAGMAS)
-            .chain(SHORTHANDS.iter().map(|(short, _)| short))
-            .map(|s| s.to_string())
-            .collect();
+    let mut known: Vec<String> = [
+        "vertex",
+        "fragment",
+        "kernel",
+        "target",
+        "require",
+        "skip_variants",
+        "instancing_options",
+        "once",
+        "ubershader",
+    ]
+    .iter()
+    .chain(&UNITY_PRAGMAS)
+    .chain(SHORTHANDS.iter().map(|(short, _)| short))
+    .map(|s| s.to_string())
+    .collect();
     for kind in ["multi_compile", "shader_feature", "dynamic_branch"] {
         for scope in ["", "_local"] {
             for stage in std::iter::once("").chain(KeywordStage::SUFFIXES.iter().map(|(s, _)| *s)) {
@@ -705,6 +720,21 @@ impl ProgramPragmas {
             })
             .filter(|set| !set.options.is_empty())
             .collect()
+    }
+
+    /// The keywords an ubershader reads, in the order of its immediate data's bits: each
+    /// variant keyword once (declaration order, `skip_variants` included: the ubershader serves
+    /// every value), then the `dynamic_branch` ones.
+    pub fn ubershader_keywords(&self) -> Vec<&str> {
+        let (variant, dynamic): (Vec<&KeywordSet>, Vec<&KeywordSet>) =
+            self.keyword_sets.iter().partition(|set| set.kind != KeywordKind::DynamicBranch);
+        let mut keywords: Vec<&str> = Vec::new();
+        for keyword in variant.into_iter().chain(dynamic).flat_map(|set| set.keywords()) {
+            if !keywords.contains(&keyword) {
+                keywords.push(keyword);
+            }
+        }
+        keywords
     }
 
     /// Whether `keyword` is one of the pass's `dynamic_branch` keywords.

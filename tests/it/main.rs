@@ -33,6 +33,7 @@ mod shards;
 mod support;
 mod tidy;
 mod trust;
+mod ubershader;
 mod unity_corpus;
 mod validators;
 mod wgsl_corpora;

@@ -6,7 +6,7 @@ use crate::support::{build_without_errors, gpu, kiln, root};
 use kiln::accuracy::gpu::Gpu;
 use kiln::build::VariantSelection;
 use kiln::manifest::MaterialManifest;
-use kiln::runtime::{Library, PipelineRequest, Reload, Runtime, RuntimeError, Targets, UsageLog};
+use kiln::runtime::{Drawable, Library, PipelineRequest, Reload, Runtime, RuntimeError, Targets, UsageLog};
 use kiln::source::SourceStore;
 use std::path::Path;
 use wgpu::util::DeviceExt;
@@ -51,6 +51,13 @@ pub(crate) fn draw_pass(
         overrides,
     };
     let pipeline = runtime.pipeline(&request)?;
+    Ok(draw_with(gpu, &Drawable::Ready(pipeline)))
+}
+
+/// Draws a full-screen triangle with a pipeline (or an ubershader) as [`draw_pass`] does; returns
+/// the centre pixel and its depth.
+pub(crate) fn draw_with(gpu: &Gpu, drawable: &Drawable) -> ([u8; 4], f32) {
+    let targets = targets();
     let device = &gpu.device;
     let size = wgpu::Extent3d { width: 4, height: 4, depth_or_array_layers: 1 };
     let texture = |format, usage| {
@@ -99,7 +106,7 @@ pub(crate) fn draw_pass(
             }),
             ..Default::default()
         });
-        pass.set_pipeline(&pipeline);
+        drawable.set_on(&mut pass);
         pass.set_vertex_buffer(0, vertex_buffer.slice(..));
         pass.draw(0..3, 0..1);
     }
@@ -130,7 +137,7 @@ pub(crate) fn draw_pass(
     let depth_bytes = depth_out.get_mapped_range(..).expect("mapped");
     let pixel = color_bytes[centre..centre + 4].try_into().expect("4 bytes");
     let depth = f32::from_le_bytes(depth_bytes[centre..centre + 4].try_into().expect("4 bytes"));
-    Ok((pixel, depth))
+    (pixel, depth)
 }
 
 fn built(project: &Path, output: &Path) {
