@@ -29,5 +29,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     // (tests/uniform_blocks.rs), in a folder of their own.
     let out_dir = PathBuf::from(std::env::var("OUT_DIR")?);
     kiln::Build::new(manifest_dir.join("../../fixtures/blocks")).out_dir(out_dir.join("blocks")).run()?;
+    // A pass with an ubershader, every variant built (`always_include`), for `--keywords`.
+    kiln::Build::new(manifest_dir.join("../../fixtures/ubershader"))
+        .out_dir(out_dir.join("ubershader"))
+        .run()?;
     Ok(())
 }

@@ -3,6 +3,7 @@
 //! f64 reference of the same scene (analytic spheres, kiln's reference lighting) and an image
 //! comparison.
 
+pub mod keywords;
 pub mod scene;
 
 /// What kiln generated in `build.rs` for the scene's variants.
@@ -179,7 +180,18 @@ pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
     let name = adapter.get_info().name;
     let descriptor = wgpu::DeviceDescriptor {
         required_features: adapter.features()
-            & (wgpu::Features::SHADER_F16 | wgpu::Features::TIMESTAMP_QUERY | wgpu::Features::PIPELINE_CACHE),
+            & (wgpu::Features::SHADER_F16
+                | wgpu::Features::TIMESTAMP_QUERY
+                | wgpu::Features::PIPELINE_CACHE
+                | wgpu::Features::IMMEDIATES),
+        // An ubershader's keywords (kiln::runtime::UBERSHADER_IMMEDIATE_SIZE), where the adapter has them.
+        required_limits: wgpu::Limits {
+            max_immediate_size: adapter
+                .limits()
+                .max_immediate_size
+                .min(kiln::runtime::UBERSHADER_IMMEDIATE_SIZE),
+            ..wgpu::Limits::default()
+        },
         ..wgpu::DeviceDescriptor::default()
     };
     let (device, queue) =

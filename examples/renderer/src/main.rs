@@ -11,6 +11,12 @@
 //! time: `--trace` records every pipeline created (docs/trace.md), `--warm-up` makes a trace's
 //! pipelines on worker threads before the first frame, `--cache DIR` keeps the driver's pipeline
 //! cache in DIR (loaded first, saved after warm-up and at the end).
+//!
+//! `-- --keywords pipeline|ubershader` draws a grid that meets a new keyword combination every
+//! frame (`fixtures/ubershader`) and prints each frame's time on the render thread: `pipeline`
+//! creates each new pipeline there, `ubershader` draws it with the pass's ubershader while a
+//! worker creates it. Run each in its own process, so that neither finds the other's pipelines in
+//! the driver's memory.
 
 use kiln::runtime::{Reload, Runtime};
 use kiln_renderer::{
@@ -27,6 +33,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     if std::env::args().nth(1).as_deref() == Some("--introduce") {
         return introduce(&scene, &device, &queue);
+    }
+    if std::env::args().nth(1).as_deref() == Some("--keywords") {
+        let fallback = match std::env::args().nth(2).as_deref() {
+            Some("pipeline") => false,
+            Some("ubershader") => true,
+            _ => return Err("--keywords takes `pipeline` or `ubershader`".into()),
+        };
+        return introduce_keywords(&device, &queue, fallback);
     }
     let output = std::env::args().nth(1).map_or_else(|| PathBuf::from("renderer.png"), PathBuf::from);
     let image = render(&device, &queue, &scene)?;
@@ -117,6 +131,41 @@ fn introduce(
     let created: usize = frames.iter().map(|(created, _)| created).sum();
     println!("{created} pipelines created on the render thread; worst frame {worst:.2} ms");
     runtime.save_pipeline_cache()?;
+    Ok(())
+}
+
+fn introduce_keywords(
+    device: &wgpu::Device,
+    queue: &wgpu::Queue,
+    fallback: bool,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let introduced = kiln_renderer::keywords::introduce(device, queue, fallback)?;
+    let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
+    if let Some(warm_up) = introduced.warm_up {
+        println!("warm-up: the ubershader's pipeline in {:.2} ms", ms(warm_up));
+    }
+    for (i, frame) in introduced.frames.iter().enumerate() {
+        println!(
+            "frame {}: {:.2} ms, {} cells drawn by the ubershader",
+            i + 1,
+            ms(frame.time),
+            frame.fallbacks
+        );
+    }
+    let main = std::thread::current().name().unwrap_or("main").to_string();
+    let (here, elsewhere): (Vec<_>, Vec<_>) = introduced.created.iter().partition(|c| c.thread == main);
+    let total = |c: &[&kiln::runtime::Creation]| c.iter().map(|c| ms(c.duration)).fold(0.0, |a, b| a + b);
+    let worst = introduced.frames.iter().map(|f| ms(f.time)).fold(0.0, f64::max);
+    let mut times: Vec<f64> = introduced.frames.iter().map(|f| ms(f.time)).collect();
+    times.sort_by(f64::total_cmp);
+    println!(
+        "{} pipelines created on the render thread ({:.1} ms), {} on workers ({:.1} ms); frames: median {:.2} ms, worst {worst:.2} ms",
+        here.len(),
+        total(&here),
+        elsewhere.len(),
+        total(&elsewhere),
+        times[times.len() / 2]
+    );
     Ok(())
 }
 

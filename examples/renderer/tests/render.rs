@@ -252,3 +252,26 @@ fn a_warm_up_from_the_scene_s_trace_leaves_the_render_thread_nothing_to_create()
     assert!(second.created_after_warm_up().is_empty());
     assert!(cold_image.colors() == warm_image.colors(), "the same image");
 }
+
+/// `--keywords`: a new keyword combination every frame, drawn by the ubershader until its own
+/// pipeline is ready, ends in the image that creating each pipeline at once gives, and creates
+/// nothing on the render thread.
+#[test]
+fn new_keyword_combinations_draw_through_the_ubershader_and_end_in_the_same_image() {
+    let Some((device, queue, _)) = common::gpu("the keyword introduction test") else { return };
+    let here = std::thread::current().name().map(str::to_string);
+    let on_this_thread = |created: &[kiln::runtime::Creation]| {
+        created.iter().filter(|c| Some(&c.thread) == here.as_ref()).count()
+    };
+    let waited = kiln_renderer::keywords::introduce(&device, &queue, false).expect("draws");
+    assert_eq!(on_this_thread(&waited.created), 24, "every combination's pipeline made in its frame");
+    assert!(waited.frames.iter().all(|f| f.fallbacks == 0));
+    let fallback = kiln_renderer::keywords::introduce(&device, &queue, true).expect("draws");
+    assert_eq!(on_this_thread(&fallback.created), 0, "{:?}", fallback.created);
+    assert_eq!(fallback.created.len(), 24, "the workers made every combination's pipeline");
+    assert!(fallback.frames[0].fallbacks == 1, "the first frame's new combination: {:?}", fallback.frames);
+    assert!(waited.image.pixels == fallback.image.pixels, "the same image");
+    // 24 cells, and the keywords make them differ: equal images mean something.
+    let cells: std::collections::HashSet<&[u8]> = fallback.image.pixels.chunks_exact(4).collect();
+    assert!(cells.len() >= 12, "{} distinct colours", cells.len());
+}
