@@ -164,7 +164,7 @@ impl Runtime {
     }
 
     /// Makes every entry's pipeline on `threads` worker threads (wgpu's device is shared between
-    /// them), then counts pipelines created from here on as made after warm-up
+    /// them), and for a pass with an ubershader its pipeline in each traced state, then counts pipelines created from here on as made after warm-up
     /// ([`Runtime::created_after_warm_up`]). Returns the entries that could not be made, by
     /// index.
     pub fn warm_up_trace(&self, entries: &[TraceEntry], threads: usize) -> Vec<(usize, RuntimeError)> {
@@ -228,6 +228,8 @@ impl Runtime {
                     vertex_layout: vertex_layout.as_ref(),
                     overrides: &overrides,
                 };
+                // The fallback for the combinations the trace lacks, drawn in the same state.
+                self.warm_up_ubershader(&request)?;
                 self.pipeline(&request).map(drop)
             }
             TracedPipeline::Compute { kernel } => {

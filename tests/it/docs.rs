@@ -106,6 +106,20 @@ fn no_hitches(device: &wgpu::Device) -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
+/// Section 8: a new combination drawn while its pipeline is created (compiled, not run: the
+/// example project's passes have no ubershader; tests/it/ubershader.rs runs the same calls).
+#[allow(unused, dead_code)]
+fn ubershader(
+    device: &wgpu::Device,
+    material: &kiln::manifest::MaterialManifest,
+    targets: &kiln::runtime::Targets,
+    mut render_pass: wgpu::RenderPass<'_>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let library = || kiln::runtime::Library::embedded(shaders::MANIFEST_JSON, shaders::MATERIALS_JSON, &shaders::PACKS);
+    {ubershader}
+    Ok(())
+}
+
 /// The pixel at (4, 4) of an 8 x 8 `Rgba8Unorm` target, read back.
 fn pixel(device: &wgpu::Device, queue: &wgpu::Queue, target: &wgpu::Texture) -> Result<[u8; 4], Box<dyn std::error::Error>> {
     let readback = device.create_buffer(&wgpu::BufferDescriptor {
@@ -154,7 +168,8 @@ fn a_renderer_written_from_the_docs_builds_and_draws() {
     let page = std::fs::read_to_string(root().join("docs/renderer.md")).expect("docs/renderer.md");
     let rust = code_blocks(&page, "rust");
     let toml = code_blocks(&page, "toml");
-    let [build_rs, generated_module, materials, per_frame, render_pass, no_hitches] = &rust[..] else {
+    let [build_rs, generated_module, materials, per_frame, render_pass, no_hitches, ubershader] = &rust[..]
+    else {
         panic!("docs/renderer.md's Rust blocks changed: {} of them", rust.len());
     };
     let dir = tempfile::tempdir().expect("tempdir");
@@ -185,7 +200,8 @@ fn a_renderer_written_from_the_docs_builds_and_draws() {
         .replace("{materials_to_bind_groups}", materials)
         .replace("{per_frame_and_per_object}", per_frame)
         .replace("{render_pass}", render_pass)
-        .replace("{no_hitches}", no_hitches);
+        .replace("{no_hitches}", no_hitches)
+        .replace("{ubershader}", ubershader);
     main.push_str(&readme_functions());
     write(&krate.join("src/main.rs"), &main);
     let mut arguments = vec!["run", "--quiet", "--", first_project.to_str().expect("UTF-8")];

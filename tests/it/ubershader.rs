@@ -126,3 +126,35 @@ fn the_ubershader_draws_what_every_variant_draws_while_workers_create_them() {
     // The keywords change what is drawn: a comparison of equal images would prove nothing.
     assert!(distinct.len() >= 12, "{} distinct results", distinct.len());
 }
+
+#[test]
+fn a_trace_warm_up_makes_the_ubershader_for_each_traced_state() {
+    let Some(gpu) = gpu("a_trace_warm_up_makes_the_ubershader_for_each_traced_state") else { return };
+    let output = built();
+    let dir = tempfile::tempdir().expect("temp dir");
+    let trace = dir.path().join("pipelines.jsonl");
+    let material = MaterialManifest {
+        name: "Plain".to_string(),
+        shader: SHADER.to_string(),
+        preset: None,
+        render_queue: 2000,
+        keywords: Vec::new(),
+        values: Default::default(),
+    };
+    let targets = targets();
+    let mut first = Runtime::open(&gpu.device, output.path()).expect("opens");
+    first.record_pipelines(kiln::runtime::PipelineTrace::append(&trace).expect("trace"));
+    for keywords in [&["_FOG"][..], &["_TINT_RED", "_DIM"]] {
+        first.pipeline(&request(&first, &material, &targets, keywords)).expect("creates");
+    }
+    let (entries, _) = kiln::runtime::read_trace(&std::fs::read_to_string(&trace).expect("written"));
+    assert_eq!(entries.len(), 2);
+    let second = Arc::new(Runtime::open(&gpu.device, output.path()).expect("opens"));
+    assert!(second.warm_up_trace(&entries, 2).is_empty());
+    assert_eq!(second.pipelines_created(), 3, "the two traced pipelines and one ubershader (one state)");
+    // A combination the trace lacks is drawn at once, its pipeline made by a worker.
+    let drawable = second.drawable(&request(&second, &material, &targets, &["_FAR"])).expect("draws");
+    assert!(!drawable.is_ready());
+    let traced = second.drawable(&request(&second, &material, &targets, &["_FOG"])).expect("draws");
+    assert!(traced.is_ready(), "a traced combination has its own pipeline from the warm-up");
+}
