@@ -91,8 +91,6 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0334", "blanks between `\\` and the line break (warning)"),
     ("K0335", "keyword of an ubershader pass tested by the preprocessor"),
     ("K0336", "too many keywords for an ubershader"),
-    ("K0335", "keyword of an ubershader pass tested by the preprocessor"),
-    ("K0336", "too many keywords for an ubershader"),
     ("K0401", "WGSL syntax error"),
     ("K0402", "WGSL validation error"),
     ("K0403", "entry point not found"),

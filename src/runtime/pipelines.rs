@@ -181,6 +181,9 @@ pub struct Runtime {
     pub(super) wgpu_cache: Option<wgpu::PipelineCache>,
     /// Where [`Runtime::save_pipeline_cache`] writes `wgpu_cache`.
     pub(super) cache_file: Option<PathBuf>,
+    /// Held while an ubershader's pipeline is made: warm-up threads asking for one state's
+    /// make it once.
+    pub(super) making_ubershader: Mutex<()>,
 }
 
 /// A pipeline created after warm-up: what a trace should have had.
@@ -209,6 +212,7 @@ impl Runtime {
             misses: Mutex::new(Vec::new()),
             wgpu_cache: None,
             cache_file: None,
+            making_ubershader: Mutex::new(()),
         }
     }
 

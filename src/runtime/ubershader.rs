@@ -155,6 +155,11 @@ impl Runtime {
         if let Some(pipeline) = self.made().ubershaders.get(&key) {
             return Ok(pipeline.clone());
         }
+        let _making = self.making_ubershader.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        // Another thread may have made it while this one waited.
+        if let Some(pipeline) = self.made().ubershaders.get(&key) {
+            return Ok(pipeline.clone());
+        }
         let state = resolved.state.clone();
         let pipeline =
             self.create_pipeline(request, resolved.pass, &resolved.facts, state, Modules::Ubershader)?;
