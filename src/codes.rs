@@ -20,6 +20,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0010", "resource named in two bind groups"),
     ("K0011", "path outside the project"),
     ("K0012", "bind group name no file declares (warning)"),
+    ("K0013", "invalid remote cache setting"),
     ("K0101", "unterminated string"),
     ("K0102", "unterminated block comment"),
     ("K0103", "program block never closed"),
@@ -127,6 +128,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0532", "variant log names no pass"),
     ("K0533", "variant log names an unknown keyword"),
     ("K0534", "pipeline trace entry no longer in the project (warning)"),
+    ("K0620", "remote cache unavailable (warning)"),
 ];
 
 /// Whether `code` is registered.

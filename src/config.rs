@@ -37,6 +37,10 @@ pub struct ProjectConfig {
     pub variant_logs: Vec<PathBuf>,
     /// A module cache shared between builds and machines (docs/scaling.md).
     pub cache_dir: Option<PathBuf>,
+    /// The team's cache on an HTTP server, `http://host:port/prefix` (docs/scaling.md).
+    pub remote_cache: Option<toml::Spanned<String>>,
+    /// What builds may do with it: `read`, `write` (read and publish; the default) or `off`.
+    pub remote_cache_mode: Option<crate::store::remote::RemoteMode>,
     /// The variants of each compute shader to build (`[compute.NAME]`), which no material
     /// selects (docs/compute.md).
     pub compute: std::collections::BTreeMap<String, ComputeConfig>,
@@ -115,6 +119,8 @@ impl Default for ProjectConfig {
             strict: false,
             variant_logs: Vec::new(),
             cache_dir: None,
+            remote_cache: None,
+            remote_cache_mode: None,
             compute: Default::default(),
             bind_groups: Default::default(),
         }
@@ -160,6 +166,8 @@ const FIELDS: &[&str] = &[
     "strict",
     "variant_logs",
     "cache_dir",
+    "remote_cache",
+    "remote_cache_mode",
     "compute",
     "bind_groups",
 ];

@@ -104,6 +104,9 @@ pub struct BuildOptions {
     /// A module cache shared with other builds: modules are taken from it before naga runs,
     /// and every module compiled is published to it.
     pub cache_dir: Option<PathBuf>,
+    /// The team's cache on an HTTP server: asked after `cache_dir`, and given what the build
+    /// compiled when its mode allows (docs/scaling.md).
+    pub remote_cache: Option<crate::store::remote::RemoteConfig>,
     /// How many files the store held from disk before the catalogue was built (the project
     /// file, shaders, materials, variant logs): the rest were read through includes. A no-op
     /// needs the same files given, not merely the same files read.
@@ -137,6 +140,7 @@ impl BuildOptions {
             record: false,
             part: Part::Whole,
             cache_dir: None,
+            remote_cache: None,
             given_files: 0,
             groups: Default::default(),
         }
@@ -182,6 +186,8 @@ pub struct BuildSummary {
     pub shared: usize,
     /// Bytes of files written.
     pub bytes_written: u64,
+    /// Bytes received from and sent to the remote cache.
+    pub remote_bytes: [u64; 2],
     /// Wall-clock time of the build.
     pub elapsed: Duration,
     /// Shaders with WGSL programs that no material uses, so nothing of them was built.
@@ -359,6 +365,8 @@ fn build_passes(
         diagnostics.extend(pass.diagnostics);
         parts.push(pass.part);
     }
+    summary.remote_bytes = session.sources.remote_bytes();
+    diagnostics.extend(session.sources.warnings());
     let catalogue = |read| emit::catalogue_part(store, catalog, options, &work, &summary, read);
     match &options.part {
         Part::Shard(shard) => {

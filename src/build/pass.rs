@@ -98,6 +98,7 @@ pub(super) fn build_pass(
         pass_key: &key,
         index: &index,
         shared_fronts: OnceLock::new(),
+        remote_fronts: OnceLock::new(),
     };
     let mut fronts: Vec<Front> = jobs.par_iter().map(|job| session.sources.front(&sources, job)).collect();
     // What was parsed now is published for every other build of the pass.

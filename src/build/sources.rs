@@ -16,9 +16,11 @@ use crate::compile::stage::{self, StageRequest};
 use crate::compile::{Mapper, parse};
 use crate::diagnostics::Diagnostic;
 use crate::source::SourceStore;
+use crate::store::remote::{RemoteCache, RemoteMode};
 use crate::store::{ModuleBytes, PassIndex, hash, shared};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
+use std::sync::atomic::Ordering;
 use std::sync::{Arc, OnceLock};
 
 /// Outcome of a job's front end: its declared resources, and the parsed module when it had to be
@@ -34,6 +36,8 @@ pub(super) struct PassSources<'a> {
     pub pass_key: &'a str,
     pub index: &'a PassIndex,
     pub shared_fronts: OnceLock<BTreeMap<String, Vec<Declared>>>,
+    /// The same, from the remote cache.
+    pub remote_fronts: OnceLock<BTreeMap<String, Vec<Declared>>>,
 }
 
 /// A source of fronts.
@@ -68,6 +72,8 @@ pub(super) trait ModuleSource: Send + Sync {
 pub(super) struct Sources {
     fronts: Vec<Arc<dyn FrontSource>>,
     modules: Vec<Arc<dyn ModuleSource>>,
+    /// The remote cache, also in both lists: for its warning and its byte counts.
+    remote: Option<Arc<Remote>>,
 }
 
 impl Sources {
@@ -75,15 +81,33 @@ impl Sources {
     /// build's other passes made.
     pub(super) fn new(options: &BuildOptions) -> Sources {
         let shared = options.cache_dir.clone().map(|dir| Arc::new(SharedCache { dir }));
+        let remote = options.remote_cache.clone().filter(|r| r.mode != RemoteMode::Off);
+        let remote = remote.map(|config| Arc::new(Remote(RemoteCache::new(config))));
         let mut fronts: Vec<Arc<dyn FrontSource>> = vec![Arc::new(OutputCache)];
         let mut modules: Vec<Arc<dyn ModuleSource>> = vec![Arc::new(OutputCache)];
         if let Some(shared) = shared {
             fronts.push(shared.clone());
             modules.push(shared);
         }
+        if let Some(remote) = &remote {
+            fronts.push(remote.clone());
+            modules.push(remote.clone());
+        }
         fronts.push(Arc::new(OtherPasses));
         modules.push(Arc::new(OtherPasses));
-        Sources { fronts, modules }
+        Sources { fronts, modules, remote }
+    }
+
+    /// The remote cache's one warning, when it could not be used as configured.
+    pub(super) fn warnings(&self) -> Option<Diagnostic> {
+        self.remote.as_ref().and_then(|remote| remote.0.warning())
+    }
+
+    /// Bytes received from and sent to the remote cache.
+    pub(super) fn remote_bytes(&self) -> [u64; 2] {
+        self.remote
+            .as_ref()
+            .map_or([0, 0], |r| [r.0.received.load(Ordering::Relaxed), r.0.sent.load(Ordering::Relaxed)])
     }
 
     /// The first front a source has, or naga's parse.
@@ -154,6 +178,31 @@ impl ModuleSource for SharedCache {
 
     fn publish(&self, key: &str, compiled: &Compiled) {
         shared::publish_object(&self.dir, key, super::compiler_id(), &compiled.modules, &compiled.reflection);
+    }
+}
+
+/// The team's cache on an HTTP server (`remote_cache`).
+struct Remote(RemoteCache);
+
+impl FrontSource for Remote {
+    fn front(&self, pass: &PassSources, job: &Job) -> Option<Front> {
+        let fronts = pass.remote_fronts.get_or_init(|| self.0.read_layouts(pass.pass_key));
+        fronts.get(&job.front_key()).map(|declared| Ok((declared.clone(), None)))
+    }
+
+    fn publish(&self, pass_key: &str, declared: &BTreeMap<String, Vec<Declared>>) {
+        self.0.publish_layouts(pass_key, declared);
+    }
+}
+
+impl ModuleSource for Remote {
+    fn module(&self, _pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>> {
+        let (modules, reflection) = self.0.fetch_object(ask.key, super::compiler_id())?;
+        Some(Ok(Built::Fetched(Arc::new(Compiled { modules, reflection }))))
+    }
+
+    fn publish(&self, key: &str, compiled: &Compiled) {
+        self.0.publish_object(key, super::compiler_id(), &compiled.modules, &compiled.reflection);
     }
 }
 

@@ -70,6 +70,9 @@ impl Analysis {
             write: false,
             cache_dir: caches.modules.clone(),
             fallback_cache_dir: Some(caches.fallback_modules.clone()),
+            // A check runs on every edit: a slow server must not hold the editor's diagnostics
+            // (each check is a new build, with a breaker of its own). The shared folder serves.
+            remote_cache_mode: Some(crate::store::remote::RemoteMode::Off),
             ..BuildMode::default()
         };
         let narrow = |catalog: &mut Catalog| {

@@ -10,6 +10,7 @@ use crate::catalog::{Catalog, CatalogInput, catalog};
 use crate::diagnostics::{self, Diagnostic};
 use crate::preprocess::Includes;
 use crate::source::{SourceStore, Span, Spanned};
+use crate::store::remote::{RemoteConfig, RemoteMode, check_url};
 use std::path::PathBuf;
 
 /// `kiln list`: the listing of the projects and files at `paths` (strict projects' warnings
@@ -57,6 +58,11 @@ pub struct BuildMode {
     pub cache_dir: Option<PathBuf>,
     /// The shared module cache when none of those names one (the language server's own).
     pub fallback_cache_dir: Option<PathBuf>,
+    /// The remote cache's URL; else `KILN_REMOTE_CACHE`, else the project's `remote_cache`.
+    pub remote_cache: Option<String>,
+    /// What the build may do with it; else `KILN_REMOTE_CACHE_MODE`, else the project's
+    /// `remote_cache_mode`, else `write`.
+    pub remote_cache_mode: Option<RemoteMode>,
 }
 
 impl Default for BuildMode {
@@ -73,6 +79,8 @@ impl Default for BuildMode {
             variant_logs: Vec::new(),
             cache_dir: None,
             fallback_cache_dir: None,
+            remote_cache: None,
+            remote_cache_mode: None,
         }
     }
 }
@@ -220,10 +228,58 @@ fn load_given(
         cache_dir: workspace
             .shared_cache_dir(mode.cache_dir.clone())
             .or_else(|| mode.fallback_cache_dir.clone()),
+        remote_cache: remote_cache(&workspace, mode).unwrap_or_else(|error| {
+            diagnostics.push(error);
+            None
+        }),
         given_files: store.files_read().count(),
         groups: workspace.groups.clone(),
     };
     Ok(Given { workspace, includes, input, diagnostics, options })
+}
+
+/// The remote cache a build uses (docs/scaling.md): the URL given (`--remote-cache`), else
+/// `KILN_REMOTE_CACHE`, else the project's `remote_cache`; its mode given, else
+/// `KILN_REMOTE_CACHE_MODE`, else the project's `remote_cache_mode`, else `write`; each request
+/// limited to `KILN_REMOTE_CACHE_TIMEOUT` seconds (default 10). A setting kiln cannot use is an
+/// error (K0013) where it is written.
+fn remote_cache(workspace: &Workspace, mode: &BuildMode) -> Result<Option<RemoteConfig>, Diagnostic> {
+    let invalid = |what: String, span: Option<crate::source::Span>| {
+        let d = Diagnostic::error("K0013", format!("invalid remote cache setting: {what}"));
+        let d = match span {
+            Some(span) => d.at(span, "set here"),
+            None => d,
+        };
+        d.help("give `http://host:port/prefix` or `https://...`, and a mode of `read`, `write` or `off` (docs/scaling.md)")
+    };
+    let env = |name: &str| std::env::var(name).ok().filter(|v| !v.is_empty());
+    let (url, span) = match (mode.remote_cache.clone(), env("KILN_REMOTE_CACHE"), &workspace.remote_cache) {
+        (Some(url), ..) | (None, Some(url), _) => (url, None),
+        (None, None, Some(url)) => (url.value.clone(), Some(url.span)),
+        (None, None, None) => return Ok(None),
+    };
+    let url = check_url(&url).map_err(|why| invalid(format!("the URL: {why}"), span))?;
+    let chosen = match (mode.remote_cache_mode, env("KILN_REMOTE_CACHE_MODE")) {
+        (Some(chosen), _) => chosen,
+        (None, Some(name)) => RemoteMode::parse(&name)
+            .ok_or_else(|| invalid(format!("KILN_REMOTE_CACHE_MODE is `{}`", name.escape_debug()), None))?,
+        (None, None) => workspace.remote_cache_mode.unwrap_or_default(),
+    };
+    let timeout = match env("KILN_REMOTE_CACHE_TIMEOUT") {
+        None => std::time::Duration::from_secs(10),
+        Some(seconds) => seconds
+            .parse::<f64>()
+            .ok()
+            .filter(|s| s.is_finite() && *s > 0.0 && *s <= 3600.0)
+            .map(std::time::Duration::from_secs_f64)
+            .ok_or_else(|| {
+                invalid(
+                    format!("KILN_REMOTE_CACHE_TIMEOUT is `{}`, not seconds", seconds.escape_debug()),
+                    None,
+                )
+            })?,
+    };
+    Ok(Some(RemoteConfig { url, mode: chosen, timeout }))
 }
 
 /// A project without shaders: a warning for a build, an error for a check, so that CI pointed at

@@ -48,6 +48,11 @@ pub struct Workspace {
     pub variant_logs: Vec<PathBuf>,
     /// The first project folder's `cache_dir`.
     pub cache_dir: Option<PathBuf>,
+    /// The first project folder's `remote_cache`, where its kiln.toml writes it, and
+    /// `remote_cache_mode`.
+    pub remote_cache: Option<Spanned<String>>,
+    /// See [`Workspace::remote_cache`].
+    pub remote_cache_mode: Option<crate::store::remote::RemoteMode>,
     /// The compute shader variants `kiln.toml` lists (`[compute.NAME] variants`).
     pub listed_variants: Vec<crate::catalog::ListedVariant>,
     /// The names `kiln.toml` adds to the per-frame and per-object bind groups.
@@ -210,6 +215,13 @@ pub fn open_workspace(
                 workspace.global_keywords.get_or_insert_with(Vec::new).extend(spanned);
             }
             diagnostics.extend(bind_group_names(&config.bind_groups, file, &mut workspace.groups));
+            if workspace.remote_cache.is_none()
+                && let Some(url) = &config.remote_cache
+            {
+                workspace.remote_cache =
+                    Some(Spanned::new(url.get_ref().clone(), Span::new(file, url.span())));
+                workspace.remote_cache_mode = config.remote_cache_mode;
+            }
             let spanned = config.bind_groups.per_frame.iter().chain(&config.bind_groups.per_object);
             workspace
                 .group_names

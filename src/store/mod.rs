@@ -1,9 +1,10 @@
 //! What builds keep on disk: an output folder's packs and cache ([`cache`]), and the module cache
-//! builds, processes and machines share ([`shared`]). Every file is written whole or not at all
+//! builds, processes and machines share ([`shared`]), and on a server ([`remote`]). Every file is written whole or not at all
 //! and verified on read, so damage costs a recompile, never a wrong module.
 
 mod cache;
 mod pass_index;
+pub mod remote;
 pub mod shared;
 
 pub use cache::{

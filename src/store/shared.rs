@@ -33,13 +33,14 @@ fn object_path(folder: &Path, key: &str) -> PathBuf {
     folder.join(OBJECTS).join(&key[..2.min(key.len())]).join(key)
 }
 
-fn write_object(
-    folder: &Path,
+/// A module's bytes as an object: the seal line, the header line, then the modules' bytes (what
+/// the shared cache stores in a file and a remote cache under its SHA-256).
+pub(super) fn object_bytes(
     key: &str,
     compiler: &str,
     modules: &PerBackend<Option<ModuleBytes>>,
     reflection: &StageReflection,
-) -> std::io::Result<u64> {
+) -> std::io::Result<Vec<u8>> {
     let header = ObjectHeader {
         key: key.to_string(),
         compiler: compiler.to_string(),
@@ -54,6 +55,17 @@ fn write_object(
     let mut bytes = seal(key, &body).into_bytes();
     bytes.push(b'\n');
     bytes.extend(body);
+    Ok(bytes)
+}
+
+fn write_object(
+    folder: &Path,
+    key: &str,
+    compiler: &str,
+    modules: &PerBackend<Option<ModuleBytes>>,
+    reflection: &StageReflection,
+) -> std::io::Result<u64> {
+    let bytes = object_bytes(key, compiler, modules, reflection)?;
     write_atomically(&object_path(folder, key), &bytes)?;
     Ok(bytes.len() as u64)
 }
@@ -65,7 +77,16 @@ fn read_object(
     key: &str,
     compiler: Option<&str>,
 ) -> Option<(PerBackend<Option<ModuleBytes>>, StageReflection)> {
-    let file = std::fs::read(object_path(folder, key)).ok()?;
+    parse_object(&std::fs::read(object_path(folder, key)).ok()?, key, compiler)
+}
+
+/// The module in an object's bytes ([`object_bytes`]), if it is sealed under `key`, made by
+/// `compiler` (when given) and each module's bytes are what its hash says.
+pub(super) fn parse_object(
+    file: &[u8],
+    key: &str,
+    compiler: Option<&str>,
+) -> Option<(PerBackend<Option<ModuleBytes>>, StageReflection)> {
     let sealed_at = file.iter().position(|&b| b == b'\n')?;
     let bytes = &file[sealed_at + 1..];
     if file[..sealed_at] != *seal(key, bytes).as_bytes() {
@@ -80,12 +101,12 @@ fn read_object(
     let mut modules: PerBackend<Option<ModuleBytes>> = PerBackend::default();
     for (slot, entry) in header.modules.iter() {
         let Some((size, expected)) = entry else { continue };
-        let body = bytes.get(at..at + *size as usize)?;
+        let body = bytes.get(at..at.checked_add(usize::try_from(*size).ok()?)?)?;
         if hash(body) != *expected {
             return None;
         }
         modules[slot] = Some(ModuleBytes { bytes: body.to_vec(), hash: expected.clone() });
-        at += *size as usize;
+        at += body.len();
     }
     (at == bytes.len()).then_some((modules, header.reflection))
 }

@@ -26,6 +26,7 @@ mod lsp_edits;
 mod materials;
 mod parse;
 mod preprocess;
+mod remote;
 mod robustness;
 mod runtime;
 mod scale;

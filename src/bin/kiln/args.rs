@@ -31,6 +31,25 @@ pub struct ProjectArgs {
     /// `cache_dir` in kiln.toml).
     #[arg(long, value_name = "DIR")]
     pub cache_dir: Option<PathBuf>,
+    /// The team's cache on an HTTP server, `http://host:port/prefix` (also `KILN_REMOTE_CACHE`,
+    /// `remote_cache` in kiln.toml; docs/scaling.md).
+    #[arg(long, value_name = "URL")]
+    pub remote_cache: Option<String>,
+    /// What the build may do with the remote cache: fetch only, fetch and publish, or nothing
+    /// (also `KILN_REMOTE_CACHE_MODE`, `remote_cache_mode` in kiln.toml; default: write).
+    #[arg(long, value_enum, value_name = "MODE")]
+    pub remote_cache_mode: Option<RemoteCacheMode>,
+}
+
+/// `--remote-cache-mode`.
+#[derive(Clone, Copy, ValueEnum)]
+pub enum RemoteCacheMode {
+    /// Fetch only.
+    Read,
+    /// Fetch, and publish what the build compiled.
+    Write,
+    /// Neither.
+    Off,
 }
 
 impl ProjectArgs {
@@ -42,6 +61,12 @@ impl ProjectArgs {
             threads: self.threads.map(usize::from),
             variant_logs: self.variants_from,
             cache_dir: self.cache_dir,
+            remote_cache: self.remote_cache,
+            remote_cache_mode: self.remote_cache_mode.map(|mode| match mode {
+                RemoteCacheMode::Read => kiln::store::remote::RemoteMode::Read,
+                RemoteCacheMode::Write => kiln::store::remote::RemoteMode::Write,
+                RemoteCacheMode::Off => kiln::store::remote::RemoteMode::Off,
+            }),
             ..kiln::project::BuildMode::default()
         };
         (self.project.unwrap_or_else(kiln::project::default_project), mode)

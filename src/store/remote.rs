@@ -1,0 +1,353 @@
+//! The team's cache on an HTTP server (`remote_cache`): stage modules as content-addressed
+//! objects (`PUT`/`GET /cas/<sha256>`, the object's bytes as the shared cache stores them) and
+//! entries that name them (`/ac/<sha256 of the key>`), as bazel-remote serves them and as any
+//! server that takes `PUT` (nginx's WebDAV) does; a pass's parsed resources as one entry each.
+//! Everything fetched is verified before use: the object against its SHA-256, then against its
+//! key, compiler and module hashes (the shared cache's seal); what fails is a miss.
+//!
+//! A server that is down, slow or refusing must never fail or stall a build: each request has a
+//! timeout, three failures in a row open a breaker that ends the remote cache for the build, a
+//! refused write ends writes, and each is one warning (K0620). Credentials come from the
+//! environment and are sent, never written anywhere else (docs/scaling.md).
+
+use super::cache::{ModuleBytes, sealed, unsealed};
+use super::shared::{object_bytes, parse_object};
+use crate::compile::bind::Declared;
+use crate::diagnostics::Diagnostic;
+use crate::manifest::PerBackend;
+use crate::reflect::StageReflection;
+use sha2::{Digest as _, Sha256};
+use std::collections::BTreeMap;
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
+use std::time::Duration;
+
+/// What a build may do with the remote cache (`--remote-cache-mode`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum RemoteMode {
+    /// Fetch only (a CI job that must not publish).
+    Read,
+    /// Fetch, and publish what the build compiled.
+    #[default]
+    Write,
+    /// Neither.
+    Off,
+}
+
+impl RemoteMode {
+    /// Its name on the command line and in kiln.toml.
+    pub fn name(self) -> &'static str {
+        match self {
+            RemoteMode::Read => "read",
+            RemoteMode::Write => "write",
+            RemoteMode::Off => "off",
+        }
+    }
+
+    /// The mode a name gives.
+    pub fn parse(name: &str) -> Option<RemoteMode> {
+        [RemoteMode::Read, RemoteMode::Write, RemoteMode::Off].into_iter().find(|m| m.name() == name)
+    }
+}
+
+/// Where the remote cache is and what a build may do with it: decided once, before the build.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct RemoteConfig {
+    /// `http://host:port/prefix` or `https://...`, without a trailing `/`.
+    pub url: String,
+    /// Read, write or off.
+    pub mode: RemoteMode,
+    /// How long one request may take.
+    pub timeout: Duration,
+}
+
+/// Why a remote cache URL is refused.
+pub fn check_url(url: &str) -> Result<String, String> {
+    let rest = url.strip_prefix("http://").or_else(|| url.strip_prefix("https://"));
+    let Some(rest) = rest else { return Err("it must start with `http://` or `https://`".into()) };
+    if rest.is_empty() || rest.starts_with('/') {
+        return Err("it names no host".into());
+    }
+    if rest.split('/').next().is_some_and(|host| host.contains('@')) {
+        return Err(
+            "credentials belong in KILN_REMOTE_CACHE_TOKEN or KILN_REMOTE_CACHE_USER/_PASSWORD, not the URL"
+                .into(),
+        );
+    }
+    if url.chars().any(|c| c.is_whitespace() || c.is_control()) {
+        return Err("it has blanks or control characters".into());
+    }
+    Ok(url.trim_end_matches('/').to_string())
+}
+
+/// Requests that failed in a row before the breaker opens.
+const BREAKER: usize = 3;
+
+/// The largest object fetched (a module's every back end, with its reflection).
+const MAX_OBJECT: u64 = 256 << 20;
+
+/// A build's connection to the remote cache: one HTTP agent (keep-alive, a connection per
+/// worker thread at most), the credentials, and what went wrong so far.
+pub struct RemoteCache {
+    config: RemoteConfig,
+    agent: ureq::Agent,
+    authorization: Option<String>,
+    failures_in_a_row: AtomicUsize,
+    broken: AtomicBool,
+    writes_refused: AtomicBool,
+    /// The first problem of each kind, reported once after the build.
+    problems: Mutex<Vec<String>>,
+    /// Bytes received and sent, for the summary and the benchmarks.
+    pub received: AtomicU64,
+    /// See [`RemoteCache::received`].
+    pub sent: AtomicU64,
+}
+
+/// How a request went.
+enum Answer {
+    Found(Vec<u8>),
+    Missing,
+    Failed(String),
+}
+
+impl RemoteCache {
+    /// A connection for one build; credentials from `KILN_REMOTE_CACHE_TOKEN` (bearer) or
+    /// `KILN_REMOTE_CACHE_USER` and `KILN_REMOTE_CACHE_PASSWORD` (basic).
+    pub fn new(config: RemoteConfig) -> RemoteCache {
+        let agent_config = ureq::Agent::config_builder()
+            .timeout_global(Some(config.timeout))
+            .http_status_as_error(false)
+            .max_idle_connections_per_host(64)
+            .build();
+        let token = std::env::var("KILN_REMOTE_CACHE_TOKEN").ok().filter(|t| !t.is_empty());
+        let basic = std::env::var("KILN_REMOTE_CACHE_USER").ok().map(|user| {
+            let password = std::env::var("KILN_REMOTE_CACHE_PASSWORD").unwrap_or_default();
+            use base64::Engine as _;
+            format!(
+                "Basic {}",
+                base64::engine::general_purpose::STANDARD.encode(format!("{user}:{password}"))
+            )
+        });
+        RemoteCache {
+            config,
+            agent: ureq::Agent::new_with_config(agent_config),
+            authorization: token.map(|t| format!("Bearer {t}")).or(basic),
+            failures_in_a_row: AtomicUsize::new(0),
+            broken: AtomicBool::new(false),
+            writes_refused: AtomicBool::new(false),
+            problems: Mutex::new(Vec::new()),
+            received: AtomicU64::new(0),
+            sent: AtomicU64::new(0),
+        }
+    }
+
+    fn usable(&self) -> bool {
+        self.config.mode != RemoteMode::Off && !self.broken.load(Ordering::Relaxed)
+    }
+
+    fn writable(&self) -> bool {
+        self.config.mode == RemoteMode::Write && self.usable() && !self.writes_refused.load(Ordering::Relaxed)
+    }
+
+    fn problem(&self, problem: String) {
+        let mut problems = self.problems.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        problems.push(problem);
+    }
+
+    /// Counts a failure; the third in a row opens the breaker.
+    fn failed(&self, reason: String) {
+        if self.failures_in_a_row.fetch_add(1, Ordering::Relaxed) + 1 >= BREAKER
+            && !self.broken.swap(true, Ordering::Relaxed)
+        {
+            self.problem(format!(
+                "it failed {BREAKER} times in a row (last: {reason}); this build stopped using it"
+            ));
+        }
+    }
+
+    fn get(&self, path: &str) -> Answer {
+        let url = format!("{}/{path}", self.config.url);
+        let mut request = self.agent.get(&url);
+        if let Some(authorization) = &self.authorization {
+            request = request.header("Authorization", authorization);
+        }
+        let answer = match request.call() {
+            Ok(mut response) => match response.status().as_u16() {
+                200 => match response.body_mut().with_config().limit(MAX_OBJECT).read_to_vec() {
+                    Ok(bytes) => Answer::Found(bytes),
+                    Err(error) => Answer::Failed(reason(&error)),
+                },
+                404 => Answer::Missing,
+                status => Answer::Failed(format!("HTTP {status} for a GET")),
+            },
+            Err(error) => Answer::Failed(reason(&error)),
+        };
+        match &answer {
+            Answer::Found(bytes) => {
+                self.received.fetch_add(bytes.len() as u64, Ordering::Relaxed);
+                self.failures_in_a_row.store(0, Ordering::Relaxed);
+            }
+            Answer::Missing => self.failures_in_a_row.store(0, Ordering::Relaxed),
+            Answer::Failed(reason) => self.failed(reason.clone()),
+        }
+        answer
+    }
+
+    /// Stores `bytes` at `path`; false when it did not.
+    fn put(&self, path: &str, bytes: &[u8]) -> bool {
+        let url = format!("{}/{path}", self.config.url);
+        let mut request = self.agent.put(&url);
+        if let Some(authorization) = &self.authorization {
+            request = request.header("Authorization", authorization);
+        }
+        match request.send(bytes) {
+            Ok(response) if response.status().is_success() => {
+                self.sent.fetch_add(bytes.len() as u64, Ordering::Relaxed);
+                self.failures_in_a_row.store(0, Ordering::Relaxed);
+                true
+            }
+            Ok(response) if matches!(response.status().as_u16(), 401 | 403 | 405) => {
+                if !self.writes_refused.swap(true, Ordering::Relaxed) {
+                    let status = response.status().as_u16();
+                    self.problem(format!(
+                        "it refused a write (HTTP {status}); this build published nothing more"
+                    ));
+                }
+                false
+            }
+            Ok(response) => {
+                self.failed(format!("HTTP {} for a PUT", response.status().as_u16()));
+                false
+            }
+            Err(error) => {
+                self.failed(reason(&error));
+                false
+            }
+        }
+    }
+
+    /// A stage module stored under `key` by `compiler`, verified, or `None`.
+    pub fn fetch_object(
+        &self,
+        key: &str,
+        compiler: &str,
+    ) -> Option<(PerBackend<Option<ModuleBytes>>, StageReflection)> {
+        if !self.usable() {
+            return None;
+        }
+        let Answer::Found(entry) = self.get(&entry_path("module", key)) else { return None };
+        let cas = std::str::from_utf8(&entry).ok()?.trim();
+        if !is_sha256(cas) {
+            return None;
+        }
+        let Answer::Found(object) = self.get(&format!("cas/{cas}")) else { return None };
+        // Damaged on the way or on the server, or another object: a miss, never used.
+        if sha256(&object) != cas {
+            return None;
+        }
+        parse_object(&object, key, Some(compiler))
+    }
+
+    /// Publishes a module this build compiled: its object, then the entry that names it.
+    pub fn publish_object(
+        &self,
+        key: &str,
+        compiler: &str,
+        modules: &PerBackend<Option<ModuleBytes>>,
+        reflection: &StageReflection,
+    ) {
+        if !self.writable() {
+            return;
+        }
+        let Ok(object) = object_bytes(key, compiler, modules, reflection) else { return };
+        let cas = sha256(&object);
+        if self.put(&format!("cas/{cas}"), &object) {
+            self.put(&entry_path("module", key), cas.as_bytes());
+        }
+    }
+
+    /// A pass's parsed resources, by stage text (empty when there are none or they are not
+    /// what was sealed under the pass).
+    pub fn read_layouts(&self, pass: &str) -> BTreeMap<String, Vec<Declared>> {
+        if !self.usable() {
+            return BTreeMap::new();
+        }
+        let key = layouts_key(pass);
+        let Answer::Found(bytes) = self.get(&entry_path("layouts", &key)) else { return BTreeMap::new() };
+        unsealed(&key, &bytes).and_then(|json| serde_json::from_slice(json).ok()).unwrap_or_default()
+    }
+
+    /// Publishes a pass's parsed resources, joined with what the server has for the pass (two
+    /// builds publishing at once may lose each other's additions: a miss later, as in the
+    /// shared cache).
+    pub fn publish_layouts(&self, pass: &str, layouts: &BTreeMap<String, Vec<Declared>>) {
+        if !self.writable() {
+            return;
+        }
+        let mut all = self.read_layouts(pass);
+        let before = all.len();
+        for (text, declared) in layouts {
+            all.entry(text.clone()).or_insert_with(|| declared.clone());
+        }
+        if all.len() == before && before > 0 {
+            return;
+        }
+        let key = layouts_key(pass);
+        if let Ok(bytes) = sealed(&key, &all) {
+            self.put(&entry_path("layouts", &key), &bytes);
+        }
+    }
+
+    /// The build's one warning about the server, if anything went wrong.
+    pub fn warning(&self) -> Option<Diagnostic> {
+        let problems = self.problems.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        let first = problems.first()?;
+        let mut diagnostic = Diagnostic::warning(
+            "K0620",
+            format!("the remote cache at {} could not be used: {first}", self.config.url),
+        );
+        for more in problems.iter().skip(1) {
+            diagnostic = diagnostic.note(more.clone());
+        }
+        Some(diagnostic.help("the build compiled locally what it could not fetch; its output is the same"))
+    }
+}
+
+/// What the entry of a module or a pass's layouts is stored under: `ac/` and the SHA-256 of the
+/// kind and key (bazel-remote takes only SHA-256 names).
+fn entry_path(kind: &str, key: &str) -> String {
+    format!("ac/{}", sha256(format!("kiln {kind} {key}").as_bytes()))
+}
+
+fn layouts_key(pass: &str) -> String {
+    format!("layouts/{pass}")
+}
+
+/// Lower-case hexadecimal SHA-256.
+pub fn sha256(bytes: &[u8]) -> String {
+    Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
+}
+
+fn is_sha256(text: &str) -> bool {
+    text.len() == 64 && text.bytes().all(|b| b.is_ascii_digit() || (b'a'..=b'f').contains(&b))
+}
+
+/// A failed request in a few words (no URL, no header: nothing secret).
+fn reason(error: &ureq::Error) -> String {
+    match error {
+        ureq::Error::Timeout(_) => "a request timed out".into(),
+        ureq::Error::ConnectionFailed => "the connection failed".into(),
+        ureq::Error::HostNotFound => "the host was not found".into(),
+        ureq::Error::Io(error) => match error.kind() {
+            std::io::ErrorKind::ConnectionRefused => "the connection was refused".into(),
+            std::io::ErrorKind::ConnectionReset | std::io::ErrorKind::ConnectionAborted => {
+                "the connection was closed".into()
+            }
+            std::io::ErrorKind::TimedOut => "a request timed out".into(),
+            _ => "an I/O error".into(),
+        },
+        ureq::Error::BodyExceedsLimit(_) => "an answer was too large".into(),
+        _ => "a protocol error".into(),
+    }
+}

@@ -1,0 +1,444 @@
+//! The remote cache (`remote_cache`, docs/scaling.md) against servers: nginx with WebDAV `PUT`
+//! (Debian's package) where installed, and a minimal in-test server that speaks bazel-remote's
+//! HTTP protocol and stages what a real server will not on demand (errors, slowness, refused
+//! writes, a death mid-build, tampered objects). Builds run as the CLI runs, in a process of their
+//! own with the environment the test gives.
+
+use crate::support::{compiled, root, shipped};
+use expect_test::expect_file;
+use kiln::diagnostics::{has_errors, render_plain};
+use kiln::project::{BuildMode, build_project};
+use kiln::source::SourceStore;
+use std::collections::BTreeMap;
+use std::io::{BufRead, BufReader, Read, Write};
+use std::net::{TcpListener, TcpStream};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+/// What the in-test server does with requests.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Behaviour {
+    /// Stores and serves.
+    Serve,
+    /// Answers every request with this status.
+    Status(u16),
+    /// Answers after this long.
+    Slow(Duration),
+    /// Serves `GET`, answers `PUT` with 403 (a read-only token).
+    ReadOnly,
+    /// Serves this many requests, then closes every connection and stops listening.
+    DieAfter(usize),
+}
+
+#[derive(Default)]
+struct ServerState {
+    objects: Mutex<BTreeMap<String, Vec<u8>>>,
+    /// Each request: method, path, `Authorization` header.
+    requests: Mutex<Vec<(String, String, Option<String>)>>,
+    served: AtomicUsize,
+    dead: AtomicBool,
+}
+
+/// A minimal HTTP/1.1 server (keep-alive, `Content-Length` bodies) written for these tests: it
+/// speaks bazel-remote's protocol, `GET`/`PUT` of any path under `/`, and stores in memory.
+struct TestServer {
+    port: u16,
+    state: Arc<ServerState>,
+    behaviour: Arc<Mutex<Behaviour>>,
+}
+
+impl TestServer {
+    fn start(behaviour: Behaviour) -> TestServer {
+        let listener = TcpListener::bind("127.0.0.1:0").expect("a loopback port");
+        let port = listener.local_addr().expect("address").port();
+        listener.set_nonblocking(true).expect("non-blocking");
+        let state = Arc::new(ServerState::default());
+        let behaviour = Arc::new(Mutex::new(behaviour));
+        let (accept_state, accept_behaviour) = (state.clone(), behaviour.clone());
+        std::thread::spawn(move || {
+            while !accept_state.dead.load(Ordering::SeqCst) {
+                match listener.accept() {
+                    Ok((stream, _)) => {
+                        let (state, behaviour) = (accept_state.clone(), accept_behaviour.clone());
+                        std::thread::spawn(move || serve(stream, &state, &behaviour));
+                    }
+                    Err(_) => std::thread::sleep(Duration::from_millis(2)),
+                }
+            }
+            // Dropping the listener: new connections are refused from here on.
+        });
+        TestServer { port, state, behaviour }
+    }
+
+    fn url(&self) -> String {
+        format!("http://127.0.0.1:{}/kiln", self.port)
+    }
+
+    fn set(&self, behaviour: Behaviour) {
+        *self.behaviour.lock().expect("lock") = behaviour;
+    }
+
+    fn requests(&self, method: &str) -> usize {
+        self.state.requests.lock().expect("lock").iter().filter(|(m, ..)| m == method).count()
+    }
+}
+
+fn serve(stream: TcpStream, state: &ServerState, behaviour: &Mutex<Behaviour>) {
+    let _ = stream.set_nonblocking(false);
+    let mut writer = stream.try_clone().expect("clone");
+    let mut reader = BufReader::new(stream);
+    loop {
+        let mut line = String::new();
+        if reader.read_line(&mut line).unwrap_or(0) == 0 || state.dead.load(Ordering::SeqCst) {
+            return;
+        }
+        let mut parts = line.split_whitespace();
+        let (method, path) = (parts.next().unwrap_or("").to_string(), parts.next().unwrap_or("").to_string());
+        let (mut length, mut authorization) = (0usize, None);
+        loop {
+            let mut header = String::new();
+            if reader.read_line(&mut header).unwrap_or(0) == 0 {
+                return;
+            }
+            let header = header.trim_end();
+            if header.is_empty() {
+                break;
+            }
+            if let Some((name, value)) = header.split_once(':') {
+                match name.to_ascii_lowercase().as_str() {
+                    "content-length" => length = value.trim().parse().unwrap_or(0),
+                    "authorization" => authorization = Some(value.trim().to_string()),
+                    _ => {}
+                }
+            }
+        }
+        let mut body = vec![0; length];
+        if reader.read_exact(&mut body).is_err() {
+            return;
+        }
+        state.requests.lock().expect("lock").push((method.clone(), path.clone(), authorization));
+        let behaviour = *behaviour.lock().expect("lock");
+        let served = state.served.fetch_add(1, Ordering::SeqCst) + 1;
+        let (status, answer) = match behaviour {
+            Behaviour::DieAfter(n) if served > n => {
+                state.dead.store(true, Ordering::SeqCst);
+                return;
+            }
+            Behaviour::Status(status) => (status, Vec::new()),
+            Behaviour::ReadOnly if method == "PUT" => (403, Vec::new()),
+            Behaviour::Slow(delay) => {
+                std::thread::sleep(delay);
+                handle(state, &method, &path, body)
+            }
+            _ => handle(state, &method, &path, body),
+        };
+        let head = format!("HTTP/1.1 {status} X\r\nContent-Length: {}\r\n\r\n", answer.len());
+        if writer.write_all(head.as_bytes()).and_then(|()| writer.write_all(&answer)).is_err() {
+            return;
+        }
+    }
+}
+
+fn handle(state: &ServerState, method: &str, path: &str, body: Vec<u8>) -> (u16, Vec<u8>) {
+    let mut objects = state.objects.lock().expect("lock");
+    match method {
+        "GET" => objects.get(path).map_or((404, Vec::new()), |found| (200, found.clone())),
+        "PUT" => {
+            objects.insert(path.to_string(), body);
+            (201, Vec::new())
+        }
+        _ => (405, Vec::new()),
+    }
+}
+
+/// `kiln build` of the example project into `output`, with a cache folder of its own (a machine)
+/// and the remote cache `url`, plus `env`.
+fn build(output: &Path, cache: &Path, url: &str, env: &[(&str, &str)]) -> Output {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_kiln"));
+    command
+        .args(["build", "fixtures/project", "--output"])
+        .arg(output)
+        .arg("--cache-dir")
+        .arg(cache)
+        .args(["--remote-cache", url])
+        .current_dir(root())
+        .env("NO_COLOR", "1")
+        .env_remove("KILN_REMOTE_CACHE_MODE")
+        .env_remove("KILN_REMOTE_CACHE_TOKEN")
+        .env("KILN_REMOTE_CACHE_TIMEOUT", "0.5");
+    for (name, value) in env {
+        command.env(name, value);
+    }
+    command.output().expect("kiln runs")
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+/// A build that succeeded; its diagnostics and summary.
+fn succeeded(output: Output) -> String {
+    let text = stderr(&output);
+    assert_eq!(output.status.code(), Some(0), "{text}");
+    text
+}
+
+/// Two machines: folders for each one's cache and output.
+struct Machines {
+    _dir: tempfile::TempDir,
+    a: (PathBuf, PathBuf),
+    b: (PathBuf, PathBuf),
+}
+
+fn machines() -> Machines {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let folder = |name: &str| dir.path().join(name);
+    Machines { a: (folder("a-out"), folder("a-cache")), b: (folder("b-out"), folder("b-cache")), _dir: dir }
+}
+
+/// A clean build without any cache, for what every other build must ship.
+fn clean_build(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
+    let output = dir.join("clean");
+    let run =
+        crate::support::kiln(&["build", "fixtures/project", "--output", output.to_str().expect("utf-8")]);
+    assert!(run.status.success(), "{}", stderr(&run));
+    shipped(&output)
+}
+
+#[test]
+fn a_second_machine_compiles_nothing_that_the_first_published_and_ships_the_same_bytes() {
+    let server = TestServer::start(Behaviour::Serve);
+    let m = machines();
+    let first = succeeded(build(&m.a.0, &m.a.1, &server.url(), &[]));
+    let made = compiled(&first);
+    assert!(made > 10, "{first}");
+    assert!(server.requests("PUT") >= made, "every compiled module published: {}", server.requests("PUT"));
+    let second = succeeded(build(&m.b.0, &m.b.1, &server.url(), &[]));
+    assert_eq!(compiled(&second), 0, "{second}");
+    assert!(!second.contains("warning"), "{second}");
+    assert_eq!(shipped(&m.b.0), shipped(&m.a.0), "byte-identical outputs");
+    assert_eq!(shipped(&m.a.0), clean_build(m._dir.path()), "and what a build without caches ships");
+}
+
+#[test]
+fn tampered_and_forged_objects_are_misses_and_recompiled() {
+    let server = TestServer::start(Behaviour::Serve);
+    let m = machines();
+    let made = compiled(&succeeded(build(&m.a.0, &m.a.1, &server.url(), &[])));
+    {
+        let mut objects = server.state.objects.lock().expect("lock");
+        let cas: Vec<String> = objects.keys().filter(|k| k.contains("/cas/")).cloned().collect();
+        let entries: Vec<String> = objects.keys().filter(|k| k.contains("/ac/")).cloned().collect();
+        assert!(
+            cas.len() >= 3 && entries.len() >= cas.len(),
+            "{} objects, {} entries",
+            cas.len(),
+            entries.len()
+        );
+        // A flipped byte in one object (its SHA-256 no longer matches its name).
+        objects.get_mut(&cas[0]).expect("object")[40] ^= 1;
+        // Another object renamed to a third's SHA-256 (the name checked only by content).
+        let other = objects[&cas[1]].clone();
+        objects.insert(cas[2].clone(), other);
+        // Every module entry pointed at one valid object: its SHA-256 matches, its key does not.
+        // (A module's entry is the 64 hex digits of its object; a pass's layouts are JSON.)
+        let modules: Vec<String> = entries.into_iter().filter(|e| objects[e].len() == 64).collect();
+        assert!(modules.len() >= 3);
+        let named = objects[&modules[0]].clone();
+        for entry in &modules {
+            objects.insert(entry.clone(), named.clone());
+        }
+    }
+    let second = succeeded(build(&m.b.0, &m.b.1, &server.url(), &[]));
+    // At most the one module whose entry still names its own object is taken.
+    assert!(compiled(&second) >= made - 1, "{second}");
+    assert_eq!(shipped(&m.b.0), shipped(&m.a.0), "nothing tampered ships");
+}
+
+#[test]
+fn a_server_that_fails_is_slow_or_gone_costs_one_warning_and_never_the_build() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let clean = clean_build(dir.path());
+    // Nothing listening: a port bound and released.
+    let gone = TcpListener::bind("127.0.0.1:0").expect("port").local_addr().expect("address").port();
+    let failing = TestServer::start(Behaviour::Status(500));
+    let slow = TestServer::start(Behaviour::Slow(Duration::from_secs(5)));
+    let dying = TestServer::start(Behaviour::DieAfter(4));
+    for (name, url) in [
+        ("gone", format!("http://127.0.0.1:{gone}/kiln")),
+        ("failing", failing.url()),
+        ("slow", slow.url()),
+        ("dying", dying.url()),
+    ] {
+        let (output, cache) =
+            (dir.path().join(format!("{name}-out")), dir.path().join(format!("{name}-cache")));
+        let started = Instant::now();
+        let text = succeeded(build(&output, &cache, &url, &[]));
+        assert!(started.elapsed() < Duration::from_secs(30), "{name}: {:?}, not a hang", started.elapsed());
+        assert_eq!(text.matches("warning[K0620]").count(), 1, "{name}: one warning\n{text}");
+        assert_eq!(shipped(&output), clean, "{name}: what a build without caches ships");
+    }
+    // The breaker: after three failures in a row, the failing server is asked nothing more.
+    let asked = failing.state.requests.lock().expect("lock").len();
+    assert!(asked <= 3 + 16, "{asked} requests to a server that answers 500");
+}
+
+#[test]
+fn read_mode_and_a_read_only_token_publish_nothing() {
+    let m = machines();
+    let reader = TestServer::start(Behaviour::Serve);
+    let text = succeeded(build(&m.a.0, &m.a.1, &reader.url(), &[("KILN_REMOTE_CACHE_MODE", "read")]));
+    assert_eq!(reader.requests("PUT"), 0, "{text}");
+    assert!(reader.requests("GET") > 0);
+    assert!(!text.contains("warning"), "{text}");
+    let refusing = TestServer::start(Behaviour::ReadOnly);
+    let text = succeeded(build(&m.b.0, &m.b.1, &refusing.url(), &[]));
+    assert_eq!(text.matches("warning[K0620]").count(), 1, "{text}");
+    assert!(text.contains("refused a write (HTTP 403)"), "{text}");
+    assert_eq!(refusing.requests("PUT"), 1, "the first refusal ends writes");
+    assert!(refusing.state.objects.lock().expect("lock").is_empty());
+    // `off` asks nothing.
+    let quiet = TestServer::start(Behaviour::Serve);
+    let off = m.a.0.with_file_name("off-out");
+    succeeded(build(&off, &m.a.1, &quiet.url(), &[("KILN_REMOTE_CACHE_MODE", "off")]));
+    assert_eq!(quiet.state.requests.lock().expect("lock").len(), 0);
+}
+
+#[test]
+fn a_token_is_sent_and_written_nowhere() {
+    let secret = "s3cret-token-7f1c";
+    let server = TestServer::start(Behaviour::Serve);
+    let m = machines();
+    let text = succeeded(build(&m.a.0, &m.a.1, &server.url(), &[("KILN_REMOTE_CACHE_TOKEN", secret)]));
+    let requests = server.state.requests.lock().expect("lock").clone();
+    assert!(!requests.is_empty());
+    let bearer = format!("Bearer {secret}");
+    assert!(requests.iter().all(|(.., auth)| auth.as_deref() == Some(bearer.as_str())), "{requests:?}");
+    assert!(!text.contains(secret));
+    for (path, bytes) in crate::support::tree(&m.a.0).into_iter().chain(crate::support::tree(&m.a.1)) {
+        let text = String::from_utf8_lossy(&bytes);
+        assert!(!text.contains(secret), "{} holds the token", path.display());
+    }
+    // A server that fails says why without the token either.
+    server.set(Behaviour::Status(401));
+    let text = succeeded(build(&m.b.0, &m.b.1, &server.url(), &[("KILN_REMOTE_CACHE_TOKEN", secret)]));
+    assert!(text.contains("warning[K0620]") && !text.contains(secret), "{text}");
+}
+
+/// A project's build through the library, with `mode`; its diagnostics rendered.
+fn diagnostics_of(project: &str, mode: &BuildMode) -> (bool, String) {
+    let mut store = SourceStore::new();
+    let (result, mut diagnostics) =
+        build_project(&mut store, &[root().join(project)], mode, &|_, _| {}).expect("exists");
+    diagnostics.extend(result.diagnostics);
+    let shown = render_plain(&store, &diagnostics).replace(&format!("{}/", root().display()), "");
+    (has_errors(&diagnostics), shown)
+}
+
+#[test]
+fn settings_kiln_cannot_use_are_errors_where_they_are_written() {
+    let out = tempfile::tempdir().expect("temp dir");
+    let mode = BuildMode { output: Some(out.path().to_path_buf()), ..BuildMode::default() };
+    let (failed, shown) = diagnostics_of("fixtures/bad/remote_cache", &mode);
+    assert!(failed);
+    expect_file![root().join("fixtures/bad/remote_cache/kiln.stderr")].assert_eq(&shown);
+    let run =
+        crate::support::kiln(&["build", "fixtures/ubershader", "--remote-cache", "http://user:pw@host/kiln"]);
+    assert_eq!(run.status.code(), Some(1));
+    assert!(stderr(&run).contains("credentials belong in KILN_REMOTE_CACHE_TOKEN"), "{}", stderr(&run));
+    assert!(!stderr(&run).contains("pw@"), "the URL with its password is not echoed");
+    let run = crate::support::kiln(&["build", "fixtures/ubershader", "--remote-cache-mode", "sometimes"]);
+    assert_eq!(run.status.code(), Some(2), "clap refuses it");
+}
+
+#[test]
+fn a_server_nothing_listens_on_is_one_warning() {
+    let out = tempfile::tempdir().expect("temp dir");
+    // Port 9 (discard): nothing listens there on a test machine.
+    let mode = BuildMode {
+        output: Some(out.path().to_path_buf()),
+        remote_cache: Some("http://127.0.0.1:9/kiln".to_string()),
+        ..BuildMode::default()
+    };
+    let (failed, shown) = diagnostics_of("fixtures/ubershader", &mode);
+    assert!(!failed, "{shown}");
+    expect_file![root().join("tests/golden/remote/unavailable.stderr")].assert_eq(&shown);
+}
+
+/// nginx (Debian's package) with WebDAV `PUT`, on a loopback port with a temporary root.
+struct Nginx {
+    child: std::process::Child,
+    port: u16,
+    _dir: tempfile::TempDir,
+}
+
+impl Nginx {
+    fn start() -> Nginx {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let port = TcpListener::bind("127.0.0.1:0").expect("port").local_addr().expect("address").port();
+        let root = dir.path().join("root");
+        std::fs::create_dir_all(root.join("kiln")).expect("mkdir");
+        // One process, as whoever runs the test: no worker to drop privileges to.
+        let config = format!(
+            "daemon off;\nmaster_process off;\npid {dir}/nginx.pid;\nerror_log {dir}/error.log;\n\
+             events {{}}\nhttp {{\n  access_log off;\n  client_body_temp_path {dir}/body;\n  proxy_temp_path {dir}/proxy;\n\
+             fastcgi_temp_path {dir}/fastcgi;\n  uwsgi_temp_path {dir}/uwsgi;\n  scgi_temp_path {dir}/scgi;\n\
+             server {{\n    listen 127.0.0.1:{port};\n    root {root};\n    location / {{\n      dav_methods PUT;\n\
+             create_full_put_path on;\n      client_max_body_size 0;\n    }}\n  }}\n}}\n",
+            dir = dir.path().display(),
+            root = root.display(),
+        );
+        let conf = dir.path().join("nginx.conf");
+        std::fs::write(&conf, config).expect("config");
+        let child = Command::new("nginx")
+            .args(["-p", dir.path().to_str().expect("utf-8"), "-c", conf.to_str().expect("utf-8")])
+            .arg("-e")
+            .arg(dir.path().join("error.log"))
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("nginx starts");
+        let started = Instant::now();
+        while TcpStream::connect(("127.0.0.1", port)).is_err() {
+            assert!(started.elapsed() < Duration::from_secs(10), "nginx listens");
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        Nginx { child, port, _dir: dir }
+    }
+}
+
+impl Drop for Nginx {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+#[test]
+fn machines_share_modules_through_nginx_with_webdav() {
+    // `nginx -v`, not `--version`: its own flag.
+    let found = Command::new("nginx").arg("-v").output().is_ok_and(|o| o.status.success());
+    if !found {
+        assert!(std::env::var_os("KILN_REQUIRE_TOOLS").is_none(), "nginx is required but missing");
+        crate::support::skipped(
+            "machines_share_modules_through_nginx_with_webdav: nginx missing (apt-get install nginx)",
+        );
+        return;
+    }
+    let nginx = Nginx::start();
+    let url = format!("http://127.0.0.1:{}/kiln", nginx.port);
+    let m = machines();
+    let first = succeeded(build(&m.a.0, &m.a.1, &url, &[]));
+    assert!(compiled(&first) > 10 && !first.contains("warning"), "{first}");
+    let second = succeeded(build(&m.b.0, &m.b.1, &url, &[]));
+    assert_eq!(compiled(&second), 0, "{second}");
+    assert_eq!(shipped(&m.b.0), shipped(&m.a.0));
+    // nginx killed: the next machine builds alone, with one warning.
+    drop(nginx);
+    let c = m.b.0.with_file_name("c-out");
+    let third = succeeded(build(&c, &m.b.1.with_file_name("c-cache"), &url, &[]));
+    assert_eq!(third.matches("warning[K0620]").count(), 1, "{third}");
+    assert_eq!(shipped(&c), shipped(&m.a.0));
+}
