@@ -365,8 +365,9 @@ fn build_passes(
         diagnostics.extend(pass.diagnostics);
         parts.push(pass.part);
     }
-    summary.remote_bytes = session.sources.remote_bytes();
-    diagnostics.extend(session.sources.warnings());
+    let (remote_warning, remote_bytes) = session.sources.finish();
+    summary.remote_bytes = remote_bytes;
+    diagnostics.extend(remote_warning);
     let catalogue = |read| emit::catalogue_part(store, catalog, options, &work, &summary, read);
     match &options.part {
         Part::Shard(shard) => {

@@ -20,7 +20,6 @@ use crate::store::remote::{RemoteCache, RemoteMode};
 use crate::store::{ModuleBytes, PassIndex, hash, shared};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
-use std::sync::atomic::Ordering;
 use std::sync::{Arc, OnceLock};
 
 /// Outcome of a job's front end: its declared resources, and the parsed module when it had to be
@@ -98,16 +97,12 @@ impl Sources {
         Sources { fronts, modules, remote }
     }
 
-    /// The remote cache's one warning, when it could not be used as configured.
-    pub(super) fn warnings(&self) -> Option<Diagnostic> {
-        self.remote.as_ref().and_then(|remote| remote.0.warning())
-    }
-
-    /// Bytes received from and sent to the remote cache.
-    pub(super) fn remote_bytes(&self) -> [u64; 2] {
-        self.remote
-            .as_ref()
-            .map_or([0, 0], |r| [r.0.received.load(Ordering::Relaxed), r.0.sent.load(Ordering::Relaxed)])
+    /// Waits for the remote cache's uploads; then its one warning, when it could not be used as
+    /// configured, and the bytes it received and sent.
+    pub(super) fn finish(&self) -> (Option<Diagnostic>, [u64; 2]) {
+        let Some(remote) = &self.remote else { return (None, [0, 0]) };
+        remote.0.finish();
+        (remote.0.warning(), remote.0.bytes())
     }
 
     /// The first front a source has, or naga's parse.

@@ -18,8 +18,8 @@ use crate::manifest::PerBackend;
 use crate::reflect::StageReflection;
 use sha2::{Digest as _, Sha256};
 use std::collections::BTreeMap;
-use std::sync::Mutex;
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 /// What a build may do with the remote cache (`--remote-cache-mode`).
@@ -87,9 +87,32 @@ const BREAKER: usize = 3;
 /// The largest object fetched (a module's every back end, with its reflection).
 const MAX_OBJECT: u64 = 256 << 20;
 
-/// A build's connection to the remote cache: one HTTP agent (keep-alive, a connection per
-/// worker thread at most), the credentials, and what went wrong so far.
+/// Uploads in flight at most, and the threads that make them: a build's workers hand what they
+/// compiled over and go on compiling (the queue's bound is its memory's).
+const UPLOAD_QUEUE: usize = 64;
+const UPLOADERS: usize = 8;
+
+/// A build's use of the remote cache: fetches on the build's threads, uploads on threads of its
+/// own (started at the first, joined by [`RemoteCache::finish`]).
 pub struct RemoteCache {
+    connection: Arc<Connection>,
+    uploads: Mutex<Option<Uploads>>,
+}
+
+/// The upload threads and their queue.
+struct Uploads {
+    queue: std::sync::mpsc::SyncSender<Upload>,
+    threads: Vec<std::thread::JoinHandle<()>>,
+}
+
+/// What an upload thread puts: an object and the entry that names it, or an entry alone.
+enum Upload {
+    Object { cas: String, object: Vec<u8>, entry: String },
+    Entry { path: String, bytes: Vec<u8> },
+}
+
+/// The HTTP side: one agent (keep-alive), the credentials, and what went wrong so far.
+struct Connection {
     config: RemoteConfig,
     agent: ureq::Agent,
     authorization: Option<String>,
@@ -98,10 +121,8 @@ pub struct RemoteCache {
     writes_refused: AtomicBool,
     /// The first problem of each kind, reported once after the build.
     problems: Mutex<Vec<String>>,
-    /// Bytes received and sent, for the summary and the benchmarks.
-    pub received: AtomicU64,
-    /// See [`RemoteCache::received`].
-    pub sent: AtomicU64,
+    received: AtomicU64,
+    sent: AtomicU64,
 }
 
 /// How a request went.
@@ -112,9 +133,138 @@ enum Answer {
 }
 
 impl RemoteCache {
-    /// A connection for one build; credentials from `KILN_REMOTE_CACHE_TOKEN` (bearer) or
+    /// The remote cache for one build; credentials from `KILN_REMOTE_CACHE_TOKEN` (bearer) or
     /// `KILN_REMOTE_CACHE_USER` and `KILN_REMOTE_CACHE_PASSWORD` (basic).
     pub fn new(config: RemoteConfig) -> RemoteCache {
+        RemoteCache { connection: Arc::new(Connection::new(config)), uploads: Mutex::new(None) }
+    }
+
+    /// A stage module stored under `key` by `compiler`, verified, or `None`.
+    pub fn fetch_object(
+        &self,
+        key: &str,
+        compiler: &str,
+    ) -> Option<(PerBackend<Option<ModuleBytes>>, StageReflection)> {
+        let connection = &self.connection;
+        if !connection.usable() {
+            return None;
+        }
+        let Answer::Found(entry) = connection.get(&entry_path("module", key)) else { return None };
+        let cas = std::str::from_utf8(&entry).ok()?.trim();
+        if !is_sha256(cas) {
+            return None;
+        }
+        let Answer::Found(object) = connection.get(&format!("cas/{cas}")) else { return None };
+        // Damaged on the way or on the server, or another object: a miss, never used.
+        if sha256(&object) != cas {
+            return None;
+        }
+        parse_object(&object, key, Some(compiler))
+    }
+
+    /// Publishes a module this build compiled, in the background: its object, then the entry
+    /// that names it.
+    pub fn publish_object(
+        &self,
+        key: &str,
+        compiler: &str,
+        modules: &PerBackend<Option<ModuleBytes>>,
+        reflection: &StageReflection,
+    ) {
+        if !self.connection.writable() {
+            return;
+        }
+        let Ok(object) = object_bytes(key, compiler, modules, reflection) else { return };
+        self.upload(Upload::Object { cas: sha256(&object), object, entry: entry_path("module", key) });
+    }
+
+    /// A pass's parsed resources, by stage text (empty when there are none or they are not
+    /// what was sealed under the pass).
+    pub fn read_layouts(&self, pass: &str) -> BTreeMap<String, Vec<Declared>> {
+        if !self.connection.usable() {
+            return BTreeMap::new();
+        }
+        let key = layouts_key(pass);
+        let Answer::Found(bytes) = self.connection.get(&entry_path("layouts", &key)) else {
+            return BTreeMap::new();
+        };
+        unsealed(&key, &bytes).and_then(|json| serde_json::from_slice(json).ok()).unwrap_or_default()
+    }
+
+    /// Publishes a pass's parsed resources, joined with what the server has for the pass (two
+    /// builds publishing at once may lose each other's additions: a miss later, as in the
+    /// shared cache).
+    pub fn publish_layouts(&self, pass: &str, layouts: &BTreeMap<String, Vec<Declared>>) {
+        if !self.connection.writable() {
+            return;
+        }
+        let mut all = self.read_layouts(pass);
+        let before = all.len();
+        for (text, declared) in layouts {
+            all.entry(text.clone()).or_insert_with(|| declared.clone());
+        }
+        if all.len() == before && before > 0 {
+            return;
+        }
+        let key = layouts_key(pass);
+        if let Ok(bytes) = sealed(&key, &all) {
+            self.upload(Upload::Entry { path: entry_path("layouts", &key), bytes });
+        }
+    }
+
+    /// Queues an upload, starting the upload threads the first time; waits while the queue is
+    /// full.
+    fn upload(&self, upload: Upload) {
+        // The lock is not held while waiting for room: other workers queue too.
+        let queue = {
+            let mut uploads = self.uploads.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+            let uploads = uploads.get_or_insert_with(|| {
+                let (queue, receiver) = std::sync::mpsc::sync_channel::<Upload>(UPLOAD_QUEUE);
+                let receiver = Arc::new(Mutex::new(receiver));
+                let threads = (0..UPLOADERS)
+                    .filter_map(|i| {
+                        let (connection, receiver) = (self.connection.clone(), receiver.clone());
+                        let name = format!("kiln upload {i}");
+                        std::thread::Builder::new()
+                            .name(name)
+                            .spawn(move || connection.uploads(&receiver))
+                            .ok()
+                    })
+                    .collect();
+                Uploads { queue, threads }
+            });
+            uploads.queue.clone()
+        };
+        let _ = queue.send(upload);
+    }
+
+    /// Waits for the uploads queued (each within its request's time limit): at the end of the
+    /// build, before it reports.
+    pub fn finish(&self) {
+        let uploads = self.uploads.lock().unwrap_or_else(std::sync::PoisonError::into_inner).take();
+        if let Some(Uploads { queue, threads }) = uploads {
+            drop(queue);
+            for thread in threads {
+                let _ = thread.join();
+            }
+        }
+    }
+
+    /// Bytes received from the server and sent to it.
+    pub fn bytes(&self) -> [u64; 2] {
+        [self.connection.received.load(Ordering::Relaxed), self.connection.sent.load(Ordering::Relaxed)]
+    }
+
+    /// The build's one warning about the server, if anything went wrong (after [`finish`]).
+    ///
+    /// [`finish`]: RemoteCache::finish
+    pub fn warning(&self) -> Option<Diagnostic> {
+        self.connection.warning()
+    }
+}
+
+impl Connection {
+    fn new(config: RemoteConfig) -> Connection {
         let agent_config = ureq::Agent::config_builder()
             .timeout_global(Some(config.timeout))
             .http_status_as_error(false)
@@ -129,7 +279,7 @@ impl RemoteCache {
                 base64::engine::general_purpose::STANDARD.encode(format!("{user}:{password}"))
             )
         });
-        RemoteCache {
+        Connection {
             config,
             agent: ureq::Agent::new_with_config(agent_config),
             authorization: token.map(|t| format!("Bearer {t}")).or(basic),
@@ -178,8 +328,14 @@ impl RemoteCache {
                     Ok(bytes) => Answer::Found(bytes),
                     Err(error) => Answer::Failed(reason(&error)),
                 },
-                404 => Answer::Missing,
-                status => Answer::Failed(format!("HTTP {status} for a GET")),
+                404 => {
+                    drain(&mut response);
+                    Answer::Missing
+                }
+                status => {
+                    drain(&mut response);
+                    Answer::Failed(format!("HTTP {status} for a GET"))
+                }
             },
             Err(error) => Answer::Failed(reason(&error)),
         };
@@ -201,7 +357,11 @@ impl RemoteCache {
         if let Some(authorization) = &self.authorization {
             request = request.header("Authorization", authorization);
         }
-        match request.send(bytes) {
+        let sent = request.send(bytes).map(|mut response| {
+            drain(&mut response);
+            response
+        });
+        match sent {
             Ok(response) if response.status().is_success() => {
                 self.sent.fetch_add(bytes.len() as u64, Ordering::Relaxed);
                 self.failures_in_a_row.store(0, Ordering::Relaxed);
@@ -227,80 +387,29 @@ impl RemoteCache {
         }
     }
 
-    /// A stage module stored under `key` by `compiler`, verified, or `None`.
-    pub fn fetch_object(
-        &self,
-        key: &str,
-        compiler: &str,
-    ) -> Option<(PerBackend<Option<ModuleBytes>>, StageReflection)> {
-        if !self.usable() {
-            return None;
-        }
-        let Answer::Found(entry) = self.get(&entry_path("module", key)) else { return None };
-        let cas = std::str::from_utf8(&entry).ok()?.trim();
-        if !is_sha256(cas) {
-            return None;
-        }
-        let Answer::Found(object) = self.get(&format!("cas/{cas}")) else { return None };
-        // Damaged on the way or on the server, or another object: a miss, never used.
-        if sha256(&object) != cas {
-            return None;
-        }
-        parse_object(&object, key, Some(compiler))
-    }
-
-    /// Publishes a module this build compiled: its object, then the entry that names it.
-    pub fn publish_object(
-        &self,
-        key: &str,
-        compiler: &str,
-        modules: &PerBackend<Option<ModuleBytes>>,
-        reflection: &StageReflection,
-    ) {
-        if !self.writable() {
-            return;
-        }
-        let Ok(object) = object_bytes(key, compiler, modules, reflection) else { return };
-        let cas = sha256(&object);
-        if self.put(&format!("cas/{cas}"), &object) {
-            self.put(&entry_path("module", key), cas.as_bytes());
+    /// An upload thread: puts what the queue gives until it is closed (after the breaker opens
+    /// or writes are refused, what is left is dropped unsent).
+    fn uploads(&self, receiver: &Mutex<std::sync::mpsc::Receiver<Upload>>) {
+        loop {
+            let next = receiver.lock().unwrap_or_else(std::sync::PoisonError::into_inner).recv();
+            let Ok(upload) = next else { return };
+            if !self.writable() {
+                continue;
+            }
+            match upload {
+                Upload::Object { cas, object, entry } => {
+                    if self.put(&format!("cas/{cas}"), &object) {
+                        self.put(&entry, cas.as_bytes());
+                    }
+                }
+                Upload::Entry { path, bytes } => {
+                    self.put(&path, &bytes);
+                }
+            }
         }
     }
 
-    /// A pass's parsed resources, by stage text (empty when there are none or they are not
-    /// what was sealed under the pass).
-    pub fn read_layouts(&self, pass: &str) -> BTreeMap<String, Vec<Declared>> {
-        if !self.usable() {
-            return BTreeMap::new();
-        }
-        let key = layouts_key(pass);
-        let Answer::Found(bytes) = self.get(&entry_path("layouts", &key)) else { return BTreeMap::new() };
-        unsealed(&key, &bytes).and_then(|json| serde_json::from_slice(json).ok()).unwrap_or_default()
-    }
-
-    /// Publishes a pass's parsed resources, joined with what the server has for the pass (two
-    /// builds publishing at once may lose each other's additions: a miss later, as in the
-    /// shared cache).
-    pub fn publish_layouts(&self, pass: &str, layouts: &BTreeMap<String, Vec<Declared>>) {
-        if !self.writable() {
-            return;
-        }
-        let mut all = self.read_layouts(pass);
-        let before = all.len();
-        for (text, declared) in layouts {
-            all.entry(text.clone()).or_insert_with(|| declared.clone());
-        }
-        if all.len() == before && before > 0 {
-            return;
-        }
-        let key = layouts_key(pass);
-        if let Ok(bytes) = sealed(&key, &all) {
-            self.put(&entry_path("layouts", &key), &bytes);
-        }
-    }
-
-    /// The build's one warning about the server, if anything went wrong.
-    pub fn warning(&self) -> Option<Diagnostic> {
+    fn warning(&self) -> Option<Diagnostic> {
         let problems = self.problems.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
         let first = problems.first()?;
         let mut diagnostic = Diagnostic::warning(
@@ -331,6 +440,12 @@ pub fn sha256(bytes: &[u8]) -> String {
 
 fn is_sha256(text: &str) -> bool {
     text.len() == 64 && text.bytes().all(|b| b.is_ascii_digit() || (b'a'..=b'f').contains(&b))
+}
+
+/// Reads what is left of an answer, so that its connection goes back to the pool (ureq keeps a
+/// connection alive only once its answer is read to the end).
+fn drain(response: &mut ureq::http::Response<ureq::Body>) {
+    let _ = response.body_mut().with_config().limit(1 << 20).read_to_vec();
 }
 
 /// A failed request in a few words (no URL, no header: nothing secret).

@@ -219,6 +219,12 @@ fn a_second_machine_compiles_nothing_that_the_first_published_and_ships_the_same
     let second = succeeded(build(&m.b.0, &m.b.1, &server.url(), &[]));
     assert_eq!(compiled(&second), 0, "{second}");
     assert!(!second.contains("warning"), "{second}");
+    // What the server holds is what the second machine fetched (each object and entry once).
+    let stored: usize = server.state.objects.lock().expect("lock").values().map(Vec::len).sum();
+    assert!(
+        second.contains(&format!(", {stored} bytes fetched from the remote cache and 0 sent")),
+        "{second}"
+    );
     assert_eq!(shipped(&m.b.0), shipped(&m.a.0), "byte-identical outputs");
     assert_eq!(shipped(&m.a.0), clean_build(m._dir.path()), "and what a build without caches ships");
 }
@@ -298,7 +304,8 @@ fn read_mode_and_a_read_only_token_publish_nothing() {
     let text = succeeded(build(&m.b.0, &m.b.1, &refusing.url(), &[]));
     assert_eq!(text.matches("warning[K0620]").count(), 1, "{text}");
     assert!(text.contains("refused a write (HTTP 403)"), "{text}");
-    assert_eq!(refusing.requests("PUT"), 1, "the first refusal ends writes");
+    // Writes end at the first refusal: at most the one in flight on each upload thread (8).
+    assert!((1..=8).contains(&refusing.requests("PUT")), "{} PUTs", refusing.requests("PUT"));
     assert!(refusing.state.objects.lock().expect("lock").is_empty());
     // `off` asks nothing.
     let quiet = TestServer::start(Behaviour::Serve);

@@ -115,6 +115,11 @@ fn print_summary(s: &kiln::build::BuildSummary, written_to: Option<&std::path::P
     if let Some(output) = written_to {
         line.push_str(&format!(", {} bytes written to {}", s.bytes_written, output.display()));
     }
+    if let [received, sent] = s.remote_bytes
+        && received + sent > 0
+    {
+        line.push_str(&format!(", {received} bytes fetched from the remote cache and {sent} sent"));
+    }
     line.push_str(&format!(" in {:.2} s", s.elapsed.as_secs_f64()));
     if errors {
         line.push_str(", with errors");
