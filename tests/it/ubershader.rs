@@ -60,6 +60,18 @@ fn the_ubershader_is_built_and_reflected_beside_the_variants() {
     assert!(!variant_modules.contains(&vertex.index) && !variant_modules.contains(&fragment.index));
 }
 
+/// A material of the pass with no property values (its render state is the pass's own).
+fn plain_material() -> MaterialManifest {
+    MaterialManifest {
+        name: "Plain".to_string(),
+        shader: SHADER.to_string(),
+        preset: None,
+        render_queue: 2000,
+        keywords: Vec::new(),
+        values: Default::default(),
+    }
+}
+
 fn request<'a>(
     runtime: &Runtime,
     material: &'a MaterialManifest,
@@ -83,14 +95,7 @@ fn the_ubershader_draws_what_every_variant_draws_while_workers_create_them() {
     let output = built();
     let runtime = Arc::new(Runtime::open(&gpu.device, output.path()).expect("opens"));
     assert!(runtime.draws_ubershaders(), "the suite's device has wgpu's IMMEDIATES");
-    let material = MaterialManifest {
-        name: "Plain".to_string(),
-        shader: SHADER.to_string(),
-        preset: None,
-        render_queue: 2000,
-        keywords: Vec::new(),
-        values: Default::default(),
-    };
+    let material = plain_material();
     let targets = targets();
     let warm = request(&runtime, &material, &targets, &[]);
     assert!(runtime.warm_up_ubershader(&warm).expect("creates"));
@@ -133,14 +138,7 @@ fn a_trace_warm_up_makes_the_ubershader_for_each_traced_state() {
     let output = built();
     let dir = tempfile::tempdir().expect("temp dir");
     let trace = dir.path().join("pipelines.jsonl");
-    let material = MaterialManifest {
-        name: "Plain".to_string(),
-        shader: SHADER.to_string(),
-        preset: None,
-        render_queue: 2000,
-        keywords: Vec::new(),
-        values: Default::default(),
-    };
+    let material = plain_material();
     let targets = targets();
     let mut first = Runtime::open(&gpu.device, output.path()).expect("opens");
     first.record_pipelines(kiln::runtime::PipelineTrace::append(&trace).expect("trace"));

@@ -177,27 +177,7 @@ pub fn draw_grid(device: &wgpu::Device, queue: &wgpu::Queue, draws: &[Drawable])
     {
         let (color_view, depth_view) =
             (color.create_view(&Default::default()), depth.create_view(&Default::default()));
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: None,
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &color_view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color::BLACK),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &depth_view,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
-                    store: wgpu::StoreOp::Store,
-                }),
-                stencil_ops: None,
-            }),
-            ..Default::default()
-        });
+        let mut pass = crate::begin_cleared(&mut encoder, &color_view, &depth_view, wgpu::Color::BLACK, None);
         pass.set_vertex_buffer(0, vertex_buffer.slice(..));
         for (i, draw) in draws.iter().enumerate() {
             let (x, y) = ((i as u32 % COLUMNS) * CELL, (i as u32 / COLUMNS) * CELL);
@@ -217,11 +197,5 @@ pub fn draw_grid(device: &wgpu::Device, queue: &wgpu::Queue, draws: &[Drawable])
     queue.submit([encoder.finish()]);
     readback.map_async(wgpu::MapMode::Read, .., |_| {});
     device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| e.to_string())?;
-    let mapped = readback.get_mapped_range(..).map_err(|e| e.to_string())?;
-    let mut pixels = Vec::with_capacity((width * height * 4) as usize);
-    for y in 0..height {
-        let start = (y * row) as usize;
-        pixels.extend_from_slice(&mapped[start..start + (width * 4) as usize]);
-    }
-    Ok(Image { width, height, pixels })
+    Image::read(&readback, width, height, row)
 }

@@ -31,6 +31,18 @@ pub struct Image {
 }
 
 impl Image {
+    /// The image in a mapped read-back buffer whose rows are `row` bytes apart (a multiple of
+    /// 256, as copies need), without the padding.
+    pub fn read(buffer: &wgpu::Buffer, width: u32, height: u32, row: u32) -> Result<Image, String> {
+        let mapped = buffer.get_mapped_range(..).map_err(|e| e.to_string())?;
+        let mut pixels = Vec::with_capacity((width * height * 4) as usize);
+        for y in 0..height {
+            let start = (y * row) as usize;
+            pixels.extend_from_slice(&mapped[start..start + (width * 4) as usize]);
+        }
+        Ok(Image { width, height, pixels })
+    }
+
     /// Each pixel's colour, 0..1 per channel.
     pub fn colors(&self) -> Vec<[f64; 3]> {
         self.pixels.chunks_exact(4).map(|p| [0, 1, 2].map(|k| f64::from(p[k]) / 255.0)).collect()
@@ -449,28 +461,8 @@ pub fn render_frames(
                 beginning_of_pass_write_index: first.then_some(0),
                 end_of_pass_write_index: last.then_some(1),
             });
-        let mut render_pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: None,
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &target_view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(wgpu::Color { r: bg[0], g: bg[1], b: bg[2], a: 1.0 }),
-                    store: wgpu::StoreOp::Store,
-                },
-            })],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &depth_view,
-                depth_ops: Some(wgpu::Operations {
-                    load: wgpu::LoadOp::Clear(1.0),
-                    store: wgpu::StoreOp::Store,
-                }),
-                stencil_ops: None,
-            }),
-            timestamp_writes,
-            ..Default::default()
-        });
+        let clear = wgpu::Color { r: bg[0], g: bg[1], b: bg[2], a: 1.0 };
+        let mut render_pass = begin_cleared(&mut encoder, &target_view, &depth_view, clear, timestamp_writes);
         render_pass.set_bind_group(shaders::FRAME_GROUP, &frame_group, &[]);
         render_pass.set_vertex_buffer(0, vertex_buffer.slice(..));
         render_pass.set_index_buffer(index_buffer.slice(..), wgpu::IndexFormat::Uint32);
@@ -515,13 +507,34 @@ pub fn render_frames(
         }
         None => None,
     };
-    let mapped = readback.get_mapped_range(..).map_err(|e| e.to_string())?;
-    let mut pixels = Vec::with_capacity((scene.width * scene.height * 4) as usize);
-    for y in 0..scene.height {
-        let start = (y * row) as usize;
-        pixels.extend_from_slice(&mapped[start..start + (scene.width * 4) as usize]);
-    }
-    Ok((Image { width: scene.width, height: scene.height, pixels }, gpu_time))
+    let image = Image::read(&readback, scene.width, scene.height, row)?;
+    Ok((image, gpu_time))
+}
+
+/// A render pass into a colour and a depth target, cleared to `clear` and depth 1, stored.
+pub fn begin_cleared<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    color: &wgpu::TextureView,
+    depth: &wgpu::TextureView,
+    clear: wgpu::Color,
+    timestamp_writes: Option<wgpu::RenderPassTimestampWrites<'_>>,
+) -> wgpu::RenderPass<'e> {
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: None,
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view: color,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations { load: wgpu::LoadOp::Clear(clear), store: wgpu::StoreOp::Store },
+        })],
+        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            view: depth,
+            depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Store }),
+            stencil_ops: None,
+        }),
+        timestamp_writes,
+        ..Default::default()
+    })
 }
 
 /// The spheres' tessellation: rings from pole to pole, segments around.
