@@ -353,11 +353,11 @@ fn settings_kiln_cannot_use_are_errors_where_they_are_written() {
     assert!(failed);
     expect_file![root().join("fixtures/bad/remote_cache/kiln.stderr")].assert_eq(&shown);
     let run =
-        crate::support::kiln(&["build", "fixtures/ubershader", "--remote-cache", "http://user:pw@host/kiln"]);
+        crate::support::kiln(&["check", "fixtures/ubershader", "--remote-cache", "http://user:pw@host/kiln"]);
     assert_eq!(run.status.code(), Some(1));
     assert!(stderr(&run).contains("credentials belong in KILN_REMOTE_CACHE_TOKEN"), "{}", stderr(&run));
     assert!(!stderr(&run).contains("pw@"), "the URL with its password is not echoed");
-    let run = crate::support::kiln(&["build", "fixtures/ubershader", "--remote-cache-mode", "sometimes"]);
+    let run = crate::support::kiln(&["check", "fixtures/ubershader", "--remote-cache-mode", "sometimes"]);
     assert_eq!(run.status.code(), Some(2), "clap refuses it");
 }
 
