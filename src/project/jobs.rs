@@ -240,9 +240,9 @@ fn load_given(
 
 /// The remote cache a build uses (docs/scaling.md): the URL given (`--remote-cache`), else
 /// `KILN_REMOTE_CACHE`, else the project's `remote_cache`; its mode given, else
-/// `KILN_REMOTE_CACHE_MODE`, else the project's `remote_cache_mode`, else `write`; each request
-/// limited to `KILN_REMOTE_CACHE_TIMEOUT` seconds (default 10). A setting kiln cannot use is an
-/// error (K0013) where it is written.
+/// `KILN_REMOTE_CACHE_MODE`, else the project's `remote_cache_mode`, else `write`; each step of
+/// a request limited to `KILN_REMOTE_CACHE_TIMEOUT` seconds (default 10). A setting kiln cannot
+/// use is an error (K0013) where it is written.
 fn remote_cache(workspace: &Workspace, mode: &BuildMode) -> Result<Option<RemoteConfig>, Diagnostic> {
     let invalid = |what: String, span: Option<crate::source::Span>| {
         let d = Diagnostic::error("K0013", format!("invalid remote cache setting: {what}"));

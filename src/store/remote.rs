@@ -58,7 +58,8 @@ pub struct RemoteConfig {
     pub url: String,
     /// Read, write or off.
     pub mode: RemoteMode,
-    /// How long one request may take.
+    /// How long each step of a request (connecting, sending, waiting for the answer, reading
+    /// it) may take.
     pub timeout: Duration,
 }
 
@@ -265,8 +266,15 @@ impl RemoteCache {
 
 impl Connection {
     fn new(config: RemoteConfig) -> Connection {
+        // A limit per step, not one for the whole call: with a global limit ureq resolves the
+        // host on a thread of its own for every request, pooled connection or not (ureq 3.5).
+        let limit = Some(config.timeout);
         let agent_config = ureq::Agent::config_builder()
-            .timeout_global(Some(config.timeout))
+            .timeout_connect(limit)
+            .timeout_send_request(limit)
+            .timeout_send_body(limit)
+            .timeout_recv_response(limit)
+            .timeout_recv_body(limit)
             .http_status_as_error(false)
             .max_idle_connections_per_host(64)
             .build();
