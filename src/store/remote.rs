@@ -10,8 +10,8 @@
 //! refused write ends writes, and each is one warning (K0620). Credentials come from the
 //! environment and are sent, never written anywhere else (docs/scaling.md).
 
-use super::cache::{ModuleBytes, sealed, unsealed};
-use super::shared::{object_bytes, parse_object};
+use super::cache::ModuleBytes;
+use super::shared::{joined_layouts, layouts_key, object_bytes, parse_layouts, parse_object};
 use crate::compile::bind::Declared;
 use crate::diagnostics::Diagnostic;
 use crate::manifest::PerBackend;
@@ -189,7 +189,7 @@ impl RemoteCache {
         let Answer::Found(bytes) = self.connection.get(&entry_path("layouts", &key)) else {
             return BTreeMap::new();
         };
-        unsealed(&key, &bytes).and_then(|json| serde_json::from_slice(json).ok()).unwrap_or_default()
+        parse_layouts(&key, &bytes).unwrap_or_default()
     }
 
     /// Publishes a pass's parsed resources, joined with what the server has for the pass (two
@@ -199,17 +199,8 @@ impl RemoteCache {
         if !self.connection.writable() {
             return;
         }
-        let mut all = self.read_layouts(pass);
-        let before = all.len();
-        for (text, declared) in layouts {
-            all.entry(text.clone()).or_insert_with(|| declared.clone());
-        }
-        if all.len() == before && before > 0 {
-            return;
-        }
-        let key = layouts_key(pass);
-        if let Ok(bytes) = sealed(&key, &all) {
-            self.upload(Upload::Entry { path: entry_path("layouts", &key), bytes });
+        if let Some(bytes) = joined_layouts(pass, self.read_layouts(pass), layouts) {
+            self.upload(Upload::Entry { path: entry_path("layouts", &layouts_key(pass)), bytes });
         }
     }
 
@@ -435,10 +426,6 @@ impl Connection {
 /// kind and key (bazel-remote takes only SHA-256 names).
 fn entry_path(kind: &str, key: &str) -> String {
     format!("ac/{}", sha256(format!("kiln {kind} {key}").as_bytes()))
-}
-
-fn layouts_key(pass: &str) -> String {
-    format!("layouts/{pass}")
 }
 
 /// Lower-case hexadecimal SHA-256.

@@ -149,39 +149,57 @@ fn layouts_path(folder: &Path, pass: &str) -> PathBuf {
     folder.join("layouts").join(format!("{pass}.json"))
 }
 
-/// What a pass's layouts are sealed under.
-fn layouts_key(pass: &str) -> String {
+/// What a pass's layouts are sealed under (in the shared folder and on a remote cache).
+pub(super) fn layouts_key(pass: &str) -> String {
     format!("layouts/{pass}")
+}
+
+/// A pass's layouts from bytes sealed under `key`, or none when they are not what was sealed.
+pub(super) fn parse_layouts(
+    key: &str,
+    bytes: &[u8],
+) -> Option<std::collections::BTreeMap<String, Vec<Declared>>> {
+    serde_json::from_slice(unsealed(key, bytes)?).ok()
+}
+
+/// What a store holds for a pass (`known`) joined with what a build parsed, sealed under the
+/// pass, or `None` when it adds nothing. Entries are by text hash, so joining is always right.
+pub(super) fn joined_layouts(
+    pass: &str,
+    mut known: std::collections::BTreeMap<String, Vec<Declared>>,
+    layouts: &std::collections::BTreeMap<String, Vec<Declared>>,
+) -> Option<Vec<u8>> {
+    let before = known.len();
+    for (text, declared) in layouts {
+        known.entry(text.clone()).or_insert_with(|| declared.clone());
+    }
+    if known.len() == before && before > 0 {
+        return None;
+    }
+    sealed(&layouts_key(pass), &known).ok()
 }
 
 /// A pass's parsed resources from the shared cache (empty when there are none or they are
 /// damaged).
 pub fn read_layouts(folder: &Path, pass: &str) -> std::collections::BTreeMap<String, Vec<Declared>> {
     let path = layouts_path(folder, pass);
-    let read = || serde_json::from_slice(unsealed(&layouts_key(pass), &std::fs::read(&path).ok()?)?).ok();
-    let found = read().unwrap_or_default();
+    let found =
+        std::fs::read(&path).ok().and_then(|b| parse_layouts(&layouts_key(pass), &b)).unwrap_or_default();
     touch(&path);
     found
 }
 
 /// Publishes a pass's parsed resources, joined with what the cache already has for the pass (the
-/// same file in another project, another variant set): entries are by text hash, so joining is
-/// always right; two builds publishing at once may lose each other's additions, a miss later.
+/// same file in another project, another variant set, [`joined_layouts`]); two builds publishing
+/// at once may lose each other's additions, a miss later.
 pub fn publish_layouts(
     folder: &Path,
     pass: &str,
     layouts: &std::collections::BTreeMap<String, Vec<Declared>>,
 ) {
-    let mut all = read_layouts(folder, pass);
-    let before = all.len();
-    for (text, declared) in layouts {
-        all.entry(text.clone()).or_insert_with(|| declared.clone());
+    if let Some(bytes) = joined_layouts(pass, read_layouts(folder, pass), layouts) {
+        let _ = write_atomically(&layouts_path(folder, pass), &bytes);
     }
-    if all.len() == before && before > 0 {
-        return;
-    }
-    let Ok(bytes) = sealed(&layouts_key(pass), &all) else { return };
-    let _ = write_atomically(&layouts_path(folder, pass), &bytes);
 }
 
 /// What `kiln cache stats` prints.
