@@ -14,7 +14,6 @@ use crate::catalog::{Catalog, CatalogShader, property_references};
 use crate::diagnostics::{self, Diagnostic};
 use crate::manifest::*;
 use crate::material::{Material, MaterialValue};
-use crate::preprocess::Stage;
 use crate::reflect::{Resource, UniformBlock};
 use crate::shaderlab::ast::Property;
 use crate::shaderlab::pragma::KeywordKind;
@@ -378,11 +377,7 @@ pub(super) fn pass_manifest(
             continue;
         };
         let reflection = &stage.reflection;
-        let name = match job.stage {
-            Stage::Vertex => ShaderStage::Vertex,
-            Stage::Fragment => ShaderStage::Fragment,
-            Stage::Compute => ShaderStage::Compute,
-        };
+        let name = job.stage.shader_stage();
         for b in &reflection.bindings {
             let entry = entries.entry((b.group, b.binding)).or_insert_with(|| LayoutEntry {
                 binding: b.binding,

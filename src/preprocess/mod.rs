@@ -53,6 +53,15 @@ impl Stage {
         }
     }
 
+    /// The manifest's name for it.
+    pub fn shader_stage(self) -> crate::manifest::ShaderStage {
+        match self {
+            Stage::Vertex => crate::manifest::ShaderStage::Vertex,
+            Stage::Fragment => crate::manifest::ShaderStage::Fragment,
+            Stage::Compute => crate::manifest::ShaderStage::Compute,
+        }
+    }
+
     /// Its name: `vertex` or `fragment`.
     pub fn name(self) -> &'static str {
         match self {

@@ -5,7 +5,6 @@ use super::Stage;
 use super::analysis::{analyze_keywords, pragma_sources};
 use super::include::{Includes, Program};
 use crate::diagnostics::Diagnostic;
-use crate::manifest::ShaderStage;
 use crate::shaderlab::ast::ProgramBlock;
 use crate::shaderlab::pragma::{KeywordKind, KeywordStage, ProgramPragmas, collect_pragmas};
 use crate::source::{SourceStore, Span};
@@ -153,11 +152,7 @@ pub fn keyword_macros<'a>(pragmas: &'a ProgramPragmas, on: &[&'a str]) -> Keywor
 /// `dynamic_branch` keyword's default). `None` when the pass has no `#pragma ubershader`.
 pub fn ubershader_macros(pragmas: &ProgramPragmas, stage: Stage) -> Option<KeywordMacros<'_>> {
     let pragma = pragmas.ubershader?;
-    let shader_stage = match stage {
-        Stage::Vertex => ShaderStage::Vertex,
-        Stage::Fragment => ShaderStage::Fragment,
-        Stage::Compute => ShaderStage::Compute,
-    };
+    let shader_stage = stage.shader_stage();
     let dynamic = DynamicKeyword::of(pragmas);
     let defines = pragmas.ubershader_keywords().into_iter().enumerate().map(|(bit, keyword)| {
         let mut sets = pragmas.keyword_sets.iter().filter(|set| set.keywords().any(|k| k == keyword));
