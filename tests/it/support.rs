@@ -265,6 +265,8 @@ pub fn cargo_scratch(krate: &Path, args: &[&str]) -> Output {
         .args(args)
         .current_dir(krate)
         .env("CARGO_TARGET_DIR", root().join("target/scratch-crates"))
+        // Debug info of a crate that is only compiled and run once would cost gigabytes of disk.
+        .env("CARGO_PROFILE_DEV_DEBUG", "false")
         .env_remove("RUSTFLAGS")
         .output()
         .expect("cargo runs")
