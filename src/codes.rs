@@ -112,6 +112,8 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0419", "names that clash in the generated Rust"),
     ("K0420", "path cargo cannot watch"),
     ("K0421", "expression too long"),
+    ("K0422", "construct a back end's language lacks"),
+    ("K0423", "written code glslang refuses"),
     ("K0501", "invalid material file"),
     ("K0502", "unknown shader"),
     ("K0503", "unknown property"),

@@ -113,7 +113,7 @@ impl Default for ProjectConfig {
             materials: vec![PathBuf::from(".")],
             include_paths: Vec::new(),
             output: PathBuf::from("build/kiln"),
-            backends: Backend::ALL.to_vec(),
+            backends: Backend::DEFAULT.to_vec(),
             always_include: Vec::new(),
             global_keywords: None,
             strict: false,

@@ -404,6 +404,24 @@ pub fn device() -> Result<Gpu, String> {
 /// [`device`] on these backends only.
 pub fn device_on(backends: wgpu::Backends) -> Result<Gpu, String> {
     let adapter = crate::runtime::adapter(backends).map_err(|e| e.to_string())?;
+    device_for(adapter, wgpu::Limits::default())
+}
+
+/// A device on wgpu's OpenGL back end (Mesa's llvmpipe through EGL in CI), with the limits the
+/// adapter has: [`crate::runtime::adapter`] passes GL by, as below WebGPU, but what kiln writes
+/// must still lay out and compute the same there (docs/backends.md).
+pub fn gl_device() -> Result<Gpu, String> {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends: wgpu::Backends::GL,
+        ..wgpu::InstanceDescriptor::new_without_display_handle_from_env()
+    });
+    let adapters = pollster::block_on(instance.enumerate_adapters(wgpu::Backends::GL));
+    let adapter = adapters.into_iter().next().ok_or("no OpenGL adapter (Debian: libegl1 libgl1-mesa-dri)")?;
+    let limits = adapter.limits();
+    device_for(adapter, limits)
+}
+
+fn device_for(adapter: wgpu::Adapter, limits: wgpu::Limits) -> Result<Gpu, String> {
     let info = adapter.get_info();
     let wanted = wgpu::Features::TIMESTAMP_QUERY
         | wgpu::Features::SHADER_F16
@@ -412,7 +430,7 @@ pub fn device_on(backends: wgpu::Backends) -> Result<Gpu, String> {
     let required_features = adapter.features() & wanted;
     // An ubershader's keywords (runtime::UBERSHADER_IMMEDIATE_SIZE), where the adapter has them.
     let immediates = adapter.limits().max_immediate_size.min(8);
-    let required_limits = wgpu::Limits { max_immediate_size: immediates, ..Default::default() };
+    let required_limits = wgpu::Limits { max_immediate_size: immediates, ..limits };
     let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
         required_features,
         required_limits,

@@ -42,9 +42,9 @@ const NAGA_VERSION: &str = "naga 30";
 /// layouts by the WGSL spec, a wider capability baseline; 3: `override` constants reflected, their
 /// modules WGSL only, compute kernels; 4: WGSL repaired where naga misspells it, modules naga's
 /// SPIR-V writer cannot write shipped WGSL only; 5: storage texture access reflected as WGSL's
-/// modes), so that a cache an earlier kiln of the
+/// modes; 6: MSL, HLSL and GLSL back ends), so that a cache an earlier kiln of the
 /// same version filled is not taken for current.
-const COMPILER_REVISION: u32 = 5;
+const COMPILER_REVISION: u32 = 6;
 
 /// What compiled a module, as the shared cache records it beside each object: kiln's version and
 /// revision and naga's. Made once: every object fetched or published names it.
@@ -113,6 +113,8 @@ pub struct BuildOptions {
     pub given_files: usize,
     /// The resource names the project adds to the per-frame and per-object bind groups.
     pub groups: crate::compile::bind::GroupNames,
+    /// Reads back the GLSL and HLSL each module is written in (`kiln check`, where installed).
+    pub glslang: Option<crate::compile::glslang::Glslang>,
 }
 
 impl BuildOptions {
@@ -134,7 +136,7 @@ impl BuildOptions {
             root,
             write,
             threads: Some(1),
-            backends: Backend::ALL.to_vec(),
+            backends: Backend::DEFAULT.to_vec(),
             unused_shaders: VariantSelection::Used,
             pretty_manifest: false,
             record: false,
@@ -143,6 +145,7 @@ impl BuildOptions {
             remote_cache: None,
             given_files: 0,
             groups: Default::default(),
+            glslang: None,
         }
     }
 }

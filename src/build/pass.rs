@@ -226,7 +226,9 @@ fn stage_key(job: &Job, declared: &[Declared], layout: &PassLayout, options: &Bu
         .iter()
         .filter_map(|d| layout.slots.get(&d.name).map(|(g, b)| format!("{}@{g}/{b}", d.name)))
         .collect();
-    let backends: Vec<&str> = options.backends.iter().map(|b| b.name()).collect();
+    let mut backends: Vec<&str> = options.backends.iter().map(|b| b.name()).collect();
+    // A module glslang read back is not one it did not: a check with it compiles anew.
+    backends.extend(options.glslang.as_ref().map(|g| g.version()));
     hash(
         format!(
             "{}\n{}\n{}\n{}\n{}\n{}\nkiln {} revision {COMPILER_REVISION}\n{NAGA_VERSION}",

@@ -254,6 +254,7 @@ impl Naga {
             allowed: &job.allowed,
             layout: ask.layout,
             backends: &pass.options.backends,
+            glslang: pass.options.glslang.as_ref(),
         };
         let output = stage::compile(module, &request, &mapper)?;
         let module = |bytes: Vec<u8>| ModuleBytes { hash: hash(&bytes), bytes };

@@ -49,7 +49,7 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
     let mut packs: PerBackend<BTreeMap<&str, u32>> = Default::default();
     for pass in manifest.passes() {
         for module in &pass.modules {
-            for &backend in Backend::ALL {
+            for backend in EMBEDDED {
                 if let Some(path) = module.file(backend).and_then(|f| pass.packs.get(f.pack)) {
                     packs[backend].insert(path, 0);
                 }
@@ -62,14 +62,14 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
         }
     }
     let include = |path: &str| string_literal(&format!("{packs_folder}/{path}"));
-    for (backend, numbered) in packs.iter() {
+    for (backend, numbered) in embedded(&packs) {
         let (name, element, include_pack, _) = embedding(backend);
-        if backend != Backend::ALL[0] {
+        if backend != EMBEDDED[0] {
             out.push_str("];\n");
         }
         let doc = match backend {
             Backend::Wgsl => "Every WGSL pack: a pass's compiled modules, concatenated.",
-            Backend::Spirv => "Every SPIR-V pack, aligned so that its modules read as words.",
+            _ => "Every SPIR-V pack, aligned so that its modules read as words.",
         };
         let _ = writeln!(out, "\n/// {doc}\nstatic {name}: [{element}; {}] = [", numbered.len());
         for path in numbered.keys() {
@@ -87,7 +87,7 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
     let _ = writeln!(out, "\n/// Every pack by its path in the manifest.");
     let count: usize = packs.values().map(BTreeMap::len).sum();
     let _ = writeln!(out, "pub static PACKS: [(&str, &[u8]); {count}] = [");
-    for (backend, numbered) in packs.iter() {
+    for (backend, numbered) in embedded(&packs) {
         let (_, _, _, bytes) = embedding(backend);
         for (n, path) in numbered.keys().enumerate() {
             let _ =
@@ -117,14 +117,24 @@ type VariantRow<'a> = (Vec<u64>, [Option<usize>; 2], &'a [Option<usize>]);
 /// The generated module's pack numbers, WGSL and SPIR-V, by path.
 type PackNumbers<'a> = PerBackend<BTreeMap<&'a str, u32>>;
 
+/// The back ends whose packs the generated module embeds: what wgpu loads. MSL, HLSL and GLSL
+/// packs are for renderers that load them through wgpu's passthrough modules, from the output
+/// folder (docs/manifest.md).
+const EMBEDDED: [Backend; 2] = [Backend::Wgsl, Backend::Spirv];
+
+/// The embedded back ends' packs, by number.
+fn embedded<'p, 'a>(
+    packs: &'p PackNumbers<'a>,
+) -> impl Iterator<Item = (Backend, &'p BTreeMap<&'a str, u32>)> {
+    EMBEDDED.iter().map(|&backend| (backend, &packs[backend]))
+}
+
 /// How the generated module embeds a back end's packs: the static's name, its element type, a
 /// pack's inclusion (`{}` its path) and pack `{n}` as bytes.
 fn embedding(backend: Backend) -> (&'static str, &'static str, &'static str, &'static str) {
     match backend {
         Backend::Wgsl => ("WGSL_PACKS", "&str", "include_str!({})", "WGSL_PACKS[{n}].as_bytes()"),
-        Backend::Spirv => {
-            ("SPIRV_PACKS", "&Aligned<[u8]>", "&Aligned(*include_bytes!({}))", "&SPIRV_PACKS[{n}].0")
-        }
+        _ => ("SPIRV_PACKS", "&Aligned<[u8]>", "&Aligned(*include_bytes!({}))", "&SPIRV_PACKS[{n}].0"),
     }
 }
 
@@ -243,7 +253,7 @@ fn pass_static(
         }
     };
     for module in &pass.modules {
-        let ranges: Vec<String> = Backend::ALL.iter().map(|&b| range(b, module.file(b))).collect();
+        let ranges: Vec<String> = EMBEDDED.iter().map(|&b| range(b, module.file(b))).collect();
         let _ = writeln!(out, "            [{}, {}],", module.interface, ranges.join(", "));
     }
     // Variants sorted by key, for binary search.

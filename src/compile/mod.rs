@@ -8,6 +8,8 @@
 //! - `stage.rs`: one stage module from parsed text to WGSL, SPIR-V and reflection.
 //! - `wgsl.rs`: WGSL out, repaired where naga's writer misspells a construct, so that it loads again.
 //! - `gaps.rs`: what naga's SPIR-V writer cannot write (a module with it ships as WGSL only).
+//! - `platforms.rs`: MSL, HLSL and GLSL through naga's writers with wgpu's options, for Metal,
+//!   DX12 and GL; `glslang.rs` reads the GLSL and HLSL back with Khronos' validator.
 //! - `messages.rs`: naga's validation errors with names instead of arena handles.
 //! - `panics.rs`: a panic while compiling one module caught as a value (K0416).
 //! - `spirv.rs`: corrections to naga's SPIR-V where it breaks a Vulkan rule (`SampleMask`).
@@ -17,9 +19,11 @@
 
 pub mod bind;
 mod gaps;
+pub mod glslang;
 mod layout;
 mod messages;
 mod panics;
+pub mod platforms;
 mod spirv;
 pub(crate) mod stage;
 pub mod target;

@@ -3,8 +3,10 @@
 
 use super::bind::{self, PassLayout};
 use super::gaps;
+use super::glslang::{Glslang, Reading};
 use super::layout;
 use super::panics::contain_panics;
+use super::platforms::{self, Refusal};
 use super::target::Allowed;
 use super::{Mapper, validate};
 use crate::diagnostics::Diagnostic;
@@ -30,6 +32,8 @@ pub(crate) struct StageRequest<'a> {
     pub allowed: &'a Allowed,
     pub layout: &'a PassLayout,
     pub backends: &'a [Backend],
+    /// Reads back the GLSL and HLSL written (`kiln check`, where it is installed).
+    pub glslang: Option<&'a Glslang>,
 }
 
 pub(crate) fn naga_stage(stage: Stage) -> naga::ShaderStage {
@@ -63,7 +67,8 @@ pub(crate) fn compile(
 
 /// Faults for the tests of what no valid input reaches: debug builds fail while compiling the
 /// entry point an environment variable names (`KILN_INJECT_PANIC` panics, for
-/// [`contain_panics`]; `KILN_INJECT_BACKEND_ERROR` makes the WGSL writer fail, K0409).
+/// [`contain_panics`]; `KILN_INJECT_BACKEND_ERROR` makes the WGSL writer fail, K0409;
+/// `KILN_INJECT_GLSLANG_ERROR` spoils the GLSL and HLSL glslang reads, K0423).
 fn injected(variable: &str, entry: &str) -> bool {
     cfg!(debug_assertions) && std::env::var(variable).is_ok_and(|name| name == entry)
 }
@@ -137,8 +142,9 @@ enum Written {
     Module(Vec<u8>),
     /// SPIR-V that naga cannot write right: the module ships without it (K0415).
     Gap(crate::reflect::SpirvGap),
-    /// Nothing, by design: naga's SPIR-V writer cannot express specialisation constants, so a
-    /// module with `override`s is WGSL only, specialised by wgpu when a pipeline is made.
+    /// Nothing, by design: naga's SPIR-V writer cannot express specialisation constants (nor can
+    /// MSL, HLSL or GLSL), so a module with `override`s is WGSL only, specialised by wgpu when a
+    /// pipeline is made.
     Nothing,
 }
 
@@ -177,7 +183,56 @@ fn write(
                 Err(gap) => Written::Gap(gap),
             })
         }
+        Backend::Msl | Backend::Hlsl | Backend::Glsl => write_platform(backend, module, info, request),
     }
+}
+
+/// A module in Metal's, DX12's or GL's language, read back by glslang where it is asked to. A
+/// module with `override`s is checked with their defaults but ships as WGSL (wgpu specialises
+/// it per pipeline), as for SPIR-V.
+fn write_platform(
+    backend: Backend,
+    module: &naga::Module,
+    info: &naga::valid::ModuleInfo,
+    request: &StageRequest,
+) -> Result<Written, Diagnostic> {
+    let language = platforms::language(backend);
+    let stage = naga_stage(request.stage);
+    let capabilities = request.allowed.capabilities();
+    let written =
+        contain_panics(|| platforms::write(backend, module, info, stage, request.entry, capabilities));
+    let at = |d: Diagnostic| d.at(request.entry_pragma, "compiling this entry point");
+    let mut text = match written {
+        Ok(Ok(Some(text))) => text,
+        Ok(Ok(None)) => return Ok(Written::Nothing),
+        Ok(Err(Refusal::Lacks(words))) => {
+            return Err(at(Diagnostic::error("K0422", format!("`{}` uses what {language} lacks: {words}", request.entry)))
+                .help(format!("remove `{backend}` from `backends`, or keep what it lacks out of the variants that ship there (a keyword)")));
+        }
+        Ok(Err(Refusal::Writer(message))) => return Err(at(backend_error(language, message))),
+        Err(panic) => {
+            return Err(at(Diagnostic::error("K0416", format!("naga's {language} writer panicked: {}", panic.message)))
+                .note(format!("the panic was at {}", panic.location))
+                .note("naga validated the module, so this is a bug in naga's back end; please report it with this variant's `kiln preprocess` output (https://github.com/gfx-rs/wgpu/issues)"));
+        }
+    };
+    if injected("KILN_INJECT_GLSLANG_ERROR", request.entry) {
+        text.text.push_str("\n#error fault injected by KILN_INJECT_GLSLANG_ERROR\n");
+    }
+    let reading = request
+        .glslang
+        .filter(|_| Glslang::reads(backend))
+        .map(|g| g.read(backend, stage, &text.entry, &text.text));
+    match reading {
+        Some(Reading::Refused(errors)) => {
+            return Err(at(Diagnostic::error("K0423", format!("glslang refuses the {language} naga wrote for `{}`", request.entry)))
+                .note(errors)
+                .note("naga validated the module and wrote it without error, so this is a gap in naga's back end; please report it (https://github.com/gfx-rs/wgpu/issues)"));
+        }
+        // glslang's trouble, not the module's: the module ships unread, as without glslang.
+        Some(Reading::Unread(_)) | Some(Reading::Accepted) | None => {}
+    }
+    Ok(if module.overrides.is_empty() { Written::Module(text.text.into_bytes()) } else { Written::Nothing })
 }
 
 /// The entry point or function of `module` whose name is within two edits of `name` (a

@@ -1,6 +1,7 @@
 //! The back ends kiln writes stage modules for, and one value per back end. Adding a back end:
-//! its line in [`Backend`] and its pack extension, its writer in `compile/stage.rs::write`, its
-//! field in [`super::ModuleManifest`] (the schema names each), and docs/manifest.md.
+//! its line in [`Backend`] and its pack extension, its writer in `compile/stage.rs::write` (or
+//! `compile/platforms.rs` for a language a wgpu back end translates to), its field in
+//! [`super::ModuleManifest`] (the schema names each), and docs/manifest.md.
 
 use serde::{Deserialize, Serialize};
 
@@ -12,6 +13,12 @@ closed_set! {
         Wgsl = "wgsl",
         /// SPIR-V binary, for Vulkan.
         Spirv = "spirv",
+        /// Metal Shading Language 2.4 source, as wgpu's Metal back end has naga write it.
+        Msl = "msl",
+        /// HLSL source for shader model 5.1, as wgpu's DX12 back end has naga write it.
+        Hlsl = "hlsl",
+        /// GLSL ES 3.00 source, for WebGL2 and wgpu's GL back end.
+        Glsl = "glsl",
     }
 }
 
@@ -19,11 +26,17 @@ impl Backend {
     /// How many there are.
     pub const COUNT: usize = Backend::ALL.len();
 
+    /// What a project writes when `kiln.toml` does not say: what wgpu loads (WGSL, SPIR-V).
+    pub const DEFAULT: &'static [Backend] = &[Backend::Wgsl, Backend::Spirv];
+
     /// The extension of the packs its modules are written to.
     pub fn pack_extension(self) -> &'static str {
         match self {
             Backend::Wgsl => "wgsl.pack",
             Backend::Spirv => "spv.pack",
+            Backend::Msl => "metal.pack",
+            Backend::Hlsl => "hlsl.pack",
+            Backend::Glsl => "glsl.pack",
         }
     }
 

@@ -518,6 +518,15 @@ pub struct ModuleManifest {
     pub wgsl: Option<ModuleFile>,
     /// Its SPIR-V, if that back end was written.
     pub spirv: Option<ModuleFile>,
+    /// Its Metal Shading Language, if that back end was written (absent otherwise).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub msl: Option<ModuleFile>,
+    /// Its HLSL, if that back end was written (absent otherwise).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub hlsl: Option<ModuleFile>,
+    /// Its GLSL ES 3.00, if that back end was written (absent otherwise).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub glsl: Option<ModuleFile>,
 }
 
 impl ModuleManifest {
@@ -526,6 +535,9 @@ impl ModuleManifest {
         match backend {
             Backend::Wgsl => self.wgsl.as_ref(),
             Backend::Spirv => self.spirv.as_ref(),
+            Backend::Msl => self.msl.as_ref(),
+            Backend::Hlsl => self.hlsl.as_ref(),
+            Backend::Glsl => self.glsl.as_ref(),
         }
     }
 
@@ -540,8 +552,16 @@ impl ModuleManifest {
         features: Vec<String>,
         mut files: PerBackend<Option<ModuleFile>>,
     ) -> ModuleManifest {
-        let (wgsl, spirv) = (files[Backend::Wgsl].take(), files[Backend::Spirv].take());
-        ModuleManifest { interface, features, wgsl, spirv }
+        let mut take = |backend| files[backend].take();
+        ModuleManifest {
+            interface,
+            features,
+            wgsl: take(Backend::Wgsl),
+            spirv: take(Backend::Spirv),
+            msl: take(Backend::Msl),
+            hlsl: take(Backend::Hlsl),
+            glsl: take(Backend::Glsl),
+        }
     }
 }
 

@@ -132,8 +132,11 @@ impl<'a> KeywordMacros<'a> {
 pub const MAX_UBERSHADER_KEYWORDS: usize = 64;
 
 /// What an ubershader's text declares: the bits of the keywords on, in
-/// [`ProgramPragmas::ubershader_keywords`] order, as immediate data the draw sets.
-pub const UBERSHADER_DATA: &str = "var<immediate> kiln_keywords: vec2<u32>;";
+/// [`ProgramPragmas::ubershader_keywords`] order, as immediate data the draw sets. A struct, not
+/// a bare `vec2<u32>`: naga's HLSL writer refuses immediate data of any other type
+/// (gfx-rs/wgpu#5683), which `kiln check --backends hlsl` found.
+pub const UBERSHADER_DATA: &str =
+    "struct KilnKeywords { bits: vec2<u32> } var<immediate> kiln_keywords: KilnKeywords;";
 
 /// The macros a variant's `stage` is preprocessed with, `on` being the stage's keywords on. In a
 /// pass with `#pragma ubershader`, every variant keyword is a macro, `true` or `false`, so that
@@ -160,7 +163,7 @@ pub fn ubershader_macros(pragmas: &ProgramPragmas, stage: Stage) -> Option<Keywo
         let seen = stage == Stage::Compute || sets.any(|set| set.stage.includes(shader_stage));
         let value = if seen {
             let word = if bit < 32 { 'x' } else { 'y' };
-            Cow::Owned(format!("((kiln_keywords.{word} & {:#x}u) != 0u)", 1u32 << (bit % 32)))
+            Cow::Owned(format!("((kiln_keywords.bits.{word} & {:#x}u) != 0u)", 1u32 << (bit % 32)))
         } else {
             let on = dynamic.iter().any(|d| d.name == keyword && d.default_on);
             Cow::Borrowed(if on { "true" } else { "false" })

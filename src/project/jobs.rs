@@ -7,7 +7,9 @@ use super::workspace::{
 };
 use crate::build::{BuildOptions, BuildResult, Part, VariantSelection, build};
 use crate::catalog::{Catalog, CatalogInput, catalog};
+use crate::compile::glslang::Glslang;
 use crate::diagnostics::{self, Diagnostic};
+use crate::manifest::Backend;
 use crate::preprocess::Includes;
 use crate::source::{SourceStore, Span, Spanned};
 use crate::store::remote::{RemoteConfig, RemoteMode, check_url};
@@ -63,6 +65,8 @@ pub struct BuildMode {
     /// What the build may do with it; else `KILN_REMOTE_CACHE_MODE`, else the project's
     /// `remote_cache_mode`, else `write`.
     pub remote_cache_mode: Option<RemoteMode>,
+    /// Back ends written (or checked) besides the project's `backends` (`--backends`).
+    pub backends: Vec<Backend>,
 }
 
 impl Default for BuildMode {
@@ -81,6 +85,7 @@ impl Default for BuildMode {
             fallback_cache_dir: None,
             remote_cache: None,
             remote_cache_mode: None,
+            backends: Vec::new(),
         }
     }
 }
@@ -220,7 +225,11 @@ fn load_given(
         root: workspace.root.clone(),
         write: mode.write,
         threads: mode.threads,
-        backends: workspace.backends.clone(),
+        backends: Backend::ALL
+            .iter()
+            .copied()
+            .filter(|b| workspace.backends.contains(b) || mode.backends.contains(b))
+            .collect(),
         unused_shaders: mode.unused_shaders,
         pretty_manifest: mode.pretty_manifest,
         record: true,
@@ -234,7 +243,11 @@ fn load_given(
         }),
         given_files: store.files_read().count(),
         groups: workspace.groups.clone(),
+        glslang: None,
     };
+    // A check reads the GLSL and HLSL it writes back with glslang, where it is installed.
+    let reread = !options.write && options.backends.iter().any(|&b| Glslang::reads(b));
+    let options = BuildOptions { glslang: reread.then(Glslang::find).flatten(), ..options };
     Ok(Given { workspace, includes, input, diagnostics, options })
 }
 

@@ -5,6 +5,7 @@
 static ALLOCATOR: support::CountingAllocator = support::CountingAllocator;
 
 mod accuracy;
+mod backends;
 mod bad;
 mod build;
 mod cache;

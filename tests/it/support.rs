@@ -77,6 +77,24 @@ pub fn gpu(test: &str) -> Option<kiln::accuracy::gpu::Gpu> {
     }
 }
 
+/// A device on wgpu's OpenGL back end (Mesa's llvmpipe through EGL in CI), or `None` with the
+/// reason reported; `KILN_REQUIRE_GPU=1` makes a missing one a failure.
+pub fn gl_gpu(test: &str) -> Option<kiln::accuracy::gpu::Gpu> {
+    match kiln::accuracy::gpu::gl_device() {
+        Ok(gpu) => Some(gpu),
+        Err(reason) => {
+            assert!(
+                std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
+                "KILN_REQUIRE_GPU=1 but {reason}"
+            );
+            skipped(&format!(
+                "{test}: {reason}; Mesa's OpenGL runs it: apt-get install libegl1 libgl1-mesa-dri"
+            ));
+            None
+        }
+    }
+}
+
 /// Whether to run a test that compiles a crate depending on kiln with cargo (a renderer built
 /// from the docs with wgpu, a build script's crate): on 2 cores their first run compiles kiln
 /// and wgpu once more, about 7 minutes. `KILN_CRATE_TESTS=1` (set by CI, implied by

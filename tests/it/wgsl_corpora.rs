@@ -201,6 +201,10 @@ struct Report {
     no_entry_point: usize,
     spirv_modules: usize,
     wgsl_modules: usize,
+    /// Per back end (MSL, HLSL, GLSL): the files it writes whole, and kiln's diagnostics for the
+    /// rest by code (K0422 what the language lacks, K0409 a writer error, K0416 a writer panic,
+    /// K0423 glslang refusing what naga wrote).
+    backends: BTreeMap<&'static str, (usize, BTreeMap<&'static str, usize>)>,
     failures: Vec<String>,
 }
 
@@ -345,7 +349,52 @@ fn judge(corpus: &Corpus, spirv_val: bool) -> Report {
     });
     report.failures.extend(failures.into_inner().expect("lock"));
     (report.spirv_modules, report.wgsl_modules) = counts.into_inner().expect("lock");
+    report.backends = other_backends(&accepted, &mut report.failures);
     report
+}
+
+/// The files of the project at `accepted` (each builds in WGSL and SPIR-V) checked in each other
+/// back end on its own (a module's first failing back end would hide the rest), glslang reading
+/// the GLSL and HLSL back where it is installed.
+fn other_backends(
+    accepted: &Path,
+    failures: &mut Vec<String>,
+) -> BTreeMap<&'static str, (usize, BTreeMap<&'static str, usize>)> {
+    use kiln::manifest::Backend;
+    let mut counts = BTreeMap::new();
+    for backend in [Backend::Msl, Backend::Hlsl, Backend::Glsl] {
+        let mut store = SourceStore::new();
+        let mode = BuildMode {
+            write: false,
+            backends: vec![backend],
+            unused_shaders: VariantSelection::All { limit: 16 },
+            ..BuildMode::default()
+        };
+        let (result, mut diagnostics) =
+            build_project(&mut store, &[accepted.to_path_buf()], &mode, &|_, _| {}).expect("project");
+        diagnostics.extend(result.diagnostics);
+        let mut codes: BTreeMap<&'static str, usize> = BTreeMap::new();
+        let mut refused = std::collections::BTreeSet::new();
+        for d in diagnostics.iter().filter(|d| d.severity == kiln::diagnostics::Severity::Error) {
+            if !["K0409", "K0416", "K0422", "K0423"].contains(&d.code) {
+                failures.push(format!(
+                    "{backend}: {}",
+                    kiln::diagnostics::render_plain(&store, std::slice::from_ref(d))
+                ));
+            }
+            *codes.entry(d.code).or_default() += 1;
+            refused.extend(d.primary.as_ref().map(|p| p.span.file));
+        }
+        let wrappers = std::fs::read_dir(accepted)
+            .expect("folder")
+            .filter(|e| {
+                e.as_ref()
+                    .is_ok_and(|e| e.path().extension().is_some_and(|x| x == "shader" || x == "compute"))
+            })
+            .count();
+        counts.insert(backend.name(), (wrappers - refused.len(), codes));
+    }
+    counts
 }
 
 /// Whether a WGSL module kiln wrote parses and validates again in naga, as wgpu would load it.
@@ -374,6 +423,16 @@ fn check_corpus(corpus: &Corpus, test: &str, at_least: usize) {
         report.wgsl_modules,
         report.spirv_modules,
     );
+    let mut table = String::new();
+    for (backend, (whole, codes)) in &report.backends {
+        let _ = writeln!(table, "{backend}: {whole} shaders written whole; diagnostics {codes:?}");
+    }
+    print!("{table}");
+    if tool("glslangValidator", "glslang-tools", test) {
+        // Pinned where glslang reads the GLSL and HLSL back, as in CI (docs/backends.md).
+        let golden = format!("tests/golden/backends/{}.txt", corpus.label.to_lowercase());
+        expect_test::expect_file![root().join(golden)].assert_eq(&table);
+    }
     assert!(
         report.failures.is_empty(),
         "{} failures:\n{}",

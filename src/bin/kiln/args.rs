@@ -39,6 +39,19 @@ pub struct ProjectArgs {
     /// (also `KILN_REMOTE_CACHE_MODE`, `remote_cache_mode` in kiln.toml; default: write).
     #[arg(long, value_enum, value_name = "MODE")]
     pub remote_cache_mode: Option<RemoteCacheMode>,
+    /// Also write these back ends (`check`: also check them), besides kiln.toml's `backends`:
+    /// comma-separated, of wgsl, spirv, msl, hlsl, glsl (docs/backends.md).
+    #[arg(long, value_delimiter = ',', value_parser = backend, value_name = "LIST")]
+    pub backends: Vec<kiln::manifest::Backend>,
+}
+
+/// A back end by its name in `kiln.toml`.
+fn backend(name: &str) -> Result<kiln::manifest::Backend, String> {
+    let all = kiln::manifest::Backend::ALL;
+    all.iter().copied().find(|b| b.name() == name).ok_or_else(|| {
+        let names: Vec<&str> = all.iter().map(|b| b.name()).collect();
+        format!("no back end `{name}`; kiln writes {}", names.join(", "))
+    })
 }
 
 /// `--remote-cache-mode`.
@@ -62,6 +75,7 @@ impl ProjectArgs {
             variant_logs: self.variants_from,
             cache_dir: self.cache_dir,
             remote_cache: self.remote_cache,
+            backends: self.backends,
             remote_cache_mode: self.remote_cache_mode.map(|mode| match mode {
                 RemoteCacheMode::Read => kiln::store::remote::RemoteMode::Read,
                 RemoteCacheMode::Write => kiln::store::remote::RemoteMode::Write,
