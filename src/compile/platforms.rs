@@ -130,7 +130,7 @@ impl Slots {
         let mut bound: Vec<(ResourceBinding, SlotKind)> = module
             .global_variables
             .iter()
-            .filter_map(|(_, g)| Some((g.binding.clone()?, slot_kind(module, g)?)))
+            .filter_map(|(_, g)| Some((g.binding?, slot_kind(module, g)?)))
             .collect();
         bound.sort_by_key(|(b, _)| (b.group, b.binding));
         // Metal counts buffers, textures and samplers; GL counts each of five kinds. Both are
@@ -172,7 +172,7 @@ impl Slots {
                 };
                 let slot = *counter;
                 *counter += 1;
-                (binding.clone(), *kind, slot)
+                (*binding, *kind, slot)
             })
             .collect()
     }
@@ -296,7 +296,7 @@ fn glsl(
     let options = glsl::Options {
         version: GLSL_VERSION,
         writer_flags: glsl::WriterFlags::ADJUST_COORDINATE_SPACE | glsl::WriterFlags::FORCE_POINT_SIZE,
-        binding_map: slots.resources.iter().map(|(b, _, slot)| (b.clone(), *slot as u8)).collect(),
+        binding_map: slots.resources.iter().map(|(b, _, slot)| (*b, *slot as u8)).collect(),
         zero_initialize_workgroup_memory: true,
     };
     let pipeline =
