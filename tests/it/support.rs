@@ -62,34 +62,35 @@ pub fn assert_pinned(fixture: &Path, store: &SourceStore, diagnostics: &[Diagnos
 /// A GPU device (lavapipe in CI), or `None` with the reason reported. `KILN_REQUIRE_GPU=1` (set
 /// by CI) makes a missing adapter a failure instead.
 pub fn gpu(test: &str) -> Option<kiln::accuracy::gpu::Gpu> {
-    match kiln::accuracy::gpu::device() {
-        Ok(gpu) => Some(gpu),
-        Err(reason) => {
-            assert!(
-                std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
-                "KILN_REQUIRE_GPU=1 but {reason}"
-            );
-            skipped(&format!(
-                "{test}: {reason}; lavapipe runs them: apt-get install mesa-vulkan-drivers libvulkan1"
-            ));
-            None
-        }
-    }
+    device_or_skip(
+        test,
+        kiln::accuracy::gpu::device(),
+        "lavapipe runs them: apt-get install mesa-vulkan-drivers libvulkan1",
+    )
 }
 
-/// A device on wgpu's OpenGL back end (Mesa's llvmpipe through EGL in CI), or `None` with the
-/// reason reported; `KILN_REQUIRE_GPU=1` makes a missing one a failure.
+/// A device on wgpu's OpenGL back end (Mesa's llvmpipe through EGL in CI), as [`gpu`] gives one.
 pub fn gl_gpu(test: &str) -> Option<kiln::accuracy::gpu::Gpu> {
-    match kiln::accuracy::gpu::gl_device() {
+    device_or_skip(
+        test,
+        kiln::accuracy::gpu::gl_device(),
+        "Mesa's OpenGL runs it: apt-get install libegl1 libgl1-mesa-dri",
+    )
+}
+
+fn device_or_skip(
+    test: &str,
+    device: Result<kiln::accuracy::gpu::Gpu, String>,
+    install: &str,
+) -> Option<kiln::accuracy::gpu::Gpu> {
+    match device {
         Ok(gpu) => Some(gpu),
         Err(reason) => {
             assert!(
                 std::env::var("KILN_REQUIRE_GPU").as_deref() != Ok("1"),
                 "KILN_REQUIRE_GPU=1 but {reason}"
             );
-            skipped(&format!(
-                "{test}: {reason}; Mesa's OpenGL runs it: apt-get install libegl1 libgl1-mesa-dri"
-            ));
+            skipped(&format!("{test}: {reason}; {install}"));
             None
         }
     }
