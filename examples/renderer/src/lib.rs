@@ -189,6 +189,30 @@ pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
     let backends = wgpu::Backends::from_env().unwrap_or_default();
     let adapter = kiln::runtime::adapter(backends)
         .map_err(|e| format!("{e}; lavapipe runs it: apt-get install mesa-vulkan-drivers libvulkan1"))?;
+    device_on(adapter, wgpu::Limits::default())
+}
+
+/// A device on wgpu's OpenGL back end (Mesa's llvmpipe through EGL in CI), with the adapter's
+/// own limits: kiln's run time passes such an adapter by as below WebGPU, but the scene must
+/// still draw the same there (docs/backends.md).
+pub fn gl_device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends: wgpu::Backends::GL,
+        ..wgpu::InstanceDescriptor::new_without_display_handle_from_env()
+    });
+    let adapters = pollster::block_on(instance.enumerate_adapters(wgpu::Backends::GL));
+    let adapter = adapters
+        .into_iter()
+        .next()
+        .ok_or("no OpenGL adapter; Mesa's runs it: apt-get install libegl1 libgl1-mesa-dri")?;
+    let limits = adapter.limits();
+    device_on(adapter, limits)
+}
+
+fn device_on(
+    adapter: wgpu::Adapter,
+    limits: wgpu::Limits,
+) -> Result<(wgpu::Device, wgpu::Queue, String), String> {
     let name = adapter.get_info().name;
     let descriptor = wgpu::DeviceDescriptor {
         required_features: adapter.features()
@@ -202,7 +226,7 @@ pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
                 .limits()
                 .max_immediate_size
                 .min(kiln::runtime::UBERSHADER_IMMEDIATE_SIZE),
-            ..wgpu::Limits::default()
+            ..limits
         },
         ..wgpu::DeviceDescriptor::default()
     };

@@ -14,7 +14,18 @@ const MEAN_ERROR: f64 = 0.003;
 
 #[test]
 fn the_scene_matches_the_f64_reference() {
-    let Some((device, queue, adapter)) = common::gpu("the render test") else { return };
+    let Some(gpu) = common::gpu("the render test") else { return };
+    matches_the_f64_reference(gpu);
+}
+
+/// The same scene through wgpu's OpenGL back end, where wgpu has naga write GLSL from kiln's WGSL.
+#[test]
+fn the_scene_matches_the_f64_reference_on_wgpu_s_gl_back_end() {
+    let Some(gpu) = common::gl_gpu("the render test on GL") else { return };
+    matches_the_f64_reference(gpu);
+}
+
+fn matches_the_f64_reference((device, queue, adapter): (wgpu::Device, wgpu::Queue, String)) {
     let scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
     let image = render(&device, &queue, &scene).expect("renders");
     let (colors, edge) = reference(&scene);

@@ -9,7 +9,20 @@ pub fn skipped(what: &str) {
 
 /// Skips (with the reason printed) when there is no adapter, unless CI requires one.
 pub fn gpu(test: &str) -> Option<(wgpu::Device, wgpu::Queue, String)> {
-    match kiln_renderer::device() {
+    device_or_skip(test, kiln_renderer::device())
+}
+
+/// [`gpu`] on wgpu's OpenGL back end.
+#[allow(dead_code)]
+pub fn gl_gpu(test: &str) -> Option<(wgpu::Device, wgpu::Queue, String)> {
+    device_or_skip(test, kiln_renderer::gl_device())
+}
+
+fn device_or_skip(
+    test: &str,
+    device: Result<(wgpu::Device, wgpu::Queue, String), String>,
+) -> Option<(wgpu::Device, wgpu::Queue, String)> {
+    match device {
         Ok(found) => Some(found),
         Err(reason) => {
             assert!(
