@@ -227,7 +227,7 @@ fn write_platform(
         Some(Reading::Refused(errors)) => {
             return Err(at(Diagnostic::error("K0423", format!("glslang refuses the {language} naga wrote for `{}`", request.entry)))
                 .note(errors)
-                .note("naga validated the module and wrote it without error, so this is a gap in naga's back end; please report it (https://github.com/gfx-rs/wgpu/issues)"));
+                .note("naga validated the module and wrote it without error: a gap in naga's writer (report it: https://github.com/gfx-rs/wgpu/issues), or, for HLSL, in glslang's HLSL front end (docs/backends.md)"));
         }
         // glslang's trouble, not the module's: the module ships unread, as without glslang.
         Some(Reading::Unread(_)) | Some(Reading::Accepted) | None => {}
