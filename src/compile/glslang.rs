@@ -142,12 +142,16 @@ impl Glslang {
             return Reading::Accepted;
         }
         let errors: Vec<&str> = said.lines().filter(|l| l.starts_with("ERROR")).take(5).collect();
+        // No error of its own: glslang failed (its memory limit, a crash), not the module.
+        if errors.is_empty() {
+            return Reading::Unread(format!("glslangValidator failed without an error ({status})"));
+        }
         if backend == Backend::Hlsl
             && let Some(first) = errors.first()
             && GLSLANG_HLSL_GAPS.iter().any(|gap| first.contains(gap))
         {
             return Reading::Accepted;
         }
-        Reading::Refused(if errors.is_empty() { said.trim().to_string() } else { errors.join("\n") })
+        Reading::Refused(errors.join("\n"))
     }
 }
