@@ -411,12 +411,8 @@ pub fn device_on(backends: wgpu::Backends) -> Result<Gpu, String> {
 /// adapter has: [`crate::runtime::adapter`] passes GL by, as below WebGPU, but what kiln writes
 /// must still lay out and compute the same there (docs/backends.md).
 pub fn gl_device() -> Result<Gpu, String> {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
-        backends: wgpu::Backends::GL,
-        ..wgpu::InstanceDescriptor::new_without_display_handle_from_env()
-    });
-    let adapters = pollster::block_on(instance.enumerate_adapters(wgpu::Backends::GL));
-    let adapter = adapters.into_iter().next().ok_or("no OpenGL adapter (Debian: libegl1 libgl1-mesa-dri)")?;
+    let adapter = crate::runtime::gl_adapter()
+        .map_err(|e| format!("{e}: no OpenGL adapter (Debian: libegl1 libgl1-mesa-dri)"))?;
     let limits = adapter.limits();
     device_for(adapter, limits)
 }

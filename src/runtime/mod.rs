@@ -18,7 +18,7 @@ mod ubershader;
 mod uniforms;
 
 pub use crate::manifest::{FRAME_GROUP, OBJECT_GROUP};
-pub use adapter::{AdapterError, adapter};
+pub use adapter::{AdapterError, adapter, gl_adapter};
 pub use compute::{Kernel, KernelRequest};
 pub use driver_cache::CacheFile;
 pub use layout::{LayoutError, PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};

@@ -196,15 +196,8 @@ pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
 /// own limits: kiln's run time passes such an adapter by as below WebGPU, but the scene must
 /// still draw the same there (docs/backends.md).
 pub fn gl_device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
-        backends: wgpu::Backends::GL,
-        ..wgpu::InstanceDescriptor::new_without_display_handle_from_env()
-    });
-    let adapters = pollster::block_on(instance.enumerate_adapters(wgpu::Backends::GL));
-    let adapter = adapters
-        .into_iter()
-        .next()
-        .ok_or("no OpenGL adapter; Mesa's runs it: apt-get install libegl1 libgl1-mesa-dri")?;
+    let adapter = kiln::runtime::gl_adapter()
+        .map_err(|e| format!("{e}; Mesa's OpenGL runs it: apt-get install libegl1 libgl1-mesa-dri"))?;
     let limits = adapter.limits();
     device_on(adapter, limits)
 }
