@@ -115,66 +115,59 @@ pub enum SlotKind {
     Sampler,
 }
 
-/// The resources a module uses, in (group, binding) order, each with its kind and its slot
-/// among those of its API's kind.
+/// The resources a module uses, in (group, binding) order, each with its kind.
 pub struct Slots {
-    /// (binding, kind, slot).
-    pub resources: Vec<(ResourceBinding, SlotKind, u32)>,
-    /// How many buffer slots Metal uses (uniform and storage together).
-    pub metal_buffers: u32,
+    resources: Vec<(ResourceBinding, SlotKind)>,
 }
 
 impl Slots {
-    /// The slots of the resources `module` declares: Metal's and GL's numbering.
+    /// The resources `module` declares.
     pub fn of(module: &naga::Module) -> Slots {
-        let mut bound: Vec<(ResourceBinding, SlotKind)> = module
+        let mut resources: Vec<(ResourceBinding, SlotKind)> = module
             .global_variables
             .iter()
             .filter_map(|(_, g)| Some((g.binding?, slot_kind(module, g)?)))
             .collect();
-        bound.sort_by_key(|(b, _)| (b.group, b.binding));
-        // Metal counts buffers, textures and samplers; GL counts each of five kinds. Both are
-        // kept: the slot is Metal's for buffers, GL's otherwise (a texture is both).
-        let (mut metal_buffers, mut uniforms, mut storages, mut textures, mut images, mut samplers) =
-            (0, 0, 0, 0, 0, 0);
-        let resources = bound
-            .into_iter()
-            .map(|(binding, kind)| {
-                let counter = match kind {
-                    SlotKind::Uniform => &mut uniforms,
-                    SlotKind::Storage { .. } => &mut storages,
-                    SlotKind::Texture => &mut textures,
-                    SlotKind::StorageTexture { .. } => &mut images,
-                    SlotKind::Sampler => &mut samplers,
+        resources.sort_by_key(|(b, _)| (b.group, b.binding));
+        Slots { resources }
+    }
+
+    /// Each resource with its slot, counted apart for each class `class` puts kinds in.
+    fn numbered<C: PartialEq + Copy>(
+        &self,
+        class: impl Fn(SlotKind) -> C,
+    ) -> Vec<(ResourceBinding, SlotKind, u32)> {
+        let mut counts: Vec<(C, u32)> = Vec::new();
+        self.resources
+            .iter()
+            .map(|&(binding, kind)| {
+                let slot = match counts.iter_mut().find(|(c, _)| *c == class(kind)) {
+                    Some((_, count)) => count,
+                    None => {
+                        counts.push((class(kind), 0));
+                        &mut counts.last_mut().expect("just pushed").1
+                    }
                 };
-                let slot = *counter;
-                *counter += 1;
-                if matches!(kind, SlotKind::Uniform | SlotKind::Storage { .. }) {
-                    metal_buffers += 1;
-                }
-                (binding, kind, slot)
+                let at = *slot;
+                *slot += 1;
+                (binding, kind, at)
             })
-            .collect();
-        Slots { resources, metal_buffers }
+            .collect()
     }
 
     /// Metal's slots: buffers numbered together, textures (sampled and storage) together,
     /// samplers.
     fn metal(&self) -> Vec<(ResourceBinding, SlotKind, u32)> {
-        let (mut buffers, mut textures, mut samplers) = (0, 0, 0);
-        self.resources
-            .iter()
-            .map(|(binding, kind, _)| {
-                let counter = match kind {
-                    SlotKind::Uniform | SlotKind::Storage { .. } => &mut buffers,
-                    SlotKind::Texture | SlotKind::StorageTexture { .. } => &mut textures,
-                    SlotKind::Sampler => &mut samplers,
-                };
-                let slot = *counter;
-                *counter += 1;
-                (*binding, *kind, slot)
-            })
-            .collect()
+        self.numbered(|kind| match kind {
+            SlotKind::Uniform | SlotKind::Storage { .. } => 0,
+            SlotKind::Texture | SlotKind::StorageTexture { .. } => 1,
+            SlotKind::Sampler => 2,
+        })
+    }
+
+    /// GL's slots: each of the five kinds numbered apart, as wgpu's GL back end binds them.
+    fn gl(&self) -> Vec<(ResourceBinding, SlotKind, u32)> {
+        self.numbered(|kind| std::mem::discriminant(&kind))
     }
 }
 
@@ -210,7 +203,8 @@ fn msl(
     use naga::back::msl;
     let mut resources = msl::EntryPointResources::default();
     let mut storage = false;
-    for (binding, kind, slot) in slots.metal() {
+    let metal = slots.metal();
+    for &(binding, kind, slot) in &metal {
         let slot = slot as u8;
         let mut target = msl::BindTarget::default();
         match kind {
@@ -230,7 +224,9 @@ fn msl(
         resources.resources.insert(binding, target);
     }
     // wgpu passes storage buffers' sizes, and immediate data, in buffers after the bound ones.
-    let mut next = slots.metal_buffers as u8;
+    let buffers =
+        metal.iter().filter(|(_, kind, _)| matches!(kind, SlotKind::Uniform | SlotKind::Storage { .. }));
+    let mut next = buffers.count() as u8;
     if storage {
         resources.sizes_buffer = Some(next);
         next += 1;
@@ -296,7 +292,7 @@ fn glsl(
     let options = glsl::Options {
         version: GLSL_VERSION,
         writer_flags: glsl::WriterFlags::ADJUST_COORDINATE_SPACE | glsl::WriterFlags::FORCE_POINT_SIZE,
-        binding_map: slots.resources.iter().map(|(b, _, slot)| (*b, *slot as u8)).collect(),
+        binding_map: slots.gl().into_iter().map(|(b, _, slot)| (b, slot as u8)).collect(),
         zero_initialize_workgroup_memory: true,
     };
     let pipeline =
