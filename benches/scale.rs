@@ -5,12 +5,13 @@
 //! measures: naga alone (parse, validate, WGSL and SPIR-V) on the very stage texts kiln compiles;
 //! kiln's cold build; a no-op rebuild; a rebuild after touching one include; kiln's peak memory in
 //! the cold and the no-op build; the manifest's bytes per variant and the generated Rust's size.
-//! `-- generate N DIR` only writes the project of N variants. `-- compute 1000` builds a project of
+//! `-- generate N DIR` only writes the project of N variants; `-- rust OUTPUT FILE` the Rust
+//! module generated for a build's output. `-- compute 1000` builds a project of
 //! compute shaders instead (100 variants each, two kernels a variant) against naga alone on the
 //! same kernel texts. Both sides allocate with mimalloc, as the CLI does. Results and how to read
 //! them: docs/performance.md.
 
-use kiln::build::stage_texts;
+use kiln::build::{ParseScope, stage_texts};
 use kiln::catalog::catalog;
 use kiln::preprocess::{Includes, Stage};
 use kiln::project::{BuildMode, build_project, load_files, open_workspace};
@@ -49,11 +50,29 @@ fn median(mut times: Vec<Duration>) -> Duration {
     times[times.len() / 2]
 }
 
-/// `kiln build` (or, without `write`, `kiln check`: the same work, nothing written).
-fn kiln_build(project: &Path, output: &Path, write: bool) -> (kiln::build::BuildSummary, Duration) {
+/// Ratios as `median (lowest-highest)`.
+fn spread(mut ratios: Vec<f64>) -> String {
+    ratios.sort_by(f64::total_cmp);
+    format!("{:.2}x ({:.2}-{:.2})", ratios[ratios.len() / 2], ratios[0], ratios[ratios.len() - 1])
+}
+
+/// Interleaved rounds at a size: five, fewer past 10,000 variants; `KILN_SCALE_ROUNDS` says.
+fn rounds(variants: usize) -> usize {
+    let asked = std::env::var("KILN_SCALE_ROUNDS").ok().and_then(|n| n.parse().ok());
+    asked.unwrap_or(if variants <= 10_000 { 5 } else { 1 }).max(1)
+}
+
+/// `kiln build` (or, without `write`, `kiln check`: the same work, nothing written; with `parse`,
+/// naga handed that much of each stage text, else what the command hands it).
+fn kiln_build(
+    project: &Path,
+    output: &Path,
+    write: bool,
+    parse: Option<ParseScope>,
+) -> (kiln::build::BuildSummary, Duration) {
     let started = Instant::now();
     let mut store = SourceStore::new();
-    let mode = BuildMode { write, output: Some(output.to_path_buf()), ..BuildMode::default() };
+    let mode = BuildMode { write, output: Some(output.to_path_buf()), parse, ..BuildMode::default() };
     let (result, diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
     let mut all = diagnostics;
@@ -66,8 +85,8 @@ fn kiln_build(project: &Path, output: &Path, write: bool) -> (kiln::build::Build
     (result.summary, started.elapsed())
 }
 
-/// naga alone on kiln's stage texts: parse, validate, write WGSL and SPIR-V.
-fn naga_alone(project: &Path) -> (usize, Duration) {
+/// The stage texts a build of `project` compiles, whole: what naga alone is given.
+fn whole_texts(project: &Path) -> Vec<(Stage, String, String)> {
     let mut store = SourceStore::new();
     let (workspace, _) = open_workspace(&mut store, &[project.to_path_buf()]).expect("project");
     let mut includes = Includes::new(workspace.include.clone().expect("include config"));
@@ -75,7 +94,40 @@ fn naga_alone(project: &Path) -> (usize, Duration) {
     let (materials, _) = load_files(&mut store, &workspace.materials);
     let input = workspace.catalog_input(shaders, materials);
     let (catalog, _) = catalog(&mut store, &mut includes, &input);
-    let texts = stage_texts(&store, &includes, &catalog);
+    stage_texts(&store, &includes, &catalog)
+}
+
+/// How much of each stage kind's text a build hands naga: per stage, the texts, their bytes whole
+/// and the bytes of the declarations their entry points reach (`compile::reach`), and the
+/// distinct texts once cut (a build parses each once).
+fn cut_table(project: &Path) -> String {
+    let texts = whole_texts(project);
+    let mut table = String::from("  stage     texts  distinct cut  whole bytes   cut bytes  removed\n");
+    for kind in [Stage::Vertex, Stage::Fragment, Stage::Compute] {
+        let (mut count, mut whole, mut cut) = (0, 0, 0);
+        let mut distinct = std::collections::HashSet::new();
+        for (_, entry, text) in texts.iter().filter(|(stage, ..)| *stage == kind) {
+            let kept = kiln::compile::reach::reachable(text, entry)
+                .map_or_else(|| text.clone(), |ranges| kiln::compile::reach::joined(text, &ranges));
+            (count, whole, cut) = (count + 1, whole + text.len(), cut + kept.len());
+            distinct.insert(kept);
+        }
+        if count > 0 {
+            let _ = writeln!(
+                table,
+                "  {:<8} {count:>6} {:>13} {whole:>12} {cut:>11} {:>7.1}%",
+                kind.name(),
+                distinct.len(),
+                100.0 * (1.0 - cut as f64 / whole as f64)
+            );
+        }
+    }
+    table
+}
+
+/// naga alone on kiln's stage texts, whole: parse, validate, write WGSL and SPIR-V.
+fn naga_alone(project: &Path) -> (usize, Duration) {
+    let texts = whole_texts(project);
     let started = Instant::now();
     texts.par_iter().for_each(|(stage, entry, text)| {
         let module = naga::front::wgsl::parse_str(text).expect("parses");
@@ -142,26 +194,30 @@ fn compute_scale(variants: usize) {
     let dir: PathBuf = tempfile::tempdir().expect("temp dir").keep();
     let project = dir.join("project");
     generate_compute(&project, variants);
-    let (mut naga_times, mut build_times) = (Vec::new(), Vec::new());
+    let (mut naga_times, mut whole_ratios, mut cut_ratios) = (Vec::new(), Vec::new(), Vec::new());
     let (mut modules, mut built) = (0, None);
-    for round in 0..5 {
+    for round in 0..rounds(variants) {
         let (count, naga) = naga_alone(&project);
         modules = count;
         naga_times.push(naga);
-        let (summary, time) = kiln_build(&project, &dir.join(format!("out{round}")), true);
-        build_times.push(time);
+        let whole = kiln_build(&project, &dir.join(format!("whole{round}")), true, Some(ParseScope::Whole)).1;
+        let (summary, cut) = kiln_build(&project, &dir.join(format!("out{round}")), true, None);
+        whole_ratios.push(whole.as_secs_f64() / naga.as_secs_f64());
+        cut_ratios.push(cut.as_secs_f64() / naga.as_secs_f64());
         built = Some(summary);
     }
     let built = built.expect("built");
     assert_eq!(built.modules, modules, "kiln compiles the texts naga was given");
-    let (naga, build) = (median(naga_times), median(build_times));
     println!(
-        "{} threads: {} compute variants, {} kernel modules: naga alone {naga:.2?}, kiln build {build:.2?} ({:.2}x)",
+        "{} threads: {} compute variants, {} kernel modules: naga alone {:.2?}; kiln build / naga: whole texts {}, cut {}",
         rayon::current_num_threads(),
         built.variants,
         built.modules,
-        build.as_secs_f64() / naga.as_secs_f64()
+        median(naga_times),
+        spread(whole_ratios),
+        spread(cut_ratios),
     );
+    print!("{}", cut_table(&project));
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -172,7 +228,7 @@ fn open_cost(variants: usize) {
     let project = dir.join("project");
     generate(&project, variants);
     let output = dir.join("out");
-    kiln_build(&project, &output, true);
+    kiln_build(&project, &output, true, None);
     let (mut checked, mut unchecked) = (Vec::new(), Vec::new());
     for _ in 0..9 {
         let started = Instant::now();
@@ -209,6 +265,15 @@ fn main() {
         compute_scale(size);
         return;
     }
+    // `-- rust OUTPUT FILE` writes the Rust module generated for a build's output.
+    if let Some(at) = args.iter().position(|a| a == "rust") {
+        let output = PathBuf::from(args.get(at + 1).expect("rust OUTPUT FILE"));
+        let manifest = kiln::manifest::Manifest::read(&output).expect("manifest");
+        let rust = kiln::codegen::generate(&manifest, "kiln").expect("names do not clash");
+        std::fs::write(args.get(at + 2).expect("rust OUTPUT FILE"), &rust).expect("write");
+        println!("{} bytes of Rust", rust.len());
+        return;
+    }
     if let Some(at) = args.iter().position(|a| a == "generate") {
         let size = args.get(at + 1).and_then(|n| n.parse().ok()).expect("generate N DIR");
         let dir = PathBuf::from(args.get(at + 2).expect("generate N DIR"));
@@ -223,12 +288,14 @@ fn main() {
         .unwrap_or_else(|| vec![10, 100, 1000, 10000]);
     println!("{} threads", rayon::current_num_threads());
     println!(
-        "{:>8} {:>7} {:>6} {:>9} {:>10} {:>6} {:>10} {:>6} {:>9} {:>9} {:>10} {:>10} {:>10} {:>8} {:>10}",
+        "{:>8} {:>7} {:>6} {:>9} {:>10} {:>6} {:>10} {:>6} {:>10} {:>6} {:>9} {:>9} {:>10} {:>10} {:>10} {:>8} {:>10}",
         "variants",
         "modules",
         "vertex",
         "naga",
         "kiln check",
+        "ratio",
+        "whole",
         "ratio",
         "kiln build",
         "ratio",
@@ -244,40 +311,44 @@ fn main() {
         let dir: PathBuf = tempfile::tempdir().expect("temp dir").keep();
         let shaders = generate(&dir.join("project"), size);
         let project = dir.join("project");
-        // Rounds of naga, check and a cold build, interleaved, each reported as its median: a
-        // shared machine's noise moves all three alike within a round.
-        let rounds = match size {
-            0..10_000 => 5,
-            10_000..100_000 => 3,
-            _ => 1,
-        };
-        let (mut naga_times, mut check_times, mut cold_times) = (Vec::new(), Vec::new(), Vec::new());
+        // Rounds of naga, check, a cold build from whole texts (`--parse-whole`: kiln before the
+        // cut) and a cold build, interleaved, each reported as its median: a shared machine's
+        // noise moves all alike within a round. Each round's ratios to naga give the ranges.
+        let (mut naga_times, mut check_times, mut whole_times, mut cold_times) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        let (mut check_ratios, mut whole_ratios, mut cold_ratios) = (Vec::new(), Vec::new(), Vec::new());
         let mut modules = 0;
         let mut cold = None;
         let mut memory = 0.0;
+        let rounds = rounds(size);
         for round in 0..rounds {
             let (count, naga) = naga_alone(&project);
             modules = count;
             naga_times.push(naga);
-            check_times.push(kiln_build(&project, &dir.join("unused"), false).1);
+            let check = kiln_build(&project, &dir.join("unused"), false, None).1;
             // A new folder each round: deleting thousands of files just before creating as many
             // makes ext4 search its recently freed inodes, which a first build does not meet.
+            let whole =
+                kiln_build(&project, &dir.join(format!("whole{round}")), true, Some(ParseScope::Whole)).1;
             reset_peak();
-            let (summary, time) = kiln_build(&project, &dir.join(format!("out{round}")), true);
+            let (summary, time) = kiln_build(&project, &dir.join(format!("out{round}")), true, None);
             if round == 0 {
                 memory = peak_mib();
             }
-            cold_times.push(time);
+            let ratio = |t: Duration| t.as_secs_f64() / naga.as_secs_f64();
+            (check_ratios.push(ratio(check)), whole_ratios.push(ratio(whole)), cold_ratios.push(ratio(time)));
+            (check_times.push(check), whole_times.push(whole), cold_times.push(time));
             cold = Some(summary);
         }
         let cold = cold.expect("at least one round");
         let output = dir.join(format!("out{}", rounds - 1));
-        let (naga, check_time, cold_time) = (median(naga_times), median(check_times), median(cold_times));
+        let (naga, check_time, whole_time, cold_time) =
+            (median(naga_times), median(check_times), median(whole_times), median(cold_times));
         assert_eq!(cold.modules, modules, "kiln compiles the texts naga was given");
         assert_eq!(cold.shared, 0, "each shader's stage texts are its own");
         reset_peak();
         let noops: Vec<(kiln::build::BuildSummary, Duration)> =
-            (0..3).map(|_| kiln_build(&project, &output, true)).collect();
+            (0..3).map(|_| kiln_build(&project, &output, true, None)).collect();
         let noop_memory = peak_mib();
         let manifest_bytes = std::fs::metadata(output.join("manifest.json")).expect("manifest").len();
         let manifest = kiln::manifest::Manifest::read(&output).expect("manifest");
@@ -289,18 +360,20 @@ fn main() {
         let touched = project.join("shaders/Shared0.wgsl");
         let text = std::fs::read_to_string(&touched).expect("read");
         std::fs::write(&touched, text.replace("return ", "return 0.5 + 0.5 * ")).expect("write");
-        let (touch, touch_time) = kiln_build(&project, &output, true);
+        let (touch, touch_time) = kiln_build(&project, &output, true, None);
         let including = shaders.div_ceil(SHARED_INCLUDES);
         let vertex_jobs = shaders; // one vertex module per shader: its keywords are fragment-only
         let ratio = |t: Duration| t.as_secs_f64() / naga.as_secs_f64();
         println!(
-            "{:>8} {:>7} {:>6} {:>9.2?} {:>10.2?} {:>5.2}x {:>10.2?} {:>5.2}x {:>9.2?} {:>9.2?} {:>10} {:>6.0} MiB {:>6.0} MiB {:>6} B/v {:>7.2} MB",
+            "{:>8} {:>7} {:>6} {:>9.2?} {:>10.2?} {:>5.2}x {:>10.2?} {:>5.2}x {:>10.2?} {:>5.2}x {:>9.2?} {:>9.2?} {:>10} {:>6.0} MiB {:>6.0} MiB {:>6} B/v {:>7.2} MB",
             cold.variants,
             cold.modules,
             vertex_jobs,
             naga,
             check_time,
             ratio(check_time),
+            whole_time,
+            ratio(whole_time),
             cold_time,
             ratio(cold_time),
             noop_time,
@@ -315,6 +388,13 @@ fn main() {
             touch.compiled <= cold.modules * including / shaders + 1,
             "only what includes the file recompiles"
         );
+        println!(
+            "  per round, / naga ({rounds} rounds): check {}, build from whole texts {}, build {}",
+            spread(check_ratios),
+            spread(whole_ratios),
+            spread(cold_ratios)
+        );
+        print!("{}", cut_table(&project));
         // For profiling a build of the same project: `KILN_SCALE_KEEP=1` keeps it.
         if std::env::var_os("KILN_SCALE_KEEP").is_some() {
             println!("kept {}", dir.display());

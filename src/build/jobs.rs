@@ -1,7 +1,9 @@
 //! A pass's stage texts: each distinct (stage, stage keywords, target) of its variants
 //! preprocessed once, in parallel, and identical texts made one job.
 
+use super::ParseScope;
 use super::plan::PassWork;
+use crate::compile::reach;
 use crate::compile::target::Allowed;
 use crate::diagnostics;
 use crate::diagnostics::{Diagnostic, PassId};
@@ -20,8 +22,15 @@ pub(super) struct Job<'a> {
     pub stage: Stage,
     pub entry: &'a str,
     pub entry_pragma: Span,
+    /// What naga parses: the declarations the entry point reaches ([`reach`]), or the whole
+    /// text where nothing is left out or the build parses whole texts.
     pub text: String,
     pub map: SourceMap,
+    /// The text as preprocessed, when `text` leaves declarations out: parsed only where naga
+    /// refuses `text` (a miss of the scan, counted; or an error, reported from the whole text as
+    /// before the cut).
+    pub whole: Option<Box<WholeText>>,
+    /// The hash of `text`: identical cuts of different texts are one job.
     pub text_hash: String,
     pub allowed: Allowed,
     /// Which variant asked for it first (its keywords), for diagnostics.
@@ -48,6 +57,33 @@ impl Job<'_> {
     pub(super) fn front_key(&self) -> String {
         format!("{} {} {}", self.text_hash, self.stage.name(), self.entry)
     }
+}
+
+/// A stage text as the preprocessor wrote it.
+pub(super) struct WholeText {
+    pub text: String,
+    pub map: SourceMap,
+}
+
+/// A preprocessed stage text cut to what its entry point reaches, where `scope` asks it and the
+/// cut leaves something out: (text, map, the whole).
+fn cut(
+    text: String,
+    map: SourceMap,
+    entry: &str,
+    scope: ParseScope,
+) -> (String, SourceMap, Option<Box<WholeText>>) {
+    let kept = match scope {
+        ParseScope::Reachable => reach::reachable(&text, entry),
+        ParseScope::Whole => None,
+    };
+    let Some(kept) = kept else { return (text, map, None) };
+    let mut cut = reach::joined(&text, &kept);
+    // For the test of a miss: debug builds spoil the cut of the entry point this names.
+    if cfg!(debug_assertions) && std::env::var("KILN_INJECT_CUT_MISS").is_ok_and(|name| name == entry) {
+        cut.push_str("fn (\n");
+    }
+    (cut, map.cut(&kept), Some(Box::new(WholeText { text, map })))
 }
 
 /// A pass's distinct stage modules, and each variant's job for each of the pass's
@@ -87,11 +123,13 @@ fn stage_within(stage: Stage, entry: &str) -> String {
 }
 
 /// The distinct stage texts of a pass's variants: each (stage, stage keywords, target) is
-/// preprocessed once, in parallel, and identical texts become one job.
+/// preprocessed once, in parallel, cut to what its entry point reaches (as `scope` says), and
+/// identical texts become one job.
 pub(super) fn pass_jobs<'a>(
     store: &SourceStore,
     includes: &Includes,
     work: &PassWork<'a>,
+    scope: ParseScope,
     diagnostics: &mut Vec<Diagnostic>,
 ) -> PassJobs<'a> {
     let (shader, pass, program) = (work.shader, work.pass, work.program);
@@ -154,18 +192,19 @@ pub(super) fn pass_jobs<'a>(
                 false => keyword_macros(&program.pragmas, &keywords),
             };
             let out = preprocess_with(includes, store, wgsl, &macros, r.stage);
-            let text_hash = hash(out.text.as_bytes());
-            (out, text_hash)
+            let scope = if diagnostics::has_errors(&out.diagnostics) { ParseScope::Whole } else { scope };
+            let (text, map, whole) = cut(out.text, out.source_map, &r.entry.value, scope);
+            let text_hash = hash(text.as_bytes());
+            (out.diagnostics, (text, map, whole), text_hash)
         })
         .collect();
     // Different keywords can still give the same text (a keyword no `#if` of this stage tests).
     let mut job_of_text: HashMap<(Stage, &str, String, String), usize> = HashMap::new();
     let mut job_of_request: Vec<Option<usize>> = Vec::with_capacity(requests.len());
-    for (request, (out, text_hash)) in requests.into_iter().zip(outputs) {
-        let failed = diagnostics::has_errors(&out.diagnostics);
+    for (request, (found, (text, map, whole), text_hash)) in requests.into_iter().zip(outputs) {
+        let failed = diagnostics::has_errors(&found);
         let within = stage_within(request.stage, &request.entry.value);
-        diagnostics
-            .extend(out.diagnostics.into_iter().map(|d| d.in_variant(&request.variant, &pass_id, &within)));
+        diagnostics.extend(found.into_iter().map(|d| d.in_variant(&request.variant, &pass_id, &within)));
         if failed {
             job_of_request.push(None);
             continue;
@@ -176,8 +215,9 @@ pub(super) fn pass_jobs<'a>(
                 stage: request.stage,
                 entry: &request.entry.value,
                 entry_pragma: request.entry.span,
-                text: out.text,
-                map: out.source_map,
+                text,
+                map,
+                whole,
                 text_hash,
                 allowed: request.allowed,
                 variant: request.variant,

@@ -78,6 +78,17 @@ pub enum VariantSelection {
     },
 }
 
+/// What naga parses of a stage text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ParseScope {
+    /// The declarations its entry point reaches (`compile::reach`): `kiln build`. An error in
+    /// code no entry point reaches is not seen.
+    Reachable,
+    /// All of it, as preprocessed: `kiln check`, which reports errors anywhere in a variant's
+    /// text.
+    Whole,
+}
+
 /// How a build runs and where it writes.
 #[derive(Debug, Clone)]
 pub struct BuildOptions {
@@ -88,6 +99,8 @@ pub struct BuildOptions {
     pub root: PathBuf,
     /// `false` for `kiln check`: nothing is written.
     pub write: bool,
+    /// What naga parses of each stage text.
+    pub parse: ParseScope,
     /// Worker threads (default: all cores).
     pub threads: Option<usize>,
     /// The back ends each stage module is written for.
@@ -135,6 +148,7 @@ impl BuildOptions {
             output,
             root,
             write,
+            parse: ParseScope::Reachable,
             threads: Some(1),
             backends: Backend::DEFAULT.to_vec(),
             unused_shaders: VariantSelection::Used,
@@ -187,6 +201,9 @@ pub struct BuildSummary {
     pub reused: usize,
     /// Modules another pass of the build compiled (identical stage texts, laid out alike).
     pub shared: usize,
+    /// Modules built from their whole text because naga refused the text cut to what the entry
+    /// point reaches (a miss of `compile::reach`'s scan; 0 on every input the suite builds).
+    pub uncut: usize,
     /// Bytes of files written.
     pub bytes_written: u64,
     /// Bytes received from and sent to the remote cache.
@@ -368,6 +385,7 @@ fn build_passes(
         diagnostics.extend(pass.diagnostics);
         parts.push(pass.part);
     }
+    summary.uncut = session.uncut.load(std::sync::atomic::Ordering::Relaxed);
     let (remote_warning, remote_bytes) = session.sources.finish();
     summary.remote_bytes = remote_bytes;
     diagnostics.extend(remote_warning);

@@ -85,7 +85,8 @@ pub(super) fn build_pass(
 ) -> PassBuilt {
     let (cache, progress) = (&session.cache, &session.progress);
     let mut diagnostics = Vec::new();
-    let PassJobs { jobs, stages, ubershader } = pass_jobs(store, includes, work, &mut diagnostics);
+    let PassJobs { jobs, stages, ubershader } =
+        pass_jobs(store, includes, work, options.parse, &mut diagnostics);
     for job in &jobs {
         session.texts.add(&job.text_hash);
     }

@@ -3,7 +3,7 @@
 //! builds.
 
 use super::error::BuildLayerError;
-use super::{BuildOptions, BuildSummary, VariantSelection};
+use super::{BuildOptions, BuildSummary, ParseScope, VariantSelection};
 use crate::catalog::{Catalog, CatalogPass, CatalogProgram, CatalogShader};
 use crate::diagnostics::Diagnostic;
 use crate::keywords::Variant;
@@ -94,7 +94,9 @@ pub fn stage_texts(
 ) -> Vec<(Stage, String, String)> {
     let work = plan(catalog, VariantSelection::Used, &mut BuildSummary::default(), &mut Vec::new());
     work.iter()
-        .flat_map(|pass| super::jobs::pass_jobs(store, includes, pass, &mut Vec::new()).jobs)
+        .flat_map(|pass| {
+            super::jobs::pass_jobs(store, includes, pass, ParseScope::Whole, &mut Vec::new()).jobs
+        })
         .map(|j| (j.stage, j.entry.to_string(), j.text))
         .collect()
 }

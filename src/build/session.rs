@@ -20,6 +20,8 @@ pub(super) struct Session<'a> {
     pub texts: TextCounts,
     pub compiled: Recent<Compiled>,
     pub parsed: Recent<Vec<Declared>>,
+    /// Modules built from their whole text: naga refused the cut one (`BuildSummary::uncut`).
+    pub uncut: AtomicUsize,
 }
 
 /// Bytes of compiled modules, and of parsed resources, a build keeps for its other passes.
@@ -40,6 +42,7 @@ impl<'a> Session<'a> {
             texts: TextCounts::new(RECENT_SHARDS),
             compiled: Recent::new(SHARED_MODULE_BYTES, RECENT_SHARDS),
             parsed: Recent::new(SHARED_FRONT_BYTES, RECENT_SHARDS),
+            uncut: AtomicUsize::new(0),
         }
     }
 }

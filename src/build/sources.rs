@@ -20,11 +20,19 @@ use crate::store::remote::{RemoteCache, RemoteMode};
 use crate::store::{ModuleBytes, PassIndex, hash, shared};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
+use std::sync::atomic::Ordering;
 use std::sync::{Arc, OnceLock};
 
 /// Outcome of a job's front end: its declared resources, and the parsed module when it had to be
 /// parsed (kept so that naga does not parse it again for the module).
-pub(super) type Front = Result<(Vec<Declared>, Option<naga::Module>), Diagnostic>;
+pub(super) type Front = Result<(Vec<Declared>, Option<Parsed>), Diagnostic>;
+
+/// A module naga parsed for a job, from its (cut) text or, where naga refused that, its whole
+/// text.
+pub(super) struct Parsed {
+    module: naga::Module,
+    whole: bool,
+}
 
 /// What the sources of one pass read: the build's session, the pass's entry in the output's
 /// cache, and (read once, when first asked) its entry in the shared cache.
@@ -54,7 +62,7 @@ pub(super) struct ModuleAsk<'a> {
     pub job: &'a Job<'a>,
     pub key: &'a str,
     pub layout: &'a PassLayout,
-    pub parsed: Option<naga::Module>,
+    pub parsed: Option<Parsed>,
 }
 
 /// A source of stage modules.
@@ -229,34 +237,48 @@ struct Naga;
 
 impl Naga {
     fn parse(&self, pass: &PassSources, job: &Job) -> Front {
-        let mapper = Mapper { map: &job.map, store: pass.store };
-        let module = parse(&job.text, &mapper).map_err(|d| job.in_text(d))?;
-        let declared = bind::declared(&module, job.entry, stage::naga_stage(job.stage));
+        let parsed = self.parse_job(pass, job).map_err(|d| job.in_text(d))?;
+        let declared = bind::declared(&parsed.module, job.entry, stage::naga_stage(job.stage));
         if pass.session.texts.shared(&job.text_hash) {
             let size = declared.iter().map(|d| d.name.len() + 64).sum();
             pass.session.parsed.insert(&job.front_key(), Arc::new(declared.clone()), size);
         }
-        Ok((declared, Some(module)))
+        Ok((declared, Some(parsed)))
+    }
+
+    /// naga's parse of a job's text; where it refuses a cut text, of the whole text, whose error
+    /// is the one reported (as before the cut), and whose module, where it parses, is a miss of
+    /// the cut.
+    fn parse_job(&self, pass: &PassSources, job: &Job) -> Result<Parsed, Diagnostic> {
+        match parse(&job.text, &Mapper { map: &job.map, store: pass.store }) {
+            Ok(module) => Ok(Parsed { module, whole: false }),
+            Err(error) => match &job.whole {
+                None => Err(error),
+                Some(whole) => {
+                    let module = parse(&whole.text, &Mapper { map: &whole.map, store: pass.store })?;
+                    pass.session.uncut.fetch_add(1, Ordering::Relaxed);
+                    Ok(Parsed { module, whole: true })
+                }
+            },
+        }
     }
 
     fn compile(&self, pass: &PassSources, ask: &mut ModuleAsk) -> Result<Built, Diagnostic> {
         let job = ask.job;
-        let mapper = Mapper { map: &job.map, store: pass.store };
-        let module = match ask.parsed.take() {
-            Some(module) => module,
-            None => parse(&job.text, &mapper)?,
+        let parsed = match ask.parsed.take() {
+            Some(parsed) => parsed,
+            None => self.parse_job(pass, job)?,
         };
-        let request = StageRequest {
-            text: &job.text,
-            stage: job.stage,
-            entry: job.entry,
-            entry_pragma: job.entry_pragma,
-            allowed: &job.allowed,
-            layout: ask.layout,
-            backends: &pass.options.backends,
-            glslang: pass.options.glslang.as_ref(),
+        let output = match (self.compile_parsed(pass, ask, parsed), &job.whole) {
+            // Refused from the cut: the whole text decides, as it did before the cut.
+            (Err(_), Some(whole)) => {
+                let module = parse(&whole.text, &Mapper { map: &whole.map, store: pass.store })?;
+                let output = self.compile_parsed(pass, ask, Parsed { module, whole: true })?;
+                pass.session.uncut.fetch_add(1, Ordering::Relaxed);
+                output
+            }
+            (output, _) => output?,
         };
-        let output = stage::compile(module, &request, &mapper)?;
         let module = |bytes: Vec<u8>| ModuleBytes { hash: hash(&bytes), bytes };
         let modules = output.modules.map(|bytes| bytes.map(module));
         let compiled = Arc::new(Compiled { modules, reflection: output.reflection });
@@ -265,5 +287,30 @@ impl Naga {
             pass.session.compiled.insert(ask.key, compiled.clone(), compiled.size());
         }
         Ok(Built::Compiled(compiled))
+    }
+
+    /// One stage module from a parsed text (the job's, or its whole one).
+    fn compile_parsed(
+        &self,
+        pass: &PassSources,
+        ask: &ModuleAsk,
+        parsed: Parsed,
+    ) -> Result<stage::StageOutput, Diagnostic> {
+        let job = ask.job;
+        let (text, map) = match (&job.whole, parsed.whole) {
+            (Some(whole), true) => (&whole.text, &whole.map),
+            _ => (&job.text, &job.map),
+        };
+        let request = StageRequest {
+            text,
+            stage: job.stage,
+            entry: job.entry,
+            entry_pragma: job.entry_pragma,
+            allowed: &job.allowed,
+            layout: ask.layout,
+            backends: &pass.options.backends,
+            glslang: pass.options.glslang.as_ref(),
+        };
+        stage::compile(parsed.module, &request, &Mapper { map, store: pass.store })
     }
 }

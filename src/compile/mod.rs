@@ -24,6 +24,7 @@ mod layout;
 mod messages;
 mod panics;
 pub mod platforms;
+pub mod reach;
 mod spirv;
 pub(crate) mod stage;
 pub mod target;

@@ -112,6 +112,38 @@ impl SourceMap {
         self.len = len as u32;
     }
 
+    /// The map of the text made of `kept` ranges of this map's text, each followed by one line
+    /// break (`compile::reach::joined`): every kept byte maps where it did.
+    pub fn cut(&self, kept: &[Range<usize>]) -> SourceMap {
+        let mut cut = SourceMap {
+            segments: Vec::new(),
+            inclusions: self.inclusions.clone(),
+            definitions: self.definitions.clone(),
+            len: 0,
+        };
+        let mut out = 0u32;
+        for range in kept {
+            let (start, end) = (range.start as u32, range.end as u32);
+            let first = self.segments.partition_point(|s| s.out <= start).saturating_sub(1);
+            for s in self.segments[first..].iter().take_while(|s| s.out < end) {
+                let mut segment = *s;
+                if s.out <= start {
+                    // The run began before the range: it now begins at the range's first byte.
+                    if s.expansion == 0 {
+                        segment.src += start - s.out;
+                    }
+                    segment.out = out;
+                } else {
+                    segment.out = out + (s.out - start);
+                }
+                cut.push(segment);
+            }
+            out += end - start + 1;
+        }
+        cut.len = out;
+        cut
+    }
+
     /// The origin of one output byte. Offsets at or past the end map to the end of the last run.
     pub fn locate(&self, offset: usize) -> Option<Origin> {
         let offset = offset.min(self.len as usize) as u32;

@@ -5,7 +5,7 @@ use super::ProjectError;
 use super::workspace::{
     Workspace, include_config, load_files, load_variant_logs, open_workspace, unknown_group_names,
 };
-use crate::build::{BuildOptions, BuildResult, Part, VariantSelection, build};
+use crate::build::{BuildOptions, BuildResult, ParseScope, Part, VariantSelection, build};
 use crate::catalog::{Catalog, CatalogInput, catalog};
 use crate::compile::glslang::Glslang;
 use crate::diagnostics::{self, Diagnostic};
@@ -67,6 +67,9 @@ pub struct BuildMode {
     pub remote_cache_mode: Option<RemoteMode>,
     /// Back ends written (or checked) besides the project's `backends` (`--backends`).
     pub backends: Vec<Backend>,
+    /// What naga parses of each stage text; else the declarations each entry point reaches for
+    /// a build, the whole text for a check (`--parse-whole`).
+    pub parse: Option<ParseScope>,
 }
 
 impl Default for BuildMode {
@@ -86,6 +89,7 @@ impl Default for BuildMode {
             remote_cache: None,
             remote_cache_mode: None,
             backends: Vec::new(),
+            parse: None,
         }
     }
 }
@@ -224,6 +228,7 @@ fn load_given(
         output: mode.output.clone().unwrap_or_else(|| workspace.output.clone()),
         root: workspace.root.clone(),
         write: mode.write,
+        parse: mode.parse.unwrap_or(if mode.write { ParseScope::Reachable } else { ParseScope::Whole }),
         threads: mode.threads,
         backends: Backend::ALL
             .iter()

@@ -27,6 +27,7 @@ mod lsp_edits;
 mod materials;
 mod parse;
 mod preprocess;
+mod reach;
 mod remote;
 mod robustness;
 mod runtime;

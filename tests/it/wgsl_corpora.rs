@@ -8,7 +8,7 @@
 //! from `kiln preprocess` token for token.
 
 use crate::support::{kiln, root, tool};
-use kiln::build::VariantSelection;
+use kiln::build::{ParseScope, VariantSelection};
 use kiln::project::{BuildMode, build_project};
 use kiln::source::SourceStore;
 use naga::valid::{Capabilities, ValidationFlags, Validator};
@@ -205,12 +205,17 @@ struct Report {
     /// rest by code (K0422 what the language lacks, K0409 a writer error, K0416 a writer panic,
     /// K0423 glslang refusing what naga wrote).
     backends: BTreeMap<&'static str, (usize, BTreeMap<&'static str, usize>)>,
+    /// Modules built from their whole text: naga refused the cut one.
+    uncut: usize,
+    /// The build against one from whole texts (where `spirv-dis` is installed).
+    cut: Option<crate::reach::Comparison>,
     failures: Vec<String>,
 }
 
 /// Builds a corpus through kiln and holds each file to naga's verdict, then every module kiln
-/// wrote to `spirv-val` (when `spirv_val`) and to naga's WGSL front end and validator.
-fn judge(corpus: &Corpus, spirv_val: bool) -> Report {
+/// wrote to `spirv-val` (when `spirv_tools`, which also compares the build with one from whole
+/// texts) and to naga's WGSL front end and validator.
+fn judge(corpus: &Corpus, spirv_tools: bool) -> Report {
     let dir = tempfile::tempdir().expect("temp dir");
     let project = dir.path().join("project");
     std::fs::create_dir_all(&project).expect("project");
@@ -301,7 +306,23 @@ fn judge(corpus: &Corpus, spirv_val: bool) -> Report {
     let mut kept = names.iter().filter(|(n, _)| built(n)).flat_map(|(_, shaders)| shaders);
     std::fs::write(accepted.join("kiln.toml"), kiln_toml(&mut kept)).expect("kiln.toml");
     let output = dir.path().join("accepted-out");
-    crate::support::build_without_errors(&accepted, Some(&output), VariantSelection::All { limit: 16 });
+    let (summary, _) =
+        crate::support::build_without_errors(&accepted, Some(&output), VariantSelection::All { limit: 16 });
+    report.uncut = summary.uncut;
+    // Built again from whole texts: the cut to what entry points reach changes no module.
+    if spirv_tools {
+        let whole = dir.path().join("accepted-whole");
+        let (_, errors) = crate::reach::build_with(
+            &accepted,
+            &whole,
+            ParseScope::Whole,
+            VariantSelection::All { limit: 16 },
+        );
+        report.failures.extend(errors);
+        let comparison = crate::reach::compare(&whole, &output, &dir.path().join("disassembled"));
+        report.failures.extend(comparison.failures.iter().map(|f| format!("cut against whole: {f}")));
+        report.cut = Some(comparison);
+    }
     let manifest = kiln::manifest::Manifest::read(&output).expect("manifest");
     let stages: Vec<_> = manifest.stages().collect();
     let failures = std::sync::Mutex::new(Vec::new());
@@ -326,7 +347,7 @@ fn judge(corpus: &Corpus, spirv_val: bool) -> Report {
                         }
                         counts.lock().expect("lock").1 += 1;
                     }
-                    let Some(file) = stage.spirv().filter(|_| spirv_val) else { continue };
+                    let Some(file) = stage.spirv().filter(|_| spirv_tools) else { continue };
                     let bytes = file.read(output).expect("module");
                     let path = dir.join(format!("module-{t}-{i}.spv"));
                     std::fs::write(&path, &bytes).expect("write");
@@ -409,6 +430,13 @@ fn wgsl_loads(text: &str) -> Result<(), String> {
 fn check_corpus(corpus: &Corpus, test: &str, at_least: usize) {
     let spirv_val = tool("spirv-val", "spirv-tools", test);
     let report = judge(corpus, spirv_val);
+    assert_eq!(report.uncut, 0, "naga refused a cut whose whole text it accepts");
+    if let Some(cut) = &report.cut {
+        let line = format!("{}\n", cut.line());
+        print!("cut to what entry points reach, against whole texts: {line}");
+        let golden = format!("tests/golden/reach/{}.txt", corpus.label.to_lowercase());
+        expect_test::expect_file![root().join(golden)].assert_eq(&line);
+    }
     println!(
         "{}'s {} WGSL files: {} built as naga accepts them ({} with compute kernels), {} refused as naga \
          refuses them, {} refused by kiln (K0418), {} with no entry point; {} WGSL modules loaded again \

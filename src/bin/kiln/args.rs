@@ -43,6 +43,10 @@ pub struct ProjectArgs {
     /// comma-separated, of wgsl, spirv, msl, hlsl, glsl (docs/backends.md).
     #[arg(long, value_delimiter = ',', value_parser = backend, value_name = "LIST")]
     pub backends: Vec<kiln::manifest::Backend>,
+    /// Hand naga every stage text whole, as `check` does, rather than the declarations its entry
+    /// point reaches (the default for `build`; docs/performance.md).
+    #[arg(long)]
+    pub parse_whole: bool,
 }
 
 /// A back end by its name in `kiln.toml`.
@@ -76,6 +80,7 @@ impl ProjectArgs {
             cache_dir: self.cache_dir,
             remote_cache: self.remote_cache,
             backends: self.backends,
+            parse: self.parse_whole.then_some(kiln::build::ParseScope::Whole),
             remote_cache_mode: self.remote_cache_mode.map(|mode| match mode {
                 RemoteCacheMode::Read => kiln::store::remote::RemoteMode::Read,
                 RemoteCacheMode::Write => kiln::store::remote::RemoteMode::Write,

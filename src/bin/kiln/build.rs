@@ -111,6 +111,10 @@ fn print_summary(s: &kiln::build::BuildSummary, written_to: Option<&std::path::P
     if s.shared > 0 {
         line.push_str(&format!(", {} shared between passes", s.shared));
     }
+    if s.uncut > 0 {
+        // A miss of the cut to what entry points reach: a bug to report, never a wrong module.
+        line.push_str(&format!(", {} built from the whole text", s.uncut));
+    }
     line.push(')');
     if let Some(output) = written_to {
         line.push_str(&format!(", {} bytes written to {}", s.bytes_written, output.display()));

@@ -1,0 +1,460 @@
+//! What an entry point can reach: a token-level scan of a WGSL text's top-level declarations
+//! (functions, structs, aliases, constants, overrides, globals, directives), each with the
+//! identifiers it names, and the closure from the entry point over those names. naga then parses
+//! only the declarations kept (the rest of a stage text, the lighting library under a vertex
+//! stage, is the bulk of its parse).
+//!
+//! The scan is conservative: whatever it cannot prove unused stays. Every directive,
+//! `const_assert`, `const` and `override` stays (naga's compaction keeps named constants, so the
+//! module after compaction keeps them too), as does every declaration of a form the scan does not
+//! know; a name a local variable shadows counts as a use of the global. A text the scan cannot
+//! split (an unclosed body, a name declared twice) is not cut at all: naga reports it whole.
+
+use std::collections::HashMap;
+use std::ops::Range;
+
+/// The byte ranges of `text`'s top-level declarations that the entry point `entry` can reach, in
+/// the order naga lowers them ([`dependency_order`]), or `None` when nothing would be left out
+/// (or the scan cannot tell).
+pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
+    let declarations = declarations(text)?;
+    let mut by_name: HashMap<&str, usize> = HashMap::with_capacity(declarations.len());
+    for (index, declaration) in declarations.iter().enumerate() {
+        if let Some(name) = declaration.name
+            && by_name.insert(name, index).is_some()
+        {
+            // Declared twice: naga's error, from the whole text.
+            return None;
+        }
+    }
+    let root = *by_name.get(entry)?;
+    if declarations[root].kind != Kind::Function {
+        return None;
+    }
+    let mut kept = vec![false; declarations.len()];
+    let mut work: Vec<usize> = Vec::new();
+    for (index, declaration) in declarations.iter().enumerate() {
+        if index == root || !declaration.kind.removable() {
+            kept[index] = true;
+            work.push(index);
+        }
+    }
+    while let Some(index) = work.pop() {
+        for name in &declarations[index].names {
+            if let Some(&used) = by_name.get(name)
+                && !kept[used]
+            {
+                kept[used] = true;
+                work.push(used);
+            }
+        }
+    }
+    if kept.iter().all(|k| *k) {
+        return None;
+    }
+    let order = dependency_order(&declarations, &by_name);
+    Some(order.into_iter().filter(|&d| kept[d]).map(|d| declarations[d].range.clone()).collect())
+}
+
+/// The declarations in the order naga's WGSL front end lowers them: in text order, each after
+/// what it names (depth first). The cut keeps this order, so that naga lowers what it keeps in the
+/// order it would have in the whole text, and writes its declarations in that order.
+fn dependency_order(declarations: &[Declaration], by_name: &HashMap<&str, usize>) -> Vec<usize> {
+    #[derive(Clone, Copy, PartialEq)]
+    enum Visit {
+        New,
+        Open,
+        Done,
+    }
+    let mut visits = vec![Visit::New; declarations.len()];
+    let mut order = Vec::with_capacity(declarations.len());
+    for start in 0..declarations.len() {
+        if visits[start] != Visit::New {
+            continue;
+        }
+        visits[start] = Visit::Open;
+        // Each open declaration with the next of its names to follow.
+        let mut path = vec![(start, 0)];
+        while let Some((at, next)) = path.last_mut() {
+            let names = &declarations[*at].names;
+            if let Some(name) = names.get(*next) {
+                *next += 1;
+                if let Some(&used) = by_name.get(name)
+                    && visits[used] == Visit::New
+                {
+                    visits[used] = Visit::Open;
+                    path.push((used, 0));
+                }
+            } else {
+                visits[*at] = Visit::Done;
+                order.push(*at);
+                path.pop();
+            }
+        }
+    }
+    order
+}
+
+/// The text of `ranges` of `text`, one line break after each (what naga parses; the source
+/// map is cut alike by [`crate::preprocess::SourceMap::cut`]).
+pub fn joined(text: &str, ranges: &[Range<usize>]) -> String {
+    let mut out = String::with_capacity(ranges.iter().map(|r| r.len() + 1).sum());
+    for range in ranges {
+        out.push_str(&text[range.clone()]);
+        out.push('\n');
+    }
+    out
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Function,
+    Struct,
+    Alias,
+    Variable,
+    /// `const` and `override`: named, and always kept.
+    Constant,
+    /// Directives, `const_assert`, and any form the scan does not know: kept, naming nothing.
+    Other,
+}
+
+impl Kind {
+    fn of(keyword: &str) -> Kind {
+        match keyword {
+            "fn" => Kind::Function,
+            "struct" => Kind::Struct,
+            "alias" => Kind::Alias,
+            "var" => Kind::Variable,
+            "const" | "override" => Kind::Constant,
+            _ => Kind::Other,
+        }
+    }
+
+    fn removable(self) -> bool {
+        matches!(self, Kind::Function | Kind::Struct | Kind::Alias | Kind::Variable)
+    }
+}
+
+/// How far a declaration's head has been read.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Head {
+    /// Before its keyword (attributes may come first).
+    Keyword,
+    /// After a keyword that declares a name.
+    Name,
+    /// Named, or a form that names nothing.
+    Done,
+}
+
+/// One top-level declaration: where it is, what it declares, and every identifier in it.
+struct Declaration<'t> {
+    range: Range<usize>,
+    kind: Kind,
+    name: Option<&'t str>,
+    names: Vec<&'t str>,
+}
+
+/// A token of the scan: an identifier, or one byte of punctuation.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Token<'t> {
+    Identifier(&'t str),
+    Punctuation(u8),
+    /// A number: it names nothing.
+    Number,
+}
+
+/// `text`'s top-level declarations, or `None` where its shape is not one the scan knows (an
+/// unclosed body or comment, a removable declaration without a name).
+fn declarations(text: &str) -> Option<Vec<Declaration<'_>>> {
+    let mut tokens = Tokens { text, at: 0 };
+    let mut out = Vec::new();
+    let mut current: Option<(Declaration, Head)> = None;
+    let (mut depth, mut previous) = (0usize, Token::Number);
+    // A `var`'s `<address space>`, skipped before its name.
+    let mut in_template = false;
+    while let Some((token, range)) = tokens.next()? {
+        let (declaration, head) = current.get_or_insert_with(|| {
+            let declaration = Declaration {
+                range: range.start..range.start,
+                kind: Kind::Other,
+                name: None,
+                names: Vec::new(),
+            };
+            (declaration, Head::Keyword)
+        });
+        let mut ends = false;
+        match token {
+            Token::Identifier(word) => {
+                // What names a global: not a member (`.x`), an attribute (`@location`), nor a
+                // name being declared (`x: T`, `let x`, `fn f`); the rest may.
+                let declared = matches!(previous, Token::Punctuation(b'.' | b'@'))
+                    || matches!(previous, Token::Identifier(k) if DECLARING.contains(&k))
+                    || matches!(tokens.clone().next(), Some(Some((Token::Punctuation(b':'), _))));
+                if !declared {
+                    declaration.names.push(word);
+                }
+                if depth == 0 && !in_template && previous != Token::Punctuation(b'@') {
+                    match head {
+                        Head::Keyword => {
+                            declaration.kind = Kind::of(word);
+                            *head = if declaration.kind == Kind::Other { Head::Done } else { Head::Name };
+                        }
+                        Head::Name => {
+                            declaration.name = Some(word);
+                            *head = Head::Done;
+                        }
+                        Head::Done => {}
+                    }
+                }
+            }
+            Token::Punctuation(b'<')
+                if depth == 0 && *head == Head::Name && declaration.kind == Kind::Variable =>
+            {
+                in_template = true
+            }
+            Token::Punctuation(b'>') if in_template => in_template = false,
+            Token::Punctuation(b'(' | b'[' | b'{') => depth += 1,
+            Token::Punctuation(b')' | b']') => depth = depth.checked_sub(1)?,
+            Token::Punctuation(b'}') => {
+                depth = depth.checked_sub(1)?;
+                ends = depth == 0 && matches!(declaration.kind, Kind::Function | Kind::Struct);
+            }
+            Token::Punctuation(b';') => ends = depth == 0,
+            _ => {}
+        }
+        previous = token;
+        if ends {
+            let (mut declaration, head) = current.take()?;
+            declaration.range.end = range.end;
+            match head {
+                // A bare `;` declares nothing.
+                Head::Keyword if declaration.range.start == range.start => {}
+                Head::Done => out.push(declaration),
+                _ => return None,
+            }
+        }
+    }
+    // A declaration left open at the end: naga says where.
+    if current.is_some() || depth != 0 {
+        return None;
+    }
+    Some(out)
+}
+
+/// The keywords whose next identifier is a name being declared.
+const DECLARING: &[&str] = &["fn", "struct", "alias", "var", "let", "const", "override"];
+
+/// The tokens of a WGSL text with their byte ranges, comments (nested, as WGSL's are) and blanks
+/// skipped.
+#[derive(Clone)]
+struct Tokens<'t> {
+    text: &'t str,
+    at: usize,
+}
+
+impl<'t> Tokens<'t> {
+    /// The next token; `Some(None)` at the end, `None` in a comment that never closes.
+    fn next(&mut self) -> Option<Option<(Token<'t>, Range<usize>)>> {
+        let bytes = self.text.as_bytes();
+        loop {
+            let Some(&b) = bytes.get(self.at) else { return Some(None) };
+            match b {
+                b'/' if bytes.get(self.at + 1) == Some(&b'/') => {
+                    self.at = self.text[self.at..].find('\n').map_or(bytes.len(), |n| self.at + n);
+                }
+                b'/' if bytes.get(self.at + 1) == Some(&b'*') => {
+                    let mut open = 1;
+                    self.at += 2;
+                    while open > 0 {
+                        match (bytes.get(self.at)?, bytes.get(self.at + 1)) {
+                            (b'/', Some(b'*')) => (open, self.at) = (open + 1, self.at + 2),
+                            (b'*', Some(b'/')) => (open, self.at) = (open - 1, self.at + 2),
+                            _ => self.at += 1,
+                        }
+                    }
+                }
+                b if b.is_ascii_whitespace() => self.at += 1,
+                _ => break,
+            }
+        }
+        let (start, b) = (self.at, bytes[self.at]);
+        let word = |c: u8| c.is_ascii_alphanumeric() || c == b'_' || c >= 0x80;
+        let token = if word(b) {
+            // Numbers run on through `.` and exponents' letters: `1.5e3f`, `0x1p-3` (its `-` is a
+            // token of its own, which names nothing either).
+            let number = b.is_ascii_digit();
+            self.at += 1;
+            while let Some(&c) = bytes.get(self.at) {
+                if !(word(c) || (number && c == b'.')) {
+                    break;
+                }
+                self.at += 1;
+            }
+            if number { Token::Number } else { Token::Identifier(&self.text[start..self.at]) }
+        } else {
+            self.at += 1;
+            if b == b'.' && bytes.get(self.at).is_some_and(u8::is_ascii_digit) {
+                while bytes.get(self.at).is_some_and(|&c| word(c) || c == b'.') {
+                    self.at += 1;
+                }
+                Token::Number
+            } else {
+                Token::Punctuation(b)
+            }
+        };
+        Some(Some((token, start..self.at)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cut(text: &str, entry: &str) -> Option<String> {
+        reachable(text, entry).map(|ranges| joined(text, &ranges))
+    }
+
+    #[test]
+    fn an_entry_point_keeps_what_it_names_transitively_and_every_constant() {
+        let text = "enable f16;\n\
+            const PI: f32 = 3.14; // kept: naga keeps named constants\n\
+            struct Light { colour: vec3<f32> }\n\
+            struct Unused { a: f32 };\n\
+            alias Colour = vec3<f32>;\n\
+            @group(0) @binding(0) var<uniform> light: Light;\n\
+            var<private> scratch: array<f32, 4>;\n\
+            fn shade() -> Colour { return light.colour * PI; }\n\
+            /* fn vs() */ fn unused() -> f32 { return scratch[0]; }\n\
+            @fragment fn fs() -> @location(0) vec4<f32> { return vec4(shade(), 1.0); }\n";
+        assert_eq!(
+            cut(text, "fs").as_deref(),
+            Some(
+                "enable f16;\nconst PI: f32 = 3.14;\nstruct Light { colour: vec3<f32> }\nalias Colour = vec3<f32>;\n\
+                 @group(0) @binding(0) var<uniform> light: Light;\nfn shade() -> Colour { return light.colour * PI; }\n\
+                 @fragment fn fs() -> @location(0) vec4<f32> { return vec4(shade(), 1.0); }\n"
+            )
+        );
+    }
+
+    #[test]
+    fn what_is_kept_comes_in_the_order_naga_lowers_the_whole_text() {
+        // naga lowers `removed` first, and `B` before it; then `A`.
+        let text = "fn removed() -> f32 { return B; }\nconst A: f32 = 1.0;\nconst B: f32 = 2.0;\n\
+            @vertex fn vs() -> @builtin(position) vec4<f32> { return vec4(A, B, 0.0, 1.0); }\n";
+        assert_eq!(
+            cut(text, "vs").as_deref(),
+            Some(
+                "const B: f32 = 2.0;\nconst A: f32 = 1.0;\n\
+                 @vertex fn vs() -> @builtin(position) vec4<f32> { return vec4(A, B, 0.0, 1.0); }\n"
+            )
+        );
+    }
+
+    #[test]
+    fn members_attributes_and_declared_names_are_not_uses() {
+        // `colour` is a member and `location` an attribute: the global `colour` goes. A local's
+        // later use (`location`, `x`) is read as the global's, which stays.
+        let text = "var<private> colour: vec4<f32>;\nfn location() {}\nfn x() {}\n\
+            struct Out { @location(0) colour: vec4<f32> }\n\
+            @fragment fn fs(x: f32) -> Out { let location = x; var o: Out; o.colour = vec4(location); return o; }\n";
+        assert_eq!(
+            cut(text, "fs").as_deref(),
+            Some(
+                "fn location() {}\nfn x() {}\nstruct Out { @location(0) colour: vec4<f32> }\n\
+                 @fragment fn fs(x: f32) -> Out { let location = x; var o: Out; o.colour = vec4(location); return o; }\n"
+            )
+        );
+    }
+
+    #[test]
+    fn nothing_is_cut_where_the_scan_cannot_tell() {
+        // Everything reached.
+        assert_eq!(cut("fn f() {}\n@vertex fn vs() { f(); }", "vs"), None);
+        // An entry point the text does not declare, a name declared twice, a body left open, a
+        // comment left open, an unknown entry point: naga reports each from the whole text.
+        assert_eq!(cut("fn g() {}\n@vertex fn vs() {}", "fs"), None);
+        assert_eq!(cut("fn g() {}\nfn g() {}\n@vertex fn vs() {}", "vs"), None);
+        assert_eq!(cut("fn g() {\n@vertex fn vs() {}", "vs"), None);
+        assert_eq!(cut("fn g() {}\n@vertex fn vs() {} /* /* */", "vs"), None);
+        assert_eq!(cut("fn () {}\n@vertex fn vs() {}", "vs"), None);
+    }
+
+    #[test]
+    fn attributes_templates_and_numbers_name_nothing_and_nested_comments_are_skipped() {
+        let text = "override block: u32 = 8u;\nvar<workgroup> tile: array<f32, block>;\n\
+            fn private() {}\n/* fn a() { /* nested */ } */\n\
+            @compute @workgroup_size(block, 1e3f, 0x1p-3) fn main() { tile[0] = 1.5e-3; }\n";
+        assert_eq!(
+            cut(text, "main").as_deref(),
+            Some(
+                "override block: u32 = 8u;\nvar<workgroup> tile: array<f32, block>;\n\
+                 @compute @workgroup_size(block, 1e3f, 0x1p-3) fn main() { tile[0] = 1.5e-3; }\n"
+            )
+        );
+    }
+}
+
+#[cfg(test)]
+mod against_naga {
+    use super::{Kind, declarations, dependency_order};
+    use std::collections::HashMap;
+
+    /// naga's own order of every kind of declaration it lowers in each of Tint's WGSL tests
+    /// (`tests/corpus/tint`) that it parses, against [`dependency_order`]'s.
+    #[test]
+    fn the_dependency_order_is_naga_s_on_tint_s_corpus() {
+        let (mut compared, mut differing) = (0, Vec::new());
+        for entry in walkdir::WalkDir::new("tests/corpus/tint").into_iter().flatten() {
+            let path = entry.path();
+            let Some(text) =
+                path.extension().filter(|e| *e == "wgsl").and_then(|_| std::fs::read_to_string(path).ok())
+            else {
+                continue;
+            };
+            let (Ok(module), Some(declarations)) = (naga::front::wgsl::parse_str(&text), declarations(&text))
+            else {
+                continue;
+            };
+            let by_name: HashMap<&str, usize> =
+                declarations.iter().enumerate().filter_map(|(i, d)| Some((d.name?, i))).collect();
+            let order = dependency_order(&declarations, &by_name);
+            let ours = |kind: Kind| -> Vec<&str> {
+                order
+                    .iter()
+                    .filter(|&&d| declarations[d].kind == kind)
+                    .filter_map(|&d| declarations[d].name)
+                    .collect()
+            };
+            let named = |name: &Option<String>| name.clone();
+            let structs =
+                module.types.iter().filter(|(_, t)| matches!(t.inner, naga::TypeInner::Struct { .. }));
+            let naga_s: [(Kind, Vec<String>); 4] = [
+                (Kind::Function, module.functions.iter().filter_map(|(_, f)| named(&f.name)).collect()),
+                (
+                    Kind::Constant,
+                    (module.constants.iter().filter_map(|(_, c)| named(&c.name)))
+                        .chain(module.overrides.iter().filter_map(|(_, o)| named(&o.name)))
+                        .collect(),
+                ),
+                (
+                    Kind::Variable,
+                    module.global_variables.iter().filter_map(|(_, v)| named(&v.name)).collect(),
+                ),
+                (Kind::Struct, structs.filter_map(|(_, t)| named(&t.name)).collect()),
+            ];
+            compared += 1;
+            for (kind, theirs) in naga_s {
+                // Each kind as far as both name it (naga keeps `const` and `override` apart).
+                let ours: Vec<&str> =
+                    ours(kind).into_iter().filter(|n| theirs.iter().any(|t| t == n)).collect();
+                let theirs: Vec<&str> =
+                    theirs.iter().map(String::as_str).filter(|n| ours.contains(n)).collect();
+                if ours != theirs {
+                    differing.push(format!("{}: {kind:?}: ours {ours:?}, naga's {theirs:?}", path.display()));
+                }
+            }
+        }
+        assert!(compared > 2_500, "only {compared} files compared");
+        assert!(differing.is_empty(), "{}", differing.join("\n"));
+    }
+}
