@@ -97,17 +97,80 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
     out.push_str("];\n");
     let mut top = Scope::new("the top level", PRELUDE_NAMES);
     let mut clashes = Vec::new();
+    top.reserve(SHARED);
+    let mut shared = Shared::default();
     for shader in &manifest.shaders {
         let place = format!("shader `{}` in `{}`", shader.name, shader.file);
         let module = top.claim(&shader.name, Case::Snake, &place);
-        clashes.extend(shader_module(&mut out, shader, &module, &place, &packs));
+        clashes.extend(shader_module(&mut out, shader, &module, &place, &packs, &mut shared));
     }
+    shared.write(&mut out);
     clashes.extend(top.clashes);
     // Two names that clash as one item clash as the items made from it too (a kernel's constant
     // and its workgroup size): said once.
     let mut said = std::collections::HashSet::new();
     clashes.retain(|c| said.insert((c.first.0.clone(), c.second.0.clone())));
     if clashes.is_empty() { Ok(out) } else { Err(clashes) }
+}
+
+/// The module that holds what many shaders' modules would otherwise each write out: the generated
+/// Rust grows with distinct layouts, not with shaders.
+const SHARED: &str = "kiln_shared";
+
+/// Texts several shaders' modules have in common, each written once into [`SHARED`] and named
+/// from there: the uniform block structs of a shader (a module of their own, re-exported), and
+/// each pass's bind group layout and interfaces (statics).
+#[derive(Default)]
+struct Shared {
+    /// Each distinct item's text, by its text, with its number.
+    blocks: BTreeMap<String, usize>,
+    statics: BTreeMap<(&'static str, String), usize>,
+}
+
+impl Shared {
+    /// The path of the module holding a shader's struct text, `blocks`.
+    fn blocks(&mut self, blocks: String) -> String {
+        let next = self.blocks.len();
+        let n = *self.blocks.entry(blocks).or_insert(next);
+        format!("super::{SHARED}::blocks_{n}")
+    }
+
+    /// The path of a static `[ty; len]` holding `items` (lines of its elements).
+    fn array(&mut self, ty: &'static str, items: String) -> String {
+        let next = self.statics.len();
+        let n = *self.statics.entry((ty, items)).or_insert(next);
+        format!("super::{SHARED}::{}_{n}", ty.to_uppercase())
+    }
+
+    fn write(self, out: &mut String) {
+        if self.blocks.is_empty() && self.statics.is_empty() {
+            return;
+        }
+        let _ = writeln!(
+            out,
+            "\n/// What several shaders' modules share: their struct definitions and layouts, written once.\n\
+             #[doc(hidden)]\n\
+             #[allow(non_snake_case, non_camel_case_types, non_upper_case_globals, dead_code, clippy::all)]\n\
+             pub mod {SHARED} {{"
+        );
+        let mut blocks: Vec<(usize, String)> = self.blocks.into_iter().map(|(text, n)| (n, text)).collect();
+        blocks.sort();
+        for (n, text) in blocks {
+            let _ = write!(out, "pub mod blocks_{n} {{\n{text}}}\n");
+        }
+        let mut statics: Vec<(usize, (&str, String))> =
+            self.statics.into_iter().map(|(key, n)| (n, key)).collect();
+        statics.sort();
+        for (n, (ty, items)) in statics {
+            let len = items.lines().filter(|l| !l.trim_start().starts_with("//")).count();
+            let _ = write!(
+                out,
+                "pub(super) static {}_{n}: [super::{ty}; {len}] = [\n{items}];\n",
+                ty.to_uppercase()
+            );
+        }
+        out.push_str("}\n");
+    }
 }
 
 /// A variant as the generated module lists it: its key, its vertex and fragment modules, and a
@@ -146,6 +209,7 @@ fn shader_module(
     module: &str,
     place: &str,
     packs: &PackNumbers,
+    shared: &mut Shared,
 ) -> Vec<NameClash> {
     let _ = writeln!(out, "\n/// `{}` ({})", doc_text(&shader.name), doc_text(&shader.file));
     let _ = writeln!(
@@ -162,9 +226,13 @@ fn shader_module(
     }
     let mut clashes = handles::handles(out, shader, module, &mut scope, place);
     for pass in &shader.passes {
-        clashes.extend(pass_static(out, pass, packs, module, &mut scope, place));
+        clashes.extend(pass_static(out, pass, packs, module, &mut scope, place, shared));
     }
-    layout::uniform_structs(out, shader, &mut scope, place);
+    let mut blocks = String::new();
+    layout::uniform_structs(&mut blocks, shader, &mut scope, place);
+    if !blocks.is_empty() {
+        let _ = writeln!(out, "    pub use {}::*;", shared.blocks(blocks));
+    }
     clashes.extend(scope.clashes);
     out.push_str("}\n");
     clashes
@@ -177,6 +245,7 @@ fn pass_static(
     module: &str,
     scope: &mut Scope,
     place: &str,
+    shared: &mut Shared,
 ) -> Vec<NameClash> {
     let quoted = |names: &[String]| names.iter().map(|k| string_literal(k)).collect::<Vec<_>>().join(", ");
     let _ = writeln!(
@@ -192,7 +261,7 @@ fn pass_static(
     let _ = writeln!(out, "        kernels: &[{}],", quoted(&pass.kernels));
     let dynamic: Vec<String> = pass.dynamic_keywords().cloned().collect();
     let _ = writeln!(out, "        dynamic_keywords: &[{}],", quoted(&dynamic));
-    out.push_str("        layout: &[\n");
+    let mut entries = String::new();
     for group in &pass.layout {
         for entry in &group.entries {
             let kind = match &entry.resource {
@@ -211,13 +280,13 @@ fn pass_static(
                 ),
                 Resource::Sampler { comparison } => format!("Sampler {{ comparison: {comparison} }}"),
                 Resource::Other { description } => {
-                    let _ = writeln!(out, "            // Unsupported: {}.", doc_text(description));
+                    let _ = writeln!(entries, "    // Unsupported: {}.", doc_text(description));
                     "Uniform { size: 0 }".to_string()
                 }
             };
             let _ = writeln!(
-                out,
-                "            super::BindingEntry {{ group: {}, binding: {}, name: {}, vertex: {}, fragment: {}, kind: super::BindingKind::{kind} }},",
+                entries,
+                "    super::BindingEntry {{ group: {}, binding: {}, name: {}, vertex: {}, fragment: {}, kind: super::BindingKind::{kind} }},",
                 group.group,
                 entry.binding,
                 string_literal(&entry.name),
@@ -226,7 +295,8 @@ fn pass_static(
             );
         }
     }
-    out.push_str("        ],\n        interfaces: &[\n");
+    let _ = writeln!(out, "        layout: &{},", shared.array("BindingEntry", entries));
+    let mut interfaces = String::new();
     let pairs = |attributes: &[crate::reflect::Attribute]| {
         attributes
             .iter()
@@ -236,15 +306,16 @@ fn pass_static(
     };
     for interface in &pass.interfaces {
         let _ = writeln!(
-            out,
-            "            super::Interface {{ entry_point: {}, inputs: &[{}], outputs: &[{}], workgroup_size: {:?} }},",
+            interfaces,
+            "    super::Interface {{ entry_point: {}, inputs: &[{}], outputs: &[{}], workgroup_size: {:?} }},",
             string_literal(&interface.entry_point),
             pairs(&interface.inputs),
             pairs(&interface.outputs),
             interface.workgroup_size.unwrap_or_default()
         );
     }
-    out.push_str("        ],\n        modules: &[\n");
+    let _ = writeln!(out, "        interfaces: &{},", shared.array("Interface", interfaces));
+    out.push_str("        modules: &[\n");
     let range = |backend: Backend, file: Option<&ModuleFile>| {
         let number = file.and_then(|f| packs[backend].get(pass.packs.get(f.pack)?.as_str()));
         match (file, number) {
@@ -252,13 +323,16 @@ fn pass_static(
             _ => "super::NONE, 0, 0".to_string(),
         }
     };
-    for module in &pass.modules {
-        let ranges: Vec<String> = EMBEDDED.iter().map(|&b| range(b, module.file(b))).collect();
-        let _ = writeln!(out, "            [{}, {}],", module.interface, ranges.join(", "));
-    }
+    rows(
+        out,
+        pass.modules.iter().map(|module| {
+            let ranges: Vec<String> = EMBEDDED.iter().map(|&b| range(b, module.file(b))).collect();
+            format!("[{}, {}],", module.interface, ranges.join(", "))
+        }),
+    );
     // Variants sorted by key, for binary search.
     let words = pass.keywords.len().div_ceil(64);
-    let mut rows: Vec<VariantRow> = pass
+    let mut variants: Vec<VariantRow> = pass
         .variants
         .iter()
         .map(|variant| {
@@ -271,28 +345,54 @@ fn pass_static(
             (key, [variant.vertex, variant.fragment], variant.kernels.as_slice())
         })
         .collect();
-    rows.sort();
+    variants.sort();
     let _ = writeln!(out, "        ],\n        key_words: {words},\n        keys: &[");
     // A pass without keywords has keys of no words: its one variant is found by an empty key.
-    for (key, ..) in rows.iter().filter(|(key, ..)| !key.is_empty()) {
-        let words: Vec<String> = key.iter().map(|w| format!("{w:#x}")).collect();
-        let _ = writeln!(out, "            {},", words.join(", "));
-    }
+    let keys = variants.iter().filter(|(key, ..)| !key.is_empty());
+    rows(out, keys.map(|(key, ..)| key.iter().map(|w| format!("{w:#x},")).collect::<Vec<_>>().join(" ")));
     out.push_str("        ],\n        variants: &[\n");
     let index = |m: Option<usize>| m.map_or("super::NONE".to_string(), |m| m.to_string());
-    for (_, [vertex, fragment], _) in &rows {
-        let _ = writeln!(out, "            [{}, {}],", index(*vertex), index(*fragment));
-    }
+    rows(
+        out,
+        variants
+            .iter()
+            .map(|(_, [vertex, fragment], _)| format!("[{}, {}],", index(*vertex), index(*fragment))),
+    );
     out.push_str("        ],\n        kernel_modules: &[\n");
-    for (.., kernels) in rows.iter().filter(|(.., kernels)| !kernels.is_empty()) {
-        let modules: Vec<String> = kernels.iter().map(|m| index(*m)).collect();
-        let _ = writeln!(out, "            {},", modules.join(", "));
-    }
+    let kernels = variants.iter().filter(|(.., kernels)| !kernels.is_empty());
+    rows(
+        out,
+        kernels.map(|(.., kernels)| {
+            kernels.iter().map(|m| format!("{},", index(*m))).collect::<Vec<_>>().join(" ")
+        }),
+    );
     out.push_str("        ],\n    };\n");
     handles::kernel_constants(out, pass, scope, place);
     let mut clashes = handles::pass_keywords(out, pass, module, place);
     clashes.extend(overrides_struct(out, pass, place));
     clashes
+}
+
+/// Writes array elements (each with its comma) a few to a line: the tables grow with variants
+/// and modules, and a line per element was most of the generated module's bytes.
+fn rows(out: &mut String, elements: impl Iterator<Item = String>) {
+    let mut line = 0;
+    for element in elements {
+        if line == 0 {
+            out.push_str("            ");
+        } else {
+            out.push(' ');
+        }
+        out.push_str(&element);
+        line += element.len() + 1;
+        if line > 80 {
+            out.push('\n');
+            line = 0;
+        }
+    }
+    if line > 0 {
+        out.push('\n');
+    }
 }
 
 /// `PassNOverrides`: the pass's own `override` constants (its `dynamic_branch` keywords are set

@@ -17,8 +17,8 @@ use std::ops::Range;
 /// the order naga lowers them ([`dependency_order`]), or `None` when nothing would be left out
 /// (or the scan cannot tell).
 pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
-    let declarations = declarations(text)?;
-    let mut by_name: HashMap<&str, usize> = HashMap::with_capacity(declarations.len());
+    let (declarations, uses) = declarations(text)?;
+    let mut by_name: Names = HashMap::with_capacity_and_hasher(declarations.len(), Default::default());
     for (index, declaration) in declarations.iter().enumerate() {
         if let Some(name) = declaration.name
             && by_name.insert(name, index).is_some()
@@ -40,7 +40,7 @@ pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
         }
     }
     while let Some(index) = work.pop() {
-        for name in &declarations[index].names {
+        for name in &uses[declarations[index].uses.clone()] {
             if let Some(&used) = by_name.get(name)
                 && !kept[used]
             {
@@ -52,14 +52,14 @@ pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
     if kept.iter().all(|k| *k) {
         return None;
     }
-    let order = dependency_order(&declarations, &by_name);
+    let order = dependency_order(&declarations, &uses, &by_name);
     Some(order.into_iter().filter(|&d| kept[d]).map(|d| declarations[d].range.clone()).collect())
 }
 
 /// The declarations in the order naga's WGSL front end lowers them: in text order, each after
 /// what it names (depth first). The cut keeps this order, so that naga lowers what it keeps in the
 /// order it would have in the whole text, and writes its declarations in that order.
-fn dependency_order(declarations: &[Declaration], by_name: &HashMap<&str, usize>) -> Vec<usize> {
+fn dependency_order(declarations: &[Declaration], uses: &[&str], by_name: &Names) -> Vec<usize> {
     #[derive(Clone, Copy, PartialEq)]
     enum Visit {
         New,
@@ -76,8 +76,7 @@ fn dependency_order(declarations: &[Declaration], by_name: &HashMap<&str, usize>
         // Each open declaration with the next of its names to follow.
         let mut path = vec![(start, 0)];
         while let Some((at, next)) = path.last_mut() {
-            let names = &declarations[*at].names;
-            if let Some(name) = names.get(*next) {
+            if let Some(name) = uses[declarations[*at].uses.clone()].get(*next) {
                 *next += 1;
                 if let Some(&used) = by_name.get(name)
                     && visits[used] == Visit::New
@@ -146,12 +145,17 @@ enum Head {
     Done,
 }
 
-/// One top-level declaration: where it is, what it declares, and every identifier in it.
+/// The declarations of a text by name (a fast hash: every stage text a build compiles is
+/// scanned).
+type Names<'t> = HashMap<&'t str, usize, foldhash::fast::FixedState>;
+
+/// One top-level declaration: where it is, what it declares, and where its uses are in the
+/// text's list of them (the identifiers in it that may name a global).
 struct Declaration<'t> {
     range: Range<usize>,
     kind: Kind,
     name: Option<&'t str>,
-    names: Vec<&'t str>,
+    uses: Range<usize>,
 }
 
 /// A token of the scan: an identifier, or one byte of punctuation.
@@ -163,24 +167,19 @@ enum Token<'t> {
     Number,
 }
 
-/// `text`'s top-level declarations, or `None` where its shape is not one the scan knows (an
-/// unclosed body or comment, a removable declaration without a name).
-fn declarations(text: &str) -> Option<Vec<Declaration<'_>>> {
+/// `text`'s top-level declarations and their uses, or `None` where its shape is not one the scan
+/// knows (an unclosed body or comment, a removable declaration without a name).
+fn declarations(text: &str) -> Option<(Vec<Declaration<'_>>, Vec<&str>)> {
     let mut tokens = Tokens { text, at: 0 };
-    let mut out = Vec::new();
+    let (mut out, mut uses) = (Vec::new(), Vec::new());
     let mut current: Option<(Declaration, Head)> = None;
     let (mut depth, mut previous) = (0usize, Token::Number);
     // A `var`'s `<address space>`, skipped before its name.
     let mut in_template = false;
     while let Some((token, range)) = tokens.next()? {
         let (declaration, head) = current.get_or_insert_with(|| {
-            let declaration = Declaration {
-                range: range.start..range.start,
-                kind: Kind::Other,
-                name: None,
-                names: Vec::new(),
-            };
-            (declaration, Head::Keyword)
+            let (start, at) = (range.start, uses.len());
+            (Declaration { range: start..start, kind: Kind::Other, name: None, uses: at..at }, Head::Keyword)
         });
         let mut ends = false;
         match token {
@@ -191,7 +190,7 @@ fn declarations(text: &str) -> Option<Vec<Declaration<'_>>> {
                     || matches!(previous, Token::Identifier(k) if DECLARING.contains(&k))
                     || matches!(tokens.clone().next(), Some(Some((Token::Punctuation(b':'), _))));
                 if !declared {
-                    declaration.names.push(word);
+                    uses.push(word);
                 }
                 if depth == 0 && !in_template && previous != Token::Punctuation(b'@') {
                     match head {
@@ -226,6 +225,7 @@ fn declarations(text: &str) -> Option<Vec<Declaration<'_>>> {
         if ends {
             let (mut declaration, head) = current.take()?;
             declaration.range.end = range.end;
+            declaration.uses.end = uses.len();
             match head {
                 // A bare `;` declares nothing.
                 Head::Keyword if declaration.range.start == range.start => {}
@@ -238,7 +238,7 @@ fn declarations(text: &str) -> Option<Vec<Declaration<'_>>> {
     if current.is_some() || depth != 0 {
         return None;
     }
-    Some(out)
+    Some((out, uses))
 }
 
 /// The keywords whose next identifier is a name being declared.
@@ -397,7 +397,6 @@ mod tests {
 #[cfg(test)]
 mod against_naga {
     use super::{Kind, declarations, dependency_order};
-    use std::collections::HashMap;
 
     /// naga's own order of every kind of declaration it lowers in each of Tint's WGSL tests
     /// (`tests/corpus/tint`) that it parses, against [`dependency_order`]'s.
@@ -411,13 +410,14 @@ mod against_naga {
             else {
                 continue;
             };
-            let (Ok(module), Some(declarations)) = (naga::front::wgsl::parse_str(&text), declarations(&text))
+            let (Ok(module), Some((declarations, uses))) =
+                (naga::front::wgsl::parse_str(&text), declarations(&text))
             else {
                 continue;
             };
-            let by_name: HashMap<&str, usize> =
+            let by_name: super::Names =
                 declarations.iter().enumerate().filter_map(|(i, d)| Some((d.name?, i))).collect();
-            let order = dependency_order(&declarations, &by_name);
+            let order = dependency_order(&declarations, &uses, &by_name);
             let ours = |kind: Kind| -> Vec<&str> {
                 order
                     .iter()
