@@ -176,7 +176,10 @@ fn declarations(text: &str) -> Option<(Vec<Declaration<'_>>, Vec<&str>)> {
     let (mut depth, mut previous) = (0usize, Token::Number);
     // A `var`'s `<address space>`, skipped before its name.
     let mut in_template = false;
-    while let Some((token, range)) = tokens.next()? {
+    // One token of lookahead: a name followed by `:` is being declared.
+    let mut following = tokens.next()?;
+    while let Some((token, range)) = following {
+        following = tokens.next()?;
         let (declaration, head) = current.get_or_insert_with(|| {
             let (start, at) = (range.start, uses.len());
             (Declaration { range: start..start, kind: Kind::Other, name: None, uses: at..at }, Head::Keyword)
@@ -188,7 +191,7 @@ fn declarations(text: &str) -> Option<(Vec<Declaration<'_>>, Vec<&str>)> {
                 // name being declared (`x: T`, `let x`, `fn f`); the rest may.
                 let declared = matches!(previous, Token::Punctuation(b'.' | b'@'))
                     || matches!(previous, Token::Identifier(k) if DECLARING.contains(&k))
-                    || matches!(tokens.clone().next(), Some(Some((Token::Punctuation(b':'), _))));
+                    || matches!(following, Some((Token::Punctuation(b':'), _)));
                 if !declared {
                     uses.push(word);
                 }
@@ -246,7 +249,6 @@ const DECLARING: &[&str] = &["fn", "struct", "alias", "var", "let", "const", "ov
 
 /// The tokens of a WGSL text with their byte ranges, comments (nested, as WGSL's are) and blanks
 /// skipped.
-#[derive(Clone)]
 struct Tokens<'t> {
     text: &'t str,
     at: usize,

@@ -4,7 +4,7 @@
 use super::ProjectError;
 use super::materials::config_folder_above;
 use super::workspace::{SHADER_EXTENSIONS, bind_group_names, include_config};
-use crate::build::{BuildOptions, build};
+use crate::build::{BuildOptions, ParseScope, build};
 use crate::catalog::{Catalog, CatalogInput, CatalogProgram, catalog};
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{Variant, select_variant};
@@ -88,10 +88,12 @@ fn requested_variant(
 }
 
 /// Preprocesses one variant of one pass for one stage (a `_fragment` keyword is not defined in
-/// the vertex stage). The text is `None` when any diagnostic is an error.
+/// the vertex stage), whole or (`scope`) cut as a build cuts it. The text is `None` when any
+/// diagnostic is an error.
 pub fn preprocess_variant(
     store: &mut SourceStore,
     request: &VariantRequest,
+    scope: ParseScope,
 ) -> Result<(Option<Preprocessed>, Vec<Diagnostic>), ProjectError> {
     let (requested, mut diagnostics) = requested_variant(store, request)?;
     let Some(requested) = requested else { return Ok((None, diagnostics)) };
@@ -100,9 +102,23 @@ pub fn preprocess_variant(
     let keywords: Vec<&str> =
         program.keywords.keywords(program.keywords_for(&requested.variant, request.stage)).collect();
     let macros = keyword_macros(&program.pragmas, &keywords);
-    let output = preprocess_with(&requested.includes, store, wgsl, &macros, request.stage);
+    let mut output = preprocess_with(&requested.includes, store, wgsl, &macros, request.stage);
     diagnostics.extend(output.diagnostics.iter().cloned());
     let ok = !diagnostics::has_errors(&output.diagnostics);
+    // What a build hands naga: the declarations the stage's entry point reaches (a compute file's
+    // first kernel's).
+    let pragmas = &program.pragmas;
+    let entry = match request.stage {
+        Stage::Vertex => pragmas.vertex.as_ref(),
+        Stage::Fragment => pragmas.fragment.as_ref(),
+        Stage::Compute => pragmas.kernels.first(),
+    };
+    if let (true, ParseScope::Reachable, Some(entry)) = (ok, scope, entry)
+        && let Some(kept) = crate::compile::reach::reachable(&output.text, &entry.value)
+    {
+        output.text = crate::compile::reach::joined(&output.text, &kept);
+        output.source_map = output.source_map.cut(&kept);
+    }
     Ok((ok.then_some(output), diagnostics))
 }
 

@@ -4,6 +4,7 @@
 
 use crate::support::{fixture_files, kiln, root};
 use expect_test::expect_file;
+use kiln::build::ParseScope;
 use kiln::diagnostics::{Diagnostic, has_errors, render_plain};
 use kiln::listing::program_blocks;
 use kiln::preprocess::{IncludeConfig, Includes, Stage, load_pass, preprocess};
@@ -85,7 +86,7 @@ fn the_vertex_stage_ignores_fragment_only_keywords() {
             project: None,
         };
         let (out, diagnostics) =
-            preprocess_variant(&mut SourceStore::new(), &request).expect("request is valid");
+            preprocess_variant(&mut SourceStore::new(), &request, ParseScope::Whole).expect("request is valid");
         assert!(diagnostics.is_empty());
         out.expect("preprocesses").text
     };
@@ -267,7 +268,7 @@ fn check_folder(folder: &str, expect_errors: bool) {
     assert!(!files.is_empty());
     for path in files {
         let mut store = SourceStore::new();
-        let (_, diagnostics) = preprocess_variant(&mut store, &request_for(&path)).expect("request is valid");
+        let (_, diagnostics) = preprocess_variant(&mut store, &request_for(&path), ParseScope::Whole).expect("request is valid");
         crate::support::assert_pinned(&path, &store, &diagnostics, expect_errors);
     }
 }
@@ -288,7 +289,7 @@ fn the_cli_prints_the_variant_and_exits_1_on_bad_inputs() {
     assert_eq!(output.status.code(), Some(0));
     let request = request_for(Path::new("fixtures/project/shaders/Lit.shader"));
     let request = VariantRequest { keywords: vec!["_CLIPPING".into()], ..request };
-    let (expected, _) = preprocess_variant(&mut SourceStore::new(), &request).expect("valid");
+    let (expected, _) = preprocess_variant(&mut SourceStore::new(), &request, ParseScope::Whole).expect("valid");
     assert_eq!(String::from_utf8_lossy(&output.stdout), expected.expect("text").text);
 
     for path in fixture_files("fixtures/bad/preprocess", "shader") {

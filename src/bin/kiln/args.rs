@@ -120,6 +120,10 @@ pub enum Command {
         /// The stage whose text to print (default: compute for a .compute file, else fragment).
         #[arg(long, value_enum)]
         stage: Option<StageArg>,
+        /// Print only the declarations the stage's entry point reaches (a compute file's first
+        /// kernel's): what `kiln build` hands naga.
+        #[arg(long)]
+        reachable: bool,
     },
     /// Compile every variant the materials use to WGSL and SPIR-V, with a manifest.
     Build {

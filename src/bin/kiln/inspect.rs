@@ -4,6 +4,7 @@
 use crate::args::{Format, StageArg};
 use crate::output::{exit_code, host_failure, print_out, report};
 use kiln::diagnostics;
+use kiln::build::ParseScope;
 use kiln::preprocess::Stage;
 use kiln::project::VariantRequest;
 use kiln::source::SourceStore;
@@ -47,6 +48,7 @@ pub fn preprocess(
     pass: Option<String>,
     keywords: Vec<String>,
     stage: Option<StageArg>,
+    reachable: bool,
 ) -> ExitCode {
     let stage = match stage {
         Some(StageArg::Vertex) => Stage::Vertex,
@@ -57,7 +59,8 @@ pub fn preprocess(
     };
     let request = VariantRequest { shader, pass, keywords, stage, project: None };
     let mut store = SourceStore::new();
-    match kiln::project::preprocess_variant(&mut store, &request) {
+    let scope = if reachable { ParseScope::Reachable } else { ParseScope::Whole };
+    match kiln::project::preprocess_variant(&mut store, &request, scope) {
         Ok((output, problems)) => {
             if let Some(output) = output {
                 print_out(&output.text);

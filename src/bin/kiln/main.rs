@@ -27,8 +27,8 @@ fn main() -> ExitCode {
         .build_global();
     match Cli::parse().command {
         Command::List { paths, format, materials } => inspect::list(paths, format, materials),
-        Command::Preprocess { shader, pass, keywords, stage } => {
-            inspect::preprocess(shader, pass, keywords, stage)
+        Command::Preprocess { shader, pass, keywords, stage, reachable } => {
+            inspect::preprocess(shader, pass, keywords, stage, reachable)
         }
         Command::Reflect { shader, pass, keywords, project } => {
             inspect::reflect(shader, pass, keywords, project)
