@@ -124,7 +124,8 @@ const SHARED: &str = "kiln_shared";
 struct Shared {
     /// Each distinct item's text, by its text, with its number.
     blocks: BTreeMap<String, usize>,
-    statics: BTreeMap<(&'static str, String), usize>,
+    /// Statics by (name, element type, elements), numbered per name.
+    statics: BTreeMap<(&'static str, &'static str, String), usize>,
 }
 
 impl Shared {
@@ -135,11 +136,11 @@ impl Shared {
         format!("super::{SHARED}::blocks_{n}")
     }
 
-    /// The path of a static `[ty; len]` holding `items` (lines of its elements).
-    fn array(&mut self, ty: &'static str, items: String) -> String {
-        let next = self.statics.len();
-        let n = *self.statics.entry((ty, items)).or_insert(next);
-        format!("super::{SHARED}::{}_{n}", ty.to_uppercase())
+    /// The path of a static `NAME_n: [ty; len]` holding `items` (lines of its elements).
+    fn array(&mut self, name: &'static str, ty: &'static str, items: String) -> String {
+        let next = self.statics.keys().filter(|(named, ..)| *named == name).count();
+        let n = *self.statics.entry((name, ty, items)).or_insert(next);
+        format!("super::{SHARED}::{name}_{n}")
     }
 
     fn write(self, out: &mut String) {
@@ -158,16 +159,12 @@ impl Shared {
         for (n, text) in blocks {
             let _ = write!(out, "pub mod blocks_{n} {{\n{text}}}\n");
         }
-        let mut statics: Vec<(usize, (&str, String))> =
-            self.statics.into_iter().map(|(key, n)| (n, key)).collect();
+        let mut statics: Vec<(&str, usize, &str, String)> =
+            self.statics.into_iter().map(|((name, ty, items), n)| (name, n, ty, items)).collect();
         statics.sort();
-        for (n, (ty, items)) in statics {
+        for (name, n, ty, items) in statics {
             let len = items.lines().filter(|l| !l.trim_start().starts_with("//")).count();
-            let _ = write!(
-                out,
-                "pub(super) static {}_{n}: [super::{ty}; {len}] = [\n{items}];\n",
-                ty.to_uppercase()
-            );
+            let _ = write!(out, "pub(super) static {name}_{n}: [super::{ty}; {len}] = [\n{items}];\n");
         }
         out.push_str("}\n");
     }
@@ -295,7 +292,7 @@ fn pass_static(
             );
         }
     }
-    let _ = writeln!(out, "        layout: &{},", shared.array("BindingEntry", entries));
+    let _ = writeln!(out, "        layout: &{},", shared.array("LAYOUT", "BindingEntry", entries));
     let mut interfaces = String::new();
     let pairs = |attributes: &[crate::reflect::Attribute]| {
         attributes
@@ -314,7 +311,7 @@ fn pass_static(
             interface.workgroup_size.unwrap_or_default()
         );
     }
-    let _ = writeln!(out, "        interfaces: &{},", shared.array("Interface", interfaces));
+    let _ = writeln!(out, "        interfaces: &{},", shared.array("INTERFACES", "Interface", interfaces));
     out.push_str("        modules: &[\n");
     let range = |backend: Backend, file: Option<&ModuleFile>| {
         let number = file.and_then(|f| packs[backend].get(pass.packs.get(f.pack)?.as_str()));

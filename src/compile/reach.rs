@@ -17,6 +17,11 @@ use std::ops::Range;
 /// the order naga lowers them ([`dependency_order`]), or `None` when nothing would be left out
 /// (or the scan cannot tell).
 pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
+    // A byte that was not UTF-8 (read as U+FFFD) is an error wherever code holds it (K0001): naga
+    // reports it from the whole text.
+    if text.contains(char::REPLACEMENT_CHARACTER) {
+        return None;
+    }
     let (declarations, uses) = declarations(text)?;
     let mut by_name: Names = HashMap::with_capacity_and_hasher(declarations.len(), Default::default());
     for (index, declaration) in declarations.iter().enumerate() {
@@ -379,6 +384,7 @@ mod tests {
         assert_eq!(cut("fn g() {\n@vertex fn vs() {}", "vs"), None);
         assert_eq!(cut("fn g() {}\n@vertex fn vs() {} /* /* */", "vs"), None);
         assert_eq!(cut("fn () {}\n@vertex fn vs() {}", "vs"), None);
+        assert_eq!(cut("fn caf\u{FFFD}() {}\n@vertex fn vs() {}", "vs"), None);
     }
 
     #[test]

@@ -272,13 +272,15 @@ fn a_kiln_toml_broken_on_its_first_line_is_reported_there() {
 }
 
 /// `build`, `watch` and `check` take the same project flags: a check given the shared cache a
-/// build filled compiles nothing, and one given a usage log checks the variant it names.
+/// build filled compiles nothing (a build from whole texts, as a check parses them), and one
+/// given a usage log checks the variant it names.
 #[test]
 fn check_takes_the_project_flags_build_takes() {
     let dir = tempfile::tempdir().expect("temp dir");
     let (cache, output) = (dir.path().join("cache"), dir.path().join("out"));
     let (cache, output) = (cache.to_str().expect("UTF-8"), output.to_str().expect("UTF-8"));
-    let built = kiln(&["build", "fixtures/project", "--output", output, "--cache-dir", cache]);
+    let built =
+        kiln(&["build", "fixtures/project", "--output", output, "--cache-dir", cache, "--parse-whole"]);
     assert!(built.status.success(), "{}", String::from_utf8_lossy(&built.stderr));
     let checked = kiln(&["check", "fixtures/project", "--cache-dir", cache, "--threads", "1"]);
     let stderr = String::from_utf8_lossy(&checked.stderr);

@@ -85,8 +85,8 @@ fn the_vertex_stage_ignores_fragment_only_keywords() {
             stage: Stage::Vertex,
             project: None,
         };
-        let (out, diagnostics) =
-            preprocess_variant(&mut SourceStore::new(), &request, ParseScope::Whole).expect("request is valid");
+        let (out, diagnostics) = preprocess_variant(&mut SourceStore::new(), &request, ParseScope::Whole)
+            .expect("request is valid");
         assert!(diagnostics.is_empty());
         out.expect("preprocesses").text
     };
@@ -268,7 +268,8 @@ fn check_folder(folder: &str, expect_errors: bool) {
     assert!(!files.is_empty());
     for path in files {
         let mut store = SourceStore::new();
-        let (_, diagnostics) = preprocess_variant(&mut store, &request_for(&path), ParseScope::Whole).expect("request is valid");
+        let (_, diagnostics) =
+            preprocess_variant(&mut store, &request_for(&path), ParseScope::Whole).expect("request is valid");
         crate::support::assert_pinned(&path, &store, &diagnostics, expect_errors);
     }
 }
@@ -289,7 +290,8 @@ fn the_cli_prints_the_variant_and_exits_1_on_bad_inputs() {
     assert_eq!(output.status.code(), Some(0));
     let request = request_for(Path::new("fixtures/project/shaders/Lit.shader"));
     let request = VariantRequest { keywords: vec!["_CLIPPING".into()], ..request };
-    let (expected, _) = preprocess_variant(&mut SourceStore::new(), &request, ParseScope::Whole).expect("valid");
+    let (expected, _) =
+        preprocess_variant(&mut SourceStore::new(), &request, ParseScope::Whole).expect("valid");
     assert_eq!(String::from_utf8_lossy(&output.stdout), expected.expect("text").text);
 
     for path in fixture_files("fixtures/bad/preprocess", "shader") {

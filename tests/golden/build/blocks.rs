@@ -140,41 +140,7 @@
     const _: () = assert!(::core::mem::offset_of!(Particles, count) == 0);
     const _: () = assert!(::core::mem::offset_of!(Particles, scale) == 8);
 }
-
-/// `Test/HalfBlocks` (HalfBlocks.shader)
-#[allow(non_snake_case, non_camel_case_types, non_upper_case_globals, dead_code, clippy::all)]
-pub mod test_halfblocks {
-    pub const NAME: &str = "Test/HalfBlocks";
-
-    /// Pass 0.
-    pub static PASS_0: super::Pass = super::Pass {
-        shader: NAME,
-        index: 0,
-        name: None,
-        keywords: &[],
-        kernels: &[],
-        dynamic_keywords: &[],
-        layout: &[
-            super::BindingEntry { group: 1, binding: 0, name: "halves", vertex: true, fragment: true, kind: super::BindingKind::Uniform { size: 56 } },
-        ],
-        interfaces: &[
-            super::Interface { entry_point: "Vertex", inputs: &[(0, "float32x3")], outputs: &[], workgroup_size: [0, 0, 0] },
-            super::Interface { entry_point: "Fragment", inputs: &[], outputs: &[(0, "float32x4")], workgroup_size: [0, 0, 0] },
-        ],
-        modules: &[
-            [0, 0, 0, 448, 0, 0, 1036],
-            [1, 0, 448, 814, 0, 1036, 1912],
-        ],
-        key_words: 0,
-        keys: &[
-        ],
-        variants: &[
-            [0, 1],
-        ],
-        kernel_modules: &[
-        ],
-    };
-    pass_keywords!(Pass0Keyword, PASS_0, );
+pub mod blocks_1 {
     /// The struct `HalfPair` (16 bytes).
     #[repr(C)]
     #[derive(Clone, Copy, Debug, PartialEq, ::bytemuck::Pod, ::bytemuck::Zeroable)]
@@ -220,4 +186,17 @@ pub mod test_halfblocks {
     const _: () = assert!(::core::mem::offset_of!(Halves, tail) == 24);
     const _: () = assert!(::core::mem::offset_of!(Halves, pair) == 32);
     const _: () = assert!(::core::mem::offset_of!(Halves, last) == 48);
+}
+pub(super) static INTERFACES_0: [super::Interface; 2] = [
+    super::Interface { entry_point: "Vertex", inputs: &[(0, "float32x3")], outputs: &[], workgroup_size: [0, 0, 0] },
+    super::Interface { entry_point: "Fragment", inputs: &[], outputs: &[(0, "float32x4")], workgroup_size: [0, 0, 0] },
+];
+pub(super) static LAYOUT_0: [super::BindingEntry; 3] = [
+    super::BindingEntry { group: 1, binding: 0, name: "blk", vertex: true, fragment: true, kind: super::BindingKind::Uniform { size: 336 } },
+    super::BindingEntry { group: 1, binding: 1, name: "shadow", vertex: true, fragment: true, kind: super::BindingKind::Uniform { size: 224 } },
+    super::BindingEntry { group: 1, binding: 2, name: "particles", vertex: true, fragment: false, kind: super::BindingKind::Storage { read_only: true } },
+];
+pub(super) static LAYOUT_1: [super::BindingEntry; 1] = [
+    super::BindingEntry { group: 1, binding: 0, name: "halves", vertex: true, fragment: true, kind: super::BindingKind::Uniform { size: 56 } },
+];
 }
