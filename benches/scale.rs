@@ -336,8 +336,14 @@ fn main() {
                 memory = peak_mib();
             }
             let ratio = |t: Duration| t.as_secs_f64() / naga.as_secs_f64();
-            (check_ratios.push(ratio(check)), whole_ratios.push(ratio(whole)), cold_ratios.push(ratio(time)));
-            (check_times.push(check), whole_times.push(whole), cold_times.push(time));
+            for (times, ratios, time) in [
+                (&mut check_times, &mut check_ratios, check),
+                (&mut whole_times, &mut whole_ratios, whole),
+                (&mut cold_times, &mut cold_ratios, time),
+            ] {
+                times.push(time);
+                ratios.push(ratio(time));
+            }
             cold = Some(summary);
         }
         let cold = cold.expect("at least one round");
