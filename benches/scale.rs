@@ -6,7 +6,8 @@
 //! kiln's cold build; a no-op rebuild; a rebuild after touching one include; kiln's peak memory in
 //! the cold and the no-op build; the manifest's bytes per variant and the generated Rust's size.
 //! `-- generate N DIR` only writes the project of N variants; `-- rust OUTPUT FILE` the Rust
-//! module generated for a build's output. `-- compute 1000` builds a project of
+//! module generated for a build's output; `-- cut PROJECT` how much of each stage kind's text a
+//! build of a project hands naga. `-- compute 1000` builds a project of
 //! compute shaders instead (100 variants each, two kernels a variant) against naga alone on the
 //! same kernel texts. Both sides allocate with mimalloc, as the CLI does. Results and how to read
 //! them: docs/performance.md.
@@ -263,6 +264,11 @@ fn main() {
     if let Some(at) = args.iter().position(|a| a == "compute") {
         let size = args.get(at + 1).and_then(|n| n.parse().ok()).unwrap_or(1000);
         compute_scale(size);
+        return;
+    }
+    // `-- cut PROJECT` prints how much of each stage kind's text a build hands naga.
+    if let Some(at) = args.iter().position(|a| a == "cut") {
+        print!("{}", cut_table(Path::new(args.get(at + 1).expect("cut PROJECT"))));
         return;
     }
     // `-- rust OUTPUT FILE` writes the Rust module generated for a build's output.

@@ -109,7 +109,7 @@ pub(super) fn build_pass(
     let layout = lay_out(&jobs, &fronts, store, &options.groups, &mut diagnostics);
     let requests: usize = jobs.iter().map(|j| j.requests).sum();
     let served = AtomicUsize::new(0);
-    let outcomes: Vec<StageOutcome> = jobs
+    let mut outcomes: Vec<StageOutcome> = jobs
         .par_iter()
         .zip(fronts.par_iter_mut())
         .map(|(job, front)| {
@@ -126,6 +126,7 @@ pub(super) fn build_pass(
             outcome
         })
         .collect();
+    repack_reused(&mut outcomes, &options.output);
     let compiled: Vec<&Compiled> =
         outcomes.iter().filter_map(|o| Some(&**o.as_ref()?.as_ref().ok()?.0.output()?)).collect();
     let mut bytes_written = 0;
@@ -193,6 +194,33 @@ pub(super) fn build_pass(
         reused,
         shared,
         bytes_written,
+    }
+}
+
+/// A pass with new modules is packed whole: the modules it reuses from the output are read back
+/// (their hashes checked) and packed with the new ones, so that an output built in steps is byte
+/// for byte a clean build's, whose packs hold each pass's modules in order. A module that cannot be
+/// read back stays in its old pack.
+fn repack_reused(outcomes: &mut [StageOutcome], output: &std::path::Path) {
+    let new = |o: &StageOutcome| matches!(o, Some(Ok((built, _))) if built.output().is_some());
+    if !outcomes.iter().any(new) {
+        return;
+    }
+    for outcome in outcomes.iter_mut() {
+        let Some(Ok((Built::Reused(stage), _))) = outcome else { continue };
+        let read = |file: &FileRef| {
+            let bytes = file.read(output).ok()?;
+            (hash(&bytes) == file.hash).then(|| ModuleBytes { hash: file.hash.clone(), bytes })
+        };
+        let modules = stage.files.clone().map(|file| file.map(|f| read(&f).ok_or(())).transpose());
+        if modules.values().any(Result::is_err) {
+            continue;
+        }
+        let modules = modules.map(|m| m.ok().flatten());
+        let compiled = Compiled { modules, reflection: stage.reflection.clone() };
+        if let Some(Ok((built, _))) = outcome {
+            *built = Built::Fetched(Arc::new(compiled));
+        }
     }
 }
 

@@ -50,10 +50,10 @@ fn project_of_1024_variants(project: &Path) {
     let shader = std::fs::read_to_string(project.join("Synth.shader")).expect("shader");
     for copy in 2..=4 {
         let name = format!("Custom RP/Lit {copy}");
-        // Another name, and a comment that makes every stage text its own.
+        // Another name, and a constant (kept in every stage) that makes every stage text its own.
         let renamed = shader.replace("Shader \"Custom RP/Lit\"", &format!("Shader {name:?}")).replacen(
             "WGSLPROGRAM\n",
-            &format!("WGSLPROGRAM\n            // copy {copy}\n"),
+            &format!("WGSLPROGRAM\n            const KILN_COPY: u32 = {copy}u;\n"),
             1,
         );
         assert_ne!(renamed, shader);
