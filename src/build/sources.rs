@@ -269,9 +269,10 @@ impl Naga {
             Some(parsed) => parsed,
             None => self.parse_job(pass, job)?,
         };
+        let from_cut = !parsed.whole;
         let output = match (self.compile_parsed(pass, ask, parsed), &job.whole) {
             // Refused from the cut: the whole text decides, as it did before the cut.
-            (Err(_), Some(whole)) => {
+            (Err(_), Some(whole)) if from_cut => {
                 let module = parse(&whole.text, &Mapper { map: &whole.map, store: pass.store })?;
                 let output = self.compile_parsed(pass, ask, Parsed { module, whole: true })?;
                 pass.session.uncut.fetch_add(1, Ordering::Relaxed);
