@@ -7,8 +7,9 @@
 //! The scan is conservative: whatever it cannot prove unused stays. Every directive,
 //! `const_assert`, `const` and `override` stays (naga's compaction keeps named constants, so the
 //! module after compaction keeps them too), as does every declaration of a form the scan does not
-//! know; a name a local variable shadows counts as a use of the global. A text the scan cannot
-//! split (an unclosed body, a name declared twice) is not cut at all: naga reports it whole.
+//! know; a name a local variable shadows counts as a use of the global (members, attribute names
+//! and names being declared are not uses). A text the scan cannot split (an unclosed body, a name
+//! declared twice, a byte that was not UTF-8) is not cut at all: naga reports it whole.
 
 use std::collections::HashMap;
 use std::ops::Range;
