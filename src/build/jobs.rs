@@ -73,17 +73,16 @@ fn cut(
     entry: &str,
     scope: ParseScope,
 ) -> (String, SourceMap, Option<Box<WholeText>>) {
-    let kept = match scope {
-        ParseScope::Reachable => reach::reachable(&text, entry),
+    let cut = match scope {
+        ParseScope::Reachable => reach::cut(&text, &map, entry),
         ParseScope::Whole => None,
     };
-    let Some(kept) = kept else { return (text, map, None) };
-    let mut cut = reach::joined(&text, &kept);
+    let Some((mut cut, cut_map)) = cut else { return (text, map, None) };
     // For the test of a miss: debug builds spoil the cut of the entry point this names.
     if cfg!(debug_assertions) && std::env::var("KILN_INJECT_CUT_MISS").is_ok_and(|name| name == entry) {
         cut.push_str("fn (\n");
     }
-    (cut, map.cut(&kept), Some(Box::new(WholeText { text, map })))
+    (cut, cut_map, Some(Box::new(WholeText { text, map })))
 }
 
 /// A pass's distinct stage modules, and each variant's job for each of the pass's

@@ -8,7 +8,7 @@
 //! [`Sources::new`], made once per build from its options.
 
 use super::BuildOptions;
-use super::jobs::Job;
+use super::jobs::{Job, WholeText};
 use super::pass::{Built, Compiled};
 use super::session::Session;
 use crate::compile::bind::{self, Declared, PassLayout};
@@ -231,6 +231,13 @@ impl ModuleSource for OtherPasses {
     }
 }
 
+impl WholeText {
+    /// naga's parse of the whole text, its errors placed through its own map.
+    fn parse(&self, store: &SourceStore) -> Result<Parsed, Diagnostic> {
+        Ok(Parsed { module: parse(&self.text, &Mapper { map: &self.map, store })?, whole: true })
+    }
+}
+
 /// naga, when no source has it: parses and compiles; what it made is offered to the build's
 /// other passes.
 struct Naga;
@@ -255,9 +262,9 @@ impl Naga {
             Err(error) => match &job.whole {
                 None => Err(error),
                 Some(whole) => {
-                    let module = parse(&whole.text, &Mapper { map: &whole.map, store: pass.store })?;
+                    let parsed = whole.parse(pass.store)?;
                     pass.session.uncut.fetch_add(1, Ordering::Relaxed);
-                    Ok(Parsed { module, whole: true })
+                    Ok(parsed)
                 }
             },
         }
@@ -273,8 +280,7 @@ impl Naga {
         let output = match (self.compile_parsed(pass, ask, parsed), &job.whole) {
             // Refused from the cut: the whole text decides, as it did before the cut.
             (Err(_), Some(whole)) if from_cut => {
-                let module = parse(&whole.text, &Mapper { map: &whole.map, store: pass.store })?;
-                let output = self.compile_parsed(pass, ask, Parsed { module, whole: true })?;
+                let output = self.compile_parsed(pass, ask, whole.parse(pass.store)?)?;
                 pass.session.uncut.fetch_add(1, Ordering::Relaxed);
                 output
             }

@@ -11,8 +11,16 @@
 //! and names being declared are not uses). A text the scan cannot split (an unclosed body, a name
 //! declared twice, a byte that was not UTF-8) is not cut at all: naga reports it whole.
 
+use crate::preprocess::SourceMap;
 use std::collections::HashMap;
 use std::ops::Range;
+
+/// `text` cut to the declarations `entry` reaches ([`reachable`], [`joined`]), with its source map
+/// cut alike, or `None` when nothing would be left out (or the scan cannot tell).
+pub fn cut(text: &str, map: &SourceMap, entry: &str) -> Option<(String, SourceMap)> {
+    let kept = reachable(text, entry)?;
+    Some((joined(text, &kept), map.cut(&kept)))
+}
 
 /// The byte ranges of `text`'s top-level declarations that the entry point `entry` can reach, in
 /// the order naga lowers them ([`dependency_order`]), or `None` when nothing would be left out

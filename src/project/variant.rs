@@ -114,10 +114,9 @@ pub fn preprocess_variant(
         Stage::Compute => pragmas.kernels.first(),
     };
     if let (true, ParseScope::Reachable, Some(entry)) = (ok, scope, entry)
-        && let Some(kept) = crate::compile::reach::reachable(&output.text, &entry.value)
+        && let Some((text, map)) = crate::compile::reach::cut(&output.text, &output.source_map, &entry.value)
     {
-        output.text = crate::compile::reach::joined(&output.text, &kept);
-        output.source_map = output.source_map.cut(&kept);
+        (output.text, output.source_map) = (text, map);
     }
     Ok((ok.then_some(output), diagnostics))
 }
