@@ -18,7 +18,7 @@ use crate::reflect::{SpirvGap, StageReflection};
 use crate::source::SourceStore;
 use crate::store::{Cache, CachedStage, ModuleBytes, PassIndex, hash};
 use rayon::prelude::*;
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, OnceLock};
 
@@ -206,11 +206,15 @@ fn repack_reused(outcomes: &mut [StageOutcome], output: &std::path::Path) {
     if !outcomes.iter().any(new) {
         return;
     }
+    // Each old pack read once, however many of its modules the pass reuses.
+    let mut packs: HashMap<String, Option<Vec<u8>>> = HashMap::new();
     for outcome in outcomes.iter_mut() {
         let Some(Ok((Built::Reused(stage), _))) = outcome else { continue };
-        let read = |file: &FileRef| {
-            let bytes = file.read(output).ok()?;
-            (hash(&bytes) == file.hash).then(|| ModuleBytes { hash: file.hash.clone(), bytes })
+        let mut read = |file: &FileRef| {
+            let pack =
+                packs.entry(file.path.clone()).or_insert_with(|| std::fs::read(output.join(&file.path)).ok());
+            let bytes = file.slice(pack.as_deref()?)?;
+            (hash(bytes) == file.hash).then(|| ModuleBytes { hash: file.hash.clone(), bytes: bytes.to_vec() })
         };
         let modules = stage.files.clone().map(|file| file.map(|f| read(&f).ok_or(())).transpose());
         if modules.values().any(Result::is_err) {
