@@ -195,28 +195,34 @@ fn compute_scale(variants: usize) {
     let dir: PathBuf = tempfile::tempdir().expect("temp dir").keep();
     let project = dir.join("project");
     generate_compute(&project, variants);
-    let (mut naga_times, mut whole_ratios, mut cut_ratios) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut naga_times, mut whole_ratios, mut alone_ratios, mut cut_ratios) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     let (mut modules, mut built) = (0, None);
     for round in 0..rounds(variants) {
         let (count, naga) = naga_alone(&project);
         modules = count;
         naga_times.push(naga);
         let whole = kiln_build(&project, &dir.join(format!("whole{round}")), true, Some(ParseScope::Whole)).1;
+        let alone =
+            kiln_build(&project, &dir.join(format!("alone{round}")), true, Some(ParseScope::Reachable)).1;
         let (summary, cut) = kiln_build(&project, &dir.join(format!("out{round}")), true, None);
         whole_ratios.push(whole.as_secs_f64() / naga.as_secs_f64());
+        alone_ratios.push(alone.as_secs_f64() / naga.as_secs_f64());
         cut_ratios.push(cut.as_secs_f64() / naga.as_secs_f64());
         built = Some(summary);
     }
     let built = built.expect("built");
     assert_eq!(built.modules, modules, "kiln compiles the texts naga was given");
     println!(
-        "{} threads: {} compute variants, {} kernel modules: naga alone {:.2?}; kiln build / naga: whole texts {}, cut {}",
+        "{} threads: {} compute variants, {} kernel modules: naga alone {:.2?}; kiln build / naga: whole texts {}, cut texts each parsed alone {}, cut texts parsed together {} (naga parsed {} texts)",
         rayon::current_num_threads(),
         built.variants,
         built.modules,
         median(naga_times),
         spread(whole_ratios),
+        spread(alone_ratios),
         spread(cut_ratios),
+        built.parses,
     );
     print!("{}", cut_table(&project));
     let _ = std::fs::remove_dir_all(&dir);
@@ -318,11 +324,12 @@ fn main() {
         let shaders = generate(&dir.join("project"), size);
         let project = dir.join("project");
         // Rounds of naga, check, a cold build from whole texts (`--parse-whole`: kiln before the
-        // cut) and a cold build, interleaved, each reported as its median: a shared machine's
+        // cut), one from cut texts each parsed alone and a cold build, interleaved, each reported as its median: a shared machine's
         // noise moves all alike within a round. Each round's ratios to naga give the ranges.
         let (mut naga_times, mut check_times, mut whole_times, mut cold_times) =
             (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-        let (mut check_ratios, mut whole_ratios, mut cold_ratios) = (Vec::new(), Vec::new(), Vec::new());
+        let (mut check_ratios, mut whole_ratios, mut alone_ratios, mut cold_ratios) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
         let mut modules = 0;
         let mut cold = None;
         let mut memory = 0.0;
@@ -336,6 +343,10 @@ fn main() {
             // makes ext4 search its recently freed inodes, which a first build does not meet.
             let whole =
                 kiln_build(&project, &dir.join(format!("whole{round}")), true, Some(ParseScope::Whole)).1;
+            // Cut, each text parsed alone (`--parse-alone`: kiln before the parse together).
+            let alone =
+                kiln_build(&project, &dir.join(format!("alone{round}")), true, Some(ParseScope::Reachable)).1;
+            alone_ratios.push(alone.as_secs_f64() / naga.as_secs_f64());
             reset_peak();
             let (summary, time) = kiln_build(&project, &dir.join(format!("out{round}")), true, None);
             if round == 0 {
@@ -401,10 +412,13 @@ fn main() {
             "only what includes the file recompiles"
         );
         println!(
-            "  per round, / naga ({rounds} rounds): check {}, build from whole texts {}, build {}",
+            "  per round, / naga ({rounds} rounds): check {}, build from whole texts {}, from cut texts each parsed alone {}, build {}; naga parsed {} texts ({} modules cut out of parses together)",
             spread(check_ratios),
             spread(whole_ratios),
-            spread(cold_ratios)
+            spread(alone_ratios),
+            spread(cold_ratios),
+            cold.parses,
+            cold.parsed_together
         );
         print!("{}", cut_table(&project));
         // For profiling a build of the same project: `KILN_SCALE_KEEP=1` keeps it.

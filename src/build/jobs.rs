@@ -74,7 +74,7 @@ fn cut(
     scope: ParseScope,
 ) -> (String, SourceMap, Option<Box<WholeText>>) {
     let cut = match scope {
-        ParseScope::Reachable => reach::cut(&text, &map, entry),
+        ParseScope::Together | ParseScope::Reachable => reach::cut(&text, &map, entry),
         ParseScope::Whole => None,
     };
     let Some((mut cut, cut_map)) = cut else { return (text, map, None) };

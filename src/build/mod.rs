@@ -81,8 +81,12 @@ pub enum VariantSelection {
 /// What naga parses of a stage text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ParseScope {
-    /// The declarations its entry point reaches (`compile::reach`): `kiln build`. An error in
-    /// code no entry point reaches is not seen.
+    /// The declarations its entry point reaches (`compile::reach`), the texts of a pass's
+    /// variants parsed together where they share declarations (`compile::together`): `kiln
+    /// build`. An error in code no entry point reaches is not seen.
+    Together,
+    /// The declarations its entry point reaches, each text parsed alone (`kiln build
+    /// --parse-alone`).
     Reachable,
     /// All of it, as preprocessed: `kiln check`, which reports errors anywhere in a variant's
     /// text.
@@ -148,7 +152,7 @@ impl BuildOptions {
             output,
             root,
             write,
-            parse: ParseScope::Reachable,
+            parse: ParseScope::Together,
             threads: Some(1),
             backends: Backend::DEFAULT.to_vec(),
             unused_shaders: VariantSelection::Used,
@@ -204,6 +208,10 @@ pub struct BuildSummary {
     /// Modules built from their whole text because naga refused the text cut to what the entry
     /// point reaches (a miss of `compile::reach`'s scan; 0 on every input the suite builds).
     pub uncut: usize,
+    /// Texts naga parsed: a stage text, or texts of one pass parsed together (each once).
+    pub parses: usize,
+    /// Modules cut out of a parse of several texts together (`compile::together`).
+    pub parsed_together: usize,
     /// Bytes of files written.
     pub bytes_written: u64,
     /// Bytes received from and sent to the remote cache.
@@ -386,6 +394,8 @@ fn build_passes(
         parts.push(pass.part);
     }
     summary.uncut = session.uncut.load(std::sync::atomic::Ordering::Relaxed);
+    summary.parses = session.parses.load(std::sync::atomic::Ordering::Relaxed);
+    summary.parsed_together = session.parsed_together.load(std::sync::atomic::Ordering::Relaxed);
     let (remote_warning, remote_bytes) = session.sources.finish();
     summary.remote_bytes = remote_bytes;
     diagnostics.extend(remote_warning);

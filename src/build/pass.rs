@@ -6,7 +6,7 @@ use super::emit::{BuiltPass, pass_manifest, write_failure};
 use super::jobs::{Job, PassJobs, pass_jobs};
 use super::plan::{PassWork, pass_key};
 use super::session::Session;
-use super::sources::{Front, ModuleAsk, PassSources};
+use super::sources::{Front, ModuleAsk, PassSources, parse_together};
 use super::{BuildOptions, COMPILER_REVISION, NAGA_VERSION};
 use crate::catalog::Catalog;
 use crate::compile::Mapper;
@@ -101,7 +101,15 @@ pub(super) fn build_pass(
         shared_fronts: OnceLock::new(),
         remote_fronts: OnceLock::new(),
     };
-    let mut fronts: Vec<Front> = jobs.par_iter().map(|job| session.sources.front(&sources, job)).collect();
+    let known: Vec<Option<Front>> =
+        jobs.par_iter().map(|job| session.sources.known_front(&sources, job)).collect();
+    let asked: Vec<bool> = known.iter().map(Option::is_none).collect();
+    let together = parse_together(&sources, &jobs, &asked);
+    let mut fronts: Vec<Front> = (jobs.par_iter().zip(known).zip(together))
+        .map(|((job, known), together)| {
+            known.unwrap_or_else(|| session.sources.parse_front(&sources, job, together))
+        })
+        .collect();
     // What was parsed now is published for every other build of the pass.
     if fronts.iter().any(|f| matches!(f, Ok((_, Some(_))))) {
         session.sources.publish_fronts(&key, &declared_by_text(&jobs, &fronts));

@@ -8,16 +8,18 @@
 //! [`Sources::new`], made once per build from its options.
 
 use super::BuildOptions;
+use super::ParseScope;
 use super::jobs::{Job, WholeText};
 use super::pass::{Built, Compiled};
 use super::session::Session;
 use crate::compile::bind::{self, Declared, PassLayout};
 use crate::compile::stage::{self, StageRequest};
-use crate::compile::{Mapper, parse};
+use crate::compile::{Mapper, parse, together};
 use crate::diagnostics::Diagnostic;
 use crate::source::SourceStore;
 use crate::store::remote::{RemoteCache, RemoteMode};
 use crate::store::{ModuleBytes, PassIndex, hash, shared};
+use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::atomic::Ordering;
@@ -27,11 +29,22 @@ use std::sync::{Arc, OnceLock};
 /// parsed (kept so that naga does not parse it again for the module).
 pub(super) type Front = Result<(Vec<Declared>, Option<Parsed>), Diagnostic>;
 
-/// A module naga parsed for a job, from its (cut) text or, where naga refused that, its whole
-/// text.
+/// A module naga parsed for a job.
 pub(super) struct Parsed {
     module: naga::Module,
-    whole: bool,
+    from: ParsedFrom,
+}
+
+/// What naga parsed to make a job's module.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum ParsedFrom {
+    /// The job's text (cut, where the build cuts).
+    Text,
+    /// Its whole text, where naga refused the cut one.
+    Whole,
+    /// Its pass's texts together (`compile::together`): where its module fails to compile, its
+    /// own text decides.
+    Together,
 }
 
 /// What the sources of one pass read: the build's session, the pass's entry in the output's
@@ -113,9 +126,15 @@ impl Sources {
         (remote.0.warning(), remote.0.bytes())
     }
 
-    /// The first front a source has, or naga's parse.
-    pub(super) fn front(&self, pass: &PassSources, job: &Job) -> Front {
-        self.fronts.iter().find_map(|source| source.front(pass, job)).unwrap_or_else(|| Naga.parse(pass, job))
+    /// The first front a source has: `None` where naga must parse the job's text.
+    pub(super) fn known_front(&self, pass: &PassSources, job: &Job) -> Option<Front> {
+        self.fronts.iter().find_map(|source| source.front(pass, job))
+    }
+
+    /// The front of a job no source has: from its module cut out of a parse together where
+    /// there is one ([`parse_together`]), else naga's parse of its text.
+    pub(super) fn parse_front(&self, pass: &PassSources, job: &Job, together: Option<naga::Module>) -> Front {
+        Naga.parse(pass, job, together)
     }
 
     /// The first module a source has, or naga's compile.
@@ -234,7 +253,7 @@ impl ModuleSource for OtherPasses {
 impl WholeText {
     /// naga's parse of the whole text, its errors placed through its own map.
     fn parse(&self, store: &SourceStore) -> Result<Parsed, Diagnostic> {
-        Ok(Parsed { module: parse(&self.text, &Mapper { map: &self.map, store })?, whole: true })
+        Ok(Parsed { module: parse(&self.text, &Mapper { map: &self.map, store })?, from: ParsedFrom::Whole })
     }
 }
 
@@ -243,8 +262,11 @@ impl WholeText {
 struct Naga;
 
 impl Naga {
-    fn parse(&self, pass: &PassSources, job: &Job) -> Front {
-        let parsed = self.parse_job(pass, job).map_err(|d| job.in_text(d))?;
+    fn parse(&self, pass: &PassSources, job: &Job, together: Option<naga::Module>) -> Front {
+        let parsed = match together {
+            Some(module) => Parsed { module, from: ParsedFrom::Together },
+            None => self.parse_job(pass, job).map_err(|d| job.in_text(d))?,
+        };
         let declared = bind::declared(&parsed.module, job.entry, stage::naga_stage(job.stage));
         if pass.session.texts.shared(&job.text_hash) {
             let size = declared.iter().map(|d| d.name.len() + 64).sum();
@@ -257,11 +279,13 @@ impl Naga {
     /// is the one reported (as before the cut), and whose module, where it parses, is a miss of
     /// the cut.
     fn parse_job(&self, pass: &PassSources, job: &Job) -> Result<Parsed, Diagnostic> {
+        pass.session.parses.fetch_add(1, Ordering::Relaxed);
         match parse(&job.text, &Mapper { map: &job.map, store: pass.store }) {
-            Ok(module) => Ok(Parsed { module, whole: false }),
+            Ok(module) => Ok(Parsed { module, from: ParsedFrom::Text }),
             Err(error) => match &job.whole {
                 None => Err(error),
                 Some(whole) => {
+                    pass.session.parses.fetch_add(1, Ordering::Relaxed);
                     let parsed = whole.parse(pass.store)?;
                     pass.session.uncut.fetch_add(1, Ordering::Relaxed);
                     Ok(parsed)
@@ -276,15 +300,16 @@ impl Naga {
             Some(parsed) => parsed,
             None => self.parse_job(pass, job)?,
         };
-        let from_cut = !parsed.whole;
-        let output = match (self.compile_parsed(pass, ask, parsed), &job.whole) {
-            // Refused from the cut: the whole text decides, as it did before the cut.
-            (Err(_), Some(whole)) if from_cut => {
-                let output = self.compile_parsed(pass, ask, whole.parse(pass.store)?)?;
-                pass.session.uncut.fetch_add(1, Ordering::Relaxed);
-                output
-            }
-            (output, _) => output?,
+        let output = match parsed.from {
+            ParsedFrom::Together => match self.compile_parsed(pass, ask, parsed) {
+                Ok(output) => {
+                    pass.session.parsed_together.fetch_add(1, Ordering::Relaxed);
+                    output
+                }
+                // Refused as cut out of the parse together: its own text decides.
+                Err(_) => self.compile_own(pass, ask, self.parse_job(pass, job)?)?,
+            },
+            _ => self.compile_own(pass, ask, parsed)?,
         };
         let module = |bytes: Vec<u8>| ModuleBytes { hash: hash(&bytes), bytes };
         let modules = output.modules.map(|bytes| bytes.map(module));
@@ -296,7 +321,27 @@ impl Naga {
         Ok(Built::Compiled(compiled))
     }
 
-    /// One stage module from a parsed text (the job's, or its whole one).
+    /// One stage module from its own text's parse; where naga refuses it from the cut text, from
+    /// the whole text, which decides as it did before the cut.
+    fn compile_own(
+        &self,
+        pass: &PassSources,
+        ask: &ModuleAsk,
+        parsed: Parsed,
+    ) -> Result<stage::StageOutput, Diagnostic> {
+        let from_cut = parsed.from == ParsedFrom::Text;
+        match (self.compile_parsed(pass, ask, parsed), &ask.job.whole) {
+            (Err(_), Some(whole)) if from_cut => {
+                pass.session.parses.fetch_add(1, Ordering::Relaxed);
+                let output = self.compile_parsed(pass, ask, whole.parse(pass.store)?)?;
+                pass.session.uncut.fetch_add(1, Ordering::Relaxed);
+                Ok(output)
+            }
+            (output, _) => output,
+        }
+    }
+
+    /// One stage module from a parsed text (the job's, its whole one, or its pass's together).
     fn compile_parsed(
         &self,
         pass: &PassSources,
@@ -304,8 +349,8 @@ impl Naga {
         parsed: Parsed,
     ) -> Result<stage::StageOutput, Diagnostic> {
         let job = ask.job;
-        let (text, map) = match (&job.whole, parsed.whole) {
-            (Some(whole), true) => (&whole.text, &whole.map),
+        let (text, map) = match (&job.whole, parsed.from) {
+            (Some(whole), ParsedFrom::Whole) => (&whole.text, &whole.map),
             _ => (&job.text, &job.map),
         };
         let request = StageRequest {
@@ -320,4 +365,42 @@ impl Naga {
         };
         stage::compile(parsed.module, &request, &Mapper { map, store: pass.store })
     }
+}
+
+/// The modules of the jobs naga must parse (`asked`), cut out of parses of their pass's texts
+/// together (`compile::together`): jobs of one stage and entry point, a few at a time. `None` for
+/// a job left to its own parse.
+pub(super) fn parse_together(pass: &PassSources, jobs: &[Job], asked: &[bool]) -> Vec<Option<naga::Module>> {
+    let mut modules: Vec<Option<naga::Module>> = (0..jobs.len()).map(|_| None).collect();
+    if pass.options.parse != ParseScope::Together {
+        return modules;
+    }
+    let mut groups: BTreeMap<(&str, &str), Vec<usize>> = BTreeMap::new();
+    for (index, job) in jobs.iter().enumerate().filter(|&(i, _)| asked[i]) {
+        groups.entry((job.stage.name(), job.entry)).or_default().push(index);
+    }
+    let batches: Vec<&[usize]> = groups
+        .values()
+        .flat_map(|members| members.chunks(together::MOST_TEXTS))
+        .filter(|b| b.len() > 1)
+        .collect();
+    let cut: Vec<Vec<(usize, naga::Module)>> = batches
+        .par_iter()
+        .map(|batch| {
+            let texts: Vec<(&str, &str)> =
+                batch.iter().map(|&j| (jobs[j].text.as_str(), jobs[j].entry)).collect();
+            let Some(together) = together::assemble(&texts) else { return Vec::new() };
+            pass.session.parses.fetch_add(1, Ordering::Relaxed);
+            let Some(parsed) = together.parse() else { return Vec::new() };
+            (batch.par_iter().enumerate())
+                .filter_map(|(member, &j)| {
+                    Some((j, together.cut(&parsed, member, stage::naga_stage(jobs[j].stage))?))
+                })
+                .collect()
+        })
+        .collect();
+    for (job, module) in cut.into_iter().flatten() {
+        modules[job] = Some(module);
+    }
+    modules
 }

@@ -286,7 +286,7 @@ pub(crate) fn correct(module: &mut Module, text: &str, mapper: &Mapper) -> Resul
 }
 
 /// Whether the text has an `@align` or `@size` attribute (or the words in a comment).
-fn has_layout_attribute(text: &str) -> bool {
+pub(super) fn has_layout_attribute(text: &str) -> bool {
     text.match_indices('@').any(|(at, _)| {
         let name = text[at + 1..].trim_start();
         name.starts_with("align") || name.starts_with("size")

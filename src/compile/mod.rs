@@ -28,6 +28,7 @@ pub mod reach;
 mod spirv;
 pub(crate) mod stage;
 pub mod target;
+pub(crate) mod together;
 mod wgsl;
 
 use crate::diagnostics::Diagnostic;

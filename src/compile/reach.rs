@@ -31,7 +31,7 @@ pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
     if text.contains(char::REPLACEMENT_CHARACTER) {
         return None;
     }
-    let (declarations, uses) = declarations(text)?;
+    let Scan { declarations, uses, .. } = declarations(text)?;
     let mut by_name: Names = HashMap::with_capacity_and_hasher(declarations.len(), Default::default());
     for (index, declaration) in declarations.iter().enumerate() {
         if let Some(name) = declaration.name
@@ -73,7 +73,7 @@ pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
 /// The declarations in the order naga's WGSL front end lowers them: in text order, each after
 /// what it names (depth first). The cut keeps this order, so that naga lowers what it keeps in the
 /// order it would have in the whole text, and writes its declarations in that order.
-fn dependency_order(declarations: &[Declaration], uses: &[&str], by_name: &Names) -> Vec<usize> {
+pub(super) fn dependency_order(declarations: &[Declaration], uses: &[&str], by_name: &Names) -> Vec<usize> {
     #[derive(Clone, Copy, PartialEq)]
     enum Visit {
         New,
@@ -120,7 +120,7 @@ pub fn joined(text: &str, ranges: &[Range<usize>]) -> String {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Kind {
+pub(super) enum Kind {
     Function,
     Struct,
     Alias,
@@ -143,7 +143,7 @@ impl Kind {
         }
     }
 
-    fn removable(self) -> bool {
+    pub(super) fn removable(self) -> bool {
         matches!(self, Kind::Function | Kind::Struct | Kind::Alias | Kind::Variable)
     }
 }
@@ -161,15 +161,27 @@ enum Head {
 
 /// The declarations of a text by name (a fast hash: every stage text a build compiles is
 /// scanned).
-type Names<'t> = HashMap<&'t str, usize, foldhash::fast::FixedState>;
+pub(super) type Names<'t> = HashMap<&'t str, usize, foldhash::fast::FixedState>;
 
-/// One top-level declaration: where it is, what it declares, and where its uses are in the
-/// text's list of them (the identifiers in it that may name a global).
-struct Declaration<'t> {
-    range: Range<usize>,
-    kind: Kind,
-    name: Option<&'t str>,
-    uses: Range<usize>,
+/// One top-level declaration: where it is, what it declares, and where its uses and locals are
+/// in the text's lists of them.
+pub(super) struct Declaration<'t> {
+    pub range: Range<usize>,
+    pub kind: Kind,
+    pub name: Option<&'t str>,
+    /// The identifiers in it that may name a global.
+    pub uses: Range<usize>,
+    /// The names it declares inside itself (parameters, members, `let`s, `case` labels): the
+    /// identifiers in declaring places other than its own name.
+    pub locals: Range<usize>,
+}
+
+/// A text's top-level declarations, with the lists their uses and locals index. Each identifier
+/// is a slice of the text, so where it is can be told.
+pub(super) struct Scan<'t> {
+    pub declarations: Vec<Declaration<'t>>,
+    pub uses: Vec<&'t str>,
+    pub locals: Vec<&'t str>,
 }
 
 /// A token of the scan: an identifier, or one byte of punctuation.
@@ -181,11 +193,11 @@ enum Token<'t> {
     Number,
 }
 
-/// `text`'s top-level declarations and their uses, or `None` where its shape is not one the scan
-/// knows (an unclosed body or comment, a removable declaration without a name).
-fn declarations(text: &str) -> Option<(Vec<Declaration<'_>>, Vec<&str>)> {
+/// `text`'s top-level declarations, their uses and locals, or `None` where its shape is not one
+/// the scan knows (an unclosed body or comment, a removable declaration without a name).
+pub(super) fn declarations(text: &str) -> Option<Scan<'_>> {
     let mut tokens = Tokens { text, at: 0 };
-    let (mut out, mut uses) = (Vec::new(), Vec::new());
+    let (mut out, mut uses, mut locals) = (Vec::new(), Vec::new(), Vec::new());
     let mut current: Option<(Declaration, Head)> = None;
     let (mut depth, mut previous) = (0usize, Token::Number);
     // A `var`'s `<address space>`, skipped before its name.
@@ -195,8 +207,15 @@ fn declarations(text: &str) -> Option<(Vec<Declaration<'_>>, Vec<&str>)> {
     while let Some((token, range)) = following {
         following = tokens.next()?;
         let (declaration, head) = current.get_or_insert_with(|| {
-            let (start, at) = (range.start, uses.len());
-            (Declaration { range: start..start, kind: Kind::Other, name: None, uses: at..at }, Head::Keyword)
+            let (start, at, local) = (range.start, uses.len(), locals.len());
+            let declaration = Declaration {
+                range: start..start,
+                kind: Kind::Other,
+                name: None,
+                uses: at..at,
+                locals: local..local,
+            };
+            (declaration, Head::Keyword)
         });
         let mut ends = false;
         match token {
@@ -206,10 +225,15 @@ fn declarations(text: &str) -> Option<(Vec<Declaration<'_>>, Vec<&str>)> {
                 let declared = matches!(previous, Token::Punctuation(b'.' | b'@'))
                     || matches!(previous, Token::Identifier(k) if DECLARING.contains(&k))
                     || matches!(following, Some((Token::Punctuation(b':'), _)));
+                let top = depth == 0 && !in_template && previous != Token::Punctuation(b'@');
                 if !declared {
                     uses.push(word);
+                } else if !(matches!(previous, Token::Punctuation(b'.' | b'@'))
+                    || (top && *head == Head::Name))
+                {
+                    locals.push(word);
                 }
-                if depth == 0 && !in_template && previous != Token::Punctuation(b'@') {
+                if top {
                     match head {
                         Head::Keyword => {
                             declaration.kind = Kind::of(word);
@@ -243,6 +267,7 @@ fn declarations(text: &str) -> Option<(Vec<Declaration<'_>>, Vec<&str>)> {
             let (mut declaration, head) = current.take()?;
             declaration.range.end = range.end;
             declaration.uses.end = uses.len();
+            declaration.locals.end = locals.len();
             match head {
                 // A bare `;` declares nothing.
                 Head::Keyword if declaration.range.start == range.start => {}
@@ -255,7 +280,7 @@ fn declarations(text: &str) -> Option<(Vec<Declaration<'_>>, Vec<&str>)> {
     if current.is_some() || depth != 0 {
         return None;
     }
-    Some((out, uses))
+    Some(Scan { declarations: out, uses, locals })
 }
 
 /// The keywords whose next identifier is a name being declared.
@@ -427,7 +452,7 @@ mod against_naga {
             else {
                 continue;
             };
-            let (Ok(module), Some((declarations, uses))) =
+            let (Ok(module), Some(super::Scan { declarations, uses, .. })) =
                 (naga::front::wgsl::parse_str(&text), declarations(&text))
             else {
                 continue;

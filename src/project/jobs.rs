@@ -228,7 +228,7 @@ fn load_given(
         output: mode.output.clone().unwrap_or_else(|| workspace.output.clone()),
         root: workspace.root.clone(),
         write: mode.write,
-        parse: mode.parse.unwrap_or(if mode.write { ParseScope::Reachable } else { ParseScope::Whole }),
+        parse: mode.parse.unwrap_or(if mode.write { ParseScope::Together } else { ParseScope::Whole }),
         threads: mode.threads,
         backends: Backend::ALL
             .iter()

@@ -35,6 +35,7 @@ mod scale;
 mod shards;
 mod support;
 mod tidy;
+mod together;
 mod trust;
 mod ubershader;
 mod unity_corpus;

@@ -283,7 +283,7 @@ fn global_name(id: &str, declarations: &HashMap<&str, &str>, names: &mut HashMap
 const EVERY_KEYWORD: VariantSelection = VariantSelection::DefaultsAndEachKeyword;
 
 /// The fixtures every build test builds.
-const FIXTURES: &[&str] = &[
+pub const FIXTURES: &[&str] = &[
     "accepted",
     "bind_groups",
     "blocks",

@@ -45,8 +45,12 @@ pub struct ProjectArgs {
     pub backends: Vec<kiln::manifest::Backend>,
     /// Hand naga every stage text whole, as `check` does, rather than the declarations its entry
     /// point reaches (the default for `build`; docs/performance.md).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "parse_alone")]
     pub parse_whole: bool,
+    /// Hand naga each stage text's reachable declarations by themselves, rather than parsing the
+    /// texts of a pass's variants together where they share declarations (docs/performance.md).
+    #[arg(long)]
+    pub parse_alone: bool,
 }
 
 /// A back end by its name in `kiln.toml`.
@@ -80,7 +84,11 @@ impl ProjectArgs {
             cache_dir: self.cache_dir,
             remote_cache: self.remote_cache,
             backends: self.backends,
-            parse: self.parse_whole.then_some(kiln::build::ParseScope::Whole),
+            parse: match (self.parse_whole, self.parse_alone) {
+                (true, _) => Some(kiln::build::ParseScope::Whole),
+                (false, true) => Some(kiln::build::ParseScope::Reachable),
+                (false, false) => None,
+            },
             remote_cache_mode: self.remote_cache_mode.map(|mode| match mode {
                 RemoteCacheMode::Read => kiln::store::remote::RemoteMode::Read,
                 RemoteCacheMode::Write => kiln::store::remote::RemoteMode::Write,

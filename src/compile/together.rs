@@ -1,0 +1,640 @@
+//! Stage texts of one pass parsed together: naga parses the declarations its variants share once,
+//! then each variant's module is cut out of the one it made, the same as naga makes from the
+//! variant's own text (a pass's fragment variants share the lighting library and differ in a
+//! function or two, so most of each parse was the same work).
+//!
+//! Each text's declarations ([`reach`]'s scan) are told apart by their text and what they name:
+//! a declaration that is the same, naming the same declarations, in several texts is written once.
+//! Where a name stands for different declarations, each is written under a name of its own
+//! (`GetNormal` as `GetNormal_kIlN4`) and the names are given back once a variant's module is cut
+//! out. The declarations go in an order that keeps every text's own (its dependency order, which
+//! naga lowers it in), each after a marker (`alias kIlN_m7 = f32;`), so that the type naga makes
+//! first for a declaration can be traced to it.
+//!
+//! A variant's module is the parse's, with its entry point only, the constants of other texts
+//! unnamed, compacted: naga lowers a declaration the same wherever it is, so this is the module
+//! its own text gives, compacted, unless a type it keeps was made first for another text's
+//! declaration (types are numbered in the order naga meets them). Then that variant is left to its
+//! own parse, as is every text the scan cannot vouch for: one that names what another text
+//! declares and it does not (its parse would fail), one that declares a name inside a declaration
+//! under a name written anew, one with other directives than the rest, a `const_assert`, a
+//! `diagnostic` filter or `@align`/`@size`.
+
+use super::panics::contain_panics;
+use super::reach::{self, Declaration, Kind, Names};
+use std::collections::{HashMap, HashSet};
+
+/// What names written anew and markers start or contain; a text with it is parsed alone.
+const MARK: &str = "kIlN";
+
+/// The most texts parsed together: each variant's module is cut from a copy of the one parse,
+/// which holds every member's own declarations.
+pub(crate) const MOST_TEXTS: usize = 16;
+
+/// Texts parsed together, once naga has parsed [`Together::text`].
+pub(crate) struct Together {
+    /// What naga parses.
+    pub(crate) text: String,
+    /// Each text given, in order: how to cut its module out, or `None` where it is left to its
+    /// own parse.
+    members: Vec<Option<Member>>,
+    /// Each declaration written, in the text's order (its marker's number is its index).
+    placed: Vec<Placed>,
+}
+
+/// Where a declaration is in the text parsed, and how its names written anew moved what follows
+/// them: (where a renamed name ends in the text parsed, how many bytes it added), in order.
+struct Placed {
+    at: usize,
+    shifts: Vec<(usize, isize)>,
+}
+
+impl Placed {
+    /// Where `offset`, in the text parsed, is in the declaration as its texts have it (from its
+    /// start).
+    fn original(&self, offset: usize) -> Option<usize> {
+        let relative = offset.checked_sub(self.at)?;
+        let before = self.shifts.iter().take_while(|(end, _)| *end <= offset).last();
+        relative.checked_add_signed(-before.map_or(0, |(_, shift)| *shift))
+    }
+}
+
+/// One text's part of a parse together.
+pub(crate) struct Member {
+    /// Its entry point's name in the text parsed.
+    entry: String,
+    /// Where the declarations written for it are in its own text, by their place in the text
+    /// parsed.
+    declarations: HashMap<usize, usize>,
+    /// The names its declarations have in the text parsed.
+    names: HashSet<String>,
+    /// Names written anew, with the names they are given back.
+    renamed: Vec<(String, String)>,
+}
+
+/// A text's declarations as the parse together tells them apart.
+struct Scanned<'t> {
+    scan: reach::Scan<'t>,
+    /// Its declarations in dependency order, each as the one written.
+    order: Vec<usize>,
+    /// Where each of those starts in the text.
+    starts: Vec<usize>,
+    /// Its directives (`enable`, `requires`): they go first in the text parsed together.
+    directives: Vec<&'t str>,
+}
+
+/// The one declaration written for each equal declaration of the texts: its text, what it names
+/// (as written), and its name.
+struct Written<'t> {
+    text: &'t str,
+    /// Where in `text` each identifier to be renamed is, with the index of what it names.
+    names: Vec<(std::ops::Range<usize>, usize)>,
+    name: Option<&'t str>,
+}
+
+/// Assembles one text for naga from `texts` (each a stage text and its entry point's name), or
+/// `None` where fewer than two of them can share a parse.
+pub(crate) fn assemble(texts: &[(&str, &str)]) -> Option<Together> {
+    if texts.len() < 2 {
+        return None;
+    }
+    let mut written: Vec<Written> = Vec::new();
+    // A written declaration by its text and the written declarations it names.
+    let mut identity: HashMap<(&str, Vec<usize>), usize> = HashMap::new();
+    let mut scanned: Vec<Option<Scanned>> =
+        texts.iter().map(|&(text, entry)| scan(text, entry, &mut written, &mut identity)).collect();
+    // The texts parsed together have the same directives: those most of them have.
+    let mut counts: HashMap<&[&str], usize> = HashMap::new();
+    for s in scanned.iter().flatten() {
+        *counts.entry(&s.directives).or_default() += 1;
+    }
+    let directives: Vec<&str> = counts
+        .into_iter()
+        .max_by_key(|&(key, n)| (n, std::cmp::Reverse(key)))
+        .map(|(key, _)| key.to_vec())
+        .unwrap_or_default();
+    for one in scanned.iter_mut() {
+        if one.as_ref().is_some_and(|s| s.directives != directives) {
+            *one = None;
+        }
+    }
+    // Names that stand for more than one declaration are written anew for each.
+    let mut meanings: HashMap<&str, usize> = HashMap::new();
+    for w in &written {
+        if let Some(name) = w.name {
+            *meanings.entry(name).or_default() += 1;
+        }
+    }
+    let renamed = |index: usize| -> Option<String> {
+        let name = written[index].name?;
+        (meanings[name] > 1).then(|| format!("{name}_{MARK}{index}"))
+    };
+    let declared_anywhere: HashSet<&str> = meanings.keys().copied().collect();
+    // Texts whose parse together could differ from their own are left to it.
+    for one in scanned.iter_mut() {
+        let Some(s) = one else { continue };
+        let own: HashSet<&str> = s.scan.declarations.iter().filter_map(|d| d.name).collect();
+        let foreign = |word: &&str| declared_anywhere.contains(word) && !own.contains(word);
+        let renamed_here: HashSet<&str> =
+            s.order.iter().filter(|&&w| renamed(w).is_some()).filter_map(|&w| written[w].name).collect();
+        if s.scan.uses.iter().any(foreign)
+            || s.scan.locals.iter().any(|w| foreign(w) || renamed_here.contains(w))
+        {
+            *one = None;
+        }
+    }
+    // One order that keeps each text's own: each text's declarations go in after the ones before
+    // them that are already in, or the text is left to its own parse.
+    let mut order: Vec<usize> = Vec::new();
+    let mut position: HashMap<usize, usize> = HashMap::new();
+    for one in scanned.iter_mut() {
+        let Some(s) = one else { continue };
+        let Some(merged) = merge(&order, &position, &s.order) else {
+            *one = None;
+            continue;
+        };
+        order = merged;
+        position = order.iter().enumerate().map(|(at, &w)| (w, at)).collect();
+    }
+    if scanned.iter().flatten().count() < 2 {
+        return None;
+    }
+    let mut text = String::new();
+    for directive in directives {
+        text.push_str(directive);
+        text.push('\n');
+    }
+    let mut placed = Vec::with_capacity(order.len());
+    for (marker, &w) in order.iter().enumerate() {
+        text.push_str(&format!("alias {MARK}_m{marker} = f32;\n"));
+        let declaration = &written[w];
+        let (mut at, mut shift, mut shifts) = (0, 0isize, Vec::new());
+        let start = text.len();
+        for (range, named) in &declaration.names {
+            text.push_str(&declaration.text[at..range.start]);
+            match renamed(*named) {
+                Some(name) => {
+                    text.push_str(&name);
+                    shift += name.len() as isize - range.len() as isize;
+                    shifts.push((text.len(), shift));
+                }
+                None => text.push_str(&declaration.text[range.clone()]),
+            }
+            at = range.end;
+        }
+        text.push_str(&declaration.text[at..]);
+        text.push('\n');
+        placed.push(Placed { at: start, shifts });
+    }
+    let members = scanned
+        .iter()
+        .zip(texts)
+        .map(|(one, &(_, entry))| {
+            let s = one.as_ref()?;
+            let names = s.order.iter().filter_map(|&w| renamed(w).or(written[w].name.map(str::to_string)));
+            let renamed: Vec<(String, String)> =
+                s.order.iter().filter_map(|&w| Some((renamed(w)?, written[w].name?.to_string()))).collect();
+            let entry = renamed.iter().find(|(_, original)| original == entry).map_or(entry, |(new, _)| new);
+            Some(Member {
+                entry: entry.to_string(),
+                declarations: (s.order.iter().zip(&s.starts))
+                    .map(|(w, &start)| (position[w], start))
+                    .collect(),
+                names: names.collect(),
+                renamed,
+            })
+        })
+        .collect();
+    Some(Together { text, members, placed })
+}
+
+/// One text's scan, its declarations made written ones; `None` where it cannot share a parse.
+fn scan<'t>(
+    text: &'t str,
+    entry: &str,
+    written: &mut Vec<Written<'t>>,
+    identity: &mut HashMap<(&'t str, Vec<usize>), usize>,
+) -> Option<Scanned<'t>> {
+    if text.contains(MARK) || text.contains("diagnostic") || text.contains("const_assert") {
+        return None;
+    }
+    if super::layout::has_layout_attribute(text) {
+        return None;
+    }
+    let scan = reach::declarations(text)?;
+    let declarations = &scan.declarations;
+    let mut by_name: Names = HashMap::with_capacity_and_hasher(declarations.len(), Default::default());
+    let mut directives = Vec::new();
+    for (index, d) in declarations.iter().enumerate() {
+        match d.name {
+            Some(name) if by_name.insert(name, index).is_some() => return None,
+            Some(_) => {}
+            // Directives go first in the text parsed; any other form the scan does not know
+            // might not.
+            None if d.kind == Kind::Other => {
+                let directive = &text[d.range.clone()];
+                if !(directive.starts_with("enable") || directive.starts_with("requires")) {
+                    return None;
+                }
+                directives.push(directive);
+            }
+            None => return None,
+        }
+    }
+    let root = *by_name.get(entry)?;
+    if declarations[root].kind != Kind::Function {
+        return None;
+    }
+    let mut as_written: Vec<Option<usize>> = vec![None; declarations.len()];
+    let (mut order, mut starts) =
+        (Vec::with_capacity(declarations.len()), Vec::with_capacity(declarations.len()));
+    for d in reach::dependency_order(declarations, &scan.uses, &by_name) {
+        if declarations[d].kind == Kind::Other {
+            continue;
+        }
+        let w = write(text, &declarations[d], &scan, &by_name, &as_written, written, identity)?;
+        as_written[d] = Some(w);
+        order.push(w);
+        starts.push(declarations[d].range.start);
+    }
+    Some(Scanned { scan, order, starts, directives })
+}
+
+/// The written declaration for `d`: an equal one already written, or `d` as a new one. `None`
+/// where it names a declaration not yet written (a cycle, which naga refuses).
+fn write<'t>(
+    text: &'t str,
+    d: &Declaration<'t>,
+    scan: &reach::Scan<'t>,
+    by_name: &Names,
+    as_written: &[Option<usize>],
+    written: &mut Vec<Written<'t>>,
+    identity: &mut HashMap<(&'t str, Vec<usize>), usize>,
+) -> Option<usize> {
+    let source = &text[d.range.clone()];
+    let offset = |word: &str| word.as_ptr() as usize - source.as_ptr() as usize;
+    let mut names = Vec::new();
+    if let Some(name) = d.name {
+        let at = offset(name);
+        // Its own name is written as what it declares.
+        names.push((at..at + name.len(), usize::MAX));
+    }
+    let mut named = Vec::new();
+    for word in &scan.uses[d.uses.clone()] {
+        if let Some(&used) = by_name.get(word) {
+            let w = as_written[used]?;
+            let at = offset(word);
+            names.push((at..at + word.len(), w));
+            named.push(w);
+        }
+    }
+    names.sort_by_key(|(range, _)| range.start);
+    let index = *identity.entry((source, named)).or_insert(written.len());
+    if index == written.len() {
+        for name in names.iter_mut().filter(|(_, w)| *w == usize::MAX) {
+            name.1 = index;
+        }
+        written.push(Written { text: source, names, name: d.name });
+    }
+    Some(index)
+}
+
+/// `order` with `text`'s declarations in, each new one as late as it can go: after those before
+/// it in `text`, before the next of them already in. `None` where `order` has two of them the
+/// other way round.
+fn merge(order: &[usize], position: &HashMap<usize, usize>, text: &[usize]) -> Option<Vec<usize>> {
+    let mut merged = Vec::with_capacity(order.len() + text.len());
+    let (mut next, mut new) = (0, Vec::new());
+    for &w in text {
+        match position.get(&w) {
+            Some(&at) if at < next => return None,
+            Some(&at) => {
+                merged.extend_from_slice(&order[next..at]);
+                merged.append(&mut new);
+                merged.push(w);
+                next = at + 1;
+            }
+            None => new.push(w),
+        }
+    }
+    merged.extend_from_slice(&order[next..]);
+    merged.append(&mut new);
+    Some(merged)
+}
+
+/// naga's module of the text parsed together, made ready to cut each member's out of.
+pub(crate) struct Parsed {
+    /// The module without its entry points.
+    template: naga::Module,
+    entry_points: Vec<naga::EntryPoint>,
+    /// The declaration each type was made for (by the type's index): the marker before it, or
+    /// `None` before the first.
+    made_for: Vec<Option<usize>>,
+}
+
+impl Together {
+    /// naga's parse of [`Together::text`], readied for [`Together::cut`]. `None` where naga
+    /// refuses it (or panics): no one's error here, as each text is then parsed alone and its own
+    /// error, if it has one, reported.
+    pub(crate) fn parse(&self) -> Option<Parsed> {
+        let module = contain_panics(|| naga::front::wgsl::parse_str(&self.text).ok()).ok().flatten()?;
+        self.ready(module)
+    }
+
+    /// Each type's span set to its index (compaction keeps spans, so a type kept tells where it
+    /// was made), the entry points set apart. `None` where the markers are not where they were
+    /// written.
+    fn ready(&self, mut module: naga::Module) -> Option<Parsed> {
+        let mut made_for = Vec::with_capacity(module.types.len());
+        let mut current = None;
+        let mut types = naga::UniqueArena::new();
+        for (handle, ty) in module.types.iter() {
+            let marker =
+                ty.name.as_deref().and_then(|n| n.strip_prefix(MARK)).and_then(|n| n.strip_prefix("_m"));
+            if let Some(number) = marker {
+                let number: usize = number.parse().ok()?;
+                if current.map_or(0, |c| c + 1) != number {
+                    return None;
+                }
+                current = Some(number);
+            }
+            made_for.push(current);
+            let index = handle.index() as u32;
+            types.insert(ty.clone(), naga::Span::new(index, index + 1));
+        }
+        if current.map_or(0, |c| c + 1) != self.placed.len() {
+            return None;
+        }
+        module.types = types;
+        let entry_points = std::mem::take(&mut module.entry_points);
+        Some(Parsed { template: module, entry_points, made_for })
+    }
+
+    /// Member `index`'s module: what naga makes of its own text, compacted; `None` where it
+    /// might differ (the member is then parsed alone).
+    pub(crate) fn cut(
+        &self,
+        parsed: &Parsed,
+        index: usize,
+        stage: naga::ShaderStage,
+    ) -> Option<naga::Module> {
+        contain_panics(|| self.cut_unguarded(parsed, index, stage)).ok().flatten()
+    }
+
+    fn cut_unguarded(&self, parsed: &Parsed, index: usize, stage: naga::ShaderStage) -> Option<naga::Module> {
+        let member = self.members.get(index)?.as_ref()?;
+        let entry = parsed.entry_points.iter().find(|e| e.name == member.entry && e.stage == stage)?;
+        let mut module = parsed.template.clone();
+        module.entry_points.push(entry.clone());
+        let mine = |made_for: Option<usize>| made_for.is_none_or(|d| member.declarations.contains_key(&d));
+        for (_, constant) in module.constants.iter_mut() {
+            if constant.name.as_ref().is_some_and(|name| !member.names.contains(name)) {
+                constant.name = None;
+            }
+        }
+        module.special_types.predeclared_types.retain(|_, ty| mine(parsed.made_for[ty.index()]));
+        naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+        if !numbered_as_alone(&module, &parsed.made_for, &member.declarations) {
+            return None;
+        }
+        give_names_back(&mut module, &member.renamed);
+        self.place_globals(&mut module, member)?;
+        Some(module)
+    }
+
+    /// The spans of a member's global variables moved into its own text, where its resources'
+    /// declarations are reported from (`bind::Declared`); the rest are only read for errors,
+    /// which the member's own parse reports.
+    fn place_globals(&self, module: &mut naga::Module, member: &Member) -> Option<()> {
+        let mut globals = naga::Arena::new();
+        for (handle, global) in module.global_variables.iter() {
+            let span = match module.global_variables.get_span(handle).to_range() {
+                Some(range) => {
+                    let place = self.placed.partition_point(|p| p.at <= range.start).checked_sub(1)?;
+                    let own = member.declarations.get(&place)?;
+                    let placed = &self.placed[place];
+                    let (start, end) = (placed.original(range.start)?, placed.original(range.end)?);
+                    naga::Span::new((own + start) as u32, (own + end) as u32)
+                }
+                None => naga::Span::UNDEFINED,
+            };
+            globals.append(global.clone(), span);
+        }
+        module.global_variables = globals;
+        Some(())
+    }
+}
+
+/// Whether a member's types, compacted, are numbered as its own text's would be: naga numbers
+/// types in the order it first meets them, and in the text parsed together another text's
+/// declaration may have met one first. That is harmless for one such type only, where none of
+/// the member's own declarations after that one made a type it keeps: alone, the member meets it
+/// after all of them too.
+fn numbered_as_alone(module: &naga::Module, made_for: &[Option<usize>], own: &HashMap<usize, usize>) -> bool {
+    let mut foreign = None;
+    let mut last_own = None;
+    for (ty, _) in module.types.iter() {
+        let Some(made) = module.types.get_span(ty).to_range().and_then(|r| made_for.get(r.start).copied())
+        else {
+            return false;
+        };
+        match made {
+            // Before the first declaration: in every text alike.
+            None => {}
+            Some(d) if own.contains_key(&d) => last_own = last_own.max(Some(d)),
+            Some(d) if foreign.is_none() => foreign = Some(d),
+            Some(_) => return false,
+        }
+    }
+    foreign.is_none_or(|f| last_own.is_none_or(|own| own < f))
+}
+
+/// The names written anew given back to what they name in a member's module.
+fn give_names_back(module: &mut naga::Module, renamed: &[(String, String)]) {
+    if renamed.is_empty() {
+        return;
+    }
+    let original: HashMap<&str, &str> =
+        renamed.iter().map(|(new, old)| (new.as_str(), old.as_str())).collect();
+    let back = |name: &mut Option<String>| {
+        if let Some(old) = name.as_deref().and_then(|n| original.get(n)) {
+            *name = Some(old.to_string());
+        }
+    };
+    for (_, function) in module.functions.iter_mut() {
+        back(&mut function.name);
+    }
+    for (_, constant) in module.constants.iter_mut() {
+        back(&mut constant.name);
+    }
+    for (_, r#override) in module.overrides.iter_mut() {
+        back(&mut r#override.name);
+    }
+    for (_, global) in module.global_variables.iter_mut() {
+        back(&mut global.name);
+    }
+    for entry in &mut module.entry_points {
+        let mut name = Some(std::mem::take(&mut entry.name));
+        back(&mut name);
+        entry.name = name.unwrap_or_default();
+        back(&mut entry.function.name);
+    }
+    let types: Vec<_> = module
+        .types
+        .iter()
+        .filter(|(_, ty)| ty.name.as_deref().is_some_and(|n| original.contains_key(n)))
+        .map(|(handle, ty)| (handle, ty.clone()))
+        .collect();
+    for (handle, mut ty) in types {
+        back(&mut ty.name);
+        module.types.replace(handle, ty);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// What naga writes of a module: its WGSL and SPIR-V.
+    fn written(module: &naga::Module) -> (String, Vec<u32>) {
+        let flags = naga::valid::ValidationFlags::all() - naga::valid::ValidationFlags::BINDINGS;
+        let info = naga::valid::Validator::new(flags, naga::valid::Capabilities::all())
+            .validate(module)
+            .expect("valid");
+        let wgsl = naga::back::wgsl::write_string(module, &info, naga::back::wgsl::WriterFlags::empty())
+            .expect("WGSL");
+        let options = naga::back::spv::Options { fake_missing_bindings: true, ..Default::default() };
+        let spirv = naga::back::spv::write_vec(module, &info, &options, None).expect("SPIR-V");
+        (wgsl, spirv)
+    }
+
+    /// A text's own module: parsed alone, its entry point kept, compacted.
+    fn alone(text: &str, entry: &str) -> naga::Module {
+        let mut module = naga::front::wgsl::parse_str(text).expect("parses alone");
+        module.entry_points.retain(|e| e.name == entry);
+        naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+        module
+    }
+
+    /// Parses `texts` (fragment stages of entry point `fs`) together and checks that every
+    /// module cut out is what the text gives alone, byte for byte; which members were cut out.
+    fn cut_out(texts: &[&str]) -> Vec<bool> {
+        let asked: Vec<(&str, &str)> = texts.iter().map(|t| (*t, "fs")).collect();
+        let Some(together) = assemble(&asked) else { return vec![false; texts.len()] };
+        let parsed = together.parse().unwrap_or_else(|| panic!("naga parses:\n{}", together.text));
+        (0..texts.len())
+            .map(|i| match together.cut(&parsed, i, naga::ShaderStage::Fragment) {
+                Some(module) => {
+                    let ours = written(&module);
+                    let theirs = written(&alone(texts[i], "fs"));
+                    assert_eq!(ours.0, theirs.0, "member {i}'s WGSL, from:\n{}", together.text);
+                    assert_eq!(ours.1, theirs.1, "member {i}'s SPIR-V, from:\n{}", together.text);
+                    true
+                }
+                None => false,
+            })
+            .collect()
+    }
+
+    /// What a library declares first: the types variants use, made before any of their own
+    /// declarations (naga numbers types as it meets them).
+    const LIBRARY: &str = "const WHITE: vec4<f32> = vec4(1.0);\nconst UV: vec2<f32> = vec2(0.0);\n\
+        struct Light { colour: vec3<f32>, direction: vec3<f32> }\n\
+        @group(0) @binding(0) var<uniform> light: Light;\n\
+        const AMBIENT: f32 = 0.1;\n\
+        fn diffuse(n: vec3<f32>) -> vec3<f32> { return max(dot(n, light.direction), AMBIENT) * light.colour; }\n";
+
+    #[test]
+    fn variants_differing_in_their_entry_point_share_the_library_s_parse() {
+        let a = format!(
+            "{LIBRARY}@fragment fn fs() -> @location(0) vec4<f32> {{ return vec4(diffuse(vec3(0.0, 1.0, 0.0)), 1.0); }}\n"
+        );
+        let b = format!(
+            "{LIBRARY}@fragment fn fs() -> @location(0) vec4<f32> {{ let c = diffuse(vec3(1.0, 0.0, 0.0)); return vec4(c * 2.0, 1.0); }}\n"
+        );
+        let c =
+            format!("{LIBRARY}@fragment fn fs() -> @location(0) vec4<f32> {{ return vec4<f32>(1.0); }}\n");
+        assert_eq!(cut_out(&[&a, &b, &c]), [true, true, true]);
+        // Each library declaration is written once; each entry point under a name of its own.
+        let together =
+            assemble(&[(a.as_str(), "fs"), (b.as_str(), "fs"), (c.as_str(), "fs")]).expect("together");
+        assert_eq!(together.text.matches("fn diffuse").count(), 1);
+        assert_eq!(together.text.matches("fn fs_kIlN").count(), 3);
+    }
+
+    #[test]
+    fn a_function_struct_or_constant_a_keyword_changes_is_written_once_per_meaning() {
+        let normal = |body: &str| format!("fn normal() -> vec3<f32> {{ {body} }}\n");
+        let text = |normal: &str, extra: &str, scale: &str| {
+            format!(
+                "{LIBRARY}struct Varyings {{ @location(0) uv: vec2<f32>, {extra} }}\nconst SCALE: f32 = {scale};\n{normal}\
+                 fn shade(n: vec3<f32>) -> f32 {{ return n.y * SCALE; }}\n\
+                 @fragment fn fs(v: Varyings) -> @location(0) vec4<f32> {{ return vec4(shade(normal()), v.uv, 1.0); }}\n"
+            )
+        };
+        let a = text(&normal("return vec3(0.0, 1.0, 0.0);"), "", "1.0");
+        let b = text(
+            &normal("return normalize(vec3(0.5, 1.0, 0.0));"),
+            "@location(1) tangent: vec4<f32>,",
+            "1.0",
+        );
+        let c = text(&normal("return vec3(0.0, 1.0, 0.0);"), "", "2.0");
+        assert_eq!(cut_out(&[&a, &b, &c]), [true, true, true]);
+    }
+
+    #[test]
+    fn a_text_naming_what_only_another_declares_is_left_to_its_own_parse() {
+        // Alone, `b` does not parse: together, `helper` would be found in `a`.
+        let a = "fn helper() -> f32 { return 1.0; }\n@fragment fn fs() -> @location(0) vec4<f32> { return vec4(helper()); }\n";
+        let b = "@fragment fn fs() -> @location(0) vec4<f32> { return vec4(helper()); }\n";
+        let c = "@fragment fn fs() -> @location(0) vec4<f32> { return vec4(2.0); }\n";
+        assert_eq!(cut_out(&[a, b, c]), [true, false, true]);
+        // A built-in one text shadows is another text's built-in.
+        let d = "fn min(a: f32, b: f32) -> f32 { return a; }\n@fragment fn fs() -> @location(0) vec4<f32> { return vec4(min(1.0, 2.0)); }\n";
+        let e = "@fragment fn fs() -> @location(0) vec4<f32> { return vec4(min(1.0, 2.0)); }\n";
+        assert_eq!(cut_out(&[d, e]), [false, false]);
+    }
+
+    #[test]
+    fn a_local_named_as_a_name_written_anew_leaves_its_text_alone() {
+        // `scale` is written anew (two meanings); `b`'s parameter of that name must keep its own.
+        let a = &format!(
+            "{LIBRARY}{}",
+            "const scale: f32 = 1.0;\nfn f(x: f32) -> f32 { return x * scale; }\n@fragment fn fs() -> @location(0) vec4<f32> { return vec4(f(1.0)); }\n"
+        );
+        let b = &format!(
+            "{LIBRARY}{}",
+            "const scale: f32 = 2.0;\nfn f(scale: f32) -> f32 { return scale; }\n@fragment fn fs() -> @location(0) vec4<f32> { return vec4(f(1.0)); }\n"
+        );
+        let c = &format!(
+            "{LIBRARY}{}",
+            "const scale: f32 = 3.0;\nfn f(x: f32) -> f32 { return x * scale; }\n@fragment fn fs() -> @location(0) vec4<f32> { return vec4(f(1.0)); }\n"
+        );
+        assert_eq!(cut_out(&[a, b, c]), [true, false, true]);
+    }
+
+    #[test]
+    fn a_type_first_made_for_another_text_leaves_a_member_alone_or_the_same() {
+        // `b` meets `mat3x3<f32>` first in its own entry point, which `a`'s comes before: were it
+        // cut out, its types would be numbered in another order than alone.
+        let a = "const WHITE: vec4<f32> = vec4(1.0);\n@fragment fn fs() -> @location(0) vec4<f32> { let m = mat3x3<f32>(); let v = vec2<u32>(); return vec4(m[0], f32(v.x)); }\n";
+        let b = "const WHITE: vec4<f32> = vec4(1.0);\n@fragment fn fs() -> @location(0) vec4<f32> { let v = vec2<u32>(); let m = mat3x3<f32>(); return vec4(m[0], f32(v.x)); }\n";
+        let c = "const WHITE: vec4<f32> = vec4(1.0);\n@fragment fn fs() -> @location(0) vec4<f32> { let f = modf(1.5); return vec4(f.fract); }\n";
+        let d = "const WHITE: vec4<f32> = vec4(1.0);\n@fragment fn fs() -> @location(0) vec4<f32> { return WHITE; }\n";
+        let cut = cut_out(&[a, b, c, d]);
+        assert_eq!((cut[0], cut[1], cut[3]), (true, false, true));
+    }
+
+    #[test]
+    fn texts_with_other_directives_or_markers_are_left_alone() {
+        let a = "enable f16;\n@fragment fn fs() -> @location(0) vec4<f32> { return vec4(f32(1.0h)); }\n";
+        let b =
+            &format!("{LIBRARY}{}", "@fragment fn fs() -> @location(0) vec4<f32> { return vec4(1.0); }\n");
+        let c =
+            &format!("{LIBRARY}{}", "@fragment fn fs() -> @location(0) vec4<f32> { return vec4(2.0); }\n");
+        assert_eq!(cut_out(&[a, b, c]), [false, true, true]);
+        let d =
+            "fn kIlN_m0() {}\n@fragment fn fs() -> @location(0) vec4<f32> { kIlN_m0(); return vec4(2.0); }\n";
+        assert_eq!(cut_out(&[b, d]), [false, false]);
+    }
+}
