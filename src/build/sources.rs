@@ -369,7 +369,8 @@ impl Naga {
 
 /// The modules of the jobs naga must parse (`asked`), cut out of parses of their pass's texts
 /// together (`compile::together`): jobs of one stage and entry point, a few at a time. `None` for
-/// a job left to its own parse.
+/// a job left to its own parse. A group whose first parse together gave fewer than half its
+/// members' modules parses the rest alone: those would be parsed twice.
 pub(super) fn parse_together(pass: &PassSources, jobs: &[Job], asked: &[bool]) -> Vec<Option<naga::Module>> {
     let mut modules: Vec<Option<naga::Module>> = (0..jobs.len()).map(|_| None).collect();
     if pass.options.parse != ParseScope::Together {
@@ -379,27 +380,42 @@ pub(super) fn parse_together(pass: &PassSources, jobs: &[Job], asked: &[bool]) -
     for (index, job) in jobs.iter().enumerate().filter(|&(i, _)| asked[i]) {
         groups.entry((job.stage.name(), job.entry)).or_default().push(index);
     }
-    let batches: Vec<&[usize]> = groups
-        .values()
-        .flat_map(|members| members.chunks(together::MOST_TEXTS))
-        .filter(|b| b.len() > 1)
-        .collect();
-    let cut: Vec<Vec<(usize, naga::Module)>> = batches
-        .par_iter()
-        .map(|batch| {
-            let texts: Vec<(&str, &str)> =
-                batch.iter().map(|&j| (jobs[j].text.as_str(), jobs[j].entry)).collect();
-            let Some(together) = together::assemble(&texts) else { return Vec::new() };
-            pass.session.parses.fetch_add(1, Ordering::Relaxed);
-            let Some(parsed) = together.parse() else { return Vec::new() };
-            (batch.par_iter().enumerate())
-                .filter_map(|(member, &j)| {
-                    Some((j, together.cut(&parsed, member, stage::naga_stage(jobs[j].stage))?))
-                })
-                .collect()
-        })
-        .collect();
-    for (job, module) in cut.into_iter().flatten() {
+    // Each group's first few jobs (`first`), or the rest.
+    fn batches<'g>(groups: &'g BTreeMap<(&str, &str), Vec<usize>>, first: bool) -> Vec<&'g [usize]> {
+        let chunks = groups.values().map(|members| members.chunks(together::MOST_TEXTS));
+        let chunks: Vec<&[usize]> = match first {
+            true => chunks.filter_map(|mut c| c.next()).collect(),
+            false => chunks.flat_map(|c| c.skip(1)).collect(),
+        };
+        chunks.into_iter().filter(|b| b.len() > 1).collect()
+    }
+    let cut = |batches: Vec<&[usize]>| -> Vec<Vec<(usize, naga::Module)>> {
+        batches
+            .par_iter()
+            .map(|batch| {
+                let texts: Vec<(&str, &str)> =
+                    batch.iter().map(|&j| (jobs[j].text.as_str(), jobs[j].entry)).collect();
+                let Some(together) = together::assemble(&texts) else { return Vec::new() };
+                pass.session.parses.fetch_add(1, Ordering::Relaxed);
+                let Some(parsed) = together.parse() else { return Vec::new() };
+                (batch.par_iter().enumerate())
+                    .filter_map(|(member, &j)| {
+                        Some((j, together.cut(&parsed, member, stage::naga_stage(jobs[j].stage))?))
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    let first = cut(batches(&groups, true));
+    for (job, module) in first.into_iter().flatten() {
+        modules[job] = Some(module);
+    }
+    // Groups whose first batch mostly failed to share a parse are left to their own parses.
+    groups.retain(|_, members| {
+        let first = &members[..members.len().min(together::MOST_TEXTS)];
+        2 * first.iter().filter(|&&j| modules[j].is_some()).count() >= first.len()
+    });
+    for (job, module) in cut(batches(&groups, false)).into_iter().flatten() {
         modules[job] = Some(module);
     }
     modules

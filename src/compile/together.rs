@@ -22,7 +22,9 @@
 
 use super::panics::contain_panics;
 use super::reach::{self, Declaration, Kind, Names};
-use std::collections::{HashMap, HashSet};
+// Every text of a build's passes goes through these maps: a fast hash.
+type HashMap<K, V> = std::collections::HashMap<K, V, foldhash::fast::FixedState>;
+type HashSet<T> = std::collections::HashSet<T, foldhash::fast::FixedState>;
 
 /// What names written anew and markers start or contain; a text with it is parsed alone.
 const MARK: &str = "kIlN";
@@ -70,6 +72,9 @@ pub(crate) struct Member {
     names: HashSet<String>,
     /// Names written anew, with the names they are given back.
     renamed: Vec<(String, String)>,
+    /// Declarations of other texts it may take types from, with its own they stand for (both by
+    /// their place in the text parsed): each right before its own, lowered alike.
+    counterparts: HashMap<usize, usize>,
 }
 
 /// A text's declarations as the parse together tells them apart.
@@ -90,6 +95,7 @@ struct Written<'t> {
     /// Where in `text` each identifier to be renamed is, with the index of what it names.
     names: Vec<(std::ops::Range<usize>, usize)>,
     name: Option<&'t str>,
+    kind: Kind,
 }
 
 /// Assembles one text for naga from `texts` (each a stage text and its entry point's name), or
@@ -100,11 +106,11 @@ pub(crate) fn assemble(texts: &[(&str, &str)]) -> Option<Together> {
     }
     let mut written: Vec<Written> = Vec::new();
     // A written declaration by its text and the written declarations it names.
-    let mut identity: HashMap<(&str, Vec<usize>), usize> = HashMap::new();
+    let mut identity: HashMap<(&str, Vec<usize>), usize> = HashMap::default();
     let mut scanned: Vec<Option<Scanned>> =
         texts.iter().map(|&(text, entry)| scan(text, entry, &mut written, &mut identity)).collect();
     // The texts parsed together have the same directives: those most of them have.
-    let mut counts: HashMap<&[&str], usize> = HashMap::new();
+    let mut counts: HashMap<&[&str], usize> = HashMap::default();
     for s in scanned.iter().flatten() {
         *counts.entry(&s.directives).or_default() += 1;
     }
@@ -119,7 +125,7 @@ pub(crate) fn assemble(texts: &[(&str, &str)]) -> Option<Together> {
         }
     }
     // Names that stand for more than one declaration are written anew for each.
-    let mut meanings: HashMap<&str, usize> = HashMap::new();
+    let mut meanings: HashMap<&str, usize> = HashMap::default();
     for w in &written {
         if let Some(name) = w.name {
             *meanings.entry(name).or_default() += 1;
@@ -143,22 +149,35 @@ pub(crate) fn assemble(texts: &[(&str, &str)]) -> Option<Together> {
             *one = None;
         }
     }
-    // One order that keeps each text's own: each text's declarations go in after the ones before
-    // them that are already in, or the text is left to its own parse.
-    let mut order: Vec<usize> = Vec::new();
-    let mut position: HashMap<usize, usize> = HashMap::new();
+    // One order of names that keeps each text's own (or the text is left to its own parse); the
+    // declarations of a name go together, in the order the texts give them: a text's own
+    // declaration comes right after the other meanings of its name before it (its counterparts).
+    let mut names: Vec<&str> = Vec::new();
+    let mut rank: HashMap<&str, usize> = HashMap::default();
     for one in scanned.iter_mut() {
         let Some(s) = one else { continue };
-        let Some(merged) = merge(&order, &position, &s.order) else {
+        let own: Vec<&str> = s.order.iter().filter_map(|&w| written[w].name).collect();
+        let Some(merged) = merge(&names, &rank, &own) else {
             *one = None;
             continue;
         };
-        order = merged;
-        position = order.iter().enumerate().map(|(at, &w)| (w, at)).collect();
+        names = merged;
+        rank = names.iter().enumerate().map(|(at, &name)| (name, at)).collect();
     }
     if scanned.iter().flatten().count() < 2 {
         return None;
     }
+    let mut meaning_of: HashMap<&str, Vec<usize>> = HashMap::default();
+    for s in scanned.iter().flatten() {
+        for &w in &s.order {
+            let meanings = meaning_of.entry(written[w].name.unwrap_or_default()).or_default();
+            if !meanings.contains(&w) {
+                meanings.push(w);
+            }
+        }
+    }
+    let order: Vec<usize> = names.iter().flat_map(|name| meaning_of[name].iter().copied()).collect();
+    let position: HashMap<usize, usize> = order.iter().enumerate().map(|(at, &w)| (w, at)).collect();
     let mut text = String::new();
     for directive in directives {
         text.push_str(directive);
@@ -195,7 +214,19 @@ pub(crate) fn assemble(texts: &[(&str, &str)]) -> Option<Together> {
             let renamed: Vec<(String, String)> =
                 s.order.iter().filter_map(|&w| Some((renamed(w)?, written[w].name?.to_string()))).collect();
             let entry = renamed.iter().find(|(_, original)| original == entry).map_or(entry, |(new, _)| new);
+            // The other meanings of each of its names before its own, where naga lowers them
+            // alike: the types one made first are those its own would have.
+            let mut counterparts = HashMap::default();
+            for &own in &s.order {
+                let name = written[own].name.unwrap_or_default();
+                for &other in meaning_of[name].iter().take_while(|&&w| w != own) {
+                    if lowered_alike(&written, other, own) {
+                        counterparts.insert(position[&other], position[&own]);
+                    }
+                }
+            }
             Some(Member {
+                counterparts,
                 entry: entry.to_string(),
                 declarations: (s.order.iter().zip(&s.starts))
                     .map(|(w, &start)| (position[w], start))
@@ -294,7 +325,7 @@ fn write<'t>(
         for name in names.iter_mut().filter(|(_, w)| *w == usize::MAX) {
             name.1 = index;
         }
-        written.push(Written { text: source, names, name: d.name });
+        written.push(Written { text: source, names, name: d.name, kind: d.kind });
     }
     Some(index)
 }
@@ -302,7 +333,11 @@ fn write<'t>(
 /// `order` with `text`'s declarations in, each new one as late as it can go: after those before
 /// it in `text`, before the next of them already in. `None` where `order` has two of them the
 /// other way round.
-fn merge(order: &[usize], position: &HashMap<usize, usize>, text: &[usize]) -> Option<Vec<usize>> {
+fn merge<T: Copy + Eq + std::hash::Hash>(
+    order: &[T],
+    position: &HashMap<T, usize>,
+    text: &[T],
+) -> Option<Vec<T>> {
     let mut merged = Vec::with_capacity(order.len() + text.len());
     let (mut next, mut new) = (0, Vec::new());
     for &w in text {
@@ -324,8 +359,10 @@ fn merge(order: &[usize], position: &HashMap<usize, usize>, text: &[usize]) -> O
 
 /// naga's module of the text parsed together, made ready to cut each member's out of.
 pub(crate) struct Parsed {
-    /// The module without its entry points.
+    /// The module without its entry points and functions.
     template: naga::Module,
+    /// Its functions, each with the declaration it was written for.
+    functions: Vec<(naga::Function, naga::Span, Option<usize>)>,
     entry_points: Vec<naga::EntryPoint>,
     /// The declaration each type was made for (by the type's index): the marker before it, or
     /// `None` before the first.
@@ -367,7 +404,15 @@ impl Together {
         }
         module.types = types;
         let entry_points = std::mem::take(&mut module.entry_points);
-        Some(Parsed { template: module, entry_points, made_for })
+        let functions = (module.functions.drain())
+            .map(|(_, function, span)| {
+                let place = span
+                    .to_range()
+                    .and_then(|r| self.placed.partition_point(|p| p.at <= r.start).checked_sub(1));
+                (function, span, place)
+            })
+            .collect();
+        Some(Parsed { template: module, functions, entry_points, made_for })
     }
 
     /// Member `index`'s module: what naga makes of its own text, compacted; `None` where it
@@ -385,6 +430,13 @@ impl Together {
         let member = self.members.get(index)?.as_ref()?;
         let entry = parsed.entry_points.iter().find(|e| e.name == member.entry && e.stage == stage)?;
         let mut module = parsed.template.clone();
+        // Other texts' functions stay as empty ones, so that handles keep their meaning: nothing
+        // of this member's calls them, and compaction drops them.
+        for (function, span, place) in &parsed.functions {
+            let own = place.is_some_and(|p| member.declarations.contains_key(&p));
+            let function = if own { function.clone() } else { naga::Function::default() };
+            module.functions.append(function, *span);
+        }
         module.entry_points.push(entry.clone());
         let mine = |made_for: Option<usize>| made_for.is_none_or(|d| member.declarations.contains_key(&d));
         for (_, constant) in module.constants.iter_mut() {
@@ -394,7 +446,7 @@ impl Together {
         }
         module.special_types.predeclared_types.retain(|_, ty| mine(parsed.made_for[ty.index()]));
         naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
-        if !numbered_as_alone(&module, &parsed.made_for, &member.declarations) {
+        if !numbered_as_alone(&module, &parsed.made_for, member) {
             return None;
         }
         give_names_back(&mut module, &member.renamed);
@@ -425,28 +477,60 @@ impl Together {
     }
 }
 
-/// Whether a member's types, compacted, are numbered as its own text's would be: naga numbers
+/// Whether a member's types, compacted, are numbered as its own text's would be. naga numbers
 /// types in the order it first meets them, and in the text parsed together another text's
-/// declaration may have met one first. That is harmless for one such type only, where none of
-/// the member's own declarations after that one made a type it keeps: alone, the member meets it
-/// after all of them too.
-fn numbered_as_alone(module: &naga::Module, made_for: &[Option<usize>], own: &HashMap<usize, usize>) -> bool {
-    let mut foreign = None;
-    let mut last_own = None;
+/// declaration may have met one first. That is harmless where that declaration is a counterpart
+/// of the member's own (right before it, lowered alike) and the member's own made none of the
+/// types it keeps: alone, its own would have met them in the same order. And it is harmless for
+/// one such type only, where none of the member's declarations after that one made a type it
+/// keeps.
+fn numbered_as_alone(module: &naga::Module, made_for: &[Option<usize>], member: &Member) -> bool {
+    let mut made = Vec::with_capacity(module.types.len());
     for (ty, _) in module.types.iter() {
-        let Some(made) = module.types.get_span(ty).to_range().and_then(|r| made_for.get(r.start).copied())
+        let Some(at) = module.types.get_span(ty).to_range().and_then(|r| made_for.get(r.start).copied())
         else {
             return false;
         };
-        match made {
-            // Before the first declaration: in every text alike.
-            None => {}
-            Some(d) if own.contains_key(&d) => last_own = last_own.max(Some(d)),
-            Some(d) if foreign.is_none() => foreign = Some(d),
-            Some(_) => return false,
-        }
+        // Before the first declaration: in every text alike.
+        made.extend(at);
     }
-    foreign.is_none_or(|f| last_own.is_none_or(|own| own < f))
+    let own = |d: &usize| member.declarations.contains_key(d);
+    let counterparts = made
+        .iter()
+        .filter(|d| !own(d))
+        .all(|d| member.counterparts.get(d).is_some_and(|stands_for| !made.contains(stands_for)));
+    let mut foreign = made.iter().filter(|d| !own(d));
+    let one = match (foreign.next(), foreign.next()) {
+        (None, _) => true,
+        (Some(&f), None) => made.iter().filter(|d| own(d)).all(|&d| d < f),
+        _ => false,
+    };
+    counterparts || one
+}
+
+/// Whether naga lowers the written declarations `a` and `b`, the same text naming other
+/// declarations, alike: the same types met in the same order. So it does where each declaration
+/// they name differently is a function whose head (parameters and result) is the same text naming
+/// the same declarations.
+fn lowered_alike(written: &[Written], a: usize, b: usize) -> bool {
+    let (x, y) = (&written[a], &written[b]);
+    if x.text != y.text || x.names.len() != y.names.len() {
+        return false;
+    }
+    // What a function's head names, its own name aside.
+    let head = |w: usize| -> Option<Vec<usize>> {
+        let end = written[w].text.find('{')?;
+        Some(written[w].names.iter().filter(|(r, t)| r.end <= end && *t != w).map(|(_, t)| *t).collect())
+    };
+    x.names.iter().zip(&y.names).all(|(&(_, p), &(_, q))| {
+        let (f, g) = (&written[p], &written[q]);
+        p == q
+            || (p == a && q == b)
+            || (f.kind == Kind::Function
+                && g.kind == Kind::Function
+                && f.text.split('{').next() == g.text.split('{').next()
+                && head(p).is_some_and(|h| Some(h) == head(q)))
+    })
 }
 
 /// The names written anew given back to what they name in a member's module.
@@ -623,6 +707,42 @@ mod tests {
         let d = "const WHITE: vec4<f32> = vec4(1.0);\n@fragment fn fs() -> @location(0) vec4<f32> { return WHITE; }\n";
         let cut = cut_out(&[a, b, c, d]);
         assert_eq!((cut[0], cut[1], cut[3]), (true, false, true));
+    }
+
+    #[test]
+    fn an_entry_point_lowered_alike_takes_the_types_its_counterpart_made_first() {
+        // Each variant's entry point is the same text calling its own `shape`, and is the first
+        // to meet `u32` and `vec3<u32>`: in the text parsed together, the first variant's makes
+        // them, as each variant's own would alone.
+        let text = |body: &str, result: &str| {
+            format!(
+                "var<storage, read_write> data: array<vec4<f32>>;\n\
+                 fn shape(v: vec4<f32>) -> {result} {{ {body} }}\n\
+                 @compute @workgroup_size(64) fn main(@builtin(global_invocation_id) id: vec3<u32>) {{\n\
+                 let v = data[id.x];\n data[id.x] = v + vec4<f32>(shape(v)) * 0.016;\n}}\n"
+            )
+        };
+        let texts = [
+            text("return v * 1.01;", "vec4<f32>"),
+            text("return sin(v);", "vec4<f32>"),
+            text("return mix(v, cos(v), 0.2);", "vec4<f32>"),
+            // A `shape` of another result: its entry point is not lowered alike (cut out or not,
+            // its module is what it is alone).
+            text("return vec4<u32>(v);", "vec4<u32>"),
+        ];
+        let asked: Vec<(&str, &str)> = texts.iter().map(|t| (t.as_str(), "main")).collect();
+        let together = assemble(&asked).expect("together");
+        let parsed = together.parse().expect("parses");
+        let cut: Vec<bool> = (0..texts.len())
+            .map(|i| match together.cut(&parsed, i, naga::ShaderStage::Compute) {
+                Some(module) => {
+                    assert_eq!(written(&module), written(&alone(&texts[i], "main")), "member {i}");
+                    true
+                }
+                None => false,
+            })
+            .collect();
+        assert_eq!(cut[..3], [true, true, true]);
     }
 
     #[test]
