@@ -320,17 +320,29 @@ fn threads_for(requested: Option<usize>, environment: Option<&str>, cores: usize
     requested.filter(|&n| n > 0).or(from_environment).unwrap_or(cores).min(MAX_THREADS)
 }
 
+/// A pool of `threads` workers, made once in a process and kept: a build script, the language
+/// server and a benchmark build again in the same process, and a new pool's threads start with
+/// cold stacks and allocator heaps. `None` where one cannot be made.
+fn pool(threads: usize) -> Option<std::sync::Arc<rayon::ThreadPool>> {
+    static POOLS: std::sync::Mutex<Vec<(usize, std::sync::Arc<rayon::ThreadPool>)>> =
+        std::sync::Mutex::new(Vec::new());
+    let mut pools = POOLS.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Some((_, pool)) = pools.iter().find(|(n, _)| *n == threads) {
+        return Some(pool.clone());
+    }
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).stack_size(WORKER_STACK).build().ok()?;
+    let pool = std::sync::Arc::new(pool);
+    pools.push((threads, pool.clone()));
+    Some(pool)
+}
+
 /// Runs `job` on a pool of `options.threads` (all cores by default; the global pool if one cannot
 /// be made), its summary timed.
 fn timed_in_pool(options: &BuildOptions, job: impl FnOnce() -> BuildResult + Send) -> BuildResult {
     let started = Instant::now();
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(thread_count(options.threads))
-        .stack_size(WORKER_STACK)
-        .build();
-    let mut result = match pool {
-        Ok(pool) => pool.install(job),
-        Err(_) => job(),
+    let mut result = match pool(thread_count(options.threads)) {
+        Some(pool) => pool.install(job),
+        None => job(),
     };
     result.summary.elapsed = started.elapsed();
     result

@@ -395,7 +395,10 @@ pub(super) fn parse_together(pass: &PassSources, jobs: &[Job], asked: &[bool]) -
             .map(|batch| {
                 let texts: Vec<(&str, &str)> =
                     batch.iter().map(|&j| (jobs[j].text.as_str(), jobs[j].entry)).collect();
-                let Some(together) = together::assemble(&texts) else { return Vec::new() };
+                let Some(together) = together::assemble(&texts).filter(together::Together::saves_enough)
+                else {
+                    return Vec::new();
+                };
                 pass.session.parses.fetch_add(1, Ordering::Relaxed);
                 let Some(parsed) = together.parse() else { return Vec::new() };
                 (batch.par_iter().enumerate())

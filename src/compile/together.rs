@@ -42,6 +42,8 @@ pub(crate) struct Together {
     members: Vec<Option<Member>>,
     /// Each declaration written, in the text's order (its marker's number is its index).
     placed: Vec<Placed>,
+    /// The bytes of the texts it parses together.
+    given: usize,
 }
 
 /// Where a declaration is in the text parsed, and how its names written anew moved what follows
@@ -236,7 +238,9 @@ pub(crate) fn assemble(texts: &[(&str, &str)]) -> Option<Together> {
             })
         })
         .collect();
-    Some(Together { text, members, placed })
+    let given =
+        scanned.iter().zip(texts).filter(|(one, _)| one.is_some()).map(|(_, (text, _))| text.len()).sum();
+    Some(Together { text, members, placed, given })
 }
 
 /// One text's scan, its declarations made written ones; `None` where it cannot share a parse.
@@ -370,6 +374,13 @@ pub(crate) struct Parsed {
 }
 
 impl Together {
+    /// Whether parsing the texts together saves a quarter of the parse or more: where each text's
+    /// own declarations are most of it (small kernels that differ throughout), the cutting out
+    /// costs what the shared parse saves.
+    pub(crate) fn saves_enough(&self) -> bool {
+        4 * self.text.len() <= 3 * self.given
+    }
+
     /// naga's parse of [`Together::text`], readied for [`Together::cut`]. `None` where naga
     /// refuses it (or panics): no one's error here, as each text is then parsed alone and its own
     /// error, if it has one, reported.

@@ -69,6 +69,17 @@ fn variants_whose_names_mean_other_things_write_what_they_write_alone() {
         .assert_eq(&format!("{}\n", line(&together, &alone)));
 }
 
+/// What the variants of the error test share: most of each text, as a library is.
+const LIBRARY: &str = "fn Luminance(c: vec3<f32>) -> f32 { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }\n\
+    fn Reinhard(c: vec3<f32>) -> vec3<f32> { return c / (vec3(1.0) + vec3(Luminance(c))); }\n\
+    fn Gamma(c: vec3<f32>) -> vec3<f32> { return pow(max(c, vec3(0.0)), vec3(1.0 / 2.2)); }\n\
+    fn Saturate(c: vec3<f32>, amount: f32) -> vec3<f32> { return mix(vec3(Luminance(c)), c, amount); }\n\
+    fn Vignette(c: vec3<f32>, at: vec2<f32>) -> vec3<f32> { return c * (1.0 - 0.3 * dot(at, at)); }\n\
+    fn Tone(c: vec4<f32>) -> vec4<f32> {\n\
+        let mapped = Gamma(Saturate(Reinhard(c.rgb), 1.1));\n\
+        return vec4(Vignette(mapped, c.xy), c.a);\n\
+    }\n";
+
 #[test]
 fn a_variant_valid_only_together_or_invalid_only_as_cut_out_reports_its_own_error() {
     let project = tempfile::tempdir().expect("temp dir");
@@ -80,8 +91,9 @@ fn a_variant_valid_only_together_or_invalid_only_as_cut_out_reports_its_own_erro
             "Shader \"Together/{name}\" {{\n SubShader {{\n  Pass {{\n   WGSLPROGRAM\n{keywords}\
              #pragma vertex Vertex\n#pragma fragment Fragment\nconst WHITE: vec4<f32> = vec4(1.0);\n{declarations}\
              @vertex fn Vertex(@location(0) p: vec4<f32>) -> @builtin(position) vec4<f32> {{ return p; }}\n\
+             {LIBRARY}\
              @fragment fn Fragment(@builtin(position) at: vec4<f32>\n{parameters}) -> @location(0) vec4<f32> {{\n\
-             var c = WHITE * at.x;\n{body}return c;\n}}\n   ENDWGSL\n  }}\n }}\n}}\n"
+             var c = WHITE * at.x;\n{body}return Tone(c);\n}}\n   ENDWGSL\n  }}\n }}\n}}\n"
         )
     };
     let undeclared = shader(
