@@ -362,6 +362,7 @@ impl Naga {
             layout: ask.layout,
             backends: &pass.options.backends,
             glslang: pass.options.glslang.as_ref(),
+            compacted: parsed.from == ParsedFrom::Together,
         };
         stage::compile(parsed.module, &request, &Mapper { map, store: pass.store })
     }

@@ -34,6 +34,9 @@ pub(crate) struct StageRequest<'a> {
     pub backends: &'a [Backend],
     /// Reads back the GLSL and HLSL written (`kiln check`, where it is installed).
     pub glslang: Option<&'a Glslang>,
+    /// The module is already its entry point's alone, compacted (cut out of a parse together,
+    /// `compile::together`): binding it leaves nothing to compact.
+    pub compacted: bool,
 }
 
 pub(crate) fn naga_stage(stage: Stage) -> naga::ShaderStage {
@@ -108,8 +111,7 @@ fn compile_unguarded(
         });
     }
     bind::apply(&mut module, request.layout);
-    let info = keep_entry_point(&mut module, request.entry, stage, request.allowed.capabilities(), mapper)
-        .map_err(|d| located(d, request, mapper))?;
+    let info = keep_entry_point(&mut module, request, stage, mapper).map_err(|d| located(d, request, mapper))?;
     check_limits(&module, request, mapper)?;
     check_override_defaults(&module, request.text, mapper)?;
 
@@ -253,14 +255,15 @@ pub(super) fn spirv_version(capabilities: naga::valid::Capabilities) -> (u8, u8)
 /// Cuts a bound module down to one entry point and what it uses, then validates it.
 fn keep_entry_point(
     module: &mut naga::Module,
-    entry: &str,
+    request: &StageRequest,
     stage: naga::ShaderStage,
-    capabilities: naga::valid::Capabilities,
     mapper: &Mapper,
 ) -> Result<naga::valid::ModuleInfo, Diagnostic> {
-    module.entry_points.retain(|e| e.name == entry && e.stage == stage);
-    naga::compact::compact(module, naga::compact::KeepUnused::No);
-    validate(module, ValidationFlags::all(), capabilities, mapper)
+    if !request.compacted {
+        module.entry_points.retain(|e| e.name == request.entry && e.stage == stage);
+        naga::compact::compact(module, naga::compact::KeepUnused::No);
+    }
+    validate(module, ValidationFlags::all(), request.allowed.capabilities(), mapper)
 }
 
 pub(super) fn backend_error(backend: &str, message: String) -> Diagnostic {
