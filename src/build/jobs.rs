@@ -32,6 +32,8 @@ pub(super) struct Job<'a> {
     pub whole: Option<Box<WholeText>>,
     /// The hash of `text`: identical cuts of different texts are one job.
     pub text_hash: String,
+    /// The scan of `text`, where it is cut: what parsing texts together reads.
+    pub scan: Option<reach::CutScan>,
     pub allowed: Allowed,
     /// Which variant asked for it first (its keywords), for diagnostics.
     pub variant: String,
@@ -66,24 +68,22 @@ pub(super) struct WholeText {
 }
 
 /// A preprocessed stage text cut to what its entry point reaches, where `scope` asks it and the
-/// cut leaves something out: (text, map, the whole).
-fn cut(
-    text: String,
-    map: SourceMap,
-    entry: &str,
-    scope: ParseScope,
-) -> (String, SourceMap, Option<Box<WholeText>>) {
+/// cut leaves something out: the text, its map, the whole, and the cut's scan.
+fn cut(text: String, map: SourceMap, entry: &str, scope: ParseScope) -> Cut {
     let cut = match scope {
-        ParseScope::Together | ParseScope::Reachable => reach::cut(&text, &map, entry),
+        ParseScope::Together | ParseScope::Reachable => reach::cut_scanned(&text, &map, entry),
         ParseScope::Whole => None,
     };
-    let Some((mut cut, cut_map)) = cut else { return (text, map, None) };
+    let Some((mut cut, cut_map, scan)) = cut else { return (text, map, None, None) };
     // For the test of a miss: debug builds spoil the cut of the entry point this names.
     if cfg!(debug_assertions) && std::env::var("KILN_INJECT_CUT_MISS").is_ok_and(|name| name == entry) {
         cut.push_str("fn (\n");
     }
-    (cut, cut_map, Some(Box::new(WholeText { text, map })))
+    (cut, cut_map, Some(Box::new(WholeText { text, map })), Some(scan))
 }
+
+/// What [`cut`] gives.
+type Cut = (String, SourceMap, Option<Box<WholeText>>, Option<reach::CutScan>);
 
 /// A pass's distinct stage modules, and each variant's job for each of the pass's
 /// [`entry_points`] (`None` when that stage failed or is absent).
@@ -192,15 +192,15 @@ pub(super) fn pass_jobs<'a>(
             };
             let out = preprocess_with(includes, store, wgsl, &macros, r.stage);
             let scope = if diagnostics::has_errors(&out.diagnostics) { ParseScope::Whole } else { scope };
-            let (text, map, whole) = cut(out.text, out.source_map, &r.entry.value, scope);
+            let (text, map, whole, scan) = cut(out.text, out.source_map, &r.entry.value, scope);
             let text_hash = hash(text.as_bytes());
-            (out.diagnostics, (text, map, whole), text_hash)
+            (out.diagnostics, (text, map, whole, scan), text_hash)
         })
         .collect();
     // Different keywords can still give the same text (a keyword no `#if` of this stage tests).
     let mut job_of_text: HashMap<(Stage, &str, String, String), usize> = HashMap::new();
     let mut job_of_request: Vec<Option<usize>> = Vec::with_capacity(requests.len());
-    for (request, (found, (text, map, whole), text_hash)) in requests.into_iter().zip(outputs) {
+    for (request, (found, (text, map, whole, scan), text_hash)) in requests.into_iter().zip(outputs) {
         let failed = diagnostics::has_errors(&found);
         let within = stage_within(request.stage, &request.entry.value);
         diagnostics.extend(found.into_iter().map(|d| d.in_variant(&request.variant, &pass_id, &within)));
@@ -218,6 +218,7 @@ pub(super) fn pass_jobs<'a>(
                 map,
                 whole,
                 text_hash,
+                scan,
                 allowed: request.allowed,
                 variant: request.variant,
                 pass: pass_id.clone(),

@@ -394,8 +394,13 @@ pub(super) fn parse_together(pass: &PassSources, jobs: &[Job], asked: &[bool]) -
         batches
             .par_iter()
             .map(|batch| {
-                let texts: Vec<(&str, &str)> =
-                    batch.iter().map(|&j| (jobs[j].text.as_str(), jobs[j].entry)).collect();
+                let texts: Vec<together::Text> = (batch.iter())
+                    .map(|&j| together::Text {
+                        text: &jobs[j].text,
+                        entry: jobs[j].entry,
+                        scan: jobs[j].scan.as_ref(),
+                    })
+                    .collect();
                 let Some(together) = together::assemble(&texts).filter(together::Together::saves_enough)
                 else {
                     return Vec::new();

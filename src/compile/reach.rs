@@ -18,8 +18,83 @@ use std::ops::Range;
 /// `text` cut to the declarations `entry` reaches ([`reachable`], [`joined`]), with its source map
 /// cut alike, or `None` when nothing would be left out (or the scan cannot tell).
 pub fn cut(text: &str, map: &SourceMap, entry: &str) -> Option<(String, SourceMap)> {
-    let kept = reachable(text, entry)?;
-    Some((joined(text, &kept), map.cut(&kept)))
+    cut_scanned(text, map, entry).map(|(text, map, _)| (text, map))
+}
+
+/// [`cut`], with the scan of the text cut (its declarations, uses and locals moved to where
+/// [`joined`] puts them): what parsing texts together reads again, not scanned twice.
+pub(crate) fn cut_scanned(text: &str, map: &SourceMap, entry: &str) -> Option<(String, SourceMap, CutScan)> {
+    if text.contains(char::REPLACEMENT_CHARACTER) {
+        return None;
+    }
+    let scan = declarations(text)?;
+    let kept = kept_in_order(&scan, entry)?;
+    let ranges: Vec<Range<usize>> = kept.iter().map(|&d| scan.declarations[d].range.clone()).collect();
+    let cut_text = joined(text, &ranges);
+    let mut moved = CutScan::default();
+    let mut at = 0;
+    for &d in &kept {
+        let declaration = &scan.declarations[d];
+        let start = declaration.range.start;
+        let place = |word: &str| {
+            let from = word.as_ptr() as usize - text.as_ptr() as usize - start + at;
+            from..from + word.len()
+        };
+        let (uses, locals) = (moved.uses.len(), moved.locals.len());
+        moved.uses.extend(scan.uses[declaration.uses.clone()].iter().map(|w| place(w)));
+        moved.locals.extend(scan.locals[declaration.locals.clone()].iter().map(|w| place(w)));
+        moved.declarations.push(CutDeclaration {
+            range: at..at + declaration.range.len(),
+            kind: declaration.kind,
+            name: declaration.name.map(place),
+            uses: uses..moved.uses.len(),
+            locals: locals..moved.locals.len(),
+        });
+        at += declaration.range.len() + 1;
+    }
+    Some((cut_text, map.cut(&ranges), moved))
+}
+
+/// A cut text's scan by positions ([`cut_scanned`]), made a [`Scan`] of the text again by
+/// [`CutScan::of`].
+#[derive(Debug, Default)]
+pub(crate) struct CutScan {
+    declarations: Vec<CutDeclaration>,
+    uses: Vec<Range<usize>>,
+    locals: Vec<Range<usize>>,
+}
+
+#[derive(Debug)]
+struct CutDeclaration {
+    range: Range<usize>,
+    kind: Kind,
+    name: Option<Range<usize>>,
+    uses: Range<usize>,
+    locals: Range<usize>,
+}
+
+impl CutScan {
+    /// The scan of `text`, the cut text it was made with.
+    pub(super) fn of<'t>(&self, text: &'t str) -> Option<Scan<'t>> {
+        let word = |r: &Range<usize>| text.get(r.clone());
+        let declarations = (self.declarations.iter())
+            .map(|d| {
+                Some(Declaration {
+                    range: d.range.clone(),
+                    kind: d.kind,
+                    name: match &d.name {
+                        Some(r) => Some(word(r)?),
+                        None => None,
+                    },
+                    uses: d.uses.clone(),
+                    locals: d.locals.clone(),
+                })
+            })
+            .collect::<Option<Vec<_>>>()?;
+        let uses = self.uses.iter().map(word).collect::<Option<Vec<_>>>()?;
+        let locals = self.locals.iter().map(word).collect::<Option<Vec<_>>>()?;
+        Some(Scan { declarations, uses, locals })
+    }
 }
 
 /// The byte ranges of `text`'s top-level declarations that the entry point `entry` can reach, in
@@ -31,7 +106,15 @@ pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
     if text.contains(char::REPLACEMENT_CHARACTER) {
         return None;
     }
-    let Scan { declarations, uses, .. } = declarations(text)?;
+    let scan = declarations(text)?;
+    let kept = kept_in_order(&scan, entry)?;
+    Some(kept.into_iter().map(|d| scan.declarations[d].range.clone()).collect())
+}
+
+/// The declarations of a text's scan that `entry` reaches, in the order naga lowers them; `None`
+/// where that is all of them or the scan cannot tell.
+fn kept_in_order(scan: &Scan, entry: &str) -> Option<Vec<usize>> {
+    let (declarations, uses) = (&scan.declarations, &scan.uses);
     let mut by_name: Names = HashMap::with_capacity_and_hasher(declarations.len(), Default::default());
     for (index, declaration) in declarations.iter().enumerate() {
         if let Some(name) = declaration.name
@@ -66,8 +149,8 @@ pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
     if kept.iter().all(|k| *k) {
         return None;
     }
-    let order = dependency_order(&declarations, &uses, &by_name);
-    Some(order.into_iter().filter(|&d| kept[d]).map(|d| declarations[d].range.clone()).collect())
+    let order = dependency_order(declarations, uses, &by_name);
+    Some(order.into_iter().filter(|&d| kept[d]).collect())
 }
 
 /// The declarations in the order naga's WGSL front end lowers them: in text order, each after
@@ -442,6 +525,61 @@ mod against_naga {
 
     /// naga's own order of every kind of declaration it lowers in each of Tint's WGSL tests
     /// (`tests/corpus/tint`) that it parses, against [`dependency_order`]'s.
+    #[test]
+    fn a_cut_s_scan_moved_is_the_scan_of_the_cut_text() {
+        use crate::compile::reach::{Scan, cut_scanned};
+        use crate::preprocess::SourceMap;
+        let (mut compared, mut differing) = (0, Vec::new());
+        for entry in walkdir::WalkDir::new("tests/corpus/tint").into_iter().flatten() {
+            let path = entry.path();
+            let Some(text) =
+                path.extension().filter(|e| *e == "wgsl").and_then(|_| std::fs::read_to_string(path).ok())
+            else {
+                continue;
+            };
+            let functions: Vec<String> = declarations(&text)
+                .map(|s| {
+                    s.declarations
+                        .iter()
+                        .filter(|d| d.kind == Kind::Function)
+                        .filter_map(|d| d.name)
+                        .map(str::to_string)
+                        .collect()
+                })
+                .unwrap_or_default();
+            for entry in &functions {
+                let Some((cut, _, moved)) = cut_scanned(&text, &SourceMap::default(), entry) else {
+                    continue;
+                };
+                let shape = |scan: Scan| {
+                    let words = |list: &[&str]| -> Vec<(usize, String)> {
+                        list.iter()
+                            .map(|w| (w.as_ptr() as usize - cut.as_ptr() as usize, w.to_string()))
+                            .collect()
+                    };
+                    let heads: Vec<_> = (scan.declarations.iter())
+                        .map(|d| {
+                            (
+                                d.range.clone(),
+                                d.kind,
+                                d.name.map(str::to_string),
+                                d.uses.clone(),
+                                d.locals.clone(),
+                            )
+                        })
+                        .collect();
+                    (heads, words(&scan.uses), words(&scan.locals))
+                };
+                compared += 1;
+                if moved.of(&cut).map(shape) != declarations(&cut).map(shape) {
+                    differing.push(format!("{} ({entry})", path.display()));
+                }
+            }
+        }
+        assert!(compared > 1000, "{compared} texts cut");
+        assert!(differing.is_empty(), "{differing:#?}");
+    }
+
     #[test]
     fn the_dependency_order_is_naga_s_on_tint_s_corpus() {
         let (mut compared, mut differing) = (0, Vec::new());

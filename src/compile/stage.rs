@@ -111,7 +111,8 @@ fn compile_unguarded(
         });
     }
     bind::apply(&mut module, request.layout);
-    let info = keep_entry_point(&mut module, request, stage, mapper).map_err(|d| located(d, request, mapper))?;
+    let info =
+        keep_entry_point(&mut module, request, stage, mapper).map_err(|d| located(d, request, mapper))?;
     check_limits(&module, request, mapper)?;
     check_override_defaults(&module, request.text, mapper)?;
 

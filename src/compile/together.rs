@@ -100,9 +100,18 @@ struct Written<'t> {
     kind: Kind,
 }
 
-/// Assembles one text for naga from `texts` (each a stage text and its entry point's name), or
-/// `None` where fewer than two of them can share a parse.
-pub(crate) fn assemble(texts: &[(&str, &str)]) -> Option<Together> {
+/// A stage text to parse together with others.
+pub(crate) struct Text<'t> {
+    pub text: &'t str,
+    /// Its entry point's name.
+    pub entry: &'t str,
+    /// Its scan, where the cut made one (else it is scanned here).
+    pub scan: Option<&'t reach::CutScan>,
+}
+
+/// Assembles one text for naga from `texts`, or `None` where fewer than two of them can share a
+/// parse.
+pub(crate) fn assemble(texts: &[Text]) -> Option<Together> {
     if texts.len() < 2 {
         return None;
     }
@@ -110,7 +119,7 @@ pub(crate) fn assemble(texts: &[(&str, &str)]) -> Option<Together> {
     // A written declaration by its text and the written declarations it names.
     let mut identity: HashMap<(&str, Vec<usize>), usize> = HashMap::default();
     let mut scanned: Vec<Option<Scanned>> =
-        texts.iter().map(|&(text, entry)| scan(text, entry, &mut written, &mut identity)).collect();
+        texts.iter().map(|text| scan(text, &mut written, &mut identity)).collect();
     // The texts parsed together have the same directives: those most of them have.
     let mut counts: HashMap<&[&str], usize> = HashMap::default();
     for s in scanned.iter().flatten() {
@@ -210,7 +219,7 @@ pub(crate) fn assemble(texts: &[(&str, &str)]) -> Option<Together> {
     let members = scanned
         .iter()
         .zip(texts)
-        .map(|(one, &(_, entry))| {
+        .map(|(one, &Text { entry, .. })| {
             let s = one.as_ref()?;
             let names = s.order.iter().filter_map(|&w| renamed(w).or(written[w].name.map(str::to_string)));
             let renamed: Vec<(String, String)> =
@@ -238,25 +247,27 @@ pub(crate) fn assemble(texts: &[(&str, &str)]) -> Option<Together> {
             })
         })
         .collect();
-    let given =
-        scanned.iter().zip(texts).filter(|(one, _)| one.is_some()).map(|(_, (text, _))| text.len()).sum();
+    let given = scanned.iter().zip(texts).filter(|(one, _)| one.is_some()).map(|(_, t)| t.text.len()).sum();
     Some(Together { text, members, placed, given })
 }
 
 /// One text's scan, its declarations made written ones; `None` where it cannot share a parse.
 fn scan<'t>(
-    text: &'t str,
-    entry: &str,
+    given: &Text<'t>,
     written: &mut Vec<Written<'t>>,
     identity: &mut HashMap<(&'t str, Vec<usize>), usize>,
 ) -> Option<Scanned<'t>> {
+    let (text, entry) = (given.text, given.entry);
     if text.contains(MARK) || text.contains("diagnostic") || text.contains("const_assert") {
         return None;
     }
     if super::layout::has_layout_attribute(text) {
         return None;
     }
-    let scan = reach::declarations(text)?;
+    let scan = match given.scan {
+        Some(scan) => scan.of(text)?,
+        None => reach::declarations(text)?,
+    };
     let declarations = &scan.declarations;
     let mut by_name: Names = HashMap::with_capacity_and_hasher(declarations.len(), Default::default());
     let mut directives = Vec::new();
@@ -590,6 +601,11 @@ fn give_names_back(module: &mut naga::Module, renamed: &[(String, String)]) {
 mod tests {
     use super::*;
 
+    /// `texts` to parse together, each with the entry point `entry`, scanned here.
+    fn given<'t>(texts: &[&'t str], entry: &'t str) -> Vec<Text<'t>> {
+        texts.iter().map(|text| Text { text, entry, scan: None }).collect()
+    }
+
     /// What naga writes of a module: its WGSL and SPIR-V.
     fn written(module: &naga::Module) -> (String, Vec<u32>) {
         let flags = naga::valid::ValidationFlags::all() - naga::valid::ValidationFlags::BINDINGS;
@@ -614,7 +630,7 @@ mod tests {
     /// Parses `texts` (fragment stages of entry point `fs`) together and checks that every
     /// module cut out is what the text gives alone, byte for byte; which members were cut out.
     fn cut_out(texts: &[&str]) -> Vec<bool> {
-        let asked: Vec<(&str, &str)> = texts.iter().map(|t| (*t, "fs")).collect();
+        let asked = given(texts, "fs");
         let Some(together) = assemble(&asked) else { return vec![false; texts.len()] };
         let parsed = together.parse().unwrap_or_else(|| panic!("naga parses:\n{}", together.text));
         (0..texts.len())
@@ -651,8 +667,7 @@ mod tests {
             format!("{LIBRARY}@fragment fn fs() -> @location(0) vec4<f32> {{ return vec4<f32>(1.0); }}\n");
         assert_eq!(cut_out(&[&a, &b, &c]), [true, true, true]);
         // Each library declaration is written once; each entry point under a name of its own.
-        let together =
-            assemble(&[(a.as_str(), "fs"), (b.as_str(), "fs"), (c.as_str(), "fs")]).expect("together");
+        let together = assemble(&given(&[&a, &b, &c], "fs")).expect("together");
         assert_eq!(together.text.matches("fn diffuse").count(), 1);
         assert_eq!(together.text.matches("fn fs_kIlN").count(), 3);
     }
@@ -741,13 +756,14 @@ mod tests {
             // its module is what it is alone).
             text("return vec4<u32>(v);", "vec4<u32>"),
         ];
-        let asked: Vec<(&str, &str)> = texts.iter().map(|t| (t.as_str(), "main")).collect();
+        let texts: Vec<&str> = texts.iter().map(String::as_str).collect();
+        let asked = given(&texts, "main");
         let together = assemble(&asked).expect("together");
         let parsed = together.parse().expect("parses");
         let cut: Vec<bool> = (0..texts.len())
             .map(|i| match together.cut(&parsed, i, naga::ShaderStage::Compute) {
                 Some(module) => {
-                    assert_eq!(written(&module), written(&alone(&texts[i], "main")), "member {i}");
+                    assert_eq!(written(&module), written(&alone(texts[i], "main")), "member {i}");
                     true
                 }
                 None => false,
