@@ -523,20 +523,26 @@ mod tests {
 mod against_naga {
     use super::{Kind, declarations, dependency_order};
 
-    /// naga's own order of every kind of declaration it lowers in each of Tint's WGSL tests
-    /// (`tests/corpus/tint`) that it parses, against [`dependency_order`]'s.
+    /// Each of Tint's WGSL tests (`tests/corpus/tint`): its path and text.
+    fn tint_texts() -> impl Iterator<Item = (std::path::PathBuf, String)> {
+        walkdir::WalkDir::new("tests/corpus/tint").into_iter().flatten().filter_map(|entry| {
+            let path = entry.into_path();
+            let text = path
+                .extension()
+                .filter(|e| *e == "wgsl")
+                .and_then(|_| std::fs::read_to_string(&path).ok())?;
+            Some((path, text))
+        })
+    }
+
+    /// Every function of each Tint test as the entry point: the cut's scan moved ([`cut_scanned`])
+    /// is a fresh scan of the cut text.
     #[test]
     fn a_cut_s_scan_moved_is_the_scan_of_the_cut_text() {
         use crate::compile::reach::{Scan, cut_scanned};
         use crate::preprocess::SourceMap;
         let (mut compared, mut differing) = (0, Vec::new());
-        for entry in walkdir::WalkDir::new("tests/corpus/tint").into_iter().flatten() {
-            let path = entry.path();
-            let Some(text) =
-                path.extension().filter(|e| *e == "wgsl").and_then(|_| std::fs::read_to_string(path).ok())
-            else {
-                continue;
-            };
+        for (path, text) in tint_texts() {
             let functions: Vec<String> = declarations(&text)
                 .map(|s| {
                     s.declarations
@@ -580,16 +586,12 @@ mod against_naga {
         assert!(differing.is_empty(), "{differing:#?}");
     }
 
+    /// naga's own order of every kind of declaration it lowers in each of Tint's WGSL tests
+    /// that it parses, against [`dependency_order`]'s.
     #[test]
     fn the_dependency_order_is_naga_s_on_tint_s_corpus() {
         let (mut compared, mut differing) = (0, Vec::new());
-        for entry in walkdir::WalkDir::new("tests/corpus/tint").into_iter().flatten() {
-            let path = entry.path();
-            let Some(text) =
-                path.extension().filter(|e| *e == "wgsl").and_then(|_| std::fs::read_to_string(path).ok())
-            else {
-                continue;
-            };
+        for (path, text) in tint_texts() {
             let (Ok(module), Some(super::Scan { declarations, uses, .. })) =
                 (naga::front::wgsl::parse_str(&text), declarations(&text))
             else {
