@@ -24,11 +24,7 @@ pub fn cut(text: &str, map: &SourceMap, entry: &str) -> Option<(String, SourceMa
 /// [`cut`], with the scan of the text cut (its declarations, uses and locals moved to where
 /// [`joined`] puts them): what parsing texts together reads again, not scanned twice.
 pub(crate) fn cut_scanned(text: &str, map: &SourceMap, entry: &str) -> Option<(String, SourceMap, CutScan)> {
-    if text.contains(char::REPLACEMENT_CHARACTER) {
-        return None;
-    }
-    let scan = declarations(text)?;
-    let kept = kept_in_order(&scan, entry)?;
+    let (scan, kept) = reached(text, entry)?;
     let ranges: Vec<Range<usize>> = kept.iter().map(|&d| scan.declarations[d].range.clone()).collect();
     let cut_text = joined(text, &ranges);
     let mut moved = CutScan::default();
@@ -101,6 +97,12 @@ impl CutScan {
 /// the order naga lowers them ([`dependency_order`]), or `None` when nothing would be left out
 /// (or the scan cannot tell).
 pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
+    let (scan, kept) = reached(text, entry)?;
+    Some(kept.into_iter().map(|d| scan.declarations[d].range.clone()).collect())
+}
+
+/// `text`'s scan and the declarations `entry` reaches in it ([`kept_in_order`]).
+fn reached<'t>(text: &'t str, entry: &str) -> Option<(Scan<'t>, Vec<usize>)> {
     // A byte that was not UTF-8 (read as U+FFFD) is an error wherever code holds it (K0001): naga
     // reports it from the whole text.
     if text.contains(char::REPLACEMENT_CHARACTER) {
@@ -108,7 +110,7 @@ pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
     }
     let scan = declarations(text)?;
     let kept = kept_in_order(&scan, entry)?;
-    Some(kept.into_iter().map(|d| scan.declarations[d].range.clone()).collect())
+    Some((scan, kept))
 }
 
 /// The declarations of a text's scan that `entry` reaches, in the order naga lowers them; `None`

@@ -385,6 +385,10 @@ pub(crate) struct Parsed {
 }
 
 impl Together {
+    /// The declaration written where `offset` is in the text parsed (its index in `placed`).
+    fn place_of(&self, offset: usize) -> Option<usize> {
+        self.placed.partition_point(|p| p.at <= offset).checked_sub(1)
+    }
     /// Whether parsing the texts together saves a quarter of the parse or more: where each text's
     /// own declarations are most of it (small kernels that differ throughout), the cutting out
     /// costs what the shared parse saves.
@@ -428,9 +432,7 @@ impl Together {
         let entry_points = std::mem::take(&mut module.entry_points);
         let functions = (module.functions.drain())
             .map(|(_, function, span)| {
-                let place = span
-                    .to_range()
-                    .and_then(|r| self.placed.partition_point(|p| p.at <= r.start).checked_sub(1));
+                let place = span.to_range().and_then(|r| self.place_of(r.start));
                 (function, span, place)
             })
             .collect();
@@ -484,7 +486,7 @@ impl Together {
         for (handle, global) in module.global_variables.iter() {
             let span = match module.global_variables.get_span(handle).to_range() {
                 Some(range) => {
-                    let place = self.placed.partition_point(|p| p.at <= range.start).checked_sub(1)?;
+                    let place = self.place_of(range.start)?;
                     let own = member.declarations.get(&place)?;
                     let placed = &self.placed[place];
                     let (start, end) = (placed.original(range.start)?, placed.original(range.end)?);
