@@ -77,6 +77,9 @@ pub(crate) struct Member {
     /// Declarations of other texts it may take types from, with its own they stand for (both by
     /// their place in the text parsed): each right before its own, lowered alike.
     counterparts: HashMap<usize, usize>,
+    /// Its functions: by the place of the function its module has there (the first of its class),
+    /// the place of its own.
+    functions: HashMap<usize, usize>,
 }
 
 /// A text's declarations as the parse together tells them apart.
@@ -98,6 +101,22 @@ struct Written<'t> {
     names: Vec<(std::ops::Range<usize>, usize)>,
     name: Option<&'t str>,
     kind: Kind,
+    /// For a function, the first function written with its name and head (parameters and
+    /// result, the same text naming the same declarations); else itself. naga lowers a call the
+    /// same whichever of those it calls, so what calls one is written once, calling the first
+    /// of them in the text, and each member's own is put in that one's place when its module
+    /// is cut out.
+    class: usize,
+}
+
+/// The declarations written so far, and how to find them.
+#[derive(Default)]
+struct Writing<'t> {
+    written: Vec<Written<'t>>,
+    /// A written declaration by its text and the classes of the declarations it names.
+    identity: HashMap<(&'t str, Vec<usize>), usize>,
+    /// A function's class by its name, its head's text and what its head names.
+    classes: HashMap<(&'t str, &'t str, Vec<usize>), usize>,
 }
 
 /// A stage text to parse together with others.
@@ -115,11 +134,9 @@ pub(crate) fn assemble(texts: &[Text]) -> Option<Together> {
     if texts.len() < 2 {
         return None;
     }
-    let mut written: Vec<Written> = Vec::new();
-    // A written declaration by its text and the written declarations it names.
-    let mut identity: HashMap<(&str, Vec<usize>), usize> = HashMap::default();
-    let mut scanned: Vec<Option<Scanned>> =
-        texts.iter().map(|text| scan(text, &mut written, &mut identity)).collect();
+    let mut writing = Writing::default();
+    let mut scanned: Vec<Option<Scanned>> = texts.iter().map(|text| scan(text, &mut writing)).collect();
+    let written = writing.written;
     // The texts parsed together have the same directives: those most of them have.
     let mut counts: HashMap<&[&str], usize> = HashMap::default();
     for s in scanned.iter().flatten() {
@@ -189,6 +206,11 @@ pub(crate) fn assemble(texts: &[Text]) -> Option<Together> {
     }
     let order: Vec<usize> = names.iter().flat_map(|name| meaning_of[name].iter().copied()).collect();
     let position: HashMap<usize, usize> = order.iter().enumerate().map(|(at, &w)| (w, at)).collect();
+    // What is written calling a function calls the first of its class in the text.
+    let mut first_of_class: HashMap<usize, usize> = HashMap::default();
+    for &w in &order {
+        first_of_class.entry(written[w].class).or_insert(w);
+    }
     let mut text = String::new();
     for directive in directives {
         text.push_str(directive);
@@ -202,7 +224,11 @@ pub(crate) fn assemble(texts: &[Text]) -> Option<Together> {
         let start = text.len();
         for (range, named) in &declaration.names {
             text.push_str(&declaration.text[at..range.start]);
-            match renamed(*named) {
+            let named = match *named == w {
+                true => w,
+                false => first_of_class.get(&written[*named].class).copied().unwrap_or(*named),
+            };
+            match renamed(named) {
                 Some(name) => {
                     text.push_str(&name);
                     shift += name.len() as isize - range.len() as isize;
@@ -236,8 +262,12 @@ pub(crate) fn assemble(texts: &[Text]) -> Option<Together> {
                     }
                 }
             }
+            let functions = (s.order.iter().filter(|&&w| written[w].kind == Kind::Function))
+                .map(|&w| (position[&first_of_class[&written[w].class]], position[&w]))
+                .collect();
             Some(Member {
                 counterparts,
+                functions,
                 entry: entry.to_string(),
                 declarations: (s.order.iter().zip(&s.starts))
                     .map(|(w, &start)| (position[w], start))
@@ -252,11 +282,7 @@ pub(crate) fn assemble(texts: &[Text]) -> Option<Together> {
 }
 
 /// One text's scan, its declarations made written ones; `None` where it cannot share a parse.
-fn scan<'t>(
-    given: &Text<'t>,
-    written: &mut Vec<Written<'t>>,
-    identity: &mut HashMap<(&'t str, Vec<usize>), usize>,
-) -> Option<Scanned<'t>> {
+fn scan<'t>(given: &Text<'t>, writing: &mut Writing<'t>) -> Option<Scanned<'t>> {
     let (text, entry) = (given.text, given.entry);
     if text.contains(MARK) || text.contains("diagnostic") || text.contains("const_assert") {
         return None;
@@ -298,7 +324,7 @@ fn scan<'t>(
         if declarations[d].kind == Kind::Other {
             continue;
         }
-        let w = write(text, &declarations[d], &scan, &by_name, &as_written, written, identity)?;
+        let w = write(text, &declarations[d], &scan, &by_name, &as_written, writing)?;
         as_written[d] = Some(w);
         order.push(w);
         starts.push(declarations[d].range.start);
@@ -314,8 +340,7 @@ fn write<'t>(
     scan: &reach::Scan<'t>,
     by_name: &Names,
     as_written: &[Option<usize>],
-    written: &mut Vec<Written<'t>>,
-    identity: &mut HashMap<(&'t str, Vec<usize>), usize>,
+    writing: &mut Writing<'t>,
 ) -> Option<usize> {
     let source = &text[d.range.clone()];
     let offset = |word: &str| word.as_ptr() as usize - source.as_ptr() as usize;
@@ -331,16 +356,24 @@ fn write<'t>(
             let w = as_written[used]?;
             let at = offset(word);
             names.push((at..at + word.len(), w));
-            named.push(w);
+            named.push(writing.written[w].class);
         }
     }
     names.sort_by_key(|(range, _)| range.start);
-    let index = *identity.entry((source, named)).or_insert(written.len());
-    if index == written.len() {
+    let index = writing.written.len();
+    let index = *writing.identity.entry((source, named)).or_insert(index);
+    if index == writing.written.len() {
         for name in names.iter_mut().filter(|(_, w)| *w == usize::MAX) {
             name.1 = index;
         }
-        written.push(Written { text: source, names, name: d.name, kind: d.kind });
+        let class = match (d.kind, d.name, source.find('{')) {
+            (Kind::Function, Some(name), Some(body)) => {
+                let head = names.iter().filter(|(r, w)| r.end <= body && *w != index).map(|(_, w)| *w);
+                *writing.classes.entry((name, &source[..body], head.collect())).or_insert(index)
+            }
+            _ => index,
+        };
+        writing.written.push(Written { text: source, names, name: d.name, kind: d.kind, class });
     }
     Some(index)
 }
@@ -378,6 +411,8 @@ pub(crate) struct Parsed {
     template: naga::Module,
     /// Its functions, each with the declaration it was written for.
     functions: Vec<(naga::Function, naga::Span, Option<usize>)>,
+    /// Which of `functions` was written for each declaration, by the declaration's place.
+    function_at: HashMap<usize, usize>,
     entry_points: Vec<naga::EntryPoint>,
     /// The declaration each type was made for (by the type's index): the marker before it, or
     /// `None` before the first.
@@ -430,13 +465,15 @@ impl Together {
         }
         module.types = types;
         let entry_points = std::mem::take(&mut module.entry_points);
-        let functions = (module.functions.drain())
+        let functions: Vec<_> = (module.functions.drain())
             .map(|(_, function, span)| {
                 let place = span.to_range().and_then(|r| self.place_of(r.start));
                 (function, span, place)
             })
             .collect();
-        Some(Parsed { template: module, functions, entry_points, made_for })
+        let function_at =
+            functions.iter().enumerate().filter_map(|(at, (.., place))| Some(((*place)?, at))).collect();
+        Some(Parsed { template: module, functions, function_at, entry_points, made_for })
     }
 
     /// Member `index`'s module: what naga makes of its own text, compacted; `None` where it
@@ -454,12 +491,18 @@ impl Together {
         let member = self.members.get(index)?.as_ref()?;
         let entry = parsed.entry_points.iter().find(|e| e.name == member.entry && e.stage == stage)?;
         let mut module = parsed.template.clone();
-        // Other texts' functions stay as empty ones, so that handles keep their meaning: nothing
-        // of this member's calls them, and compaction drops them.
-        for (function, span, place) in &parsed.functions {
-            let own = place.is_some_and(|p| member.declarations.contains_key(&p));
-            let function = if own { function.clone() } else { naga::Function::default() };
-            module.functions.append(function, *span);
+        // Each of its functions goes in the place of the first of its class, which is what its
+        // callers call. The others stay as empty ones, so that handles keep their meaning:
+        // nothing of this member's calls them, and compaction drops them.
+        for (_, span, place) in &parsed.functions {
+            let own =
+                place.and_then(|p| member.functions.get(&p)).and_then(|own| parsed.function_at.get(own));
+            match own {
+                Some(&own) => {
+                    module.functions.append(parsed.functions[own].0.clone(), parsed.functions[own].1)
+                }
+                None => module.functions.append(naga::Function::default(), *span),
+            };
         }
         module.entry_points.push(entry.clone());
         let mine = |made_for: Option<usize>| made_for.is_none_or(|d| member.declarations.contains_key(&d));
@@ -761,6 +804,8 @@ mod tests {
         let texts: Vec<&str> = texts.iter().map(String::as_str).collect();
         let asked = given(&texts, "main");
         let together = assemble(&asked).expect("together");
+        // The three entry points calling a `shape` of one head are written once.
+        assert_eq!(together.text.matches("fn main").count(), 2, "{}", together.text);
         let parsed = together.parse().expect("parses");
         let cut: Vec<bool> = (0..texts.len())
             .map(|i| match together.cut(&parsed, i, naga::ShaderStage::Compute) {
