@@ -718,6 +718,34 @@ mod tests {
     }
 
     #[test]
+    fn what_calls_functions_of_one_head_is_written_once_and_each_member_keeps_its_own() {
+        let text = |tint: &str, result: &str| {
+            format!(
+                "{LIBRARY}fn tint(c: vec3<f32>) -> {result} {{ {tint} }}\n\
+                 fn lit(n: vec3<f32>) -> vec3<f32> {{ return tint(diffuse(n)).xyz; }}\n\
+                 @fragment fn fs() -> @location(0) vec4<f32> {{ return vec4(lit(vec3(0.0, 1.0, 0.0)), 1.0); }}\n"
+            )
+        };
+        let texts = [
+            text("return c;", "vec3<f32>"),
+            text("return c * 0.5;", "vec3<f32>"),
+            // Its body is the first to meet `array<f32, 3>`: its own text meets it in its place.
+            text("var k = array<f32, 3>(0.2, 0.7, 0.1); return c * k[1];", "vec3<f32>"),
+            text("return c.zyx;", "vec3<f32>"),
+            // Another head: what calls these is written again, once.
+            text("return vec4(c, 1.0);", "vec4<f32>"),
+            text("return vec4(c, 0.0);", "vec4<f32>"),
+        ];
+        let texts: Vec<&str> = texts.iter().map(String::as_str).collect();
+        assert_eq!(cut_out(&texts), [true; 6]);
+        let together = assemble(&given(&texts, "fs")).expect("together");
+        assert_eq!(together.text.matches("fn tint").count(), 6, "{}", together.text);
+        // `lit` once for the tints of each head; `fs` once, as both `lit`s have one head.
+        assert_eq!(together.text.matches("fn lit").count(), 2, "{}", together.text);
+        assert_eq!(together.text.matches("fn fs").count(), 1, "{}", together.text);
+    }
+
+    #[test]
     fn a_function_struct_or_constant_a_keyword_changes_is_written_once_per_meaning() {
         let normal = |body: &str| format!("fn normal() -> vec3<f32> {{ {body} }}\n");
         let text = |normal: &str, extra: &str, scale: &str| {
