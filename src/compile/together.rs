@@ -7,7 +7,10 @@
 //! a declaration that is the same, naming the same declarations, in several texts is written once.
 //! Where a name stands for different declarations, each is written under a name of its own
 //! (`GetNormal` as `GetNormal_kIlN4`) and the names are given back once a variant's module is cut
-//! out. The declarations go in an order that keeps every text's own (its dependency order, which
+//! out. What calls a function is written once for all its meanings of one head (parameters and
+//! result): naga lowers a call from the head alone, so the caller calls the first of them in the
+//! text, and each variant's own function is put in that one's place when its module is cut out.
+//! The declarations go in an order that keeps every text's own (its dependency order, which
 //! naga lowers it in), each after a marker (`alias kIlN_m7 = f32;`), so that the type naga makes
 //! first for a declaration can be traced to it.
 //!
