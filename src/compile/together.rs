@@ -83,7 +83,13 @@ pub(crate) struct Member {
     /// Its functions: by the place of the function its module has there (the first of its class),
     /// the place of its own.
     functions: HashMap<usize, usize>,
+    /// Whether it calls a built-in whose result is a type naga makes once for all (`modf`).
+    meets_predeclared: bool,
 }
+
+/// The built-ins whose results are types naga makes the first time one is called and keeps in
+/// `special_types`.
+const MAKE_PREDECLARED: [&str; 3] = ["modf", "frexp", "atomicCompareExchangeWeak"];
 
 /// A text's declarations as the parse together tells them apart.
 struct Scanned<'t> {
@@ -271,6 +277,7 @@ pub(crate) fn assemble(texts: &[Text]) -> Option<Together> {
             Some(Member {
                 counterparts,
                 functions,
+                meets_predeclared: s.scan.uses.iter().any(|w| MAKE_PREDECLARED.contains(w)),
                 entry: entry.to_string(),
                 declarations: (s.order.iter().zip(&s.starts))
                     .map(|(w, &start)| (position[w], start))
@@ -514,7 +521,12 @@ impl Together {
                 constant.name = None;
             }
         }
+        let predeclared = module.special_types.predeclared_types.len();
         module.special_types.predeclared_types.retain(|_, ty| mine(parsed.made_for[ty.index()]));
+        // One it uses may be another's: alone it would have made it in its own place.
+        if member.meets_predeclared && module.special_types.predeclared_types.len() < predeclared {
+            return None;
+        }
         naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
         if !numbered_as_alone(&module, &parsed.made_for, member) {
             return None;
@@ -746,6 +758,63 @@ mod tests {
         // `lit` once for the tints of each head; `fs` once, as both `lit`s have one head.
         assert_eq!(together.text.matches("fn lit").count(), 2, "{}", together.text);
         assert_eq!(together.text.matches("fn fs").count(), 1, "{}", together.text);
+    }
+
+    /// A variant of a small library: `shade`'s result and body, `tone`'s body, the entry point's
+    /// extra term (indices into the tables below), and which of `tone` and `shade` comes first.
+    fn variant(
+        shade_result: usize,
+        shade_body: usize,
+        tone_body: usize,
+        extra: usize,
+        tone_first: bool,
+    ) -> String {
+        // Bodies that meet types nothing before them met (an array, a matrix, `vec2<u32>`, the
+        // predeclared result of `modf`), use a constant, a global, or nothing.
+        const BODIES: [&str; 7] = [
+            "let r = v;",
+            "var a = array<f32, 3>(1.0, 2.0, 3.0); let r = v * a[1];",
+            "let m = mat2x2<f32>(); let r = v * m[0].x;",
+            "let u = vec2<u32>(1u); let r = v * f32(u.x);",
+            "let r = v * K;",
+            "let f = modf(v.x); let r = v * f.fract;",
+            "let r = vec4(g.xyz, 1.0);",
+        ];
+        const TONES: [&str; 3] = ["return x;", "return x * K;", "let i = vec3<i32>(2); return x * f32(i.y);"];
+        let (result, returned, called) = match shade_result {
+            0 => ("vec4<f32>", "r", "shade(v)"),
+            _ => ("vec3<f32>", "r.xyz", "vec4(shade(v), 1.0)"),
+        };
+        let extra = ["", " + vec4(tone(2.0))"][extra];
+        let tone = format!("fn tone(x: f32) -> f32 {{ {} }}\n", TONES[tone_body]);
+        let shade =
+            format!("fn shade(v: vec4<f32>) -> {result} {{ {} return {returned}; }}\n", BODIES[shade_body]);
+        let (first, second) = if tone_first { (tone, shade) } else { (shade, tone) };
+        format!(
+            "const K: f32 = 0.5;\nvar<private> g: vec4<f32>;\n{first}{second}\
+             fn lit(v: vec4<f32>) -> vec4<f32> {{ return {called} * tone(1.0); }}\n\
+             @fragment fn fs() -> @location(0) vec4<f32> {{ return lit(vec4(0.5)){extra}; }}\n"
+        )
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(96))]
+        /// However variants differ in a function's body and head, each module cut out is naga's
+        /// own parse of its text, byte for byte (`cut_out` asserts it), or left to that parse.
+        #[test]
+        fn every_module_cut_out_is_its_own_text_s(
+            variants in proptest::collection::vec((0..2usize, 0..7usize, 0..3usize, 0..2usize, proptest::bool::ANY), 2..10)
+        ) {
+            let texts: Vec<String> = variants.iter().map(|&(r, b, t, e, o)| variant(r, b, t, e, o)).collect();
+            let texts: Vec<&str> = texts.iter().map(String::as_str).collect();
+            let cut = cut_out(&texts);
+            // Variants whose `shade` meets no type of its own, in the first's order, share a parse.
+            let plain = (variants.iter().zip(&texts))
+                .filter(|((.., order), _)| *order == variants[0].4)
+                .filter(|(_, t)| t.contains("let r = v;") || t.contains("let r = v * K;"))
+                .count();
+            proptest::prop_assert!(plain < 2 || cut.iter().filter(|&&c| c).count() >= 2, "{cut:?}");
+        }
     }
 
     #[test]
