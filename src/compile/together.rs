@@ -507,12 +507,11 @@ impl Together {
         for (_, span, place) in &parsed.functions {
             let own =
                 place.and_then(|p| member.functions.get(&p)).and_then(|own| parsed.function_at.get(own));
-            match own {
-                Some(&own) => {
-                    module.functions.append(parsed.functions[own].0.clone(), parsed.functions[own].1)
-                }
-                None => module.functions.append(naga::Function::default(), *span),
+            let (function, span) = match own {
+                Some(&own) => (parsed.functions[own].0.clone(), parsed.functions[own].1),
+                None => (naga::Function::default(), *span),
             };
+            module.functions.append(function, span);
         }
         module.entry_points.push(entry.clone());
         let mine = |made_for: Option<usize>| made_for.is_none_or(|d| member.declarations.contains_key(&d));
