@@ -214,7 +214,7 @@ fn compute_scale(variants: usize) {
     let built = built.expect("built");
     assert_eq!(built.modules, modules, "kiln compiles the texts naga was given");
     println!(
-        "{} threads: {} compute variants, {} kernel modules: naga alone {:.2?}; kiln build / naga: whole texts {}, cut texts each parsed alone {}, cut texts parsed together {} (naga parsed {} texts)",
+        "{} threads: {} compute variants, {} kernel modules: naga alone {:.2?}; kiln build / naga: whole texts {}, cut texts each parsed alone {}, cut texts parsed together {} ({} texts preprocessed, naga parsed {} texts)",
         rayon::current_num_threads(),
         built.variants,
         built.modules,
@@ -222,6 +222,7 @@ fn compute_scale(variants: usize) {
         spread(whole_ratios),
         spread(alone_ratios),
         spread(cut_ratios),
+        built.preprocessed,
         built.parses,
     );
     print!("{}", cut_table(&project));

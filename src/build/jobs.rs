@@ -1,5 +1,6 @@
-//! A pass's stage texts: each distinct (stage, stage keywords, target) of its variants
-//! preprocessed once, in parallel, and identical texts made one job.
+//! A pass's stage texts: each distinct (stage, stage keywords) of its variants preprocessed once,
+//! in parallel, cut for each entry point that asks for it (a compute program's kernels share a
+//! text), and identical texts made one job.
 
 use super::ParseScope;
 use super::plan::PassWork;
@@ -67,22 +68,30 @@ pub(super) struct WholeText {
     pub map: SourceMap,
 }
 
-/// A preprocessed stage text cut to what its entry point reaches, where `scope` asks it and the
-/// cut leaves something out: the text, its map, the whole, and the cut's scan.
-fn cut(text: String, map: SourceMap, entry: &str, scope: ParseScope) -> Cut {
-    let cut = match scope {
-        ParseScope::Together | ParseScope::Reachable => reach::cut_scanned(&text, &map, entry),
-        ParseScope::Whole => None,
+/// A preprocessed stage text cut to what each of `entries` reaches (a compute program's kernels
+/// share one text), where `scope` asks it and the cut leaves something out: for each, the text,
+/// its map, the whole, and the cut's scan.
+fn cuts(text: String, map: SourceMap, entries: &[&str], scope: ParseScope) -> Vec<Cut> {
+    let cuts = match scope {
+        ParseScope::Together | ParseScope::Reachable => reach::cuts_scanned(&text, &map, entries),
+        ParseScope::Whole => entries.iter().map(|_| None).collect(),
     };
-    let Some((mut cut, cut_map, scan)) = cut else { return (text, map, None, None) };
-    // For the test of a miss: debug builds spoil the cut of the entry point this names.
-    if cfg!(debug_assertions) && std::env::var("KILN_INJECT_CUT_MISS").is_ok_and(|name| name == entry) {
-        cut.push_str("fn (\n");
-    }
-    (cut, cut_map, Some(Box::new(WholeText { text, map })), Some(scan))
+    let mut whole = Some((text, map));
+    let last = entries.len().saturating_sub(1);
+    let given = cuts.into_iter().zip(entries).enumerate().filter_map(|(index, (cut, entry))| {
+        // The last to ask takes the text; the others copy it.
+        let (text, map) = if index == last { whole.take() } else { whole.clone() }?;
+        let Some((mut cut, cut_map, scan)) = cut else { return Some((text, map, None, None)) };
+        // For the test of a miss: debug builds spoil the cut of the entry point this names.
+        if cfg!(debug_assertions) && std::env::var("KILN_INJECT_CUT_MISS").is_ok_and(|name| name == *entry) {
+            cut.push_str("fn (\n");
+        }
+        Some((cut, cut_map, Some(Box::new(WholeText { text, map })), Some(scan)))
+    });
+    given.collect()
 }
 
-/// What [`cut`] gives.
+/// What [`cuts`] gives for an entry point.
 type Cut = (String, SourceMap, Option<Box<WholeText>>, Option<reach::CutScan>);
 
 /// A pass's distinct stage modules, and each variant's job for each of the pass's
@@ -92,6 +101,8 @@ pub(super) struct PassJobs<'a> {
     pub stages: Vec<Vec<Option<usize>>>,
     /// The ubershader's jobs, as a variant's, when the pass has `#pragma ubershader`.
     pub ubershader: Option<Vec<Option<usize>>>,
+    /// Texts the preprocessor wrote (`BuildSummary::preprocessed`).
+    pub preprocessed: usize,
 }
 
 /// The entry points each variant of a pass compiles, in the order the manifest lists its modules:
@@ -121,9 +132,9 @@ fn stage_within(stage: Stage, entry: &str) -> String {
     format!(", {} stage{kernel}", stage.name())
 }
 
-/// The distinct stage texts of a pass's variants: each (stage, stage keywords, target) is
-/// preprocessed once, in parallel, cut to what its entry point reaches (as `scope` says), and
-/// identical texts become one job.
+/// The distinct stage texts of a pass's variants: each (stage, stage keywords) is preprocessed
+/// once, in parallel, cut to what each entry point asking for it reaches (as `scope` says), and
+/// identical texts become one job (per entry point and target).
 pub(super) fn pass_jobs<'a>(
     store: &SourceStore,
     includes: &Includes,
@@ -134,7 +145,8 @@ pub(super) fn pass_jobs<'a>(
     let (shader, pass, program) = (work.shader, work.pass, work.program);
     let mut jobs: Vec<Job<'a>> = Vec::new();
     let Some(wgsl) = program.wgsl.as_ref() else {
-        return PassJobs { jobs, stages: vec![Vec::new(); work.variants.len()], ubershader: None };
+        let stages = vec![Vec::new(); work.variants.len()];
+        return PassJobs { jobs, stages, ubershader: None, preprocessed: 0 };
     };
     let mut requests: Vec<Request> = Vec::new();
     let mut request_of: HashMap<(Stage, &str, &KeywordBits, String), usize> = HashMap::new();
@@ -182,9 +194,21 @@ pub(super) fn pass_jobs<'a>(
         });
         per_variant.push(stages.collect());
     }
-    let outputs: Vec<_> = requests
+    // A variant's kernels share its text: each (stage, keywords) is preprocessed once, then cut
+    // for each entry point that asks for it.
+    let mut texts: Vec<Vec<usize>> = Vec::new();
+    let mut text_of: HashMap<(Stage, &[String], bool), usize> = HashMap::new();
+    for (index, r) in requests.iter().enumerate() {
+        let text = *text_of.entry((r.stage, &r.keywords, r.ubershader)).or_insert_with(|| {
+            texts.push(Vec::new());
+            texts.len() - 1
+        });
+        texts[text].push(index);
+    }
+    let preprocessed: Vec<_> = texts
         .par_iter()
-        .map(|r| {
+        .map(|asking| {
+            let r = &requests[asking[0]];
             let keywords: Vec<&str> = r.keywords.iter().map(String::as_str).collect();
             let macros = match r.ubershader {
                 true => ubershader_macros(&program.pragmas, r.stage).unwrap_or_default(),
@@ -192,15 +216,24 @@ pub(super) fn pass_jobs<'a>(
             };
             let out = preprocess_with(includes, store, wgsl, &macros, r.stage);
             let scope = if diagnostics::has_errors(&out.diagnostics) { ParseScope::Whole } else { scope };
-            let (text, map, whole, scan) = cut(out.text, out.source_map, &r.entry.value, scope);
-            let text_hash = hash(text.as_bytes());
-            (out.diagnostics, (text, map, whole, scan), text_hash)
+            let entries: Vec<&str> = asking.iter().map(|&i| requests[i].entry.value.as_str()).collect();
+            let cuts = cuts(out.text, out.source_map, &entries, scope);
+            let cuts: Vec<_> = cuts.into_iter().map(|cut| (hash(cut.0.as_bytes()), cut)).collect();
+            (out.diagnostics, cuts)
         })
         .collect();
+    let mut outputs: Vec<Option<_>> = requests.iter().map(|_| None).collect();
+    for (asking, (found, cuts)) in texts.iter().zip(preprocessed) {
+        for (&request, (text_hash, cut)) in asking.iter().zip(cuts) {
+            outputs[request] = Some((found.clone(), cut, text_hash));
+        }
+    }
     // Different keywords can still give the same text (a keyword no `#if` of this stage tests).
     let mut job_of_text: HashMap<(Stage, &str, String, String), usize> = HashMap::new();
     let mut job_of_request: Vec<Option<usize>> = Vec::with_capacity(requests.len());
-    for (request, (found, (text, map, whole, scan), text_hash)) in requests.into_iter().zip(outputs) {
+    for (request, (found, (text, map, whole, scan), text_hash)) in
+        requests.into_iter().zip(outputs.into_iter().flatten())
+    {
         let failed = diagnostics::has_errors(&found);
         let within = stage_within(request.stage, &request.entry.value);
         diagnostics.extend(found.into_iter().map(|d| d.in_variant(&request.variant, &pass_id, &within)));
@@ -234,5 +267,5 @@ pub(super) fn pass_jobs<'a>(
         .map(|stages| stages.into_iter().map(|r| r.and_then(|r| job_of_request[r])).collect())
         .collect();
     let ubershader = (stages.len() > work.variants.len()).then(|| stages.pop()).flatten();
-    PassJobs { jobs, stages, ubershader }
+    PassJobs { jobs, stages, ubershader, preprocessed: texts.len() }
 }

@@ -208,6 +208,9 @@ pub struct BuildSummary {
     /// Modules built from their whole text because naga refused the text cut to what the entry
     /// point reaches (a miss of `compile::reach`'s scan; 0 on every input the suite builds).
     pub uncut: usize,
+    /// Stage texts the preprocessor wrote: one for each stage and keywords of a pass, whatever
+    /// its entry points (a compute pass's kernels share one).
+    pub preprocessed: usize,
     /// Texts naga parsed: a stage text, or texts of one pass parsed together (each once).
     pub parses: usize,
     /// Modules cut out of a parse of several texts together (`compile::together`).
@@ -406,6 +409,7 @@ fn build_passes(
         parts.push(pass.part);
     }
     summary.uncut = session.uncut.load(std::sync::atomic::Ordering::Relaxed);
+    summary.preprocessed = session.preprocessed.load(std::sync::atomic::Ordering::Relaxed);
     summary.parses = session.parses.load(std::sync::atomic::Ordering::Relaxed);
     summary.parsed_together = session.parsed_together.load(std::sync::atomic::Ordering::Relaxed);
     let (remote_warning, remote_bytes) = session.sources.finish();

@@ -85,8 +85,9 @@ pub(super) fn build_pass(
 ) -> PassBuilt {
     let (cache, progress) = (&session.cache, &session.progress);
     let mut diagnostics = Vec::new();
-    let PassJobs { jobs, stages, ubershader } =
+    let PassJobs { jobs, stages, ubershader, preprocessed } =
         pass_jobs(store, includes, work, options.parse, &mut diagnostics);
+    session.preprocessed.fetch_add(preprocessed, Ordering::Relaxed);
     for job in &jobs {
         session.texts.add(&job.text_hash);
     }

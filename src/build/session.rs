@@ -22,7 +22,8 @@ pub(super) struct Session<'a> {
     pub parsed: Recent<Vec<Declared>>,
     /// Modules built from their whole text: naga refused the cut one (`BuildSummary::uncut`).
     pub uncut: AtomicUsize,
-    /// `BuildSummary::parses` and `parsed_together`.
+    /// `BuildSummary::preprocessed`, `parses` and `parsed_together`.
+    pub preprocessed: AtomicUsize,
     pub parses: AtomicUsize,
     pub parsed_together: AtomicUsize,
 }
@@ -46,6 +47,7 @@ impl<'a> Session<'a> {
             compiled: Recent::new(SHARED_MODULE_BYTES, RECENT_SHARDS),
             parsed: Recent::new(SHARED_FRONT_BYTES, RECENT_SHARDS),
             uncut: AtomicUsize::new(0),
+            preprocessed: AtomicUsize::new(0),
             parses: AtomicUsize::new(0),
             parsed_together: AtomicUsize::new(0),
         }

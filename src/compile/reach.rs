@@ -25,11 +25,31 @@ pub fn cut(text: &str, map: &SourceMap, entry: &str) -> Option<(String, SourceMa
 /// [`joined`] puts them): what parsing texts together reads again, not scanned twice.
 pub(crate) fn cut_scanned(text: &str, map: &SourceMap, entry: &str) -> Option<(String, SourceMap, CutScan)> {
     let (scan, kept) = reached(text, entry)?;
+    Some(cut_kept(text, map, &scan, &kept))
+}
+
+/// [`cut_scanned`] for each of `entries` (a compute program's kernels share their text), the text
+/// scanned once.
+pub(crate) fn cuts_scanned(
+    text: &str,
+    map: &SourceMap,
+    entries: &[&str],
+) -> Vec<Option<(String, SourceMap, CutScan)>> {
+    let scan = scanned(text);
+    let cut = |entry: &str| {
+        let scan = scan.as_ref()?;
+        Some(cut_kept(text, map, scan, &kept_in_order(scan, entry)?))
+    };
+    entries.iter().map(|entry| cut(entry)).collect()
+}
+
+/// The text cut to the declarations `kept` of its scan, with its map and the cut's scan.
+fn cut_kept(text: &str, map: &SourceMap, scan: &Scan, kept: &[usize]) -> (String, SourceMap, CutScan) {
     let ranges: Vec<Range<usize>> = kept.iter().map(|&d| scan.declarations[d].range.clone()).collect();
     let cut_text = joined(text, &ranges);
     let mut moved = CutScan::default();
     let mut at = 0;
-    for &d in &kept {
+    for &d in kept {
         let declaration = &scan.declarations[d];
         let start = declaration.range.start;
         let place = |word: &str| {
@@ -48,7 +68,7 @@ pub(crate) fn cut_scanned(text: &str, map: &SourceMap, entry: &str) -> Option<(S
         });
         at += declaration.range.len() + 1;
     }
-    Some((cut_text, map.cut(&ranges), moved))
+    (cut_text, map.cut(&ranges), moved)
 }
 
 /// A cut text's scan by positions ([`cut_scanned`]), made a [`Scan`] of the text again by
@@ -103,14 +123,19 @@ pub fn reachable(text: &str, entry: &str) -> Option<Vec<Range<usize>>> {
 
 /// `text`'s scan and the declarations `entry` reaches in it ([`kept_in_order`]).
 fn reached<'t>(text: &'t str, entry: &str) -> Option<(Scan<'t>, Vec<usize>)> {
+    let scan = scanned(text)?;
+    let kept = kept_in_order(&scan, entry)?;
+    Some((scan, kept))
+}
+
+/// A text's declarations, where it may be cut at all.
+fn scanned(text: &str) -> Option<Scan<'_>> {
     // A byte that was not UTF-8 (read as U+FFFD) is an error wherever code holds it (K0001): naga
     // reports it from the whole text.
     if text.contains(char::REPLACEMENT_CHARACTER) {
         return None;
     }
-    let scan = declarations(text)?;
-    let kept = kept_in_order(&scan, entry)?;
-    Some((scan, kept))
+    declarations(text)
 }
 
 /// The declarations of a text's scan that `entry` reaches, in the order naga lowers them; `None`
@@ -585,6 +610,32 @@ mod against_naga {
             }
         }
         assert!(compared > 1000, "{compared} texts cut");
+        assert!(differing.is_empty(), "{differing:#?}");
+    }
+
+    /// Every function of each Tint test as an entry point of one text (a compute program's
+    /// kernels): the cuts of one scan ([`cuts_scanned`]) are each entry point's own cut.
+    #[test]
+    fn cuts_of_one_scan_are_each_entry_point_s_own_cut() {
+        use crate::compile::reach::{cut_scanned, cuts_scanned};
+        use crate::preprocess::SourceMap;
+        let (mut compared, mut differing) = (0, Vec::new());
+        let shown = |cut: Option<(String, SourceMap, super::CutScan)>| format!("{cut:?}");
+        for (path, text) in tint_texts() {
+            let Some(scan) = declarations(&text) else { continue };
+            let functions: Vec<&str> = (scan.declarations.iter())
+                .filter(|d| d.kind == Kind::Function)
+                .filter_map(|d| d.name)
+                .collect();
+            let map = SourceMap::default();
+            for (entry, cut) in functions.iter().zip(cuts_scanned(&text, &map, &functions)) {
+                compared += 1;
+                if shown(cut) != shown(cut_scanned(&text, &map, entry)) {
+                    differing.push(format!("{} ({entry})", path.display()));
+                }
+            }
+        }
+        assert!(compared > 1000, "{compared} entry points cut");
         assert!(differing.is_empty(), "{differing:#?}");
     }
 

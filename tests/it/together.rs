@@ -35,8 +35,8 @@ fn both(project: &Path, unused: VariantSelection) -> (BuildSummary, BuildSummary
 /// What a build parsed, as the golden pins it.
 fn line(together: &BuildSummary, alone: &BuildSummary) -> String {
     format!(
-        "{} modules, {} cut out of parses together; naga parsed {} texts, {} alone",
-        together.modules, together.parsed_together, together.parses, alone.parses
+        "{} modules from {} texts preprocessed, {} cut out of parses together; naga parsed {} texts, {} alone",
+        together.modules, together.preprocessed, together.parsed_together, together.parses, alone.parses
     )
 }
 
