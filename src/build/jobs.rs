@@ -76,17 +76,17 @@ fn cuts(text: String, map: SourceMap, entries: &[&str], scope: ParseScope) -> Ve
         ParseScope::Together | ParseScope::Reachable => reach::cuts_scanned(&text, &map, entries),
         ParseScope::Whole => entries.iter().map(|_| None).collect(),
     };
-    let mut whole = Some((text, map));
+    let mut whole = (text, map);
     let last = entries.len().saturating_sub(1);
-    let given = cuts.into_iter().zip(entries).enumerate().filter_map(|(index, (cut, entry))| {
+    let given = cuts.into_iter().zip(entries).enumerate().map(|(index, (cut, entry))| {
         // The last to ask takes the text; the others copy it.
-        let (text, map) = if index == last { whole.take() } else { whole.clone() }?;
-        let Some((mut cut, cut_map, scan)) = cut else { return Some((text, map, None, None)) };
+        let (text, map) = if index == last { std::mem::take(&mut whole) } else { whole.clone() };
+        let Some((mut cut, cut_map, scan)) = cut else { return (text, map, None, None) };
         // For the test of a miss: debug builds spoil the cut of the entry point this names.
         if cfg!(debug_assertions) && std::env::var("KILN_INJECT_CUT_MISS").is_ok_and(|name| name == *entry) {
             cut.push_str("fn (\n");
         }
-        Some((cut, cut_map, Some(Box::new(WholeText { text, map })), Some(scan)))
+        (cut, cut_map, Some(Box::new(WholeText { text, map })), Some(scan))
     });
     given.collect()
 }
