@@ -197,8 +197,9 @@ fn mistakes_in_kernels_and_listed_variants_are_reported_where_they_are_written()
     let codes: Vec<&str> = diagnostics.iter().map(|d| d.code).collect();
     assert_eq!(
         codes,
-        ["K0533", "K0418", "K0418", "K0401", "K0403", "K0403"],
-        "an unlisted keyword, a default and a workgroup size naga cannot write, no workgroup size, a vertex entry point, a missing kernel"
+        ["K0533", "K0418", "K0418", "K0401", "K0403", "K0310", "K0403"],
+        "an unlisted keyword, a default and a workgroup size naga cannot write, no workgroup size, a vertex entry point, \
+         an `#error` in a text two kernels share (reported once, as before it was preprocessed once), a missing kernel"
     );
     expect_test::expect_file![root().join("fixtures/bad/compute/kiln.stderr")]
         .assert_eq(&kiln::diagnostics::render_plain(&store, &diagnostics));
