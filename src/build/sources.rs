@@ -377,12 +377,14 @@ pub(super) fn parse_together(pass: &PassSources, jobs: &[Job], asked: &[bool]) -
     if pass.options.parse != ParseScope::Together {
         return modules;
     }
-    let mut groups: BTreeMap<(&str, &str), Vec<usize>> = BTreeMap::new();
+    // By stage: a compute pass's kernels are entry points of one text, and a variant's kernels
+    // share all but their own entry point.
+    let mut groups: BTreeMap<&str, Vec<usize>> = BTreeMap::new();
     for (index, job) in jobs.iter().enumerate().filter(|&(i, _)| asked[i]) {
-        groups.entry((job.stage.name(), job.entry)).or_default().push(index);
+        groups.entry(job.stage.name()).or_default().push(index);
     }
     // Each group's first few jobs (`first`), or the rest.
-    fn batches<'g>(groups: &'g BTreeMap<(&str, &str), Vec<usize>>, first: bool) -> Vec<&'g [usize]> {
+    fn batches<'g>(groups: &'g BTreeMap<&str, Vec<usize>>, first: bool) -> Vec<&'g [usize]> {
         let chunks = groups.values().map(|members| members.chunks(together::MOST_TEXTS));
         let chunks: Vec<&[usize]> = match first {
             true => chunks.filter_map(|mut c| c.next()).collect(),

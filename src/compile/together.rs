@@ -54,6 +54,7 @@ pub(crate) struct Together {
 struct Placed {
     at: usize,
     shifts: Vec<(usize, isize)>,
+    kind: Kind,
 }
 
 impl Placed {
@@ -249,7 +250,7 @@ pub(crate) fn assemble(texts: &[Text]) -> Option<Together> {
         }
         text.push_str(&declaration.text[at..]);
         text.push('\n');
-        placed.push(Placed { at: start, shifts });
+        placed.push(Placed { at: start, shifts, kind: declaration.kind });
     }
     let members = scanned
         .iter()
@@ -527,12 +528,20 @@ impl Together {
             return None;
         }
         naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
-        if !numbered_as_alone(&module, &parsed.made_for, member) {
+        if !numbered_as_alone(&module, &parsed.made_for, member, |place| self.header(place)) {
             return None;
         }
         give_names_back(&mut module, &member.renamed);
         self.place_globals(&mut module, member)?;
         Some(module)
+    }
+
+    /// The head (attributes, name, parameters and result) of the function written at `place`, as
+    /// a function of its own with an empty body; `None` where it is not a function.
+    fn header(&self, place: usize) -> Option<String> {
+        let placed = self.placed.get(place).filter(|p| p.kind == Kind::Function)?;
+        let body = placed.at + self.text[placed.at..].find('{')?;
+        Some(format!("{}{{}}\n", &self.text[placed.at..body]))
     }
 
     /// The spans of a member's global variables moved into its own text, where its resources'
@@ -564,17 +573,25 @@ impl Together {
 /// of the member's own (right before it, lowered alike) and the member's own made none of the
 /// types it keeps: alone, its own would have met them in the same order. And it is harmless for
 /// one such type only, where none of the member's declarations after that one made a type it
-/// keeps.
-fn numbered_as_alone(module: &naga::Module, made_for: &[Option<usize>], member: &Member) -> bool {
-    let mut made = Vec::with_capacity(module.types.len());
+/// keeps. Last, for types met first by other texts' declarations that are all before the
+/// member's next own one, where that one is the first of the member's to meet them all in its
+/// head: alone, that head makes them, in the order [`head_order`] finds.
+fn numbered_as_alone(
+    module: &naga::Module,
+    made_for: &[Option<usize>],
+    member: &Member,
+    header: impl Fn(usize) -> Option<String>,
+) -> bool {
+    let mut makers = Vec::with_capacity(module.types.len());
     for (ty, _) in module.types.iter() {
         let Some(at) = module.types.get_span(ty).to_range().and_then(|r| made_for.get(r.start).copied())
         else {
             return false;
         };
-        // Before the first declaration: in every text alike.
-        made.extend(at);
+        makers.push(at);
     }
+    // Before the first declaration: in every text alike.
+    let made: Vec<usize> = makers.iter().flatten().copied().collect();
     let own = |d: &usize| member.declarations.contains_key(d);
     let counterparts = made
         .iter()
@@ -586,7 +603,64 @@ fn numbered_as_alone(module: &naga::Module, made_for: &[Option<usize>], member: 
         (Some(&f), None) => made.iter().filter(|d| own(d)).all(|&d| d < f),
         _ => false,
     };
-    counterparts || one
+    counterparts || one || met_first_in_own_head(module, &makers, member, header)
+}
+
+/// Whether the types of `module` that other texts' declarations made (`makers`: the declaration
+/// each type was made for, by the type's index) are numbered as the member's own text would
+/// number them, because its first declaration after all of those makers meets them all in its
+/// head, in that order, and none of its declarations after the first maker made a type it keeps.
+fn met_first_in_own_head(
+    module: &naga::Module,
+    makers: &[Option<usize>],
+    member: &Member,
+    header: impl Fn(usize) -> Option<String>,
+) -> bool {
+    let made: Vec<usize> = makers.iter().flatten().copied().collect();
+    let own = |d: &usize| member.declarations.contains_key(d);
+    let Some(&first) = made.iter().filter(|d| !own(d)).min() else { return true };
+    let last = made.iter().filter(|d| !own(d)).max().copied().unwrap_or(first);
+    // Alone, no declaration of its own before `first` met these types (it would have made them
+    // there), nor between `first` and `next`: `next` meets them first.
+    if made.iter().filter(|d| own(d)).any(|&d| d > first) {
+        return false;
+    }
+    let Some(&next) = member.declarations.keys().filter(|&&d| d > last).min() else { return false };
+    if member.declarations.keys().any(|&d| d > first && d < next) {
+        return false;
+    }
+    let foreign: Vec<&naga::TypeInner> = (module.types.iter().zip(makers))
+        .filter(|(_, maker)| maker.is_some_and(|d| !own(&d)))
+        .map(|((_, ty), _)| &ty.inner)
+        .collect();
+    // Types naming others by handle cannot be told apart across two modules.
+    if !foreign.iter().all(|ty| handle_free(ty)) {
+        return false;
+    }
+    header(next).and_then(|head| head_order(&head)).is_some_and(|order| {
+        let met: Vec<&naga::TypeInner> = order.iter().filter(|ty| foreign.contains(ty)).collect();
+        met == foreign
+    })
+}
+
+/// The types naga makes for a function's head alone, in the order it makes them.
+fn head_order(head: &str) -> Option<Vec<naga::TypeInner>> {
+    let module = contain_panics(|| naga::front::wgsl::parse_str(head).ok()).ok().flatten()?;
+    Some(module.types.iter().map(|(_, ty)| ty.inner.clone()).collect())
+}
+
+/// Whether a type names no other type (so two modules' can be compared as they are).
+fn handle_free(ty: &naga::TypeInner) -> bool {
+    use naga::TypeInner as T;
+    matches!(
+        ty,
+        T::Scalar(_)
+            | T::Vector { .. }
+            | T::Matrix { .. }
+            | T::Atomic(_)
+            | T::Image { .. }
+            | T::Sampler { .. }
+    )
 }
 
 /// Whether naga lowers the written declarations `a` and `b`, the same text naming other
@@ -689,14 +763,19 @@ mod tests {
     /// Parses `texts` (fragment stages of entry point `fs`) together and checks that every
     /// module cut out is what the text gives alone, byte for byte; which members were cut out.
     fn cut_out(texts: &[&str]) -> Vec<bool> {
-        let asked = given(texts, "fs");
-        let Some(together) = assemble(&asked) else { return vec![false; texts.len()] };
+        let jobs: Vec<(&str, &str)> = texts.iter().map(|&text| (text, "fs")).collect();
+        stages_cut_out(&jobs, naga::ShaderStage::Fragment)
+    }
+
+    /// [`cut_out`] for `(text, entry point)` stages of `stage`.
+    fn stages_cut_out(jobs: &[(&str, &str)], stage: naga::ShaderStage) -> Vec<bool> {
+        let asked: Vec<Text> = jobs.iter().map(|&(text, entry)| Text { text, entry, scan: None }).collect();
+        let Some(together) = assemble(&asked) else { return vec![false; jobs.len()] };
         let parsed = together.parse().unwrap_or_else(|| panic!("naga parses:\n{}", together.text));
-        (0..texts.len())
-            .map(|i| match together.cut(&parsed, i, naga::ShaderStage::Fragment) {
+        (0..jobs.len())
+            .map(|i| match together.cut(&parsed, i, stage) {
                 Some(module) => {
-                    let ours = written(&module);
-                    let theirs = written(&alone(texts[i], "fs"));
+                    let (ours, theirs) = (written(&module), written(&alone(jobs[i].0, jobs[i].1)));
                     assert_eq!(ours.0, theirs.0, "member {i}'s WGSL, from:\n{}", together.text);
                     assert_eq!(ours.1, theirs.1, "member {i}'s SPIR-V, from:\n{}", together.text);
                     true
@@ -916,6 +995,43 @@ mod tests {
             })
             .collect();
         assert_eq!(cut[..3], [true, true, true]);
+    }
+
+    #[test]
+    fn a_variant_s_kernels_share_a_parse_where_their_heads_number_types_alike() {
+        // Each kernel's text is cut to what it reaches. `integrate` is written before `reduce`
+        // and makes `u32` and `vec3<u32>` first; `reduce`'s head meets them in that order too.
+        let kernel = |shape: &str, entry: &str| {
+            let head = match entry {
+                "integrate" => "integrate(@builtin(global_invocation_id) id: vec3<u32>) { let n = id.x;",
+                _ => "reduce(@builtin(local_invocation_index) n: u32, @builtin(workgroup_id) g: vec3<u32>) {",
+            };
+            format!(
+                "var<storage, read_write> data: array<vec4<f32>>;\n\
+                 fn shape(v: vec4<f32>) -> vec4<f32> {{ {shape} }}\n\
+                 @compute @workgroup_size(64) fn {head} data[n] = shape(data[n]); }}\n"
+            )
+        };
+        let texts: Vec<(String, &str)> =
+            ["return v * 1.01;", "return sin(v);", "return mix(v, cos(v), 0.2);"]
+                .iter()
+                .flat_map(|shape| ["integrate", "reduce"].map(|entry| (kernel(shape, entry), entry)))
+                .collect();
+        let jobs: Vec<(&str, &str)> = texts.iter().map(|(text, entry)| (text.as_str(), *entry)).collect();
+        assert_eq!(stages_cut_out(&jobs, naga::ShaderStage::Compute), [true; 6]);
+        // Helpers whose heads meet another text's types in another order are left alone; in the
+        // same order, they are cut out.
+        let helper = |name: &str, parameters: &str, arguments: &str| {
+            format!(
+                "fn {name}({parameters}) -> f32 {{ return a.x + f32(b.y); }}\n\
+                 @compute @workgroup_size(1) fn main_{name}() {{ _ = {name}({arguments}); }}\n"
+            )
+        };
+        let first = helper("p", "a: vec2<f32>, b: vec3<i32>", "vec2(1.0), vec3(2)");
+        let swapped = helper("q", "b: vec3<i32>, a: vec2<f32>", "vec3(2), vec2(1.0)");
+        let same = helper("r", "a: vec2<f32>, b: vec3<i32>", "vec2(1.0), vec3(2)");
+        let jobs = [(first.as_str(), "main_p"), (swapped.as_str(), "main_q"), (same.as_str(), "main_r")];
+        assert_eq!(stages_cut_out(&jobs, naga::ShaderStage::Compute), [true, false, true]);
     }
 
     #[test]
