@@ -54,7 +54,9 @@ pub(crate) struct Together {
 struct Placed {
     at: usize,
     shifts: Vec<(usize, isize)>,
-    kind: Kind,
+    /// For a function whose head names no declaration (so that naga reads it the same alone),
+    /// where its body starts in the text parsed.
+    body: Option<usize>,
 }
 
 impl Placed {
@@ -250,7 +252,12 @@ pub(crate) fn assemble(texts: &[Text]) -> Option<Together> {
         }
         text.push_str(&declaration.text[at..]);
         text.push('\n');
-        placed.push(Placed { at: start, shifts, kind: declaration.kind });
+        let head_end = declaration.text.find('{').filter(|&end| {
+            declaration.kind == Kind::Function
+                && !declaration.names.iter().any(|(r, n)| r.end <= end && *n != w)
+        });
+        let body = head_end.and_then(|_| text[start..].find('{')).map(|body| start + body);
+        placed.push(Placed { at: start, shifts, body });
     }
     let members = scanned
         .iter()
@@ -537,11 +544,11 @@ impl Together {
     }
 
     /// The head (attributes, name, parameters and result) of the function written at `place`, as
-    /// a function of its own with an empty body; `None` where it is not a function.
+    /// a function of its own with an empty body; `None` where it is not a function or its head
+    /// names a declaration (one that could shadow a predeclared type).
     fn header(&self, place: usize) -> Option<String> {
-        let placed = self.placed.get(place).filter(|p| p.kind == Kind::Function)?;
-        let body = placed.at + self.text[placed.at..].find('{')?;
-        Some(format!("{}{{}}\n", &self.text[placed.at..body]))
+        let placed = self.placed.get(place)?;
+        Some(format!("{}{{}}\n", &self.text[placed.at..placed.body?]))
     }
 
     /// The spans of a member's global variables moved into its own text, where its resources'
