@@ -623,13 +623,12 @@ fn met_first_in_own_head(
     member: &Member,
     header: impl Fn(usize) -> Option<String>,
 ) -> bool {
-    let made: Vec<usize> = makers.iter().flatten().copied().collect();
     let own = |d: &usize| member.declarations.contains_key(d);
-    let Some(&first) = made.iter().filter(|d| !own(d)).min() else { return true };
-    let last = made.iter().filter(|d| !own(d)).max().copied().unwrap_or(first);
+    let foreign_makers = || makers.iter().flatten().filter(|d| !own(d));
+    let (Some(&first), Some(&last)) = (foreign_makers().min(), foreign_makers().max()) else { return true };
     // Alone, no declaration of its own before `first` met these types (it would have made them
     // there), nor between `first` and `next`: `next` meets them first.
-    if made.iter().filter(|d| own(d)).any(|&d| d > first) {
+    if makers.iter().flatten().any(|d| own(d) && *d > first) {
         return false;
     }
     let Some(&next) = member.declarations.keys().filter(|&&d| d > last).min() else { return false };
