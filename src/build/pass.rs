@@ -150,8 +150,8 @@ pub(super) fn build_pass(
         }
     };
     let (mut compiled_count, mut reused, mut shared) = (0, 0, 0);
-    let mut fresh = PassIndex { front: declared_by_text(&jobs, &fronts), stage: BTreeMap::new() };
     let mut modules: Vec<Option<CachedStage>> = Vec::with_capacity(jobs.len());
+    let mut keys: Vec<Option<String>> = Vec::with_capacity(jobs.len());
     for (outcome, job) in outcomes.into_iter().zip(&jobs) {
         let stage = match outcome {
             Some(Ok((Built::Reused(stage), key))) => {
@@ -183,20 +183,31 @@ pub(super) fn build_pass(
         {
             diagnostics.push(job.in_stage(spirv_gap_warning(gap, job)));
         }
-        modules.push(stage.map(|(stage, key)| {
-            fresh.stage.insert(key, stage.clone());
-            stage
-        }));
+        let (stage, key) = stage.unzip();
+        modules.push(stage);
+        keys.push(key);
     }
-    if fresh != index {
-        // A cache that cannot be written only costs speed next time.
-        let _ = cache.put_pass_index(&key, &fresh);
-    }
+    // The last passes' serial steps are the build's end, when threads are idle: the manifest
+    // part and the cache entry are made side by side.
+    let (part, ()) = rayon::join(
+        || {
+            let manifest =
+                pass_manifest(store, catalog, work, &jobs, &stages, ubershader.as_deref(), &modules);
+            BuiltPass::new(manifest, options)
+        },
+        || {
+            let stage = (keys.into_iter().zip(&modules))
+                .filter_map(|(key, stage)| Some((key?, stage.clone()?)))
+                .collect();
+            let fresh = PassIndex { front: declared_by_text(&jobs, &fronts), stage };
+            if fresh != index {
+                // A cache that cannot be written only costs speed next time.
+                let _ = cache.put_pass_index(&key, &fresh);
+            }
+        },
+    );
     PassBuilt {
-        part: BuiltPass::new(
-            pass_manifest(store, catalog, work, &jobs, &stages, ubershader.as_deref(), &modules),
-            options,
-        ),
+        part,
         diagnostics,
         modules: jobs.len(),
         compiled: compiled_count,
@@ -341,22 +352,27 @@ fn pack_pass(
     cache: &Cache,
     compiled: &[&Compiled],
 ) -> std::io::Result<(Vec<PerBackend<Option<FileRef>>>, u64)> {
+    // Each backend's pack is its own file: written side by side.
+    let packed: Vec<(Backend, Vec<usize>, Vec<FileRef>, u64)> = Backend::ALL
+        .par_iter()
+        .filter_map(|&backend| {
+            let (present, modules): (Vec<usize>, Vec<&ModuleBytes>) = compiled
+                .iter()
+                .enumerate()
+                .filter_map(|(i, c)| Some((i, c.modules[backend].as_ref()?)))
+                .unzip();
+            (!present.is_empty()).then(|| {
+                let (refs, count) = cache.pack(&modules, backend.pack_extension())?;
+                Ok((backend, present, refs, count))
+            })
+        })
+        .collect::<std::io::Result<_>>()?;
     let mut files: Vec<PerBackend<Option<FileRef>>> = vec![PerBackend::default(); compiled.len()];
     let mut written = 0;
-    for &backend in Backend::ALL {
-        let present: Vec<(usize, &ModuleBytes)> = compiled
-            .iter()
-            .enumerate()
-            .filter_map(|(i, c)| Some((i, c.modules[backend].as_ref()?)))
-            .collect();
-        if present.is_empty() {
-            continue;
-        }
-        let modules: Vec<&ModuleBytes> = present.iter().map(|(_, m)| *m).collect();
-        let (refs, count) = cache.pack(&modules, backend.pack_extension())?;
+    for (backend, present, refs, count) in packed {
         written += count;
-        for ((i, _), file) in present.iter().zip(refs) {
-            files[*i][backend] = Some(file);
+        for (i, file) in present.into_iter().zip(refs) {
+            files[i][backend] = Some(file);
         }
     }
     Ok((files, written))

@@ -140,8 +140,11 @@ impl<V> Recent<V> {
 /// How many passes of a build have each stage text (by its hash), so that [`Recent`] keeps only
 /// what another pass may want: a library whose texts are all distinct keeps nothing.
 pub(super) struct TextCounts {
-    shards: Vec<std::sync::Mutex<std::collections::HashMap<u64, u32>>>,
+    shards: Vec<std::sync::Mutex<Counts>>,
 }
+
+/// One shard's counts; its keys are hashes already, so a fast hash spreads them.
+type Counts = std::collections::HashMap<u64, u32, foldhash::fast::FixedState>;
 
 impl TextCounts {
     /// `shards == 0` counts nothing: no text is ever shared.
@@ -154,7 +157,7 @@ impl TextCounts {
         text_hash.get(..16).and_then(|h| u64::from_str_radix(h, 16).ok()).unwrap_or(0)
     }
 
-    fn shard(&self, id: u64) -> Option<&std::sync::Mutex<std::collections::HashMap<u64, u32>>> {
+    fn shard(&self, id: u64) -> Option<&std::sync::Mutex<Counts>> {
         (!self.shards.is_empty()).then(|| &self.shards[(id % self.shards.len() as u64) as usize])
     }
 

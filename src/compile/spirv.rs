@@ -40,6 +40,15 @@ impl Instruction {
     }
 }
 
+/// A module's words as the bytes of its file (little-endian), copied a word at a time.
+pub(super) fn to_bytes(words: &[u32]) -> Vec<u8> {
+    let mut bytes = Vec::with_capacity(words.len() * 4);
+    for word in words {
+        bytes.extend_from_slice(&word.to_le_bytes());
+    }
+    bytes
+}
+
 /// `words` with each correction made. A module that does not parse as SPIR-V, or needs none,
 /// is returned as it is.
 pub(super) fn corrected(words: Vec<u32>) -> Vec<u32> {

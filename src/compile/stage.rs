@@ -180,9 +180,7 @@ fn write(
                 None => gaps::write(module, info, &options, &pipeline),
             };
             Ok(match written {
-                Ok(words) => Written::Module(
-                    super::spirv::corrected(words).iter().flat_map(|w| w.to_le_bytes()).collect(),
-                ),
+                Ok(words) => Written::Module(super::spirv::to_bytes(&super::spirv::corrected(words))),
                 Err(gap) => Written::Gap(gap),
             })
         }

@@ -25,6 +25,7 @@
 
 use super::panics::contain_panics;
 use super::reach::{self, Declaration, Kind, Names};
+use std::sync::OnceLock;
 // Every text of a build's passes goes through these maps: a fast hash.
 type HashMap<K, V> = std::collections::HashMap<K, V, foldhash::fast::FixedState>;
 type HashSet<T> = std::collections::HashSet<T, foldhash::fast::FixedState>;
@@ -47,6 +48,9 @@ pub(crate) struct Together {
     placed: Vec<Placed>,
     /// The bytes of the texts it parses together.
     given: usize,
+    /// The types naga makes for each placed function's head alone ([`head_order`]), read once
+    /// for all the members that ask (a batch's kernels share their entry points' heads).
+    heads: Vec<OnceLock<Option<Vec<naga::TypeInner>>>>,
 }
 
 /// Where a declaration is in the text parsed, and how its names written anew moved what follows
@@ -296,7 +300,8 @@ pub(crate) fn assemble(texts: &[Text]) -> Option<Together> {
         })
         .collect();
     let given = scanned.iter().zip(texts).filter(|(one, _)| one.is_some()).map(|(_, t)| t.text.len()).sum();
-    Some(Together { text, members, placed, given })
+    let heads = placed.iter().map(|_| OnceLock::new()).collect();
+    Some(Together { text, members, placed, given, heads })
 }
 
 /// One text's scan, its declarations made written ones; `None` where it cannot share a parse.
@@ -535,7 +540,7 @@ impl Together {
             return None;
         }
         naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
-        if !numbered_as_alone(&module, &parsed.made_for, member, |place| self.header(place)) {
+        if !numbered_as_alone(&module, &parsed.made_for, member, |place| self.head_types(place)) {
             return None;
         }
         give_names_back(&mut module, &member.renamed);
@@ -543,12 +548,14 @@ impl Together {
         Some(module)
     }
 
-    /// The head (attributes, name, parameters and result) of the function written at `place`, as
-    /// a function of its own with an empty body; `None` where it is not a function or its head
-    /// names a declaration (one that could shadow a predeclared type).
-    fn header(&self, place: usize) -> Option<String> {
+    /// The types naga makes for the head (attributes, name, parameters and result) of the
+    /// function written at `place`, read as a function of its own with an empty body; `None` where
+    /// it is not a function or its head names a declaration (one that could shadow a predeclared
+    /// type).
+    fn head_types(&self, place: usize) -> Option<&[naga::TypeInner]> {
         let placed = self.placed.get(place)?;
-        Some(format!("{}{{}}\n", &self.text[placed.at..placed.body?]))
+        let head = || head_order(&format!("{}{{}}\n", &self.text[placed.at..placed.body?]));
+        self.heads.get(place)?.get_or_init(head).as_deref()
     }
 
     /// The spans of a member's global variables moved into its own text, where its resources'
@@ -583,11 +590,11 @@ impl Together {
 /// keeps. Last, for types met first by other texts' declarations that are all before the
 /// member's next own one, where that one is the first of the member's to meet them all in its
 /// head: alone, that head makes them, in the order [`head_order`] finds.
-fn numbered_as_alone(
+fn numbered_as_alone<'m>(
     module: &naga::Module,
     made_for: &[Option<usize>],
     member: &Member,
-    header: impl Fn(usize) -> Option<String>,
+    head_types: impl Fn(usize) -> Option<&'m [naga::TypeInner]>,
 ) -> bool {
     let mut makers = Vec::with_capacity(module.types.len());
     for (ty, _) in module.types.iter() {
@@ -610,18 +617,18 @@ fn numbered_as_alone(
         (Some(&f), None) => made.iter().filter(|d| own(d)).all(|&d| d < f),
         _ => false,
     };
-    counterparts || one || met_first_in_own_head(module, &makers, member, header)
+    counterparts || one || met_first_in_own_head(module, &makers, member, head_types)
 }
 
 /// Whether the types of `module` that other texts' declarations made (`makers`: the declaration
 /// each type was made for, by the type's index) are numbered as the member's own text would
 /// number them, because its first declaration after all of those makers meets them all in its
 /// head, in that order, and none of its declarations after the first maker made a type it keeps.
-fn met_first_in_own_head(
+fn met_first_in_own_head<'m>(
     module: &naga::Module,
     makers: &[Option<usize>],
     member: &Member,
-    header: impl Fn(usize) -> Option<String>,
+    head_types: impl Fn(usize) -> Option<&'m [naga::TypeInner]>,
 ) -> bool {
     let own = |d: &usize| member.declarations.contains_key(d);
     let foreign_makers = || makers.iter().flatten().filter(|d| !own(d));
@@ -643,7 +650,7 @@ fn met_first_in_own_head(
     if !foreign.iter().all(|ty| handle_free(ty)) {
         return false;
     }
-    header(next).and_then(|head| head_order(&head)).is_some_and(|order| {
+    head_types(next).is_some_and(|order| {
         let met: Vec<&naga::TypeInner> = order.iter().filter(|ty| foreign.contains(ty)).collect();
         met == foreign
     })

@@ -161,15 +161,19 @@ impl Cache {
     /// named by the hash of their hashes, which fix its bytes (`modules/HASH.EXT`); returns each
     /// module's reference and the bytes written (0 when the pack was already there, intact).
     pub fn pack(&self, modules: &[&ModuleBytes], extension: &str) -> std::io::Result<(Vec<FileRef>, u64)> {
-        let mut bytes = Vec::with_capacity(modules.iter().map(|m| m.bytes.len()).sum());
+        // The pack is streamed from the modules' own bytes: a copy of it all in one buffer would
+        // be fresh memory the allocator takes from the system and hands back for every pass.
         let mut placed: HashMap<&str, u64> = HashMap::new();
+        let mut distinct: Vec<&[u8]> = Vec::new();
         let mut names = String::new();
+        let mut size = 0;
         let mut files = Vec::with_capacity(modules.len());
         for module in modules {
             let offset = *placed.entry(&module.hash).or_insert_with(|| {
                 names.push_str(&module.hash);
-                bytes.extend_from_slice(&module.bytes);
-                (bytes.len() - module.bytes.len()) as u64
+                distinct.push(&module.bytes);
+                size += module.bytes.len() as u64;
+                size - module.bytes.len() as u64
             });
             files.push((offset, module));
         }
@@ -177,11 +181,20 @@ impl Cache {
         let full = self.output.join(&path);
         let first = self.stored.lock().map_or(true, |mut stored| stored.insert(path.clone()));
         let present = !first
-            || std::fs::metadata(&full).is_ok_and(|m| m.len() == bytes.len() as u64)
-                && std::fs::read(&full).is_ok_and(|existing| existing == bytes);
+            || std::fs::metadata(&full).is_ok_and(|m| m.len() == size)
+                && std::fs::read(&full).is_ok_and(|existing| {
+                    let mut rest = existing.as_slice();
+                    distinct.iter().all(|bytes| {
+                        rest.split_at_checked(bytes.len()).is_some_and(|(head, tail)| {
+                            rest = tail;
+                            head == *bytes
+                        })
+                    })
+                });
         let written = if self.write && !present {
-            write_atomically(&full, &bytes)?;
-            bytes.len() as u64
+            stage(&full, |file| distinct.iter().try_for_each(|bytes| file.write_all(bytes)))?
+                .commit(|_| true)?;
+            size
         } else {
             0
         };
