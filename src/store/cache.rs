@@ -192,8 +192,7 @@ impl Cache {
                     })
                 });
         let written = if self.write && !present {
-            stage(&full, |file| distinct.iter().try_for_each(|bytes| file.write_all(bytes)))?
-                .commit(|_| true)?;
+            write_parts_atomically(&full, &distinct)?;
             size
         } else {
             0
@@ -306,7 +305,12 @@ fn folder_made_for(path: &Path) -> std::io::Result<&Path> {
 /// Writes through a temporary file in the same folder and a rename, so a reader never sees half a
 /// file and a failed or interrupted write leaves the old one.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    stage(path, |file| file.write_all(bytes))?.commit(|_| true).map(drop)
+    write_parts_atomically(path, &[bytes])
+}
+
+/// [`write_atomically`] for a file that is the concatenation of `parts`, written from them.
+fn write_parts_atomically(path: &Path, parts: &[&[u8]]) -> std::io::Result<()> {
+    stage(path, |file| parts.iter().try_for_each(|part| file.write_all(part)))?.commit(|_| true).map(drop)
 }
 
 /// A file's new bytes under a temporary name beside it, not yet in its place: [`Staged::commit`]
