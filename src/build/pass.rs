@@ -16,7 +16,7 @@ use crate::manifest::{Backend, FileRef, PerBackend};
 use crate::preprocess::Includes;
 use crate::reflect::{SpirvGap, StageReflection};
 use crate::source::SourceStore;
-use crate::store::{Cache, CachedStage, ModuleBytes, PassIndex, hash};
+use crate::store::{Cache, CachedStage, ModuleBytes, PassIndex, PlannedPack, hash};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -136,83 +136,54 @@ pub(super) fn build_pass(
         })
         .collect();
     repack_reused(&mut outcomes, &options.output);
-    let compiled: Vec<&Compiled> =
-        outcomes.iter().filter_map(|o| Some(&**o.as_ref()?.as_ref().ok()?.0.output()?)).collect();
-    let mut bytes_written = 0;
-    let mut files = match pack_pass(cache, &compiled) {
-        Ok((files, written)) => {
-            bytes_written += written;
-            files.into_iter()
+    // Packs are named by their modules' hashes, so each module's place is known before a byte
+    // is written: the packs are written while the manifest part and the cache entry are made.
+    let compiled: Vec<Arc<Compiled>> =
+        outcomes.iter().filter_map(|o| Some(Arc::clone(o.as_ref()?.as_ref().ok()?.0.output()?))).collect();
+    let (packs, files) = plan_packs(&compiled);
+    let (written, (counts, part, entry)) = rayon::join(
+        || packs.par_iter().map(|pack| cache.write_pack(pack)).sum::<std::io::Result<u64>>(),
+        || {
+            let Gathered { modules, keys, counts } =
+                gather(outcomes, &jobs, files, session, options, &mut diagnostics);
+            let (part, entry) = rayon::join(
+                || {
+                    let ubershader = ubershader.as_deref();
+                    let manifest = pass_manifest(store, catalog, work, &jobs, &stages, ubershader, &modules);
+                    BuiltPass::new(manifest, options)
+                },
+                || {
+                    let stage = (keys.into_iter().zip(&modules))
+                        .filter_map(|(key, stage)| Some((key?, stage.clone()?)))
+                        .collect();
+                    let fresh = PassIndex { front: declared_by_text(&jobs, &fronts), stage };
+                    // A cache that cannot be written only costs speed next time.
+                    (fresh != index).then(|| Cache::seal_pass_index(&key, &fresh).ok()).flatten()
+                },
+            );
+            (counts, part, entry)
+        },
+    );
+    let bytes_written = match written {
+        Ok(bytes) => {
+            // The cache entry names the packs: written once they are in place.
+            if let Some(entry) = entry {
+                let _ = cache.put_entry(&entry);
+            }
+            bytes
         }
         Err(error) => {
             diagnostics.push(write_failure(&options.output, error));
-            Vec::new().into_iter()
+            0
         }
     };
-    let (mut compiled_count, mut reused, mut shared) = (0, 0, 0);
-    let mut modules: Vec<Option<CachedStage>> = Vec::with_capacity(jobs.len());
-    let mut keys: Vec<Option<String>> = Vec::with_capacity(jobs.len());
-    for (outcome, job) in outcomes.into_iter().zip(&jobs) {
-        let stage = match outcome {
-            Some(Ok((Built::Reused(stage), key))) => {
-                reused += 1;
-                Some((*stage, key))
-            }
-            Some(Ok((built, key))) => built.output().map(|module| {
-                match built {
-                    Built::Compiled(_) => {
-                        compiled_count += 1;
-                        session.sources.publish_module(&key, module);
-                    }
-                    Built::Shared(_) => shared += 1,
-                    _ => reused += 1,
-                }
-                // Packing failed: the error is reported, the stage has no files.
-                let files = files.next().unwrap_or_default();
-                (CachedStage { files, reflection: module.reflection.clone() }, key)
-            }),
-            Some(Err(error)) => {
-                diagnostics.push(job.in_stage(error));
-                None
-            }
-            None => None,
-        };
-        if let Some((stage, _)) = &stage
-            && let Some(gap) = &stage.reflection.spirv_gap
-            && options.backends.contains(&Backend::Spirv)
-        {
-            diagnostics.push(job.in_stage(spirv_gap_warning(gap, job)));
-        }
-        let (stage, key) = stage.unzip();
-        modules.push(stage);
-        keys.push(key);
-    }
-    // The last passes' serial steps are the build's end, when threads are idle: the manifest
-    // part and the cache entry are made side by side.
-    let (part, ()) = rayon::join(
-        || {
-            let manifest =
-                pass_manifest(store, catalog, work, &jobs, &stages, ubershader.as_deref(), &modules);
-            BuiltPass::new(manifest, options)
-        },
-        || {
-            let stage = (keys.into_iter().zip(&modules))
-                .filter_map(|(key, stage)| Some((key?, stage.clone()?)))
-                .collect();
-            let fresh = PassIndex { front: declared_by_text(&jobs, &fronts), stage };
-            if fresh != index {
-                // A cache that cannot be written only costs speed next time.
-                let _ = cache.put_pass_index(&key, &fresh);
-            }
-        },
-    );
     PassBuilt {
         part,
         diagnostics,
         modules: jobs.len(),
-        compiled: compiled_count,
-        reused,
-        shared,
+        compiled: counts.compiled,
+        reused: counts.reused,
+        shared: counts.shared,
         bytes_written,
     }
 }
@@ -346,34 +317,92 @@ fn lay_out(
     (!failed).then_some(layout)
 }
 
-/// Packs a pass's newly compiled modules, one pack per backend; returns each module's files,
-/// in order, and the bytes written.
-fn pack_pass(
-    cache: &Cache,
-    compiled: &[&Compiled],
-) -> std::io::Result<(Vec<PerBackend<Option<FileRef>>>, u64)> {
-    // Each backend's pack is its own file: written side by side.
-    let packed: Vec<(Backend, Vec<usize>, Vec<FileRef>, u64)> = Backend::ALL
-        .par_iter()
-        .filter_map(|&backend| {
-            let (present, modules): (Vec<usize>, Vec<&ModuleBytes>) = compiled
-                .iter()
-                .enumerate()
-                .filter_map(|(i, c)| Some((i, c.modules[backend].as_ref()?)))
-                .unzip();
-            (!present.is_empty()).then(|| {
-                let (refs, count) = cache.pack(&modules, backend.pack_extension())?;
-                Ok((backend, present, refs, count))
-            })
-        })
-        .collect::<std::io::Result<_>>()?;
+/// A pass's new modules placed in packs, one pack per backend: the packs to write, and each
+/// module's files, in order.
+fn plan_packs<'a>(compiled: &'a [Arc<Compiled>]) -> (Vec<PlannedPack<'a>>, Vec<PerBackend<Option<FileRef>>>) {
     let mut files: Vec<PerBackend<Option<FileRef>>> = vec![PerBackend::default(); compiled.len()];
-    let mut written = 0;
-    for (backend, present, refs, count) in packed {
-        written += count;
+    let mut packs = Vec::new();
+    for &backend in Backend::ALL {
+        let (present, modules): (Vec<usize>, Vec<&ModuleBytes>) =
+            compiled.iter().enumerate().filter_map(|(i, c)| Some((i, c.modules[backend].as_ref()?))).unzip();
+        if present.is_empty() {
+            continue;
+        }
+        let (pack, refs) = Cache::plan_pack(&modules, backend.pack_extension());
         for (i, file) in present.into_iter().zip(refs) {
             files[i][backend] = Some(file);
         }
+        packs.push(pack);
     }
-    Ok((files, written))
+    (packs, files)
+}
+
+/// What a pass's stage outcomes come to, in the jobs' order: each stage's record (with its
+/// modules' places in the packs) and content key, and the counts for the summary. Failed stages
+/// become diagnostics.
+struct Gathered {
+    modules: Vec<Option<CachedStage>>,
+    keys: Vec<Option<String>>,
+    counts: StageCounts,
+}
+
+/// How a pass's stage modules were come by.
+#[derive(Default)]
+struct StageCounts {
+    compiled: usize,
+    reused: usize,
+    shared: usize,
+}
+
+/// Gathers a pass's stage outcomes (see [`Gathered`]); `files` are the new modules' places, in
+/// order.
+fn gather(
+    outcomes: Vec<StageOutcome>,
+    jobs: &[Job],
+    files: Vec<PerBackend<Option<FileRef>>>,
+    session: &Session,
+    options: &BuildOptions,
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Gathered {
+    let mut files = files.into_iter();
+    let mut gathered = Gathered {
+        modules: Vec::with_capacity(jobs.len()),
+        keys: Vec::with_capacity(jobs.len()),
+        counts: StageCounts::default(),
+    };
+    for (outcome, job) in outcomes.into_iter().zip(jobs) {
+        let stage = match outcome {
+            Some(Ok((Built::Reused(stage), key))) => {
+                gathered.counts.reused += 1;
+                Some((*stage, key))
+            }
+            Some(Ok((built, key))) => built.output().map(|module| {
+                match built {
+                    Built::Compiled(_) => {
+                        gathered.counts.compiled += 1;
+                        session.sources.publish_module(&key, module);
+                    }
+                    Built::Shared(_) => gathered.counts.shared += 1,
+                    _ => gathered.counts.reused += 1,
+                }
+                let files = files.next().unwrap_or_default();
+                (CachedStage { files, reflection: module.reflection.clone() }, key)
+            }),
+            Some(Err(error)) => {
+                diagnostics.push(job.in_stage(error));
+                None
+            }
+            None => None,
+        };
+        if let Some((stage, _)) = &stage
+            && let Some(gap) = &stage.reflection.spirv_gap
+            && options.backends.contains(&Backend::Spirv)
+        {
+            diagnostics.push(job.in_stage(spirv_gap_warning(gap, job)));
+        }
+        let (stage, key) = stage.unzip();
+        gathered.modules.push(stage);
+        gathered.keys.push(key);
+    }
+    gathered
 }

@@ -84,7 +84,16 @@ impl Cache {
         if !self.write {
             return Ok(());
         }
-        write_atomically(&self.entry(kind, key), &sealed(&entry_path(kind, key), value)?)
+        self.put_entry(&sealed_entry(kind, key, value)?)
+    }
+
+    /// Writes an entry sealed beforehand (so that the work of serializing it can be done
+    /// beside other work, and the write only once what it names is in place).
+    pub fn put_entry(&self, entry: &SealedEntry) -> std::io::Result<()> {
+        if !self.write {
+            return Ok(());
+        }
+        write_atomically(&self.output.join(&entry.path), &entry.bytes)
     }
 
     /// What the last build of a pass left: one file per pass, read once and written once, so
@@ -117,9 +126,9 @@ impl Cache {
         index
     }
 
-    /// Stores a pass's index.
-    pub fn put_pass_index(&self, pass: &str, index: &PassIndex) -> std::io::Result<()> {
-        self.put("pass", pass, index)
+    /// A pass's index serialized and sealed, for [`Cache::put_entry`].
+    pub fn seal_pass_index(pass: &str, index: &PassIndex) -> std::io::Result<SealedEntry> {
+        sealed_entry("pass", pass, index)
     }
 
     /// Whether every file the recorded build wrote is still in place (the manifest is not
@@ -157,17 +166,16 @@ impl Cache {
         self.put("build", "inputs", recorded)
     }
 
-    /// Stores modules as one pack, the concatenation of their bytes (each distinct module once),
-    /// named by the hash of their hashes, which fix its bytes (`modules/HASH.EXT`); returns each
-    /// module's reference and the bytes written (0 when the pack was already there, intact).
-    pub fn pack(&self, modules: &[&ModuleBytes], extension: &str) -> std::io::Result<(Vec<FileRef>, u64)> {
-        // The pack is streamed from the modules' own bytes: a copy of it all in one buffer would
-        // be fresh memory the allocator takes from the system and hands back for every pass.
+    /// Where modules go as one pack, the concatenation of their bytes (each distinct module
+    /// once), named by the hash of their hashes, which fix its bytes (`modules/HASH.EXT`): each
+    /// module's reference (returned in the order given) is known before a byte is written
+    /// ([`Cache::write_pack`] writes it).
+    pub fn plan_pack<'a>(modules: &[&'a ModuleBytes], extension: &str) -> (PlannedPack<'a>, Vec<FileRef>) {
         let mut placed: HashMap<&str, u64> = HashMap::new();
         let mut distinct: Vec<&[u8]> = Vec::new();
         let mut names = String::new();
         let mut size = 0;
-        let mut files = Vec::with_capacity(modules.len());
+        let mut offsets = Vec::with_capacity(modules.len());
         for module in modules {
             let offset = *placed.entry(&module.hash).or_insert_with(|| {
                 names.push_str(&module.hash);
@@ -175,36 +183,56 @@ impl Cache {
                 size += module.bytes.len() as u64;
                 size - module.bytes.len() as u64
             });
-            files.push((offset, module));
+            offsets.push(offset);
         }
         let path = format!("modules/{}.{extension}", hash(names.as_bytes()));
-        let full = self.output.join(&path);
-        let first = self.stored.lock().map_or(true, |mut stored| stored.insert(path.clone()));
+        let files = (modules.iter().zip(offsets))
+            .map(|(module, offset)| FileRef {
+                path: path.clone(),
+                offset,
+                size: module.bytes.len() as u64,
+                hash: module.hash.clone(),
+            })
+            .collect();
+        (PlannedPack { path, distinct, size }, files)
+    }
+
+    /// Writes a planned pack, streamed from the modules' own bytes (a copy of it all in one
+    /// buffer would be fresh memory the allocator takes from the system for every pass). Returns
+    /// the bytes written: 0 when the pack was there already, intact.
+    pub fn write_pack(&self, pack: &PlannedPack) -> std::io::Result<u64> {
+        let full = self.output.join(&pack.path);
+        let first = self.stored.lock().map_or(true, |mut stored| stored.insert(pack.path.clone()));
         let present = !first
-            || std::fs::metadata(&full).is_ok_and(|m| m.len() == size)
+            || std::fs::metadata(&full).is_ok_and(|m| m.len() == pack.size)
                 && std::fs::read(&full).is_ok_and(|existing| {
                     let mut rest = existing.as_slice();
-                    distinct.iter().all(|bytes| {
+                    pack.distinct.iter().all(|bytes| {
                         rest.split_at_checked(bytes.len()).is_some_and(|(head, tail)| {
                             rest = tail;
                             head == *bytes
                         })
                     })
                 });
-        let written = if self.write && !present {
-            write_parts_atomically(&full, &distinct)?;
-            size
-        } else {
-            0
-        };
-        let file = |(offset, module): (u64, &&ModuleBytes)| FileRef {
-            path: path.clone(),
-            offset,
-            size: module.bytes.len() as u64,
-            hash: module.hash.clone(),
-        };
-        Ok((files.into_iter().map(file).collect(), written))
+        if !self.write || present {
+            return Ok(0);
+        }
+        write_parts_atomically(&full, &pack.distinct)?;
+        Ok(pack.size)
     }
+}
+
+/// A pack of modules named and laid out, not yet written ([`Cache::plan_pack`]).
+pub struct PlannedPack<'a> {
+    path: String,
+    distinct: Vec<&'a [u8]>,
+    size: u64,
+}
+
+/// A cache entry serialized and sealed to its key, not yet written ([`Cache::put_entry`]).
+pub struct SealedEntry {
+    path: String,
+    bytes: Vec<u8>,
 }
 
 /// An output folder held by one build (or merge) at a time, for as long as this lives: two
@@ -275,6 +303,12 @@ fn lock_exclusively(file: &std::fs::File) -> std::io::Result<()> {
 #[cfg(not(target_os = "linux"))]
 fn lock_exclusively(_: &std::fs::File) -> std::io::Result<()> {
     Ok(())
+}
+
+/// `value` serialized and sealed as the entry `key` of `kind`.
+fn sealed_entry<T: Serialize>(kind: &str, key: &str, value: &T) -> std::io::Result<SealedEntry> {
+    let path = entry_path(kind, key);
+    Ok(SealedEntry { bytes: sealed(&path, value)?, path })
 }
 
 /// Where the cache keeps an entry, relative to the output folder.
