@@ -16,7 +16,7 @@ use crate::manifest::{Backend, FileRef, PerBackend};
 use crate::preprocess::Includes;
 use crate::reflect::{SpirvGap, StageReflection};
 use crate::source::SourceStore;
-use crate::store::{Cache, CachedStage, ModuleBytes, PassIndex, PlannedPack, hash};
+use crate::store::{Cache, CachedStage, ModuleBytes, PassIndexView, PlannedPack, hash};
 use rayon::prelude::*;
 use std::collections::{BTreeMap, HashMap};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -153,12 +153,13 @@ pub(super) fn build_pass(
                     BuiltPass::new(manifest, options)
                 },
                 || {
-                    let stage = (keys.into_iter().zip(&modules))
-                        .filter_map(|(key, stage)| Some((key?, stage.clone()?)))
+                    let front = declared_by_text(&jobs, &fronts);
+                    let stage = (keys.iter().zip(&modules))
+                        .filter_map(|(key, stage)| Some((key.as_deref()?, stage.as_ref()?)))
                         .collect();
-                    let fresh = PassIndex { front: declared_by_text(&jobs, &fronts), stage };
+                    let fresh = PassIndexView { front: &front, stage };
                     // A cache that cannot be written only costs speed next time.
-                    (fresh != index).then(|| Cache::seal_pass_index(&key, &fresh).ok()).flatten()
+                    (!fresh.matches(&index)).then(|| Cache::seal_pass_index(&key, &fresh).ok()).flatten()
                 },
             );
             (counts, part, entry)

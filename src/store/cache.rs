@@ -1,7 +1,7 @@
 //! The build's files: content-addressed packs of stage modules, the cache that lets an unchanged
 //! variant skip naga entirely, and atomic writes (a temporary file and a rename) for all of them.
 
-use super::pass_index::{CachedStage, PassIndex};
+use super::pass_index::{CachedStage, PassIndex, PassIndexView};
 use crate::manifest::FileRef;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -127,7 +127,7 @@ impl Cache {
     }
 
     /// A pass's index serialized and sealed, for [`Cache::put_entry`].
-    pub fn seal_pass_index(pass: &str, index: &PassIndex) -> std::io::Result<SealedEntry> {
+    pub fn seal_pass_index(pass: &str, index: &PassIndexView) -> std::io::Result<SealedEntry> {
         sealed_entry("pass", pass, index)
     }
 

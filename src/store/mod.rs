@@ -11,4 +11,4 @@ pub use cache::{
     Cache, Digest, Hashed, ModuleBytes, OutputLock, PlannedPack, Recorded, RecordedFile, SealedEntry, Staged,
     hash, link_or_copy, pass_index_path, seal, sealed, stage, unsealed, write_atomically,
 };
-pub use pass_index::{CachedStage, PassIndex};
+pub use pass_index::{CachedStage, PassIndex, PassIndexView};

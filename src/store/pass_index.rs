@@ -83,20 +83,43 @@ fn numbered<T: ?Sized + ToOwned, E: serde::de::Error>(values: &[Cow<T>], n: usiz
 
 impl Serialize for PassIndex {
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        PassIndexView { front: &self.front, stage: self.stage.iter().map(|(k, s)| (k.as_str(), s)).collect() }
+            .serialize(serializer)
+    }
+}
+
+/// A [`PassIndex`] as a build makes it, borrowing the pass's records rather than copying them
+/// (the cache entry is made beside the pass's part of the manifest, which reads them too);
+/// written as the index is.
+pub struct PassIndexView<'a> {
+    /// The resources each stage text declares, by text hash, stage and entry point.
+    pub front: &'a BTreeMap<String, Vec<Declared>>,
+    /// Each compiled stage module, by its content key.
+    pub stage: BTreeMap<&'a str, &'a CachedStage>,
+}
+
+impl PassIndexView<'_> {
+    /// Whether it holds what `index` holds.
+    pub fn matches(&self, index: &PassIndex) -> bool {
+        *self.front == index.front
+            && self.stage.len() == index.stage.len()
+            && (self.stage.iter().zip(&index.stage)).all(|((k, s), (key, stage))| *k == key && *s == stage)
+    }
+}
+
+impl Serialize for PassIndexView<'_> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let (mut declarations, mut reflections, mut packs) =
             (Numbered::new(), Numbered::new(), Numbered::new());
         let front =
             self.front.iter().map(|(key, d)| (Cow::from(key.as_str()), declarations.number(d.as_slice())));
         let front = front.collect();
-        let stage = self.stage.iter().map(|(key, stage)| {
+        let stage = self.stage.iter().map(|(&key, stage)| {
             let mut files = PerBackend::default();
             for (backend, file) in stage.files.iter() {
                 files[backend] = StoredFile::of(file, &mut packs);
             }
-            (
-                Cow::from(key.as_str()),
-                StoredStage { files, reflection: reflections.number(&stage.reflection) },
-            )
+            (Cow::from(key), StoredStage { files, reflection: reflections.number(&stage.reflection) })
         });
         let stage = stage.collect();
         let (declarations, reflections, packs) = (declarations.values, reflections.values, packs.values);
