@@ -305,6 +305,31 @@ fn an_unwritable_output_is_a_diagnostic() {
 }
 
 #[test]
+fn packs_that_cannot_be_written_leave_no_cache_entry_naming_them() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = dir.path().join("output");
+    // A file where the packs' folder goes: every pack's write fails, nothing else's.
+    std::fs::create_dir_all(&output).expect("mkdir");
+    std::fs::write(output.join("modules"), "not a folder").expect("write");
+    let (result, _, _) = build_into("fixtures/project", &output, None);
+    assert!(result.diagnostics.iter().any(|d| d.code == "K0410"), "{:?}", result.diagnostics);
+    // The packs are written beside the passes' cache entries, which are put only once the packs
+    // are: none names a module that is not there.
+    let entries = std::fs::read_dir(output.join(".cache/pass")).map_or(0, |d| d.flatten().count());
+    assert_eq!(entries, 0, "a cache entry was written for packs that were not");
+    assert!(!output.join("manifest.json").exists());
+
+    std::fs::remove_file(output.join("modules")).expect("remove");
+    let (result, diagnostics, _) = build_into("fixtures/project", &output, None);
+    assert!(diagnostics.is_empty() && result.diagnostics.is_empty(), "{:?}", result.diagnostics);
+    assert_eq!(result.summary.compiled, result.summary.modules, "nothing is taken from the failed build");
+    for file in read_manifest(&output).files() {
+        let pack = std::fs::read(output.join(&file.path)).expect("every pack named is there");
+        assert!(file.slice(&pack).is_some(), "{} holds its module", file.path);
+    }
+}
+
+#[test]
 fn the_build_script_api_reruns_on_every_file_read_and_folder_searched_and_nothing_else() {
     let out = tempfile::tempdir().expect("temp dir");
     let output = kiln::Build::new("fixtures/project").out_dir(out.path()).execute().expect("builds");
