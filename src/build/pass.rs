@@ -111,9 +111,11 @@ pub(super) fn build_pass(
             known.unwrap_or_else(|| session.sources.parse_front(&sources, job, together))
         })
         .collect();
-    // What was parsed now is published for every other build of the pass.
+    // What each text declares: published now where it was parsed now (for every other build of
+    // the pass), and kept in the pass's cache entry.
+    let front = declared_by_text(&jobs, &fronts);
     if fronts.iter().any(|f| matches!(f, Ok((_, Some(_))))) {
-        session.sources.publish_fronts(&key, &declared_by_text(&jobs, &fronts));
+        session.sources.publish_fronts(&key, &front);
     }
     let layout = lay_out(&jobs, &fronts, store, &options.groups, &mut diagnostics);
     let requests: usize = jobs.iter().map(|j| j.requests).sum();
@@ -153,7 +155,6 @@ pub(super) fn build_pass(
                     BuiltPass::new(manifest, options)
                 },
                 || {
-                    let front = declared_by_text(&jobs, &fronts);
                     let stage = (keys.iter().zip(&modules))
                         .filter_map(|(key, stage)| Some((key.as_deref()?, stage.as_ref()?)))
                         .collect();
