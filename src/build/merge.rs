@@ -154,6 +154,7 @@ pub(super) fn merge(
                     &mut manifest,
                     summary,
                     diagnostics,
+                    None,
                     link,
                 )
             }
@@ -161,7 +162,7 @@ pub(super) fn merge(
         }
     } else {
         let mut manifest = manifest(heads, parts);
-        finish(options, &merge.inputs, catalogue, &materials, &mut manifest, summary, diagnostics, link)
+        finish(options, &merge.inputs, catalogue, &materials, &mut manifest, summary, diagnostics, None, link)
     }
 }
 

@@ -352,9 +352,10 @@ fn timed_in_pool(options: &BuildOptions, job: impl FnOnce() -> BuildResult + Sen
 }
 
 /// A whole build, or a shard: every pass it owns is a task (its stage texts, their resources,
-/// one layout, its stage modules, its packs and its part of the manifest). Threads take passes as
-/// they free up (no barrier between passes), so one pass's serial steps overlap other passes'
-/// naga work, and only the passes in flight hold texts and modules.
+/// one layout, its stage modules, its packs and its part of the manifest). Each worker thread
+/// takes the next pass in plan order as it frees up (no barrier between passes), so one pass's
+/// serial steps overlap other passes' naga work, only the passes in flight (one a thread) hold
+/// texts and modules, and a compact manifest is written as they finish.
 fn build_passes(
     store: &SourceStore,
     includes: &Includes,
@@ -373,15 +374,35 @@ fn build_passes(
     let mine: Vec<&plan::PassWork> = work.iter().zip(&owned).filter(|(_, o)| **o).map(|(w, _)| w).collect();
     let total = mine.iter().map(|w| w.variants.len()).sum();
     let session = session::Session::new(options, progress, total);
+    let heads = emit::shader_heads(store, options, &work);
+    // A whole build's compact manifest is written as its passes finish.
+    let manifest_path = options.output.join(crate::manifest::FILE_NAME);
+    let streamed = options.write && !options.pretty_manifest && matches!(options.part, Part::Whole);
+    let parts = emit::PassParts::new(mine.len(), streamed.then_some((&heads[..], manifest_path.as_path())));
     // What needs no compiled pass is made while the passes compile: the files read, named once
     // (the inputs key hashes them and the catalogue's part lists them; nothing is read while
     // passes compile, the store is only shared), the inputs key, the materials' texts. Only what
     // is written needs them: a check (the language server's, on every edit) makes none.
     let (built, (read, inputs, materials)) = rayon::join(
         || -> Vec<pass::PassBuilt> {
-            (mine.par_iter().with_max_len(1))
-                .map(|work| pass::build_pass(work, store, includes, catalog, options, &session))
-                .collect()
+            // Every worker takes the next pass in plan order until none is left. No pass waits
+            // in a queue where a thread that waits inside its own pass would take it up (rayon
+            // lets a waiting thread run queued work): passes finish about in plan order, and
+            // at most one a thread is in flight.
+            let next = std::sync::atomic::AtomicUsize::new(0);
+            let taken = rayon::broadcast(|_| {
+                let mut built = Vec::new();
+                loop {
+                    let index = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                    let Some(work) = mine.get(index) else { return built };
+                    let (part, pass) = pass::build_pass(work, store, includes, catalog, options, &session);
+                    parts.add(index, part);
+                    built.push((index, pass));
+                }
+            });
+            let mut built: Vec<(usize, pass::PassBuilt)> = taken.into_iter().flatten().collect();
+            built.sort_unstable_by_key(|(index, _)| *index);
+            built.into_iter().map(|(_, pass)| pass).collect()
         },
         || {
             if !options.write {
@@ -396,7 +417,7 @@ fn build_passes(
             (read, inputs, materials)
         },
     );
-    let mut parts = Vec::with_capacity(built.len());
+    let (parts, streamed) = parts.into_parts();
     let mut modules = Vec::with_capacity(built.len());
     for pass in built {
         modules.push(pass.modules);
@@ -406,7 +427,6 @@ fn build_passes(
         summary.shared += pass.shared;
         summary.bytes_written += pass.bytes_written;
         diagnostics.extend(pass.diagnostics);
-        parts.push(pass.part);
     }
     summary.uncut = session.uncut.load(std::sync::atomic::Ordering::Relaxed);
     summary.preprocessed = session.preprocessed.load(std::sync::atomic::Ordering::Relaxed);
@@ -415,7 +435,7 @@ fn build_passes(
     let (remote_warning, remote_bytes) = session.sources.finish();
     summary.remote_bytes = remote_bytes;
     diagnostics.extend(remote_warning);
-    let catalogue = |read| emit::catalogue_part(store, catalog, options, &work, &summary, read);
+    let catalogue = |read| emit::catalogue_part(store, catalog, options, heads, &summary, read);
     match &options.part {
         Part::Shard(shard) => {
             let passes = (mine.par_iter().zip(modules).zip(parts))
@@ -444,6 +464,7 @@ fn build_passes(
                 &mut manifest,
                 summary,
                 diagnostics,
+                streamed,
                 || Ok(0),
             );
             result.manifest = Some(emit::parsed(manifest));

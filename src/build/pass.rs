@@ -62,10 +62,9 @@ impl Compiled {
 /// `None` when the stage's pass could not be laid out.
 type StageOutcome = Option<Result<(Built, String), Diagnostic>>;
 
-/// What building one pass gives: its part of the manifest, its diagnostics and its share of the
-/// summary.
+/// What building one pass gives besides its part of the manifest: its diagnostics and its share
+/// of the summary.
 pub(super) struct PassBuilt {
-    pub part: BuiltPass,
     pub diagnostics: Vec<Diagnostic>,
     pub modules: usize,
     pub compiled: usize,
@@ -74,7 +73,7 @@ pub(super) struct PassBuilt {
     pub bytes_written: u64,
 }
 
-/// Builds one pass (see the module's comment).
+/// Builds one pass (see the module's comment): its part of the manifest, and the rest.
 pub(super) fn build_pass(
     work: &PassWork,
     store: &SourceStore,
@@ -82,7 +81,7 @@ pub(super) fn build_pass(
     catalog: &Catalog,
     options: &BuildOptions,
     session: &Session,
-) -> PassBuilt {
+) -> (BuiltPass, PassBuilt) {
     let (cache, progress) = (&session.cache, &session.progress);
     let mut diagnostics = Vec::new();
     let PassJobs { jobs, stages, ubershader, preprocessed } =
@@ -179,15 +178,15 @@ pub(super) fn build_pass(
             0
         }
     };
-    PassBuilt {
-        part,
+    let built = PassBuilt {
         diagnostics,
         modules: jobs.len(),
         compiled: counts.compiled,
         reused: counts.reused,
         shared: counts.shared,
         bytes_written,
-    }
+    };
+    (part, built)
 }
 
 /// A pass with new modules is packed whole: the modules it reuses from the output are read back

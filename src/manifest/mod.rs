@@ -201,6 +201,21 @@ pub trait PassFiles {
     fn uniform_blocks(&self) -> &[UniformBlock];
 }
 
+impl<P: PassFiles> PassFiles for &P {
+    fn packs(&self) -> &[String] {
+        (*self).packs()
+    }
+    fn modules(&self) -> &[ModuleManifest] {
+        (*self).modules()
+    }
+    fn layout(&self) -> &[BindGroup] {
+        (*self).layout()
+    }
+    fn uniform_blocks(&self) -> &[UniformBlock] {
+        (*self).uniform_blocks()
+    }
+}
+
 impl PassFiles for PassManifest {
     fn packs(&self) -> &[String] {
         &self.packs

@@ -373,7 +373,7 @@ impl Staged {
     /// and it is created exclusively (`O_CREAT | O_EXCL`, which follows no symbolic link), so that
     /// nobody who can write the folder (a shared cache) can plant a file or link where a write
     /// will go; two jobs storing the same content-addressed file at once get two names.
-    fn beside(path: &Path) -> std::io::Result<(Staged, std::fs::File)> {
+    pub fn beside(path: &Path) -> std::io::Result<(Staged, std::fs::File)> {
         use std::hash::{BuildHasher, Hasher};
         let folder = folder_made_for(path)?;
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();

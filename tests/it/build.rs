@@ -67,6 +67,33 @@ fn the_example_project_builds_with_a_golden_manifest() {
     verified_manifest(output.path());
 }
 
+/// A compact manifest is written a shader at a time while the passes finish, in whatever order
+/// they finish: the file must still be serde's writing of the whole manifest the build returns.
+#[test]
+fn the_manifest_written_while_passes_finish_is_the_whole_manifest_serialized() {
+    let project = tempfile::tempdir().expect("temp dir");
+    let kernels = std::fs::read_to_string(root().join("fixtures/compute/Scale.compute")).expect("Scale");
+    let mut toml = String::from("shaders = [\".\"]\n");
+    for n in 0..24 {
+        let text = kernels.replace("* 2.0;", &format!("* {}.0;", n + 2));
+        std::fs::write(project.path().join(format!("Scale{n}.compute")), text).expect("write");
+        toml += &format!("\n[compute.Scale{n}]\nvariants = \"all\"\n");
+    }
+    std::fs::write(project.path().join("kiln.toml"), toml).expect("write");
+    for threads in [1, 3, 8] {
+        let output = tempfile::tempdir().expect("temp dir");
+        let project = project.path().to_str().expect("utf-8 path");
+        let (result, mut diagnostics, store) = build_into(project, output.path(), Some(threads));
+        diagnostics.extend(result.diagnostics);
+        assert!(diagnostics.is_empty(), "{}", render_plain(&store, &diagnostics));
+        let manifest = result.manifest.expect("a manifest");
+        assert_eq!(manifest.shaders.len(), 24);
+        let written = std::fs::read_to_string(output.path().join("manifest.json")).expect("manifest");
+        let whole = serde_json::to_string(&manifest).expect("json") + "\n";
+        assert!(written == whole, "{threads} threads: the manifest written differs from the one returned");
+    }
+}
+
 #[test]
 fn an_f16_variant_is_written_with_its_enable_directive() {
     let output = tempfile::tempdir().expect("temp dir");
