@@ -132,69 +132,73 @@ fn with_passes<P: PassFiles>(head: ShaderManifest<()>, passes: Vec<P>) -> Shader
     shader
 }
 
-/// The passes' parts of the manifest, kept in plan order as the passes finish. Given a path, it
-/// also writes the compact manifest while they come in: each shader once its passes and every
-/// shader before it are in (workers take passes in plan order, so they finish about in order).
-/// A build's end is then left with its last shader and the materials' hash to write, not the
-/// whole manifest (8-9 ms on one thread at 10,000 compute variants).
-pub(super) struct PassParts<'h> {
-    /// The shaders of a manifest being written.
-    heads: Option<&'h [ShaderHead]>,
-    state: std::sync::Mutex<PartsIn>,
+/// What the passes give (their parts of the manifest, and the rest: `T`), kept in plan order as
+/// they finish. Given a path, it also writes the compact manifest while they come in: each
+/// shader once its passes and every shader before it are in (workers take passes in plan order,
+/// so they finish about in order). A build's end is then left with its last shader and the
+/// materials' hash to write, not the whole manifest (8-9 ms on one thread at 10,000 compute
+/// variants).
+pub(super) struct PassParts<'h, T> {
+    state: std::sync::Mutex<PartsIn<'h, T>>,
 }
 
 /// What [`PassParts`] holds.
-struct PartsIn {
-    parts: Vec<Option<BuiltPass>>,
-    /// The manifest written so far, until a write fails.
-    manifest: Option<std::io::Result<ManifestWriter>>,
+struct PartsIn<'h, T> {
+    passes: Vec<Option<(BuiltPass, T)>>,
+    stream: Option<Stream<'h>>,
+}
+
+/// A manifest being written as the passes finish.
+struct Stream<'h> {
+    /// Its shaders.
+    heads: &'h [ShaderHead],
+    /// What was written so far, until a write fails.
+    writer: std::io::Result<ManifestWriter>,
     /// The next shader to write, and its first pass.
     next: (usize, usize),
 }
 
-impl<'h> PassParts<'h> {
-    /// Room for the parts of `passes` passes, and the manifest of `heads` (every pass's shader)
+impl<'h, T> PassParts<'h, T> {
+    /// Room for what `passes` passes give, and the manifest of `heads` (every pass's shader)
     /// written to a path if given.
-    pub(super) fn new(
-        passes: usize,
-        manifest: Option<(&'h [ShaderHead], &std::path::Path)>,
-    ) -> PassParts<'h> {
-        let parts = PartsIn {
-            parts: (0..passes).map(|_| None).collect(),
-            manifest: manifest.map(|(_, path)| ManifestWriter::open(path)),
-            next: (0, 0),
-        };
-        PassParts { heads: manifest.map(|(heads, _)| heads), state: std::sync::Mutex::new(parts) }
+    pub(super) fn new(passes: usize, manifest: Option<(&'h [ShaderHead], &std::path::Path)>) -> Self {
+        let stream =
+            manifest.map(|(heads, path)| Stream { heads, writer: ManifestWriter::open(path), next: (0, 0) });
+        let state = PartsIn { passes: (0..passes).map(|_| None).collect(), stream };
+        PassParts { state: std::sync::Mutex::new(state) }
     }
 
-    /// The part of the pass `index` (in plan order); writes each shader it completes.
-    pub(super) fn add(&self, index: usize, part: BuiltPass) {
+    /// What the pass `index` (in plan order) gave; writes each shader it completes.
+    pub(super) fn add(&self, index: usize, part: BuiltPass, rest: T) {
         let mut guard = self.state.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-        let state = &mut *guard;
-        if let Some(slot) = state.parts.get_mut(index) {
-            *slot = Some(part);
+        let PartsIn { passes, stream } = &mut *guard;
+        if let Some(slot) = passes.get_mut(index) {
+            *slot = Some((part, rest));
         }
-        let heads = self.heads.unwrap_or_default();
-        while let Some(head) = heads.get(state.next.0) {
-            let passes = state.next.1..state.next.1 + head.passes.len();
-            let Some(parts) = state.parts.get(passes.clone()).filter(|p| p.iter().all(Option::is_some))
-            else {
+        let Some(stream) = stream else { return };
+        while let Some(head) = stream.heads.get(stream.next.0) {
+            let range = stream.next.1..stream.next.1 + head.passes.len();
+            let Some(done) = passes.get(range.clone()).filter(|p| p.iter().all(Option::is_some)) else {
                 break;
             };
-            if let Some(Ok(manifest)) = &mut state.manifest
-                && let Err(error) = manifest.shader(head, parts.iter().flatten().collect(), state.next.0 == 0)
+            let first = stream.next.0 == 0;
+            if let Ok(writer) = &mut stream.writer
+                && let Err(error) =
+                    writer.shader(head, done.iter().flatten().map(|(part, _)| part).collect(), first)
             {
-                state.manifest = Some(Err(error));
+                stream.writer = Err(error);
             }
-            state.next = (state.next.0 + 1, passes.end);
+            stream.next = (stream.next.0 + 1, range.end);
         }
     }
 
-    /// The parts, in plan order, and the manifest written (every shader's, once every part is in).
-    pub(super) fn into_parts(self) -> (Vec<BuiltPass>, Option<std::io::Result<ManifestWriter>>) {
+    /// The parts and the rest, in plan order, and the manifest written (every shader's, once
+    /// every pass is in).
+    pub(super) fn into_parts(self) -> (Vec<BuiltPass>, Vec<T>, Option<std::io::Result<ManifestWriter>>) {
         let state = self.state.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
-        debug_assert!(state.parts.iter().all(Option::is_some), "every pass's part is in");
-        (state.parts.into_iter().flatten().collect(), state.manifest)
+        debug_assert!(state.passes.iter().all(Option::is_some), "every pass is in");
+        let (parts, rest) = state.passes.into_iter().flatten().unzip();
+        (parts, rest, state.stream.map(|stream| stream.writer))
     }
 }
 

@@ -374,35 +374,34 @@ fn build_passes(
     let mine: Vec<&plan::PassWork> = work.iter().zip(&owned).filter(|(_, o)| **o).map(|(w, _)| w).collect();
     let total = mine.iter().map(|w| w.variants.len()).sum();
     let session = session::Session::new(options, progress, total);
-    let heads = emit::shader_heads(store, options, &work);
+    // Only a whole build and the first shard list the shaders (the manifest, the catalogue's part).
+    let heads = match &options.part {
+        Part::Shard(shard) if shard.index != 0 => Vec::new(),
+        _ => emit::shader_heads(store, options, &work),
+    };
     // A whole build's compact manifest is written as its passes finish.
     let manifest_path = options.output.join(crate::manifest::FILE_NAME);
     let streamed = options.write && !options.pretty_manifest && matches!(options.part, Part::Whole);
-    let parts = emit::PassParts::new(mine.len(), streamed.then_some((&heads[..], manifest_path.as_path())));
+    let passes = emit::PassParts::new(mine.len(), streamed.then_some((&heads[..], manifest_path.as_path())));
     // What needs no compiled pass is made while the passes compile: the files read, named once
     // (the inputs key hashes them and the catalogue's part lists them; nothing is read while
     // passes compile, the store is only shared), the inputs key, the materials' texts. Only what
     // is written needs them: a check (the language server's, on every edit) makes none.
-    let (built, (read, inputs, materials)) = rayon::join(
-        || -> Vec<pass::PassBuilt> {
+    let ((), (read, inputs, materials)) = rayon::join(
+        || {
             // Every worker takes the next pass in plan order until none is left. No pass waits
             // in a queue where a thread that waits inside its own pass would take it up (rayon
             // lets a waiting thread run queued work): passes finish about in plan order, and
             // at most one a thread is in flight.
             let next = std::sync::atomic::AtomicUsize::new(0);
-            let taken = rayon::broadcast(|_| {
-                let mut built = Vec::new();
+            rayon::broadcast(|_| {
                 loop {
                     let index = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                    let Some(work) = mine.get(index) else { return built };
-                    let (part, pass) = pass::build_pass(work, store, includes, catalog, options, &session);
-                    parts.add(index, part);
-                    built.push((index, pass));
+                    let Some(work) = mine.get(index) else { return };
+                    let (part, built) = pass::build_pass(work, store, includes, catalog, options, &session);
+                    passes.add(index, part, built);
                 }
             });
-            let mut built: Vec<(usize, pass::PassBuilt)> = taken.into_iter().flatten().collect();
-            built.sort_unstable_by_key(|(index, _)| *index);
-            built.into_iter().map(|(_, pass)| pass).collect()
         },
         || {
             if !options.write {
@@ -417,7 +416,7 @@ fn build_passes(
             (read, inputs, materials)
         },
     );
-    let (parts, streamed) = parts.into_parts();
+    let (parts, built, streamed) = passes.into_parts();
     let mut modules = Vec::with_capacity(built.len());
     for pass in built {
         modules.push(pass.modules);
