@@ -4,6 +4,7 @@
 
 use super::ParseScope;
 use super::plan::PassWork;
+use super::tasks::map_tasks;
 use crate::compile::reach;
 use crate::compile::target::Allowed;
 use crate::diagnostics;
@@ -15,7 +16,6 @@ use crate::preprocess::{
 use crate::shaderlab::pragma::ProgramPragmas;
 use crate::source::{SourceStore, Span, Spanned};
 use crate::store::hash;
-use rayon::prelude::*;
 use std::collections::HashMap;
 
 /// One distinct stage module of a pass.
@@ -205,23 +205,20 @@ pub(super) fn pass_jobs<'a>(
         });
         texts[text].push(index);
     }
-    let preprocessed: Vec<_> = texts
-        .par_iter()
-        .map(|asking| {
-            let r = &requests[asking[0]];
-            let keywords: Vec<&str> = r.keywords.iter().map(String::as_str).collect();
-            let macros = match r.ubershader {
-                true => ubershader_macros(&program.pragmas, r.stage).unwrap_or_default(),
-                false => keyword_macros(&program.pragmas, &keywords),
-            };
-            let out = preprocess_with(includes, store, wgsl, &macros, r.stage);
-            let scope = if diagnostics::has_errors(&out.diagnostics) { ParseScope::Whole } else { scope };
-            let entries: Vec<&str> = asking.iter().map(|&i| requests[i].entry.value.as_str()).collect();
-            let cuts = cuts(out.text, out.source_map, &entries, scope);
-            let cuts: Vec<_> = cuts.into_iter().map(|cut| (hash(cut.0.as_bytes()), cut)).collect();
-            (out.diagnostics, cuts)
-        })
-        .collect();
+    let preprocessed: Vec<_> = map_tasks(&texts, |asking| {
+        let r = &requests[asking[0]];
+        let keywords: Vec<&str> = r.keywords.iter().map(String::as_str).collect();
+        let macros = match r.ubershader {
+            true => ubershader_macros(&program.pragmas, r.stage).unwrap_or_default(),
+            false => keyword_macros(&program.pragmas, &keywords),
+        };
+        let out = preprocess_with(includes, store, wgsl, &macros, r.stage);
+        let scope = if diagnostics::has_errors(&out.diagnostics) { ParseScope::Whole } else { scope };
+        let entries: Vec<&str> = asking.iter().map(|&i| requests[i].entry.value.as_str()).collect();
+        let cuts = cuts(out.text, out.source_map, &entries, scope);
+        let cuts: Vec<_> = cuts.into_iter().map(|cut| (hash(cut.0.as_bytes()), cut)).collect();
+        (out.diagnostics, cuts)
+    });
     let mut outputs: Vec<Option<_>> = requests.iter().map(|_| None).collect();
     for (asking, (found, cuts)) in texts.iter().zip(preprocessed) {
         for (&request, (text_hash, cut)) in asking.iter().zip(cuts) {

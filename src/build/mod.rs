@@ -17,6 +17,7 @@ mod plan;
 mod session;
 pub mod shard;
 mod sources;
+mod tasks;
 
 pub use emit::{CataloguePart, ShaderHead};
 pub use error::BuildLayerError;

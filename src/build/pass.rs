@@ -7,6 +7,7 @@ use super::jobs::{Job, PassJobs, pass_jobs};
 use super::plan::{PassWork, pass_key};
 use super::session::Session;
 use super::sources::{Front, ModuleAsk, PassSources, parse_together};
+use super::tasks::map_tasks;
 use super::{BuildOptions, COMPILER_REVISION, NAGA_VERSION};
 use crate::catalog::Catalog;
 use crate::compile::Mapper;
@@ -101,15 +102,13 @@ pub(super) fn build_pass(
         shared_fronts: OnceLock::new(),
         remote_fronts: OnceLock::new(),
     };
-    let known: Vec<Option<Front>> =
-        jobs.par_iter().map(|job| session.sources.known_front(&sources, job)).collect();
+    let known: Vec<Option<Front>> = map_tasks(&jobs, |job| session.sources.known_front(&sources, job));
     let asked: Vec<bool> = known.iter().map(Option::is_none).collect();
     let together = parse_together(&sources, &jobs, &asked);
-    let mut fronts: Vec<Front> = (jobs.par_iter().zip(known).zip(together))
-        .map(|((job, known), together)| {
+    let mut fronts: Vec<Front> =
+        map_tasks(jobs.iter().zip(known).zip(together), |((job, known), together)| {
             known.unwrap_or_else(|| session.sources.parse_front(&sources, job, together))
-        })
-        .collect();
+        });
     // What each text declares: published now where it was parsed now (for every other build of
     // the pass), and kept in the pass's cache entry.
     let front = declared_by_text(&jobs, &fronts);
@@ -119,23 +118,19 @@ pub(super) fn build_pass(
     let layout = lay_out(&jobs, &fronts, store, &options.groups, &mut diagnostics);
     let requests: usize = jobs.iter().map(|j| j.requests).sum();
     let served = AtomicUsize::new(0);
-    let mut outcomes: Vec<StageOutcome> = jobs
-        .par_iter()
-        .zip(fronts.par_iter_mut())
-        .map(|(job, front)| {
-            let outcome = match front {
-                Ok((declared, parsed)) => layout.as_ref().map(|layout| {
-                    let key = stage_key(job, declared, layout, options);
-                    let mut ask = ModuleAsk { job, key: &key, layout, parsed: parsed.take() };
-                    session.sources.module(&sources, &mut ask).map(|built| (built, key))
-                }),
-                Err(_) => None,
-            };
-            let before = served.fetch_add(job.requests, Ordering::Relaxed);
-            progress.advance(work.variants.len(), requests, before, job.requests);
-            outcome
-        })
-        .collect();
+    let mut outcomes: Vec<StageOutcome> = map_tasks(jobs.iter().zip(fronts.iter_mut()), |(job, front)| {
+        let outcome = match front {
+            Ok((declared, parsed)) => layout.as_ref().map(|layout| {
+                let key = stage_key(job, declared, layout, options);
+                let mut ask = ModuleAsk { job, key: &key, layout, parsed: parsed.take() };
+                session.sources.module(&sources, &mut ask).map(|built| (built, key))
+            }),
+            Err(_) => None,
+        };
+        let before = served.fetch_add(job.requests, Ordering::Relaxed);
+        progress.advance(work.variants.len(), requests, before, job.requests);
+        outcome
+    });
     repack_reused(&mut outcomes, &options.output);
     // Packs are named by their modules' hashes, so each module's place is known before a byte
     // is written: the packs are written while the manifest part and the cache entry are made.

@@ -12,6 +12,7 @@ use super::ParseScope;
 use super::jobs::{Job, WholeText};
 use super::pass::{Built, Compiled};
 use super::session::Session;
+use super::tasks::map_tasks;
 use crate::compile::bind::{self, Declared, PassLayout};
 use crate::compile::stage::{self, StageRequest};
 use crate::compile::{Mapper, parse, together};
@@ -19,7 +20,6 @@ use crate::diagnostics::Diagnostic;
 use crate::source::SourceStore;
 use crate::store::remote::{RemoteCache, RemoteMode};
 use crate::store::{ModuleBytes, PassIndex, hash, shared};
-use rayon::prelude::*;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::atomic::Ordering;
@@ -393,29 +393,24 @@ pub(super) fn parse_together(pass: &PassSources, jobs: &[Job], asked: &[bool]) -
         chunks.into_iter().filter(|b| b.len() > 1).collect()
     }
     let cut = |batches: Vec<&[usize]>| -> Vec<Vec<(usize, naga::Module)>> {
-        batches
-            .par_iter()
-            .map(|batch| {
-                let texts: Vec<together::Text> = (batch.iter())
-                    .map(|&j| together::Text {
-                        text: &jobs[j].text,
-                        entry: jobs[j].entry,
-                        scan: jobs[j].scan.as_ref(),
-                    })
-                    .collect();
-                let Some(together) = together::assemble(&texts).filter(together::Together::saves_enough)
-                else {
-                    return Vec::new();
-                };
-                pass.session.parses.fetch_add(1, Ordering::Relaxed);
-                let Some(parsed) = together.parse() else { return Vec::new() };
-                (batch.par_iter().enumerate())
-                    .filter_map(|(member, &j)| {
-                        Some((j, together.cut(&parsed, member, stage::naga_stage(jobs[j].stage))?))
-                    })
-                    .collect()
-            })
-            .collect()
+        map_tasks(batches, |batch| {
+            let texts: Vec<together::Text> = (batch.iter())
+                .map(|&j| together::Text {
+                    text: &jobs[j].text,
+                    entry: jobs[j].entry,
+                    scan: jobs[j].scan.as_ref(),
+                })
+                .collect();
+            let Some(together) = together::assemble(&texts).filter(together::Together::saves_enough) else {
+                return Vec::new();
+            };
+            pass.session.parses.fetch_add(1, Ordering::Relaxed);
+            let Some(parsed) = together.parse() else { return Vec::new() };
+            let cuts = map_tasks(batch.iter().enumerate(), |(member, &j)| {
+                Some((j, together.cut(&parsed, member, stage::naga_stage(jobs[j].stage))?))
+            });
+            cuts.into_iter().flatten().collect()
+        })
     };
     let first = cut(batches(&groups, true));
     for (job, module) in first.into_iter().flatten() {
