@@ -45,6 +45,18 @@ pub(super) struct Job<'a> {
 }
 
 impl Job<'_> {
+    /// Frees what only parsing and compiling read (the texts, their map and scan), once the job's
+    /// module is made: most of what a pass holds, freed on the jobs' tasks instead of on one
+    /// thread when the pass ends.
+    pub(super) fn release_texts(&mut self) {
+        drop((
+            std::mem::take(&mut self.text),
+            std::mem::take(&mut self.map),
+            self.whole.take(),
+            self.scan.take(),
+        ));
+    }
+
     /// A diagnostic about this stage module, said to occur in its variant's stage.
     pub(super) fn in_stage(&self, diagnostic: Diagnostic) -> Diagnostic {
         diagnostic.in_variant(&self.variant, &self.pass, stage_within(self.stage, self.entry))

@@ -61,7 +61,16 @@ impl Compiled {
 }
 
 /// `None` when the stage's pass could not be laid out.
-type StageOutcome = Option<Result<(Built, String), Diagnostic>>;
+type StageOutcome = Option<Result<Made, Diagnostic>>;
+
+/// A job's stage module, its content key, and a copy of its reflection for the pass's record,
+/// made on the job's own task so that the pass's serial end only places files (`None` where the
+/// module was reused from the output: its record is whole already).
+pub(super) struct Made {
+    built: Built,
+    key: String,
+    reflection: Option<StageReflection>,
+}
 
 /// What building one pass gives besides its part of the manifest: its diagnostics and its share
 /// of the summary.
@@ -85,7 +94,7 @@ pub(super) fn build_pass(
 ) -> (BuiltPass, PassBuilt) {
     let (cache, progress) = (&session.cache, &session.progress);
     let mut diagnostics = Vec::new();
-    let PassJobs { jobs, stages, ubershader, preprocessed } =
+    let PassJobs { mut jobs, stages, ubershader, preprocessed } =
         pass_jobs(store, includes, work, options.parse, &mut diagnostics);
     session.preprocessed.fetch_add(preprocessed, Ordering::Relaxed);
     for job in &jobs {
@@ -118,15 +127,22 @@ pub(super) fn build_pass(
     let layout = lay_out(&jobs, &fronts, store, &options.groups, &mut diagnostics);
     let requests: usize = jobs.iter().map(|j| j.requests).sum();
     let served = AtomicUsize::new(0);
-    let mut outcomes: Vec<StageOutcome> = map_tasks(jobs.iter().zip(fronts.iter_mut()), |(job, front)| {
+    let mut outcomes: Vec<StageOutcome> = map_tasks(jobs.iter_mut().zip(fronts.iter_mut()), |(job, front)| {
         let outcome = match front {
             Ok((declared, parsed)) => layout.as_ref().map(|layout| {
                 let key = stage_key(job, declared, layout, options);
                 let mut ask = ModuleAsk { job, key: &key, layout, parsed: parsed.take() };
-                session.sources.module(&sources, &mut ask).map(|built| (built, key))
+                let built = session.sources.module(&sources, &mut ask)?;
+                if let Built::Compiled(module) = &built {
+                    session.sources.publish_module(&key, module);
+                }
+                let reflection = built.output().map(|module| module.reflection.clone());
+                Ok(Made { built, key, reflection })
             }),
             Err(_) => None,
         };
+        // What naga read is not needed again: freed here, in parallel, not when the pass ends.
+        job.release_texts();
         let before = served.fetch_add(job.requests, Ordering::Relaxed);
         progress.advance(work.variants.len(), requests, before, job.requests);
         outcome
@@ -135,13 +151,13 @@ pub(super) fn build_pass(
     // Packs are named by their modules' hashes, so each module's place is known before a byte
     // is written: the packs are written while the manifest part and the cache entry are made.
     let compiled: Vec<Arc<Compiled>> =
-        outcomes.iter().filter_map(|o| Some(Arc::clone(o.as_ref()?.as_ref().ok()?.0.output()?))).collect();
+        outcomes.iter().filter_map(|o| Some(Arc::clone(o.as_ref()?.as_ref().ok()?.built.output()?))).collect();
     let (packs, files) = plan_packs(&compiled);
     let (written, (counts, part, entry)) = rayon::join(
         || packs.par_iter().map(|pack| cache.write_pack(pack)).sum::<std::io::Result<u64>>(),
         || {
             let Gathered { modules, keys, counts } =
-                gather(outcomes, &jobs, files, session, options, &mut diagnostics);
+                gather(outcomes, &jobs, files, options, &mut diagnostics);
             let (part, entry) = rayon::join(
                 || {
                     let ubershader = ubershader.as_deref();
@@ -189,14 +205,14 @@ pub(super) fn build_pass(
 /// for byte a clean build's, whose packs hold each pass's modules in order. A module that cannot be
 /// read back stays in its old pack.
 fn repack_reused(outcomes: &mut [StageOutcome], output: &std::path::Path) {
-    let new = |o: &StageOutcome| matches!(o, Some(Ok((built, _))) if built.output().is_some());
+    let new = |o: &StageOutcome| matches!(o, Some(Ok(made)) if made.built.output().is_some());
     if !outcomes.iter().any(new) {
         return;
     }
     // Each old pack read once, however many of its modules the pass reuses.
     let mut packs: HashMap<String, Option<Vec<u8>>> = HashMap::new();
     for outcome in outcomes.iter_mut() {
-        let Some(Ok((Built::Reused(stage), _))) = outcome else { continue };
+        let Some(Ok(Made { built: Built::Reused(stage), .. })) = outcome else { continue };
         let mut read = |file: &FileRef| {
             let pack =
                 packs.entry(file.path.clone()).or_insert_with(|| std::fs::read(output.join(&file.path)).ok());
@@ -209,8 +225,8 @@ fn repack_reused(outcomes: &mut [StageOutcome], output: &std::path::Path) {
         }
         let modules = modules.map(|m| m.ok().flatten());
         let compiled = Compiled { modules, reflection: stage.reflection.clone() };
-        if let Some(Ok((built, _))) = outcome {
-            *built = Built::Fetched(Arc::new(compiled));
+        if let Some(Ok(made)) = outcome {
+            made.built = Built::Fetched(Arc::new(compiled));
         }
     }
 }
@@ -356,7 +372,6 @@ fn gather(
     outcomes: Vec<StageOutcome>,
     jobs: &[Job],
     files: Vec<PerBackend<Option<FileRef>>>,
-    session: &Session,
     options: &BuildOptions,
     diagnostics: &mut Vec<Diagnostic>,
 ) -> Gathered {
@@ -368,21 +383,19 @@ fn gather(
     };
     for (outcome, job) in outcomes.into_iter().zip(jobs) {
         let stage = match outcome {
-            Some(Ok((Built::Reused(stage), key))) => {
+            Some(Ok(Made { built: Built::Reused(stage), key, .. })) => {
                 gathered.counts.reused += 1;
                 Some((*stage, key))
             }
-            Some(Ok((built, key))) => built.output().map(|module| {
+            Some(Ok(Made { built, key, reflection })) => built.output().map(|module| {
                 match built {
-                    Built::Compiled(_) => {
-                        gathered.counts.compiled += 1;
-                        session.sources.publish_module(&key, module);
-                    }
+                    Built::Compiled(_) => gathered.counts.compiled += 1,
                     Built::Shared(_) => gathered.counts.shared += 1,
                     _ => gathered.counts.reused += 1,
                 }
                 let files = files.next().unwrap_or_default();
-                (CachedStage { files, reflection: module.reflection.clone() }, key)
+                let reflection = reflection.unwrap_or_else(|| module.reflection.clone());
+                (CachedStage { files, reflection }, key)
             }),
             Some(Err(error)) => {
                 diagnostics.push(job.in_stage(error));
