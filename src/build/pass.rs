@@ -127,31 +127,34 @@ pub(super) fn build_pass(
     let layout = lay_out(&jobs, &fronts, store, &options.groups, &mut diagnostics);
     let requests: usize = jobs.iter().map(|j| j.requests).sum();
     let served = AtomicUsize::new(0);
-    let mut outcomes: Vec<StageOutcome> = map_tasks(jobs.iter_mut().zip(fronts.iter_mut()), |(job, front)| {
-        let outcome = match front {
-            Ok((declared, parsed)) => layout.as_ref().map(|layout| {
-                let key = stage_key(job, declared, layout, options);
-                let mut ask = ModuleAsk { job, key: &key, layout, parsed: parsed.take() };
-                let built = session.sources.module(&sources, &mut ask)?;
-                if let Built::Compiled(module) = &built {
-                    session.sources.publish_module(&key, module);
-                }
-                let reflection = built.output().map(|module| module.reflection.clone());
-                Ok(Made { built, key, reflection })
-            }),
-            Err(_) => None,
-        };
-        // What naga read is not needed again: freed here, in parallel, not when the pass ends.
-        job.release_texts();
-        let before = served.fetch_add(job.requests, Ordering::Relaxed);
-        progress.advance(work.variants.len(), requests, before, job.requests);
-        outcome
-    });
+    let mut outcomes: Vec<StageOutcome> =
+        map_tasks(jobs.iter_mut().zip(fronts.iter_mut()), |(job, front)| {
+            let outcome = match front {
+                Ok((declared, parsed)) => layout.as_ref().map(|layout| {
+                    let key = stage_key(job, declared, layout, options);
+                    let mut ask = ModuleAsk { job, key: &key, layout, parsed: parsed.take() };
+                    let built = session.sources.module(&sources, &mut ask)?;
+                    if let Built::Compiled(module) = &built {
+                        session.sources.publish_module(&key, module);
+                    }
+                    let reflection = built.output().map(|module| module.reflection.clone());
+                    Ok(Made { built, key, reflection })
+                }),
+                Err(_) => None,
+            };
+            // What naga read is not needed again: freed here, in parallel, not when the pass ends.
+            job.release_texts();
+            let before = served.fetch_add(job.requests, Ordering::Relaxed);
+            progress.advance(work.variants.len(), requests, before, job.requests);
+            outcome
+        });
     repack_reused(&mut outcomes, &options.output);
     // Packs are named by their modules' hashes, so each module's place is known before a byte
     // is written: the packs are written while the manifest part and the cache entry are made.
-    let compiled: Vec<Arc<Compiled>> =
-        outcomes.iter().filter_map(|o| Some(Arc::clone(o.as_ref()?.as_ref().ok()?.built.output()?))).collect();
+    let compiled: Vec<Arc<Compiled>> = outcomes
+        .iter()
+        .filter_map(|o| Some(Arc::clone(o.as_ref()?.as_ref().ok()?.built.output()?)))
+        .collect();
     let (packs, files) = plan_packs(&compiled);
     let (written, (counts, part, entry)) = rayon::join(
         || packs.par_iter().map(|pack| cache.write_pack(pack)).sum::<std::io::Result<u64>>(),

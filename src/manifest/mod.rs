@@ -177,12 +177,24 @@ impl Manifest {
 pub fn pack_ends<'a, P: PassFiles + 'a>(
     passes: impl IntoIterator<Item = &'a P>,
 ) -> std::collections::BTreeMap<String, u64> {
-    let mut packs = std::collections::BTreeMap::new();
+    let mut packs: std::collections::BTreeMap<String, u64> = std::collections::BTreeMap::new();
     for pass in passes {
+        // A pass names a few packs and many modules: each pack's end is found by its index
+        // first, and looked up by name once (this runs on one thread at the end of a build).
+        let mut ends = vec![None; pass.packs().len()];
         for file in pass.modules().iter().flat_map(ModuleManifest::files) {
-            let Some(path) = pass.packs().get(file.pack) else { continue };
-            let longest = packs.entry(path.clone()).or_insert(0);
-            *longest = (file.offset + file.size).max(*longest);
+            if let Some(end) = ends.get_mut(file.pack) {
+                *end = Some((file.offset + file.size).max(end.unwrap_or(0)));
+            }
+        }
+        for (path, end) in pass.packs().iter().zip(ends) {
+            let Some(end) = end else { continue };
+            match packs.get_mut(path) {
+                Some(longest) => *longest = end.max(*longest),
+                None => {
+                    packs.insert(path.clone(), end);
+                }
+            }
         }
     }
     packs

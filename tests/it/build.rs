@@ -357,6 +357,27 @@ fn packs_that_cannot_be_written_leave_no_cache_entry_naming_them() {
 }
 
 #[test]
+fn the_packs_a_manifest_names_are_the_packs_on_disk_at_their_lengths() {
+    // Several shaders and passes, packs shared by no two passes: each pack's end is its last
+    // module's, and a pack holds its modules and nothing after them.
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = dir.path().join("output");
+    let (result, diagnostics, _) = build_into("fixtures/project", &output, None);
+    assert!(diagnostics.is_empty() && result.diagnostics.is_empty(), "{:?}", result.diagnostics);
+    let named = read_manifest(&output).packs();
+    let on_disk: std::collections::BTreeMap<String, u64> = std::fs::read_dir(output.join("modules"))
+        .expect("the packs' folder")
+        .flatten()
+        .map(|entry| {
+            let len = entry.metadata().expect("a pack's size").len();
+            (format!("modules/{}", entry.file_name().to_string_lossy()), len)
+        })
+        .collect();
+    assert!(named.len() > 2, "{named:?}");
+    assert_eq!(named, on_disk);
+}
+
+#[test]
 fn the_build_script_api_reruns_on_every_file_read_and_folder_searched_and_nothing_else() {
     let out = tempfile::tempdir().expect("temp dir");
     let output = kiln::Build::new("fixtures/project").out_dir(out.path()).execute().expect("builds");
