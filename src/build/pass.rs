@@ -66,7 +66,7 @@ type StageOutcome = Option<Result<Made, Diagnostic>>;
 /// A job's stage module, its content key, and a copy of its reflection for the pass's record,
 /// made on the job's own task so that the pass's serial end only places files (`None` where the
 /// module was reused from the output: its record is whole already).
-pub(super) struct Made {
+struct Made {
     built: Built,
     key: String,
     reflection: Option<StageReflection>,
