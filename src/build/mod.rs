@@ -392,8 +392,8 @@ fn build_passes(
         || {
             // Every worker takes the next pass in plan order until none is left. No pass waits
             // in a queue where a thread that waits inside its own pass would take it up (rayon
-            // lets a waiting thread run queued work): passes finish about in plan order, and
-            // at most one a thread is in flight.
+            // lets a waiting thread run queued work): passes start in plan order, and at most
+            // one a thread is in flight (a pass's own steps are tasks an item: `tasks`).
             let next = std::sync::atomic::AtomicUsize::new(0);
             rayon::broadcast(|_| {
                 loop {
