@@ -10,7 +10,7 @@
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{KeywordBits, MAX_VARIANTS_PER_PASS, PassKeywords, Variant};
 use crate::material::{Material, ShaderEntries, ShaderEntry, load_material};
-use crate::preprocess::{Includes, Program, finish_pass, load_blocks};
+use crate::preprocess::{Includes, Program, ScannedBlock, finish_pass, load_blocks};
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
 use crate::shaderlab::parse_shader;
 use crate::shaderlab::pragma::{
@@ -278,14 +278,28 @@ pub fn catalog(
 ) -> (Catalog, Vec<Diagnostic>) {
     let mut diagnostics = Vec::new();
     let mut shaders = Vec::new();
-    // Parsing reads only its own file: in parallel. Programs load includes into the store: serial;
-    // what they say (pragmas, keywords) is only read: in parallel again (`finish_programs`).
+    // Parsing reads only its own file, and so does scanning its WGSL blocks: in parallel. Programs
+    // load includes into the store: serial; what they say (pragmas, keywords) is only read: in
+    // parallel again (`finish_programs`).
     let store_view: &SourceStore = store;
-    let parsed: Vec<_> =
-        input.shaders.par_iter().map(|&file| (file, parse_shader(store_view, file))).collect();
+    let mut parsed: Vec<_> = input
+        .shaders
+        .par_iter()
+        .map(|&file| {
+            let parsed = parse_shader(store_view, file);
+            let scanned: Vec<ScannedBlock> = parsed
+                .shader
+                .iter()
+                .flat_map(wgsl_blocks)
+                .map(|block| ScannedBlock::scan(store_view, block.body_span))
+                .collect();
+            (file, parsed, scanned)
+        })
+        .collect();
+    includes.add_scanned(parsed.iter_mut().flat_map(|(_, _, scanned)| std::mem::take(scanned)));
     let mut failed = Vec::new();
     let mut unfinished = Vec::new();
-    for (file, parsed) in parsed {
+    for (file, parsed, _) in parsed {
         diagnostics.extend(parsed.diagnostics);
         match parsed.shader {
             Some(shader) => {
@@ -627,6 +641,19 @@ fn finished_program(
 
 fn tags(state: &StateBlock) -> Vec<(String, String)> {
     state.tags.iter().map(|t| (t.key.value.clone(), t.value.value.clone())).collect()
+}
+
+/// Every WGSL program block of a shader, its include blocks among them: what loading its programs
+/// scans.
+fn wgsl_blocks(shader: &Shader) -> impl Iterator<Item = &ProgramBlock> {
+    let passes = shader.subshaders.iter().flat_map(|sub| &sub.passes).filter_map(|item| match item {
+        PassItem::Pass(pass) => Some(&pass.programs),
+        _ => None,
+    });
+    let subshaders = shader.subshaders.iter().map(|sub| &sub.programs);
+    (std::iter::once(&shader.includes).chain(subshaders).chain(passes))
+        .flatten()
+        .filter(|block| block.language == ProgramLanguage::Wgsl)
 }
 
 /// The include blocks a program sees (shader-level, then SubShader-level, of its language),

@@ -53,9 +53,29 @@ pub struct Includes {
     on_disk: HashMap<PathBuf, usize>,
     in_library: HashMap<String, usize>,
     blocks: HashMap<(FileId, u32), usize>,
+    /// Program blocks scanned ahead ([`Includes::add_scanned`]), taken by the first program that
+    /// names each.
+    scanned: HashMap<(FileId, u32), ScannedBlock>,
     /// Where each path looked at resolved to (`None`: no file there), asked of the file system
     /// once: every shader of a project names the same includes from the same folder.
     looked_up: HashMap<PathBuf, Option<PathBuf>>,
+}
+
+/// A program block scanned where it is ([`ScannedBlock::scan`]): scanning needs nothing loaded, so
+/// a catalogue scans every shader's blocks in parallel and loads the programs, which resolves
+/// their includes, one after another.
+pub struct ScannedBlock {
+    block: Span,
+    unit: Unit,
+    errors: Vec<PreprocessError>,
+}
+
+impl ScannedBlock {
+    /// Scans the program block whose body is at `block`.
+    pub fn scan(store: &SourceStore, block: Span) -> ScannedBlock {
+        let (unit, errors) = scan::scan(block.file, store.text(block.file), block.range());
+        ScannedBlock { block, unit, errors }
+    }
 }
 
 /// One pass's program: its blocks (include blocks first), as scanned units, and the
@@ -83,7 +103,19 @@ impl Includes {
             on_disk: HashMap::new(),
             in_library: HashMap::new(),
             blocks: HashMap::new(),
+            scanned: HashMap::new(),
             looked_up: HashMap::new(),
+        }
+    }
+
+    /// Blocks scanned ahead, for [`Includes::load_program`] to take instead of scanning them: what
+    /// it reports of them is what it would have found.
+    pub fn add_scanned(&mut self, blocks: impl IntoIterator<Item = ScannedBlock>) {
+        for scanned in blocks {
+            let key = (scanned.block.file, scanned.block.start);
+            if !self.blocks.contains_key(&key) {
+                self.scanned.insert(key, scanned);
+            }
         }
     }
 
@@ -132,7 +164,11 @@ impl Includes {
                         Some(folder) => Place::Folder(folder.to_path_buf()),
                         None => Place::Nowhere,
                     };
-                    let unit = self.add_unit(store, block.file, block.range(), place, &mut diagnostics);
+                    let scanned = match self.scanned.remove(&(block.file, block.start)) {
+                        Some(scanned) if scanned.block == block => scanned,
+                        _ => ScannedBlock::scan(store, block),
+                    };
+                    let unit = self.add_scanned_unit(scanned.unit, scanned.errors, place, &mut diagnostics);
                     self.blocks.insert((block.file, block.start), unit);
                     unit
                 }
@@ -157,6 +193,16 @@ impl Includes {
         diagnostics: &mut Vec<Diagnostic>,
     ) -> usize {
         let (unit, errors) = scan::scan(file, store.text(file), range);
+        self.add_scanned_unit(unit, errors, place, diagnostics)
+    }
+
+    fn add_scanned_unit(
+        &mut self,
+        unit: Unit,
+        errors: Vec<PreprocessError>,
+        place: Place,
+        diagnostics: &mut Vec<Diagnostic>,
+    ) -> usize {
         diagnostics.extend(errors.into_iter().map(Diagnostic::from));
         self.units.push(unit);
         self.places.push(place);
