@@ -21,13 +21,28 @@ pub struct PassIndex {
 /// A [`PassIndex`] on disk: each distinct list of declarations, reflection and pack once, and
 /// every entry naming its own by number. The stages of a pass mostly share all three; written
 /// out per stage, they made the pass indexes 7.5 times the manifest's size.
+/// Read into `BTreeMap`s; written from a view's pairs, already in key order ([`Sorted`]).
 #[derive(Serialize, Deserialize)]
-struct StoredPassIndex<'a> {
+struct StoredPassIndex<
+    'a,
+    Front = BTreeMap<Cow<'a, str>, usize>,
+    Stages = BTreeMap<Cow<'a, str>, StoredStage<'a>>,
+> {
     declarations: Vec<Cow<'a, [Declared]>>,
-    front: BTreeMap<Cow<'a, str>, usize>,
+    front: Front,
     reflections: Vec<Cow<'a, StageReflection>>,
     packs: Vec<Cow<'a, str>>,
-    stage: BTreeMap<Cow<'a, str>, StoredStage<'a>>,
+    stage: Stages,
+}
+
+/// Pairs in key order, written as the map they are: building a `BTreeMap` of them again for the
+/// length of a write was most of sealing a pass's entry.
+struct Sorted<K, V>(Vec<(K, V)>);
+
+impl<K: Serialize, V: Serialize> Serialize for Sorted<K, V> {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_map(self.0.iter().map(|(key, value)| (key, value)))
+    }
 }
 
 #[derive(Serialize, Deserialize)]
@@ -56,15 +71,16 @@ impl<'a> StoredFile<'a> {
     }
 }
 
-/// Distinct values, numbered in the order first met.
+/// Distinct values, numbered in the order first met. Hashed with foldhash: a reflection is hashed
+/// whole once a stage, and SipHash made that most of sealing a pass's entry.
 struct Numbered<'a, T: ?Sized + ToOwned> {
     values: Vec<Cow<'a, T>>,
-    numbers: HashMap<&'a T, usize>,
+    numbers: HashMap<&'a T, usize, foldhash::fast::FixedState>,
 }
 
 impl<'a, T: ?Sized + ToOwned + Eq + std::hash::Hash> Numbered<'a, T> {
     fn new() -> Self {
-        Numbered { values: Vec::new(), numbers: HashMap::new() }
+        Numbered { values: Vec::new(), numbers: HashMap::default() }
     }
 
     fn number(&mut self, value: &'a T) -> usize {
@@ -111,17 +127,16 @@ impl Serialize for PassIndexView<'_> {
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let (mut declarations, mut reflections, mut packs) =
             (Numbered::new(), Numbered::new(), Numbered::new());
-        let front =
-            self.front.iter().map(|(key, d)| (Cow::from(key.as_str()), declarations.number(d.as_slice())));
-        let front = front.collect();
+        let front = self.front.iter().map(|(key, d)| (key.as_str(), declarations.number(d.as_slice())));
+        let front = Sorted(front.collect());
         let stage = self.stage.iter().map(|(&key, stage)| {
             let mut files = PerBackend::default();
             for (backend, file) in stage.files.iter() {
                 files[backend] = StoredFile::of(file, &mut packs);
             }
-            (Cow::from(key), StoredStage { files, reflection: reflections.number(&stage.reflection) })
+            (key, StoredStage { files, reflection: reflections.number(&stage.reflection) })
         });
-        let stage = stage.collect();
+        let stage = Sorted(stage.collect());
         let (declarations, reflections, packs) = (declarations.values, reflections.values, packs.values);
         StoredPassIndex { declarations, front, reflections, packs, stage }.serialize(serializer)
     }
@@ -129,7 +144,7 @@ impl Serialize for PassIndexView<'_> {
 
 impl<'de> Deserialize<'de> for PassIndex {
     fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let stored = StoredPassIndex::deserialize(deserializer)?;
+        let stored: StoredPassIndex = StoredPassIndex::deserialize(deserializer)?;
         let front = stored
             .front
             .into_iter()
