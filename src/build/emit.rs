@@ -134,11 +134,12 @@ fn with_passes<P: PassFiles>(head: ShaderManifest<()>, passes: Vec<P>) -> Shader
 
 /// What the passes give (their parts of the manifest, and the rest: `T`), kept in plan order as
 /// they finish. Given a path, it also writes the compact manifest while they come in: each
-/// shader once its passes and every shader before it are in. Workers take passes in plan order,
-/// so with more passes than threads they finish about in order; the passes in flight at once
-/// (all of them, when there are fewer than threads) finish in any order. A build's end is then
-/// left with the shaders after the last pass to finish and the materials' hash to write, not
-/// the whole manifest (8-9 ms on one thread at 10,000 compute variants).
+/// shader serialized once its passes are in, and written once every shader before it is.
+/// Workers take passes in plan order, so with more passes than threads they finish about in
+/// order; the passes in flight at once (all of them, when there are fewer than threads) finish
+/// in any order. A build's end is then left with the bytes of the shaders after the last pass to
+/// finish and the materials' hash to write, not the whole manifest (8-9 ms on one thread at
+/// 10,000 compute variants).
 pub(super) struct PassParts<'h, T> {
     state: std::sync::Mutex<PartsIn<'h, T>>,
 }
@@ -153,23 +154,37 @@ struct PartsIn<'h, T> {
 struct Stream<'h> {
     /// Its shaders.
     heads: &'h [ShaderHead],
+    /// Each shader's first pass, and the number of passes after the last.
+    firsts: Vec<usize>,
+    /// Shaders whose passes are all in, as JSON, until every shader before them is written too.
+    ready: Vec<Option<Vec<u8>>>,
     /// What was written so far, until a write fails.
     writer: std::io::Result<ManifestWriter>,
-    /// The next shader to write, and its first pass.
-    next: (usize, usize),
+    /// The next shader to write.
+    next: usize,
 }
 
 impl<'h, T> PassParts<'h, T> {
     /// Room for what `passes` passes give, and the manifest of `heads` (every pass's shader)
     /// written to a path if given.
     pub(super) fn new(passes: usize, manifest: Option<(&'h [ShaderHead], &std::path::Path)>) -> Self {
-        let stream =
-            manifest.map(|(heads, path)| Stream { heads, writer: ManifestWriter::open(path), next: (0, 0) });
+        let stream = manifest.map(|(heads, path)| {
+            let firsts = std::iter::once(0)
+                .chain(heads.iter().scan(0, |first, head| {
+                    *first += head.passes.len();
+                    Some(*first)
+                }))
+                .collect();
+            let ready = heads.iter().map(|_| None).collect();
+            Stream { heads, firsts, ready, writer: ManifestWriter::open(path), next: 0 }
+        });
         let state = PartsIn { passes: (0..passes).map(|_| None).collect(), stream };
         PassParts { state: std::sync::Mutex::new(state) }
     }
 
-    /// What the pass `index` (in plan order) gave; writes each shader it completes.
+    /// What the pass `index` (in plan order) gave. The shader it completes is serialized now,
+    /// while other passes still compile, and written once every shader before it is: the last
+    /// pass to finish leaves only bytes to hash and write.
     pub(super) fn add(&self, index: usize, part: BuiltPass, rest: T) {
         let mut guard = self.state.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
         let PartsIn { passes, stream } = &mut *guard;
@@ -177,19 +192,26 @@ impl<'h, T> PassParts<'h, T> {
             *slot = Some((part, rest));
         }
         let Some(stream) = stream else { return };
-        while let Some(head) = stream.heads.get(stream.next.0) {
-            let range = stream.next.1..stream.next.1 + head.passes.len();
-            let Some(done) = passes.get(range.clone()).filter(|p| p.iter().all(Option::is_some)) else {
-                break;
-            };
-            let first = stream.next.0 == 0;
+        let shader = stream.firsts.partition_point(|&first| first <= index).saturating_sub(1);
+        let (Some(head), Some(&first)) = (stream.heads.get(shader), stream.firsts.get(shader)) else {
+            return;
+        };
+        if let Some(done) =
+            passes.get(first..first + head.passes.len()).filter(|p| p.iter().all(Option::is_some))
+            && stream.writer.is_ok()
+        {
+            match shader_json(head, done.iter().flatten().map(|(part, _)| part).collect()) {
+                Ok(json) => stream.ready[shader] = Some(json),
+                Err(error) => stream.writer = Err(error),
+            }
+        }
+        while let Some(json) = stream.ready.get_mut(stream.next).and_then(Option::take) {
             if let Ok(writer) = &mut stream.writer
-                && let Err(error) =
-                    writer.shader(head, done.iter().flatten().map(|(part, _)| part).collect(), first)
+                && let Err(error) = writer.shader(&json, stream.next == 0)
             {
                 stream.writer = Err(error);
             }
-            stream.next = (stream.next.0 + 1, range.end);
+            stream.next += 1;
         }
     }
 
@@ -225,13 +247,12 @@ impl ManifestWriter {
         self.file.write_all(bytes)
     }
 
-    fn shader(&mut self, head: &ShaderHead, passes: Vec<&BuiltPass>, first: bool) -> std::io::Result<()> {
-        let shader = with_passes(head.shader.clone(), passes);
-        let json = serde_json::to_vec(&shader).map_err(std::io::Error::other)?;
+    /// Writes a shader's JSON, after a comma unless it is the `first`.
+    fn shader(&mut self, json: &[u8], first: bool) -> std::io::Result<()> {
         if !first {
             self.put(b",")?;
         }
-        self.put(&json)
+        self.put(json)
     }
 
     /// The manifest's end, naming the materials' hash, written: the manifest staged as
@@ -242,6 +263,12 @@ impl ManifestWriter {
         self.file.into_inner().map_err(std::io::IntoInnerError::into_error)?;
         Ok(StagedJson { staged: self.staged, digest: self.digest })
     }
+}
+
+/// A shader's JSON in a compact manifest, its passes in.
+fn shader_json(head: &ShaderHead, passes: Vec<&BuiltPass>) -> std::io::Result<Vec<u8>> {
+    let shader = with_passes(head.shader.clone(), passes);
+    serde_json::to_vec(&shader).map_err(std::io::Error::other)
 }
 
 /// A compact manifest's text before its first shader and after its last, as serde writes them.
@@ -487,27 +514,30 @@ pub(super) fn parsed(manifest: Manifest<BuiltPass>) -> Manifest {
 
 /// A pass's part of the manifest: each module once, each distinct interface, uniform block and
 /// pack once, and its variants as module indices.
-pub(super) fn pass_manifest(
+pub(super) fn pass_manifest<'a>(
     store: &SourceStore,
     catalog: &Catalog,
     work: &PassWork,
     jobs: &[Job],
     stages: &[Vec<Option<usize>>],
     ubershader: Option<&[Option<usize>]>,
-    built: &[Option<CachedStage>],
+    built: &'a [Option<CachedStage>],
 ) -> PassManifest {
     let shader = &work.shader.shader;
     let compute = !work.program.pragmas.kernels.is_empty();
+    // Sized for every job once: grown a push at a time, they cost a pass's end more than the
+    // rest of it (compute 1,000, 200 jobs a pass).
+    type Map<K> = HashMap<K, usize, foldhash::fast::FixedState>;
     let mut entries: BTreeMap<(u32, u32), LayoutEntry> = BTreeMap::new();
     let mut uniform_blocks: Vec<UniformBlock> = Vec::new();
     let mut packs: Vec<String> = Vec::new();
-    let mut pack_of: HashMap<String, usize> = HashMap::new();
-    let mut interfaces: Vec<StageInterface> = Vec::new();
-    let mut interface_of: HashMap<StageInterface, usize> = HashMap::new();
-    let mut modules: Vec<ModuleManifest> = Vec::new();
+    let mut pack_of: Map<&str> = Map::default();
+    let mut interfaces: Vec<StageInterface> = Vec::with_capacity(jobs.len());
+    let mut interface_of: Map<StageInterface> = Map::with_capacity_and_hasher(jobs.len(), Default::default());
+    let mut modules: Vec<ModuleManifest> = Vec::with_capacity(jobs.len());
     // A module is its interface, its files' hashes and the features it was validated with.
-    type ModuleIdentity = (usize, PerBackend<Option<String>>, Vec<String>);
-    let mut module_of: HashMap<ModuleIdentity, usize> = HashMap::new();
+    type ModuleIdentity<'a> = (usize, PerBackend<Option<&'a str>>, Vec<String>);
+    let mut module_of: Map<ModuleIdentity> = Map::with_capacity_and_hasher(jobs.len(), Default::default());
     // For each job, its module (`None` when it failed).
     let mut module_of_job: Vec<Option<usize>> = Vec::with_capacity(jobs.len());
     for (job, stage) in jobs.iter().zip(built) {
@@ -555,9 +585,9 @@ pub(super) fn pass_manifest(
             interfaces.push(interface.clone());
             interfaces.len() - 1
         });
-        let mut file = |file: &Option<FileRef>| {
+        let mut file = |file: &'a Option<FileRef>| {
             file.as_ref().map(|f| {
-                let pack = *pack_of.entry(f.path.clone()).or_insert_with(|| {
+                let pack = *pack_of.entry(&f.path).or_insert_with(|| {
                     packs.push(f.path.clone());
                     packs.len() - 1
                 });
@@ -565,7 +595,7 @@ pub(super) fn pass_manifest(
             })
         };
         // Texts that differ only where compaction removes code give the same module.
-        let hashes = stage.files.clone().map(|f| f.map(|f| f.hash));
+        let hashes = PerBackend::from_fn(|backend| stage.files[backend].as_ref().map(|f| f.hash.as_str()));
         let module =
             *module_of.entry((interface, hashes, job.allowed.features())).or_insert_with_key(|key| {
                 let files = PerBackend::from_fn(|backend| file(&stage.files[backend]));
@@ -753,5 +783,61 @@ fn place_properties<P: PassFiles>(shader: &mut ShaderManifest<P>) {
         property.offset =
             material_block.and_then(|b| b.members.iter().find(|m| m.name == property.name)).map(|m| m.offset);
         property.binding = bindings.get(property.name.as_str()).copied();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pass(index: usize) -> BuiltPass {
+        let json = serde_json::json!({
+            "subshader": 0, "index": index, "name": format!("P{index}"), "tags": [], "render_state": [],
+            "keyword_sets": [], "keywords": [], "layout": [], "uniform_blocks": [], "packs": [],
+            "interfaces": [], "modules": [], "variants": []
+        });
+        let part: PassManifest = serde_json::from_value(json).expect("a pass");
+        let text = Some(json_text(&part));
+        BuiltPass { part, text }
+    }
+
+    /// Shaders of two, one, three and one passes, the passes coming in forwards, backwards,
+    /// interleaved and rotated: the file is serde's writing of the whole manifest each time.
+    #[test]
+    fn a_manifest_streamed_as_passes_finish_in_any_order_is_the_whole_manifest() {
+        let sizes = [2, 1, 3, 1];
+        let heads: Vec<ShaderHead> = (sizes.iter().enumerate())
+            .map(|(s, &passes)| ShaderHead {
+                shader: ShaderManifest {
+                    name: format!("S{s}"),
+                    file: format!("S{s}.shader"),
+                    render_queue: 2000,
+                    properties: Vec::new(),
+                    passes: Vec::new(),
+                },
+                passes: (0..passes).map(|p| format!("{s}-{p}")).collect(),
+            })
+            .collect();
+        let total: usize = sizes.iter().sum();
+        let forwards: Vec<usize> = (0..total).collect();
+        let interleaved: Vec<usize> = (1..total).step_by(2).chain((0..total).step_by(2)).collect();
+        let mut orders = vec![forwards.iter().rev().copied().collect(), interleaved];
+        orders.extend((0..total).map(|r| forwards.iter().cycle().skip(r).take(total).copied().collect()));
+        for order in orders {
+            let folder = tempfile::tempdir().expect("temp dir");
+            let path = folder.path().join(FILE_NAME);
+            let parts = PassParts::new(total, Some((&heads[..], path.as_path())));
+            for &index in &order {
+                parts.add(index, pass(index), ());
+            }
+            let (parts, _, streamed) = parts.into_parts();
+            let writer = streamed.expect("streamed").expect("opened");
+            writer.finish("materials".into()).expect("finished").commit().expect("committed");
+            let mut whole = manifest(heads.clone(), parts);
+            whole.materials_hash = Some("materials".into());
+            let whole = serde_json::to_string(&whole).expect("json") + "\n";
+            let written = std::fs::read_to_string(&path).expect("written");
+            assert!(written == whole, "passes in the order {order:?}: the manifest written differs");
+        }
     }
 }
