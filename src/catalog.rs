@@ -282,24 +282,20 @@ pub fn catalog(
     // load includes into the store: serial; what they say (pragmas, keywords) is only read: in
     // parallel again (`finish_programs`).
     let store_view: &SourceStore = store;
-    let mut parsed: Vec<_> = input
+    let (parsed, scanned): (Vec<_>, Vec<Vec<ScannedBlock>>) = input
         .shaders
         .par_iter()
         .map(|&file| {
             let parsed = parse_shader(store_view, file);
-            let scanned: Vec<ScannedBlock> = parsed
-                .shader
-                .iter()
-                .flat_map(wgsl_blocks)
-                .map(|block| ScannedBlock::scan(store_view, block.body_span))
-                .collect();
-            (file, parsed, scanned)
+            let blocks = parsed.shader.iter().flat_map(wgsl_blocks);
+            let scanned = blocks.map(|block| ScannedBlock::scan(store_view, block.body_span)).collect();
+            ((file, parsed), scanned)
         })
-        .collect();
-    includes.add_scanned(parsed.iter_mut().flat_map(|(_, _, scanned)| std::mem::take(scanned)));
+        .unzip();
+    includes.add_scanned(scanned.into_iter().flatten());
     let mut failed = Vec::new();
     let mut unfinished = Vec::new();
-    for (file, parsed, _) in parsed {
+    for (file, parsed) in parsed {
         diagnostics.extend(parsed.diagnostics);
         match parsed.shader {
             Some(shader) => {
