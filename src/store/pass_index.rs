@@ -21,6 +21,7 @@ pub struct PassIndex {
 /// A [`PassIndex`] on disk: each distinct list of declarations, reflection and pack once, and
 /// every entry naming its own by number. The stages of a pass mostly share all three; written
 /// out per stage, they made the pass indexes 7.5 times the manifest's size.
+///
 /// Read into `BTreeMap`s; written from a view's pairs, already in key order ([`Sorted`]).
 #[derive(Serialize, Deserialize)]
 struct StoredPassIndex<
