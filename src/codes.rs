@@ -131,6 +131,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0533", "variant log names an unknown keyword"),
     ("K0534", "pipeline trace entry no longer in the project (warning)"),
     ("K0620", "remote cache unavailable (warning)"),
+    ("K0621", "credentials withheld from a remote cache (warning)"),
 ];
 
 /// Whether `code` is registered.

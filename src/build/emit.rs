@@ -18,7 +18,7 @@ use crate::reflect::{Resource, UniformBlock};
 use crate::shaderlab::ast::Property;
 use crate::shaderlab::pragma::KeywordKind;
 use crate::source::{SourceStore, relative_to};
-use crate::store::{Cache, CachedStage, Digest, Hashed, Recorded, RecordedFile};
+use crate::store::{Cache, CachedStage, Digest, Hashed, OutputFile, PassKey, Recorded, RecordedFile};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use serde_json::value::RawValue;
@@ -51,7 +51,7 @@ pub struct ShaderHead {
     /// The shader's manifest entry, without passes.
     pub shader: ShaderManifest<()>,
     /// Its passes' keys ([`super::plan::pass_key`]).
-    pub passes: Vec<String>,
+    pub passes: Vec<PassKey>,
 }
 
 /// The shaders `work`'s passes belong to, in catalogue order, with their passes' keys.
@@ -310,7 +310,7 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
     let cache = Cache::new(&options.output, true);
     if options.write && !diagnostics::has_errors(&diagnostics) {
         files = (pack_ends(manifest.shaders.iter().flat_map(|s| &s.passes)).into_iter())
-            .map(|(path, len)| RecordedFile { path, len, hash: None })
+            .map(|(path, len)| RecordedFile { path: OutputFile::Pack(path), len, hash: None })
             .collect();
         // The materials, then the manifest that names their hash, while `alongside` runs.
         let (staged, alongside) = rayon::join(
@@ -328,12 +328,12 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
         match (staged, alongside.and_then(|copied| cache.forget_inputs().map(|()| copied))) {
             (Ok((materials, manifest)), Ok(copied)) => {
                 summary.bytes_written += copied;
-                for (name, staged) in [(MATERIALS_FILE, materials), (FILE_NAME, manifest)] {
+                for (name, staged) in [(OutputFile::Materials, materials), (OutputFile::Manifest, manifest)] {
                     let hash = staged.hash();
                     match staged.commit() {
                         Ok((len, written)) => {
                             summary.bytes_written += if written { len } else { 0 };
-                            files.push(RecordedFile { path: name.to_string(), len, hash: Some(hash) });
+                            files.push(RecordedFile { path: name, len, hash: Some(hash) });
                         }
                         Err(error) => diagnostics.push(write_failure(&options.output, error)),
                     }
@@ -439,7 +439,7 @@ impl StagedJson {
         let StagedJson { staged, digest } = self;
         let changed = |old: &std::path::Path| {
             let same = std::fs::metadata(old).is_ok_and(|m| m.len() == digest.len)
-                && Digest::of_file(old).is_ok_and(|old| old.finish() == digest.finish());
+                && Digest::of_file(old, digest.len + 1).is_ok_and(|old| old.finish() == digest.finish());
             !same
         };
         let written = staged.commit(changed)?;
@@ -482,7 +482,7 @@ impl Serialize for BuiltPass {
 }
 
 impl PassFiles for BuiltPass {
-    fn packs(&self) -> &[String] {
+    fn packs(&self) -> &[PackPath] {
         &self.part.packs
     }
     fn modules(&self) -> &[ModuleManifest] {
@@ -530,8 +530,8 @@ pub(super) fn pass_manifest<'a>(
     type Map<K> = HashMap<K, usize, foldhash::fast::FixedState>;
     let mut entries: BTreeMap<(u32, u32), LayoutEntry> = BTreeMap::new();
     let mut uniform_blocks: Vec<UniformBlock> = Vec::new();
-    let mut packs: Vec<String> = Vec::new();
-    let mut pack_of: Map<&str> = Map::default();
+    let mut packs: Vec<PackPath> = Vec::new();
+    let mut pack_of: Map<&PackPath> = Map::default();
     let mut interfaces: Vec<StageInterface> = Vec::with_capacity(jobs.len());
     let mut interface_of: Map<StageInterface> = Map::with_capacity_and_hasher(jobs.len(), Default::default());
     let mut modules: Vec<ModuleManifest> = Vec::with_capacity(jobs.len());
@@ -815,7 +815,7 @@ mod tests {
                     properties: Vec::new(),
                     passes: Vec::new(),
                 },
-                passes: (0..passes).map(|p| format!("{s}-{p}")).collect(),
+                passes: (0..passes).map(|p| PassKey::of(&format!("{s}-{p}"))).collect(),
             })
             .collect();
         let total: usize = sizes.iter().sum();

@@ -14,7 +14,8 @@ use super::shard::{ShardPass, pack_hash};
 use super::{BuildOptions, BuildResult, BuildSummary, Merge};
 use crate::diagnostics::Diagnostic;
 use crate::manifest::{
-    BindGroup, ModuleManifest, PassFiles, PassManifest, StageInterface, UniformBlock, modules_in_range,
+    BindGroup, ModuleManifest, PackPath, PassFiles, PassManifest, StageInterface, UniformBlock,
+    modules_in_range,
 };
 use crate::source::SourceStore;
 use crate::store::{link_or_copy, pass_index_path};
@@ -124,8 +125,9 @@ pub(super) fn merge(
     // the manifest and the materials are written, which replace nothing unless every link is made.
     let links: Vec<(PathBuf, PathBuf)> = (found.iter().zip(&parts))
         .flat_map(|((folder, part), pass)| {
-            let files = pass.view.packs.iter().cloned().chain([pass_index_path(&part.key)]);
-            files.map(|file| (folder.join(&file), options.output.join(&file)))
+            let packs = pass.view.packs.iter().map(|pack| (pack.under(folder), pack.under(&options.output)));
+            let entry = pass_index_path(&part.key);
+            packs.chain([(folder.join(&entry), options.output.join(&entry))])
         })
         .collect();
     let link = || {
@@ -176,7 +178,7 @@ struct RawPass<'a> {
 /// The fields of a pass's part the merge reads; serde skips the rest (its variants) unparsed.
 #[derive(Deserialize)]
 struct PassView {
-    packs: Vec<String>,
+    packs: Vec<PackPath>,
     interfaces: Vec<StageInterface>,
     modules: Vec<ModuleManifest>,
     layout: Vec<BindGroup>,
@@ -200,7 +202,7 @@ impl Serialize for RawPass<'_> {
 }
 
 impl PassFiles for RawPass<'_> {
-    fn packs(&self) -> &[String] {
+    fn packs(&self) -> &[PackPath] {
         &self.view.packs
     }
     fn modules(&self) -> &[ModuleManifest] {
@@ -218,9 +220,14 @@ impl PassFiles for RawPass<'_> {
 /// differs from the one the shard recorded, `hashes`), or too short to hold it. The modules'
 /// places and hashes come from the sealed record: a pack is checked whole, not module by module.
 fn damaged(folder: &Path, view: &PassView, hashes: &[String]) -> Option<Diagnostic> {
+    // A pack is read no further than its modules' end (and a byte past it, which fails its hash).
+    let mut ends = vec![0u64; view.packs.len()];
+    for file in view.modules.iter().flat_map(ModuleManifest::files) {
+        ends[file.pack] = ends[file.pack].max(file.offset + file.size);
+    }
     let lengths: Vec<Option<u64>> = (view.packs.iter().enumerate())
         .map(|(i, pack)| {
-            let (hash, length) = pack_hash(&folder.join(pack)).ok()?;
+            let (hash, length) = pack_hash(folder, pack, ends[i].saturating_add(1)).ok()?;
             (hashes.get(i) == Some(&hash)).then_some(length)
         })
         .collect();
@@ -232,7 +239,7 @@ fn damaged(folder: &Path, view: &PassView, hashes: &[String]) -> Option<Diagnost
                 let error = BuildLayerError::ModuleDamaged {
                     stage: interface.stage,
                     entry: interface.entry_point.clone(),
-                    pack: folder.join(&view.packs[file.pack]),
+                    pack: view.packs[file.pack].under(folder),
                 };
                 return Some(error.into());
             }

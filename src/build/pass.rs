@@ -13,7 +13,7 @@ use crate::catalog::Catalog;
 use crate::compile::Mapper;
 use crate::compile::bind::{self, Declared, PassLayout};
 use crate::diagnostics::Diagnostic;
-use crate::manifest::{Backend, FileRef, PerBackend};
+use crate::manifest::{Backend, FileRef, PackPath, PerBackend};
 use crate::preprocess::Includes;
 use crate::reflect::{SpirvGap, StageReflection};
 use crate::source::SourceStore;
@@ -215,13 +215,22 @@ fn repack_reused(outcomes: &mut [StageOutcome], output: &std::path::Path) {
     if !outcomes.iter().any(new) {
         return;
     }
-    // Each old pack read once, however many of its modules the pass reuses.
-    let mut packs: HashMap<String, Option<Vec<u8>>> = HashMap::new();
+    // Each old pack read once, however many of its modules the pass reuses, and no further than
+    // the last of them.
+    let mut ends: HashMap<PackPath, u64> = HashMap::new();
+    for outcome in outcomes.iter() {
+        let Some(Ok(Made { built: Built::Reused(stage), .. })) = outcome else { continue };
+        for file in stage.files.values().flatten() {
+            let end = ends.entry(file.path.clone()).or_default();
+            *end = (*end).max(file.end());
+        }
+    }
+    let mut packs: HashMap<PackPath, Option<Vec<u8>>> = HashMap::new();
     for outcome in outcomes.iter_mut() {
         let Some(Ok(Made { built: Built::Reused(stage), .. })) = outcome else { continue };
         let mut read = |file: &FileRef| {
-            let pack =
-                packs.entry(file.path.clone()).or_insert_with(|| std::fs::read(output.join(&file.path)).ok());
+            let end = ends.get(&file.path).copied().unwrap_or(0);
+            let pack = packs.entry(file.path.clone()).or_insert_with(|| file.path.read(output, end).ok());
             let bytes = file.slice(pack.as_deref()?)?;
             (hash(bytes) == file.hash).then(|| ModuleBytes { hash: file.hash.clone(), bytes: bytes.to_vec() })
         };
@@ -346,7 +355,7 @@ fn plan_packs<'a>(compiled: &'a [Arc<Compiled>]) -> (Vec<PlannedPack<'a>>, Vec<P
         if present.is_empty() {
             continue;
         }
-        let (pack, refs) = Cache::plan_pack(&modules, backend.pack_extension());
+        let (pack, refs) = Cache::plan_pack(&modules, backend);
         for (i, file) in present.into_iter().zip(refs) {
             files[i][backend] = Some(file);
         }

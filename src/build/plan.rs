@@ -9,7 +9,7 @@ use crate::diagnostics::Diagnostic;
 use crate::keywords::Variant;
 use crate::preprocess::{Includes, Stage};
 use crate::source::SourceStore;
-use crate::store::hash;
+use crate::store::PassKey;
 use rayon::prelude::*;
 use std::borrow::Cow;
 use std::collections::HashSet;
@@ -79,9 +79,9 @@ pub(super) fn weights(work: &[PassWork]) -> Vec<u64> {
 }
 
 /// Identifies a pass across builds: its shader file (relative to the project) and place.
-pub(super) fn pass_key(store: &SourceStore, options: &BuildOptions, work: &PassWork) -> String {
+pub(super) fn pass_key(store: &SourceStore, options: &BuildOptions, work: &PassWork) -> PassKey {
     let file = super::noop::recorded_name(store, work.shader.file, options);
-    hash(format!("{file}#{}.{}", work.pass.subshader, work.pass.index).as_bytes())
+    PassKey::of(&format!("{file}#{}.{}", work.pass.subshader, work.pass.index))
 }
 
 /// The distinct preprocessed stage texts a build of the catalogue compiles, with their stage and

@@ -10,8 +10,8 @@ use super::plan::PassWork;
 use super::{BuildOptions, BuildResult, BuildSummary};
 use crate::catalog::Catalog;
 use crate::diagnostics::{self, Diagnostic};
-use crate::manifest::PassFiles;
-use crate::store::{hash, sealed, unsealed, write_atomically};
+use crate::manifest::{PackPath, PassFiles};
+use crate::store::{PassKey, hash, sealed, unsealed, write_atomically};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use serde_json::value::RawValue;
@@ -103,8 +103,9 @@ pub struct ShardRecord {
 /// One pass a shard built.
 #[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct ShardPass {
-    /// Identifies the pass across builds (its shader file and place).
-    pub key: String,
+    /// Identifies the pass across builds (its shader file and place); names its cache entry's
+    /// file, so nothing but a hash parses.
+    pub key: PassKey,
     /// Its distinct stage modules.
     pub modules: usize,
     /// The BLAKE3 ([`hash`]) of each of its packs, in its part's order: the merge checks each
@@ -119,12 +120,16 @@ impl ShardPass {
     /// A built pass as its shard records it; its packs are read back to be hashed (a pass taken
     /// from the cache made none in this run), and only by a shard that writes.
     pub(super) fn new(
-        key: String,
+        key: PassKey,
         modules: usize,
         part: BuiltPass,
         options: &BuildOptions,
     ) -> std::io::Result<ShardPass> {
-        let hashed = |pack: &String| pack_hash(&options.output.join(pack)).map(|(hash, _)| hash);
+        let ends = crate::manifest::pack_ends([&part]);
+        let hashed = |pack: &PackPath| {
+            let end = ends.get(pack).copied().unwrap_or(0);
+            pack_hash(&options.output, pack, end.saturating_add(1)).map(|(hash, _)| hash)
+        };
         let packs = if options.write {
             part.packs().iter().map(hashed).collect::<std::io::Result<_>>()?
         } else {
@@ -135,8 +140,8 @@ impl ShardPass {
 }
 
 /// A pack's hash as its shard records it and the merge checks it, and its length.
-pub(super) fn pack_hash(path: &Path) -> std::io::Result<(String, u64)> {
-    let bytes = std::fs::read(path)?;
+pub(super) fn pack_hash(folder: &Path, pack: &PackPath, at_most: u64) -> std::io::Result<(String, u64)> {
+    let bytes = pack.read_staged(folder, at_most)?;
     Ok((hash(&bytes), bytes.len() as u64))
 }
 

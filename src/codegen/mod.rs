@@ -51,7 +51,7 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
         for module in &pass.modules {
             for backend in EMBEDDED {
                 if let Some(path) = module.file(backend).and_then(|f| pass.packs.get(f.pack)) {
-                    packs[backend].insert(path, 0);
+                    packs[backend].insert(path.as_str(), 0);
                 }
             }
         }

@@ -59,11 +59,13 @@ macro_rules! closed_set {
 
 mod backend;
 mod keywords;
+mod path;
 mod reflection;
 pub mod state;
 
 pub use backend::{Backend, PerBackend};
 pub use keywords::{KeywordKind, KeywordScope, KeywordSetManifest, KeywordStage};
+pub use path::{NotAPackPath, PACK_FOLDER, PackPath, read_regular};
 pub use reflection::{
     Attribute, AttributeFormat, Member, OverrideConstant, OverrideType, Resource, SampleType, ShaderStage,
     StorageAccess, TexelFormat, UniformBlock, ViewDimension,
@@ -168,7 +170,7 @@ impl Manifest {
     }
 
     /// Every pack the manifest points into, with the length it must have at least.
-    pub fn packs(&self) -> std::collections::BTreeMap<String, u64> {
+    pub fn packs(&self) -> std::collections::BTreeMap<PackPath, u64> {
         pack_ends(self.passes())
     }
 }
@@ -176,8 +178,8 @@ impl Manifest {
 /// Every pack the passes point into, with the length it must have at least.
 pub fn pack_ends<'a, P: PassFiles + 'a>(
     passes: impl IntoIterator<Item = &'a P>,
-) -> std::collections::BTreeMap<String, u64> {
-    let mut packs: std::collections::BTreeMap<String, u64> = std::collections::BTreeMap::new();
+) -> std::collections::BTreeMap<PackPath, u64> {
+    let mut packs: std::collections::BTreeMap<PackPath, u64> = std::collections::BTreeMap::new();
     for pass in passes {
         // A pass names a few packs and many modules: each pack's end is found by its index
         // first, and looked up by name once (this runs on one thread at the end of a build).
@@ -204,7 +206,7 @@ pub fn pack_ends<'a, P: PassFiles + 'a>(
 /// from: a pass's packs, modules, layout and uniform blocks.
 pub trait PassFiles {
     /// The pack files its modules are in.
-    fn packs(&self) -> &[String];
+    fn packs(&self) -> &[PackPath];
     /// Its modules.
     fn modules(&self) -> &[ModuleManifest];
     /// Its bind groups.
@@ -214,7 +216,7 @@ pub trait PassFiles {
 }
 
 impl<P: PassFiles> PassFiles for &P {
-    fn packs(&self) -> &[String] {
+    fn packs(&self) -> &[PackPath] {
         (*self).packs()
     }
     fn modules(&self) -> &[ModuleManifest] {
@@ -229,7 +231,7 @@ impl<P: PassFiles> PassFiles for &P {
 }
 
 impl PassFiles for PassManifest {
-    fn packs(&self) -> &[String] {
+    fn packs(&self) -> &[PackPath] {
         &self.packs
     }
     fn modules(&self) -> &[ModuleManifest] {
@@ -343,8 +345,9 @@ pub struct PassManifest {
     pub layout: Vec<BindGroup>,
     /// The distinct uniform block layouts of the pass's modules, laid out by naga.
     pub uniform_blocks: Vec<UniformBlock>,
-    /// The pack files the pass's modules are in, relative to the output folder.
-    pub packs: Vec<String>,
+    /// The pack files the pass's modules are in, relative to the output folder (nothing but
+    /// `modules/<hash>.<extension>` reads).
+    pub packs: Vec<PackPath>,
     /// The distinct interfaces of the pass's stage modules.
     pub interfaces: Vec<StageInterface>,
     /// Each distinct stage module of the pass once.
@@ -422,7 +425,7 @@ impl PassManifest {
     /// The full reference of a module file.
     pub fn file(&self, file: &ModuleFile) -> FileRef {
         FileRef {
-            path: self.packs.get(file.pack).cloned().unwrap_or_default(),
+            path: self.packs[file.pack].clone(),
             offset: file.offset,
             size: file.size,
             hash: file.hash.clone(),
@@ -656,8 +659,8 @@ impl<'a> StageView<'a> {
 /// a few files per pass instead of two per module.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct FileRef {
-    /// Relative to the output folder, with `/` separators.
-    pub path: String,
+    /// Its pack, relative to the output folder.
+    pub path: PackPath,
     /// Byte offset in the file.
     pub offset: u64,
     /// Bytes.
@@ -678,9 +681,10 @@ impl FileRef {
         range.and_then(|(start, end)| pack.get(start..end))
     }
 
-    /// The module's bytes, read from its pack under `output`.
+    /// The module's bytes, read from its pack under `output` (a regular file, read no further
+    /// than the module's end).
     pub fn read(&self, output: &Path) -> std::io::Result<Vec<u8>> {
-        let pack = std::fs::read(output.join(&self.path))?;
+        let pack = self.path.read(output, self.end())?;
         self.slice(&pack).map(<[u8]>::to_vec).ok_or_else(|| {
             std::io::Error::new(
                 std::io::ErrorKind::UnexpectedEof,

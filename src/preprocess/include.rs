@@ -46,7 +46,9 @@ enum Place {
 /// and variants.
 pub struct Includes {
     config: IncludeConfig,
-    /// Roots and include paths, canonicalised once.
+    /// Roots and include paths, canonicalised once, and as written (made absolute): a file is
+    /// inside when its path is under one as written (a sandbox's link to a file elsewhere is the
+    /// project's file) or its target is under one canonicalised.
     allowed: Vec<PathBuf>,
     pub(crate) units: Vec<Unit>,
     places: Vec<Place>,
@@ -89,12 +91,12 @@ pub struct Program {
 impl Includes {
     /// Includes resolved with `config`, none scanned yet.
     pub fn new(config: IncludeConfig) -> Includes {
-        let allowed = config
-            .roots
-            .iter()
-            .chain(&config.include_paths)
-            .filter_map(|p| std::fs::canonicalize(p).ok())
-            .collect();
+        let roots = || config.roots.iter().chain(&config.include_paths);
+        let written = roots().filter_map(|p| std::path::absolute(p).ok()).map(|p| normalize_lexically(&p));
+        let mut allowed: Vec<PathBuf> =
+            roots().filter_map(|p| std::fs::canonicalize(p).ok()).chain(written).collect();
+        allowed.sort();
+        allowed.dedup();
         Includes {
             config,
             allowed,
@@ -288,10 +290,17 @@ impl Includes {
         Some(parent.join(found).to_string_lossy().replace('\\', "/"))
     }
 
-    /// Whether `path` is inside the project (its canonical path under an include root).
+    /// Whether `path` is inside the project (see `allowed`).
     pub fn may_read(&self, path: &Path) -> bool {
-        std::fs::canonicalize(path)
-            .is_ok_and(|canonical| self.allowed.iter().any(|root| canonical.starts_with(root)))
+        std::fs::canonicalize(path).is_ok_and(|canonical| self.inside(path, &canonical))
+    }
+
+    /// Whether the file at `path` (`canonical` once links are followed) is inside the project.
+    fn inside(&self, path: &Path, canonical: &Path) -> bool {
+        let written = std::path::absolute(path).map(|p| normalize_lexically(&p));
+        self.allowed
+            .iter()
+            .any(|root| canonical.starts_with(root) || written.as_ref().is_ok_and(|w| w.starts_with(root)))
     }
 
     fn disk_unit(
@@ -303,7 +312,7 @@ impl Includes {
         span: Span,
         diagnostics: &mut Vec<Diagnostic>,
     ) -> Target {
-        if !self.allowed.iter().any(|root| canonical.starts_with(root)) {
+        if !self.inside(&path, &canonical) {
             let resolved = path.to_string_lossy().replace('\\', "/");
             return Target::Failed(PreprocessError::IncludeOutsideRoots {
                 span,

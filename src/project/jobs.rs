@@ -12,7 +12,7 @@ use crate::diagnostics::{self, Diagnostic};
 use crate::manifest::Backend;
 use crate::preprocess::Includes;
 use crate::source::{SourceStore, Span, Spanned};
-use crate::store::remote::{RemoteConfig, RemoteMode, check_url};
+use crate::store::remote::{Credentials, RemoteConfig, RemoteMode, UrlSource, check_url, credentials_for};
 use std::path::PathBuf;
 
 /// `kiln list`: the listing of the projects and files at `paths` (strict projects' warnings
@@ -224,6 +224,8 @@ fn load_given(
     if let Some(global) = &mode.global_keywords {
         input.global_keywords = Some(given_global_keywords(store, global));
     }
+    let (remote_cache, said) = remote_cache(&workspace, mode).unwrap_or_else(|error| (None, Some(error)));
+    diagnostics.extend(said);
     let options = BuildOptions {
         output: mode.output.clone().unwrap_or_else(|| workspace.output.clone()),
         root: workspace.root.clone(),
@@ -242,10 +244,7 @@ fn load_given(
         cache_dir: workspace
             .shared_cache_dir(mode.cache_dir.clone())
             .or_else(|| mode.fallback_cache_dir.clone()),
-        remote_cache: remote_cache(&workspace, mode).unwrap_or_else(|error| {
-            diagnostics.push(error);
-            None
-        }),
+        remote_cache,
         given_files: store.files_read().count(),
         groups: workspace.groups.clone(),
         glslang: None,
@@ -259,9 +258,14 @@ fn load_given(
 /// The remote cache a build uses (docs/scaling.md): the URL given (`--remote-cache`), else
 /// `KILN_REMOTE_CACHE`, else the project's `remote_cache`; its mode given, else
 /// `KILN_REMOTE_CACHE_MODE`, else the project's `remote_cache_mode`, else `write`; each step of
-/// a request limited to `KILN_REMOTE_CACHE_TIMEOUT` seconds (default 10). A setting kiln cannot
-/// use is an error (K0013) where it is written.
-fn remote_cache(workspace: &Workspace, mode: &BuildMode) -> Result<Option<RemoteConfig>, Diagnostic> {
+/// a request limited to `KILN_REMOTE_CACHE_TIMEOUT` seconds (default 10), all of them to
+/// `KILN_REMOTE_CACHE_BUDGET` (default 30); credentials from the environment where
+/// [`credentials_for`] allows them, else a warning (K0621) saying why the build runs without.
+/// A setting kiln cannot use is an error (K0013) where it is written.
+fn remote_cache(
+    workspace: &Workspace,
+    mode: &BuildMode,
+) -> Result<(Option<RemoteConfig>, Option<Diagnostic>), Diagnostic> {
     let invalid = |what: String, span: Option<crate::source::Span>| {
         let d = Diagnostic::error("K0013", format!("invalid remote cache setting: {what}"));
         let d = match span {
@@ -274,7 +278,7 @@ fn remote_cache(workspace: &Workspace, mode: &BuildMode) -> Result<Option<Remote
     let (url, span) = match (mode.remote_cache.clone(), env("KILN_REMOTE_CACHE"), &workspace.remote_cache) {
         (Some(url), ..) | (None, Some(url), _) => (url, None),
         (None, None, Some(url)) => (url.value.clone(), Some(url.span)),
-        (None, None, None) => return Ok(None),
+        (None, None, None) => return Ok((None, None)),
     };
     let url = check_url(&url).map_err(|why| invalid(format!("the URL: {why}"), span))?;
     let chosen = match (mode.remote_cache_mode, env("KILN_REMOTE_CACHE_MODE")) {
@@ -283,21 +287,38 @@ fn remote_cache(workspace: &Workspace, mode: &BuildMode) -> Result<Option<Remote
             .ok_or_else(|| invalid(format!("KILN_REMOTE_CACHE_MODE is `{}`", name.escape_debug()), None))?,
         (None, None) => workspace.remote_cache_mode.unwrap_or_default(),
     };
-    let timeout = match env("KILN_REMOTE_CACHE_TIMEOUT") {
-        None => std::time::Duration::from_secs(10),
+    let seconds = |name: &str, default: u64| match env(name) {
+        None => Ok(std::time::Duration::from_secs(default)),
         Some(seconds) => seconds
             .parse::<f64>()
             .ok()
             .filter(|s| s.is_finite() && *s > 0.0 && *s <= 3600.0)
             .map(std::time::Duration::from_secs_f64)
-            .ok_or_else(|| {
-                invalid(
-                    format!("KILN_REMOTE_CACHE_TIMEOUT is `{}`, not seconds", seconds.escape_debug()),
-                    None,
-                )
-            })?,
+            .ok_or_else(|| invalid(format!("{name} is `{}`, not seconds", seconds.escape_debug()), None)),
     };
-    Ok(Some(RemoteConfig { url, mode: chosen, timeout }))
+    let (timeout, budget) =
+        (seconds("KILN_REMOTE_CACHE_TIMEOUT", 10)?, seconds("KILN_REMOTE_CACHE_BUDGET", 30)?);
+    let source = if span.is_some() { UrlSource::Project } else { UrlSource::User };
+    let (credentials, withheld) = match Credentials::from_env() {
+        None => (None, None),
+        Some(credentials) => match credentials_for(&url, source, env("KILN_REMOTE_CACHE_HOST").as_deref()) {
+            Ok(()) => (Some(credentials), None),
+            Err(why) => {
+                let warning = Diagnostic::warning(
+                    "K0621",
+                    "the remote cache gets no credentials: the build uses it without them".to_string(),
+                )
+                .note(format!("the environment holds credentials, and they are not sent: {why}"));
+                let warning = match span {
+                    Some(span) => warning.at(span, "this URL gets no credentials"),
+                    None => warning,
+                };
+                let help = "name the server with `--remote-cache` or `KILN_REMOTE_CACHE` (over `https://`), or pin its host with `KILN_REMOTE_CACHE_HOST`";
+                (None, Some(warning.help(help)))
+            }
+        },
+    };
+    Ok((Some(RemoteConfig { url, mode: chosen, timeout, budget, credentials }), withheld))
 }
 
 /// A project without shaders: a warning for a build, an error for a check, so that CI pointed at
@@ -305,8 +326,15 @@ fn remote_cache(workspace: &Workspace, mode: &BuildMode) -> Result<Option<Remote
 fn no_shaders(paths: &[PathBuf], build: bool) -> Diagnostic {
     let shown: Vec<String> = paths.iter().map(|p| format!("`{}`", p.display())).collect();
     let message = format!("no shaders in {}", shown.join(", "));
-    let diagnostic =
-        if build { Diagnostic::warning("K0009", message) } else { Diagnostic::error("K0009", message) };
+    // An empty folder is a project not started; one that holds files but no shader kiln could
+    // find is a mistake a build must not pass over (a sandbox's staging kiln misread, say).
+    let holds_entries =
+        paths.iter().any(|p| p.is_file() || std::fs::read_dir(p).is_ok_and(|mut e| e.next().is_some()));
+    let diagnostic = if build && !holds_entries {
+        Diagnostic::warning("K0009", message)
+    } else {
+        Diagnostic::error("K0009", message).note("the folder holds files, none of them a shader kiln finds")
+    };
     diagnostic.help(
         "give the project folder (kiln looks for `.shader` files in it, or in the folders its kiln.toml's \
          `shaders` names) or `.shader` files",

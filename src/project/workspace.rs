@@ -339,20 +339,44 @@ pub const SHADER_EXTENSIONS: [&str; 2] = ["shader", crate::shaderlab::compute::E
 /// is fine).
 pub fn find_files(paths: &[PathBuf], extensions: &[&str]) -> Result<Vec<PathBuf>, ProjectError> {
     let mut files = Vec::new();
+    let mut linked = LinkedFolders::default();
     for path in paths.iter().filter(|p| p.exists()) {
         if path.is_file() {
             files.push(path.clone());
         } else {
-            find_under(path, extensions, &mut files)?;
+            linked.roots.extend(std::fs::canonicalize(path));
+            find_under(path, extensions, &mut files, &mut linked)?;
         }
+    }
+    if linked.followed {
+        // Two links to one file (or a folder reached twice) name it once, where first found.
+        let mut seen = std::collections::HashSet::new();
+        files.retain(|file| seen.insert(std::fs::canonicalize(file).unwrap_or_else(|_| file.clone())));
     }
     Ok(files)
 }
 
+/// The folders a walk searches and those it entered through links, by canonical path: a link to
+/// something inside a searched folder is skipped (it is found under its own name), and a folder
+/// elsewhere is walked once however many links lead to it.
+#[derive(Default)]
+struct LinkedFolders {
+    roots: Vec<PathBuf>,
+    visited: std::collections::HashSet<PathBuf>,
+    /// Whether any link was followed (only then may a file be found twice).
+    followed: bool,
+}
+
 /// The files with one of `extensions` in `folder` and its subfolders, each folder's entries by
-/// name, links not followed. By hand rather than with walkdir: every build, shard and merge walks
-/// the material folders, and at 50,000 materials walkdir's path per entry took twice as long.
-fn find_under(folder: &Path, extensions: &[&str], files: &mut Vec<PathBuf>) -> Result<(), ProjectError> {
+/// name. Links are followed, to files and (once each) to folders: a sandbox such as Bazel's
+/// stages every input as a link. By hand rather than with walkdir: every build, shard and merge
+/// walks the material folders, and at 50,000 materials walkdir's path per entry took twice as long.
+fn find_under(
+    folder: &Path,
+    extensions: &[&str],
+    files: &mut Vec<PathBuf>,
+    linked: &mut LinkedFolders,
+) -> Result<(), ProjectError> {
     let walk_error =
         |e: std::io::Error| ProjectError::Walk { path: folder.to_path_buf(), message: e.to_string() };
     let mut entries: Vec<(std::ffi::OsString, std::fs::FileType)> = std::fs::read_dir(folder)
@@ -361,9 +385,22 @@ fn find_under(folder: &Path, extensions: &[&str], files: &mut Vec<PathBuf>) -> R
         })
         .map_err(walk_error)?;
     entries.sort_unstable_by(|(a, _), (b, _)| a.cmp(b));
-    for (name, kind) in entries {
+    for (name, mut kind) in entries {
+        if kind.is_symlink() {
+            // A link that leads nowhere is skipped, as a file of another extension is.
+            let Ok(canonical) = std::fs::canonicalize(folder.join(&name)) else { continue };
+            let Ok(target) = std::fs::metadata(&canonical) else { continue };
+            if linked.roots.iter().any(|root| canonical.starts_with(root)) {
+                continue;
+            }
+            kind = target.file_type();
+            linked.followed = true;
+            if kind.is_dir() && !linked.visited.insert(canonical) {
+                continue;
+            }
+        }
         if kind.is_dir() {
-            find_under(&folder.join(&name), extensions, files)?;
+            find_under(&folder.join(&name), extensions, files, linked)?;
         } else if kind.is_file()
             && Path::new(&name)
                 .extension()
@@ -429,7 +466,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn found_files_come_folder_by_folder_in_name_order_without_following_links() {
+    fn found_files_come_folder_by_folder_in_name_order_following_links_once() {
         let dir = tempfile::tempdir().expect("temp dir");
         let root = dir.path();
         for file in ["b.shader", "a.SHADER", "d.txt", "sub/z/c.shader", "sub/b.shader", "sub.shader"] {
@@ -437,14 +474,38 @@ mod tests {
             std::fs::create_dir_all(path.parent().expect("parent")).expect("folder");
             std::fs::write(path, "").expect("write");
         }
+        let elsewhere = tempfile::tempdir().expect("temp dir");
+        std::fs::create_dir_all(elsewhere.path().join("kept")).expect("folder");
+        std::fs::write(elsewhere.path().join("staged.shader"), "").expect("write");
+        std::fs::write(elsewhere.path().join("kept/deep.shader"), "").expect("write");
         #[cfg(unix)]
         {
-            std::os::unix::fs::symlink(root.join("b.shader"), root.join("link.shader")).expect("link");
-            std::os::unix::fs::symlink(root.join("sub"), root.join("linked")).expect("link");
+            use std::os::unix::fs::symlink;
+            // Links to files and folders elsewhere, as a sandbox stages them, are followed; a
+            // second name for a file found already, a link to a folder above and one that leads
+            // nowhere add nothing.
+            symlink(elsewhere.path().join("staged.shader"), root.join("l.shader")).expect("link");
+            symlink(elsewhere.path().join("kept"), root.join("m")).expect("link");
+            symlink(root.join("b.shader"), root.join("link.shader")).expect("link");
+            symlink(root.join("sub"), root.join("linked")).expect("link");
+            symlink(root, root.join("sub/z/up")).expect("link");
+            symlink(root.join("nothing.shader"), root.join("dangling.shader")).expect("link");
         }
         let found = find_files(&[root.to_path_buf()], &SHADER_EXTENSIONS).expect("walk");
         let names: Vec<String> = found.iter().map(|p| crate::source::relative_to(p, root)).collect();
         // Entries by their names' bytes: `sub` before `sub.shader`, a folder's files where it sorts.
-        assert_eq!(names, ["a.SHADER", "b.shader", "sub/b.shader", "sub/z/c.shader", "sub.shader"]);
+        #[cfg(unix)]
+        assert_eq!(
+            names,
+            [
+                "a.SHADER",
+                "b.shader",
+                "l.shader",
+                "m/deep.shader",
+                "sub/b.shader",
+                "sub/z/c.shader",
+                "sub.shader"
+            ]
+        );
     }
 }

@@ -81,7 +81,7 @@ fn first_damaged(
 ) -> Option<crate::manifest::FileRef> {
     use rayon::prelude::*;
     manifest.files().into_par_iter().find_any(|file| {
-        let bytes = packs.get(&file.path).and_then(|pack| file.slice(pack));
+        let bytes = packs.get(file.path.as_str()).and_then(|pack| file.slice(pack));
         bytes.is_none_or(|bytes| blake3::hash(bytes).to_hex()[..32] != file.hash)
     })
 }
@@ -238,10 +238,15 @@ impl Library {
         let materials_bytes = read(MATERIALS_FILE)?;
         same_build(&manifest, &materials_bytes)
             .map_err(|message| RuntimeError::Read { path: output.join(MATERIALS_FILE), message })?;
+        // A pack is read no further than its modules' end, as a regular file only: the manifest
+        // is untrusted, and its paths can name nothing but `modules/<hash>.<extension>`.
         let mut packs = HashMap::new();
-        for path in manifest.packs().into_keys() {
-            let bytes = read(&path)?;
-            packs.insert(path, Cow::Owned(bytes));
+        for (path, end) in manifest.packs() {
+            let bytes = path.read(output, end).map_err(|e| RuntimeError::Read {
+                path: path.under(output),
+                message: format!("{e}: the output folder is damaged; build again"),
+            })?;
+            packs.insert(path.as_str().to_string(), Cow::Owned(bytes));
         }
         let (materials, damaged) = rayon::join(
             || serde_json::from_slice(&materials_bytes),
@@ -249,7 +254,7 @@ impl Library {
         );
         if let Some(file) = damaged {
             return Err(RuntimeError::Read {
-                path: output.join(&file.path),
+                path: file.path.under(output),
                 message: format!(
                     "the module at bytes {}..{} is not what the manifest names (its hash differs): the build was changed since; build again",
                     file.offset,
@@ -475,7 +480,7 @@ impl Library {
 
     /// A module's bytes, from its pack.
     pub fn bytes(&self, pass: &PassManifest, file: &ModuleFile) -> Option<&[u8]> {
-        let pack = self.packs.get(pass.packs.get(file.pack)?)?;
+        let pack = self.packs.get(pass.packs.get(file.pack)?.as_str())?;
         pack.get(file.offset as usize..(file.offset + file.size) as usize)
     }
 

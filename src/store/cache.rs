@@ -2,7 +2,7 @@
 //! variant skip naga entirely, and atomic writes (a temporary file and a rename) for all of them.
 
 use super::pass_index::{CachedStage, PassIndex, PassIndexView};
-use crate::manifest::FileRef;
+use crate::manifest::{Backend, FileRef, PackPath, read_regular};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeSet, HashMap};
@@ -13,6 +13,44 @@ use std::path::{Path, PathBuf};
 pub fn hash(bytes: &[u8]) -> String {
     let digest = blake3::hash(bytes);
     digest.to_hex()[..32].to_string()
+}
+
+/// Identifies a pass across builds: a [`hash`] of its shader file and place. It names the pass's
+/// cache entry (`.cache/pass/<key>.json`) and is read from shard records, so nothing but 32
+/// lowercase hexadecimal digits parses.
+#[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
+#[serde(transparent)]
+pub struct PassKey(String);
+
+impl PassKey {
+    /// The key of the pass whose identity (shader file and place) reads `identity`.
+    pub fn of(identity: &str) -> PassKey {
+        PassKey(hash(identity.as_bytes()))
+    }
+
+    /// The key as text.
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+}
+
+impl std::ops::Deref for PassKey {
+    type Target = str;
+    fn deref(&self) -> &str {
+        &self.0
+    }
+}
+
+impl<'de> Deserialize<'de> for PassKey {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let text = String::deserialize(deserializer)?;
+        let hex = text.len() == 32 && text.bytes().all(|b| b.is_ascii_digit() || (b'a'..=b'f').contains(&b));
+        if hex {
+            Ok(PassKey(text))
+        } else {
+            Err(serde::de::Error::custom(format_args!("`{}` is not a pass's key", text.escape_debug())))
+        }
+    }
 }
 
 /// The last clean build: its inputs' hash, its counts, the files it left (packs and the
@@ -45,13 +83,61 @@ pub struct Recorded {
 /// or the manifest or the materials, with their exact length and hash.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RecordedFile {
-    /// Relative to the output folder.
-    pub path: String,
+    /// Which file, in the output folder.
+    pub path: OutputFile,
     /// Its length (at least, without a hash).
     pub len: u64,
     /// Its [`hash`], where the no-op check verifies its bytes.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hash: Option<String>,
+}
+
+/// A file a build leaves in its output folder, as the no-op record names it: the manifest, the
+/// materials or a pack, and nothing else (a record is untrusted: anyone can edit and re-seal it).
+#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
+pub enum OutputFile {
+    /// `manifest.json`.
+    Manifest,
+    /// `materials.json`.
+    Materials,
+    /// A pack of modules.
+    Pack(PackPath),
+}
+
+impl OutputFile {
+    /// Its path relative to the output folder, with `/` separators.
+    pub fn as_str(&self) -> &str {
+        match self {
+            OutputFile::Manifest => crate::manifest::FILE_NAME,
+            OutputFile::Materials => crate::manifest::MATERIALS_FILE,
+            OutputFile::Pack(pack) => pack.as_str(),
+        }
+    }
+
+    /// Where it is under `output`.
+    pub fn under(&self, output: &Path) -> PathBuf {
+        match self {
+            OutputFile::Pack(pack) => pack.under(output),
+            _ => output.join(self.as_str()),
+        }
+    }
+}
+
+impl Serialize for OutputFile {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.as_str())
+    }
+}
+
+impl<'de> Deserialize<'de> for OutputFile {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        let text = std::borrow::Cow::<str>::deserialize(deserializer)?;
+        match &*text {
+            crate::manifest::FILE_NAME => Ok(OutputFile::Manifest),
+            crate::manifest::MATERIALS_FILE => Ok(OutputFile::Materials),
+            pack => PackPath::parse(pack).map(OutputFile::Pack).map_err(serde::de::Error::custom),
+        }
+    }
 }
 
 /// An output folder's cache and packs.
@@ -60,7 +146,7 @@ pub struct Cache {
     /// `kiln check` reads the cache but writes nothing.
     write: bool,
     /// Packs this build has stored: passes of identical code make the same pack, written once.
-    stored: std::sync::Mutex<BTreeSet<String>>,
+    stored: std::sync::Mutex<BTreeSet<PackPath>>,
 }
 
 impl Cache {
@@ -100,17 +186,21 @@ impl Cache {
     /// that the cache costs two file operations per pass rather than per module. Stage modules
     /// whose bytes are missing or damaged are dropped (and so compiled again): each pack they
     /// point into is read once and every module's range hashed.
-    pub fn pass_index(&self, pass: &str) -> PassIndex {
+    pub fn pass_index(&self, pass: &PassKey) -> PassIndex {
         let mut index: PassIndex = self.read("pass", pass).unwrap_or_default();
         let damaged: Vec<String> = {
-            let paths: BTreeSet<&str> =
-                index.stage.values().flat_map(CachedStage::written).map(|f| f.path.as_str()).collect();
-            let packs: HashMap<&str, Vec<u8>> = paths
+            // Each pack read once, no further than the last module the entry places in it.
+            let mut ends: HashMap<&PackPath, u64> = HashMap::new();
+            for file in index.stage.values().flat_map(CachedStage::written) {
+                let end = ends.entry(&file.path).or_default();
+                *end = (*end).max(file.offset.saturating_add(file.size));
+            }
+            let packs: HashMap<&PackPath, Vec<u8>> = ends
                 .into_par_iter()
-                .filter_map(|path| Some((path, std::fs::read(self.output.join(path)).ok()?)))
+                .filter_map(|(path, end)| Some((path, path.read(&self.output, end).ok()?)))
                 .collect();
             let intact = |file: &FileRef| {
-                let pack = packs.get(file.path.as_str());
+                let pack = packs.get(&file.path);
                 pack.and_then(|pack| file.slice(pack)).is_some_and(|bytes| hash(bytes) == file.hash)
             };
             index
@@ -127,7 +217,7 @@ impl Cache {
     }
 
     /// A pass's index serialized and sealed, for [`Cache::put_entry`].
-    pub fn seal_pass_index(pass: &str, index: &PassIndexView) -> std::io::Result<SealedEntry> {
+    pub fn seal_pass_index(pass: &PassKey, index: &PassIndexView) -> std::io::Result<SealedEntry> {
         sealed_entry("pass", pass, index)
     }
 
@@ -136,11 +226,12 @@ impl Cache {
     /// holds its modules' range (its length), checked in parallel.
     pub fn files_in_place(&self, recorded: &Recorded) -> bool {
         let in_place = |file: &RecordedFile| {
-            let path = self.output.join(&file.path);
+            let path = file.path.under(&self.output);
             match &file.hash {
-                Some(expected) => Digest::of_file(&path)
+                Some(expected) => Digest::of_file(&path, file.len.saturating_add(1))
                     .is_ok_and(|d| d.len == file.len && d.finish().to_hex()[..32] == *expected),
-                None => std::fs::metadata(&path).is_ok_and(|m| m.len() >= file.len),
+                // A regular file, not a link or a device that a record could point anywhere.
+                None => std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file() && m.len() >= file.len),
             }
         };
         recorded.files.iter().filter(|f| f.hash.is_some()).count() == 2
@@ -170,7 +261,7 @@ impl Cache {
     /// once), named by the hash of their hashes, which fix its bytes (`modules/HASH.EXT`): each
     /// module's reference (returned in the order given) is known before a byte is written
     /// ([`Cache::write_pack`] writes it).
-    pub fn plan_pack<'a>(modules: &[&'a ModuleBytes], extension: &str) -> (PlannedPack<'a>, Vec<FileRef>) {
+    pub fn plan_pack<'a>(modules: &[&'a ModuleBytes], backend: Backend) -> (PlannedPack<'a>, Vec<FileRef>) {
         let mut placed: HashMap<&str, u64> = HashMap::new();
         let mut distinct: Vec<&[u8]> = Vec::new();
         let mut names = String::new();
@@ -185,7 +276,7 @@ impl Cache {
             });
             offsets.push(offset);
         }
-        let path = format!("modules/{}.{extension}", hash(names.as_bytes()));
+        let path = PackPath::new(&hash(names.as_bytes()), backend);
         let files = (modules.iter().zip(offsets))
             .map(|(module, offset)| FileRef {
                 path: path.clone(),
@@ -201,11 +292,11 @@ impl Cache {
     /// buffer would be fresh memory the allocator takes from the system for every pass). Returns
     /// the bytes written: 0 when the pack was there already, intact.
     pub fn write_pack(&self, pack: &PlannedPack) -> std::io::Result<u64> {
-        let full = self.output.join(&pack.path);
+        let full = pack.path.under(&self.output);
         let first = self.stored.lock().map_or(true, |mut stored| stored.insert(pack.path.clone()));
         let present = !first
             || std::fs::metadata(&full).is_ok_and(|m| m.len() == pack.size)
-                && std::fs::read(&full).is_ok_and(|existing| {
+                && pack.path.read(&self.output, pack.size).is_ok_and(|existing| {
                     let mut rest = existing.as_slice();
                     pack.distinct.iter().all(|bytes| {
                         rest.split_at_checked(bytes.len()).is_some_and(|(head, tail)| {
@@ -224,7 +315,7 @@ impl Cache {
 
 /// A pack of modules named and laid out, not yet written ([`Cache::plan_pack`]).
 pub struct PlannedPack<'a> {
-    path: String,
+    path: PackPath,
     distinct: Vec<&'a [u8]>,
     size: u64,
 }
@@ -317,7 +408,7 @@ fn entry_path(kind: &str, key: &str) -> String {
 }
 
 /// Where the cache keeps a pass's index, relative to the output folder.
-pub fn pass_index_path(pass: &str) -> String {
+pub fn pass_index_path(pass: &PassKey) -> String {
     entry_path("pass", pass)
 }
 
@@ -472,9 +563,11 @@ impl Digest {
     }
 
     /// The digest of a file's bytes, read in chunks.
-    pub fn of_file(path: &Path) -> std::io::Result<Digest> {
+    /// The digest of at most `at_most` bytes of the regular file at `path` (a link or a device is
+    /// refused: a record may name the file).
+    pub fn of_file(path: &Path, at_most: u64) -> std::io::Result<Digest> {
         let mut digest = Digest::default();
-        std::io::copy(&mut std::fs::File::open(path)?, &mut digest)?;
+        digest.write_all(&read_regular(path, at_most)?)?;
         Ok(digest)
     }
 }
@@ -515,10 +608,13 @@ impl Write for Digest {
 /// rewritten) and a copy elsewhere; through a temporary name and a rename, like every write.
 /// Returns the bytes copied (0 for a link, or when `to` already has the same length and bytes).
 pub fn link_or_copy(from: &Path, to: &Path) -> std::io::Result<u64> {
+    // A sandbox (Bazel's) stages a shard's files as links: the file linked is the one they name,
+    // so that the output holds files, never links that lead out of it.
+    let from = &std::fs::canonicalize(from)?;
     let length = std::fs::metadata(from)?.len();
     let existing = std::fs::metadata(to).ok();
     if existing.as_ref().is_some_and(|m| m.len() == length)
-        && Digest::of_file(to)?.finish() == Digest::of_file(from)?.finish()
+        && Digest::of_file(to, length + 1)?.finish() == Digest::of_file(from, length + 1)?.finish()
     {
         return Ok(0);
     }

@@ -8,7 +8,8 @@ pub mod remote;
 pub mod shared;
 
 pub use cache::{
-    Cache, Digest, Hashed, ModuleBytes, OutputLock, PlannedPack, Recorded, RecordedFile, SealedEntry, Staged,
-    hash, link_or_copy, pass_index_path, seal, sealed, stage, unsealed, write_atomically,
+    Cache, Digest, Hashed, ModuleBytes, OutputFile, OutputLock, PassKey, PlannedPack, Recorded, RecordedFile,
+    SealedEntry, Staged, hash, link_or_copy, pass_index_path, seal, sealed, stage, unsealed,
+    write_atomically,
 };
 pub use pass_index::{CachedStage, PassIndex, PassIndexView};

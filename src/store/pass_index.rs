@@ -2,7 +2,7 @@
 //! kept on disk with what its stages share written once.
 
 use crate::compile::bind::Declared;
-use crate::manifest::{FileRef, PerBackend};
+use crate::manifest::{FileRef, PackPath, PerBackend};
 use crate::reflect::StageReflection;
 use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
@@ -152,7 +152,9 @@ impl<'de> Deserialize<'de> for PassIndex {
             .map(|(key, n)| Ok((key.into_owned(), numbered(&stored.declarations, n)?)));
         let file = |file: &Option<StoredFile>| {
             let Some(f) = file else { return Ok(None) };
-            let path = numbered(&stored.packs, f.pack)?;
+            let path: String = numbered(&stored.packs, f.pack)?;
+            // A record's path can name a pack of its folder and nothing else.
+            let path = PackPath::parse(&path).map_err(serde::de::Error::custom)?;
             Ok(Some(FileRef { path, offset: f.offset, size: f.size, hash: f.hash.to_string() }))
         };
         let stage = stored.stage.iter().map(|(key, stage)| {
@@ -187,6 +189,7 @@ impl CachedStage {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::manifest::Backend;
 
     fn reflection(entry_point: &str) -> StageReflection {
         let json = serde_json::json!({
@@ -195,8 +198,10 @@ mod tests {
         serde_json::from_value(json).expect("a reflection")
     }
 
-    fn file(pack: &str, offset: u64) -> Option<FileRef> {
-        Some(FileRef { path: pack.to_string(), offset, size: 10, hash: format!("{offset:032}") })
+    const PACK: &str = "0123456789abcdef0123456789abcdef";
+
+    fn file(pack: PackPath, offset: u64) -> Option<FileRef> {
+        Some(FileRef { path: pack, offset, size: 10, hash: format!("{offset:032}") })
     }
 
     fn declared(name: &str) -> Vec<Declared> {
@@ -205,9 +210,7 @@ mod tests {
 
     fn stage(offset: u64, reflection: StageReflection) -> CachedStage {
         CachedStage {
-            files: PerBackend::from_fn(|backend| {
-                file(&format!("modules/a.{}", backend.pack_extension()), offset)
-            }),
+            files: PerBackend::from_fn(|backend| file(PackPath::new(PACK, backend), offset)),
             reflection,
         }
     }
@@ -232,8 +235,8 @@ mod tests {
     fn a_pass_index_keeps_what_its_stages_share_once_and_reads_back_whole() {
         let index = index();
         let json = serde_json::to_string(&index).expect("serializes");
-        for once in ["SharedEntry", "OwnEntry", "UnityPerFrame", "modules/a.wgsl.pack", "modules/a.spv.pack"]
-        {
+        let packs = [Backend::Wgsl, Backend::Spirv].map(|b| PackPath::new(PACK, b).to_string());
+        for once in ["SharedEntry", "OwnEntry", "UnityPerFrame", &packs[0], &packs[1]] {
             assert_eq!(json.matches(once).count(), 1, "{once} in {json}");
         }
         assert_eq!(serde_json::from_str::<PassIndex>(&json).expect("reads back"), index);
@@ -248,6 +251,8 @@ mod tests {
             ("\"reflection\":1", "\"reflection\":2"),
             ("\"pack\":1", past_packs.as_str()),
             ("\"t3\":1", "\"t3\":2"),
+            // A path out of the folder, as a hostile entry would name it.
+            ("\"modules/", "\"modules/../../../../../../../../etc/"),
         ] {
             assert!(json.contains(held), "{held} in {json}");
             let damaged = json.replace(held, missing);

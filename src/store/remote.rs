@@ -61,6 +61,78 @@ pub struct RemoteConfig {
     /// How long each step of a request (connecting, sending, waiting for the answer, reading
     /// it) may take.
     pub timeout: Duration,
+    /// How long the build's requests may take together, whatever each answers: past it, the
+    /// build stops asking (a server that answers every request slowly, but within its timeout).
+    pub budget: Duration,
+    /// The `Authorization` header sent with every request, where the user's settings allow one
+    /// for this URL ([`credentials_for`]).
+    pub credentials: Option<Credentials>,
+}
+
+/// Who named a remote cache's URL: that decides whether credentials go with it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum UrlSource {
+    /// The user, on the command line (`--remote-cache`) or in the environment
+    /// (`KILN_REMOTE_CACHE`).
+    User,
+    /// The project's `kiln.toml`, which a pull request or a third-party shader pack can edit.
+    Project,
+}
+
+/// An `Authorization` header's value: never printed (its `Debug` hides it), never written.
+#[derive(Clone, PartialEq, Eq, Hash)]
+pub struct Credentials(String);
+
+impl std::fmt::Debug for Credentials {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Credentials(<hidden>)")
+    }
+}
+
+impl Credentials {
+    /// From `KILN_REMOTE_CACHE_TOKEN` (bearer) or `KILN_REMOTE_CACHE_USER` and
+    /// `KILN_REMOTE_CACHE_PASSWORD` (basic), when the environment has them.
+    pub fn from_env() -> Option<Credentials> {
+        let token = std::env::var("KILN_REMOTE_CACHE_TOKEN").ok().filter(|t| !t.is_empty());
+        let basic = std::env::var("KILN_REMOTE_CACHE_USER").ok().map(|user| {
+            let password = std::env::var("KILN_REMOTE_CACHE_PASSWORD").unwrap_or_default();
+            use base64::Engine as _;
+            format!(
+                "Basic {}",
+                base64::engine::general_purpose::STANDARD.encode(format!("{user}:{password}"))
+            )
+        });
+        token.map(|t| format!("Bearer {t}")).or(basic).map(Credentials)
+    }
+}
+
+/// Whether credentials may go to `url` (checked by [`check_url`]), named by `source`, when the
+/// environment pins `pinned` (`KILN_REMOTE_CACHE_HOST`: a host, or `host:port`): to a URL the user
+/// named, or to the pinned host, and only over HTTPS unless the host is this machine. `Err` says
+/// why not.
+pub fn credentials_for(url: &str, source: UrlSource, pinned: Option<&str>) -> Result<(), &'static str> {
+    let (https, authority) = match url.strip_prefix("https://") {
+        Some(rest) => (true, rest),
+        None => (false, url.strip_prefix("http://").unwrap_or(url)),
+    };
+    let authority = authority.split('/').next().unwrap_or_default().to_ascii_lowercase();
+    let host = match authority.strip_prefix('[') {
+        Some(v6) => v6.split(']').next().unwrap_or_default().to_string(),
+        None => authority.split(':').next().unwrap_or_default().to_string(),
+    };
+    let pinned = pinned.map(str::to_ascii_lowercase);
+    let named_by_user = source == UrlSource::User
+        || pinned.as_deref().is_some_and(|pin| pin == authority || pin == host || pin == format!("[{host}]"));
+    if !named_by_user {
+        return Err("its URL comes from `kiln.toml`, which anyone who edits the project can change");
+    }
+    let loopback = host == "localhost"
+        || host == "::1"
+        || host.split('.').next() == Some("127") && host.parse::<std::net::Ipv4Addr>().is_ok();
+    if !https && !loopback {
+        return Err("its URL is plain `http://` to another machine, where anyone on the way reads them");
+    }
+    Ok(())
 }
 
 /// Why a remote cache URL is refused.
@@ -79,14 +151,26 @@ pub fn check_url(url: &str) -> Result<String, String> {
     if url.chars().any(|c| c.is_whitespace() || c.is_control()) {
         return Err("it has blanks or control characters".into());
     }
+    // What follows `?` or `#` would be printed in warnings (tokens travel there) and would end
+    // up before every object's path.
+    if url.contains(['?', '#']) {
+        return Err("it has a query string or a fragment; give the server's prefix alone".into());
+    }
     Ok(url.trim_end_matches('/').to_string())
 }
 
 /// Requests that failed in a row before the breaker opens.
 const BREAKER: usize = 3;
 
-/// The largest object fetched (a module's every back end, with its reflection).
-const MAX_OBJECT: u64 = 256 << 20;
+/// The largest object fetched (a module's every back end, with its reflection): an answer is read
+/// into memory no further than this (or than a module entry's or layouts' own bound).
+const MAX_OBJECT: u64 = 64 << 20;
+
+/// The largest module entry (64 hexadecimal digits, with room for a line break).
+const MAX_ENTRY: u64 = 1 << 10;
+
+/// The largest entry of a pass's parsed resources.
+const MAX_LAYOUTS: u64 = 16 << 20;
 
 /// Uploads in flight at most, and the threads that make them: a build's workers hand what they
 /// compiled over and go on compiling (the queue's bound is its memory's).
@@ -116,8 +200,12 @@ enum Upload {
 struct Connection {
     config: RemoteConfig,
     agent: ureq::Agent,
-    authorization: Option<String>,
     failures_in_a_row: AtomicUsize,
+    /// Answers that failed verification, in all (a server that answers every path with a page
+    /// answers each request well).
+    unverified: AtomicUsize,
+    /// Nanoseconds the build's requests took, summed over threads (against the budget).
+    waited: AtomicU64,
     broken: AtomicBool,
     writes_refused: AtomicBool,
     /// The first problem of each kind, reported once after the build.
@@ -134,8 +222,7 @@ enum Answer {
 }
 
 impl RemoteCache {
-    /// The remote cache for one build; credentials from `KILN_REMOTE_CACHE_TOKEN` (bearer) or
-    /// `KILN_REMOTE_CACHE_USER` and `KILN_REMOTE_CACHE_PASSWORD` (basic).
+    /// The remote cache for one build, with the credentials its configuration allows.
     pub fn new(config: RemoteConfig) -> RemoteCache {
         RemoteCache { connection: Arc::new(Connection::new(config)), uploads: Mutex::new(None) }
     }
@@ -150,17 +237,21 @@ impl RemoteCache {
         if !connection.usable() {
             return None;
         }
-        let Answer::Found(entry) = connection.get(&entry_path("module", key)) else { return None };
-        let cas = std::str::from_utf8(&entry).ok()?.trim();
-        if !is_sha256(cas) {
+        let Answer::Found(entry) = connection.get(&entry_path("module", key), MAX_ENTRY) else { return None };
+        let cas = std::str::from_utf8(&entry).ok().map(str::trim).filter(|cas| is_sha256(cas));
+        let Some(cas) = cas else {
+            // Found, but not an entry (a server that answers every path with a page).
+            connection.unverified("an answer was not a cache entry");
             return None;
+        };
+        let Answer::Found(object) = connection.get(&format!("cas/{cas}"), MAX_OBJECT) else { return None };
+        // Damaged on the way or on the server, or another object: a miss, never used, and
+        // counted against the server.
+        let parsed = (sha256(&object) == cas).then(|| parse_object(&object, key, Some(compiler))).flatten();
+        if parsed.is_none() {
+            connection.unverified("an object failed verification");
         }
-        let Answer::Found(object) = connection.get(&format!("cas/{cas}")) else { return None };
-        // Damaged on the way or on the server, or another object: a miss, never used.
-        if sha256(&object) != cas {
-            return None;
-        }
-        parse_object(&object, key, Some(compiler))
+        parsed
     }
 
     /// Publishes a module this build compiled, in the background: its object, then the entry
@@ -186,10 +277,13 @@ impl RemoteCache {
             return BTreeMap::new();
         }
         let key = layouts_key(pass);
-        let Answer::Found(bytes) = self.connection.get(&entry_path("layouts", &key)) else {
+        let Answer::Found(bytes) = self.connection.get(&entry_path("layouts", &key), MAX_LAYOUTS) else {
             return BTreeMap::new();
         };
-        parse_layouts(&key, &bytes).unwrap_or_default()
+        parse_layouts(&key, &bytes).unwrap_or_else(|| {
+            self.connection.unverified("an entry failed verification");
+            BTreeMap::new()
+        })
     }
 
     /// Publishes a pass's parsed resources, joined with what the server has for the pass (two
@@ -267,22 +361,16 @@ impl Connection {
             .timeout_recv_response(limit)
             .timeout_recv_body(limit)
             .http_status_as_error(false)
+            // A redirect could lead the credentials to another host: none is followed.
+            .max_redirects(0)
             .max_idle_connections_per_host(64)
             .build();
-        let token = std::env::var("KILN_REMOTE_CACHE_TOKEN").ok().filter(|t| !t.is_empty());
-        let basic = std::env::var("KILN_REMOTE_CACHE_USER").ok().map(|user| {
-            let password = std::env::var("KILN_REMOTE_CACHE_PASSWORD").unwrap_or_default();
-            use base64::Engine as _;
-            format!(
-                "Basic {}",
-                base64::engine::general_purpose::STANDARD.encode(format!("{user}:{password}"))
-            )
-        });
         Connection {
             config,
             agent: ureq::Agent::new_with_config(agent_config),
-            authorization: token.map(|t| format!("Bearer {t}")).or(basic),
             failures_in_a_row: AtomicUsize::new(0),
+            unverified: AtomicUsize::new(0),
+            waited: AtomicU64::new(0),
             broken: AtomicBool::new(false),
             writes_refused: AtomicBool::new(false),
             problems: Mutex::new(Vec::new()),
@@ -315,17 +403,44 @@ impl Connection {
         }
     }
 
-    fn get(&self, path: &str) -> Answer {
+    /// Counts an answer that failed verification; the third opens the breaker.
+    fn unverified(&self, what: &str) {
+        if self.unverified.fetch_add(1, Ordering::Relaxed) + 1 >= BREAKER
+            && !self.broken.swap(true, Ordering::Relaxed)
+        {
+            self.problem(format!(
+                "{BREAKER} of its answers failed verification (last: {what}); this build stopped using it"
+            ));
+        }
+    }
+
+    /// Adds a request's time to the build's; past the budget, the build stops asking.
+    fn waited(&self, started: std::time::Instant) {
+        let took = u64::try_from(started.elapsed().as_nanos()).unwrap_or(u64::MAX);
+        let waited = self.waited.fetch_add(took, Ordering::Relaxed).saturating_add(took);
+        if waited > u64::try_from(self.config.budget.as_nanos()).unwrap_or(u64::MAX)
+            && !self.broken.swap(true, Ordering::Relaxed)
+        {
+            self.problem(format!(
+                "its answers took more than the build's budget of {:.0} s (KILN_REMOTE_CACHE_BUDGET); this build stopped using it",
+                self.config.budget.as_secs_f64()
+            ));
+        }
+    }
+
+    /// `path`'s object, read into memory no further than `limit` bytes.
+    fn get(&self, path: &str, limit: u64) -> Answer {
         let url = format!("{}/{path}", self.config.url);
         let mut request = self.agent.get(&url);
-        if let Some(authorization) = &self.authorization {
-            request = request.header("Authorization", authorization);
+        if let Some(credentials) = &self.config.credentials {
+            request = request.header("Authorization", &credentials.0);
         }
+        let started = std::time::Instant::now();
         let answer = match request.call() {
             Ok(mut response) => match response.status().as_u16() {
-                200 => match response.body_mut().with_config().limit(MAX_OBJECT).read_to_vec() {
+                200 => match read_at_most(&mut response, limit) {
                     Ok(bytes) => Answer::Found(bytes),
-                    Err(error) => Answer::Failed(reason(&error)),
+                    Err(why) => Answer::Failed(why),
                 },
                 404 => {
                     drain(&mut response);
@@ -333,11 +448,12 @@ impl Connection {
                 }
                 status => {
                     drain(&mut response);
-                    Answer::Failed(format!("HTTP {status} for a GET"))
+                    Answer::Failed(status_reason(status, "GET"))
                 }
             },
             Err(error) => Answer::Failed(reason(&error)),
         };
+        self.waited(started);
         match &answer {
             Answer::Found(bytes) => {
                 self.received.fetch_add(bytes.len() as u64, Ordering::Relaxed);
@@ -353,13 +469,15 @@ impl Connection {
     fn put(&self, path: &str, bytes: &[u8]) -> bool {
         let url = format!("{}/{path}", self.config.url);
         let mut request = self.agent.put(&url);
-        if let Some(authorization) = &self.authorization {
-            request = request.header("Authorization", authorization);
+        if let Some(credentials) = &self.config.credentials {
+            request = request.header("Authorization", &credentials.0);
         }
+        let started = std::time::Instant::now();
         let sent = request.send(bytes).map(|mut response| {
             drain(&mut response);
             response
         });
+        self.waited(started);
         match sent {
             Ok(response) if response.status().is_success() => {
                 self.sent.fetch_add(bytes.len() as u64, Ordering::Relaxed);
@@ -376,7 +494,7 @@ impl Connection {
                 false
             }
             Ok(response) => {
-                self.failed(format!("HTTP {} for a PUT", response.status().as_u16()));
+                self.failed(status_reason(response.status().as_u16(), "PUT"));
                 false
             }
             Err(error) => {
@@ -443,6 +561,31 @@ fn drain(response: &mut ureq::http::Response<ureq::Body>) {
     let _ = response.body_mut().with_config().limit(1 << 20).read_to_vec();
 }
 
+/// An answer's status that is neither a success nor a miss, in a few words.
+fn status_reason(status: u16, method: &str) -> String {
+    match status {
+        300..=399 => {
+            format!("it answered a {method} with a redirect (HTTP {status}), which kiln does not follow")
+        }
+        _ => format!("HTTP {status} for a {method}"),
+    }
+}
+
+/// An answer's body, refused past `limit` bytes without reading further: memory sized by what the
+/// server says its length is, and never past the limit whatever it says.
+fn read_at_most(response: &mut ureq::http::Response<ureq::Body>, limit: u64) -> Result<Vec<u8>, String> {
+    let too_large = || "an answer was too large".to_string();
+    let said = response.body().content_length();
+    if said.is_some_and(|length| length > limit) {
+        return Err(too_large());
+    }
+    let mut bytes = Vec::with_capacity(said.unwrap_or(0).min(limit) as usize);
+    let reader = response.body_mut().as_reader();
+    std::io::Read::read_to_end(&mut std::io::Read::take(reader, limit + 1), &mut bytes)
+        .map_err(|_| "an answer could not be read".to_string())?;
+    if bytes.len() as u64 > limit { Err(too_large()) } else { Ok(bytes) }
+}
+
 /// A failed request in a few words (no URL, no header: nothing secret).
 fn reason(error: &ureq::Error) -> String {
     match error {
@@ -458,6 +601,59 @@ fn reason(error: &ureq::Error) -> String {
             _ => "an I/O error".into(),
         },
         ureq::Error::BodyExceedsLimit(_) => "an answer was too large".into(),
+        ureq::Error::TooManyRedirects | ureq::Error::RedirectFailed => {
+            "it answered with a redirect, which kiln does not follow".into()
+        }
         _ => "a protocol error".into(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn credentials_go_only_to_a_url_the_user_named_and_never_in_the_clear_off_this_machine() {
+        use UrlSource::{Project, User};
+        let allowed = |url: &str, source, pinned: Option<&str>| credentials_for(url, source, pinned).is_ok();
+        // Named by the user: over HTTPS anywhere, over HTTP only to this machine.
+        assert!(allowed("https://cache.example.com/kiln", User, None));
+        for loopback in [
+            "http://127.0.0.1:9090/kiln",
+            "http://127.3.2.1/kiln",
+            "http://localhost:80",
+            "http://[::1]:8080/k",
+        ] {
+            assert!(allowed(loopback, User, None), "{loopback}");
+        }
+        for clear in
+            ["http://cache.example.com/kiln", "http://10.0.0.5:8080/kiln", "http://127.0.0.1.evil.com/k"]
+        {
+            assert!(!allowed(clear, User, None), "{clear}");
+        }
+        // Named by kiln.toml: none, unless the environment pins that host (and port, if given).
+        assert!(!allowed("https://cache.example.com/kiln", Project, None));
+        assert!(!allowed("http://127.0.0.1:9090/kiln", Project, None));
+        assert!(!allowed("https://cache.example.com/kiln", Project, Some("cache.example.org")));
+        assert!(!allowed("https://cache.example.com:8443/kiln", Project, Some("cache.example.com:443")));
+        assert!(allowed("https://cache.example.com/kiln", Project, Some("cache.example.com")));
+        assert!(allowed("https://Cache.Example.com:8443/kiln", Project, Some("cache.example.com:8443")));
+        // A pinned host over plain HTTP off this machine still gets none.
+        assert!(!allowed("http://cache.example.com/kiln", Project, Some("cache.example.com")));
+    }
+
+    #[test]
+    fn urls_whose_query_or_userinfo_would_be_printed_are_refused_without_echoing_them() {
+        for url in ["https://h/kiln?token=s3cret", "https://h/kiln#s3cret", "https://user:s3cret@h/kiln"] {
+            let why = check_url(url).expect_err(url);
+            assert!(!why.contains("s3cret"), "{why}");
+        }
+        assert_eq!(check_url("https://h/kiln/").as_deref(), Ok("https://h/kiln"));
+    }
+
+    #[test]
+    fn credentials_are_not_printed() {
+        let credentials = Credentials("Bearer s3cret".into());
+        assert!(!format!("{credentials:?}").contains("s3cret"));
     }
 }

@@ -364,7 +364,8 @@ fn the_packs_a_manifest_names_are_the_packs_on_disk_at_their_lengths() {
     let output = dir.path().join("output");
     let (result, diagnostics, _) = build_into("fixtures/project", &output, None);
     assert!(diagnostics.is_empty() && result.diagnostics.is_empty(), "{:?}", result.diagnostics);
-    let named = read_manifest(&output).packs();
+    let named: std::collections::BTreeMap<String, u64> =
+        read_manifest(&output).packs().into_iter().map(|(path, len)| (path.to_string(), len)).collect();
     let on_disk: std::collections::BTreeMap<String, u64> = std::fs::read_dir(output.join("modules"))
         .expect("the packs' folder")
         .flatten()

@@ -45,7 +45,7 @@ fn damaged_cache_entries_and_modules_are_rebuilt_never_used() {
     let output = dir.path().join("out");
     let first = build(&root().join("fixtures/project"), Some(&output));
     let manifest = verified_manifest(&output);
-    let files: Vec<String> = manifest.files().iter().map(|f| f.path.clone()).collect();
+    let files: Vec<String> = manifest.files().iter().map(|f| f.path.to_string()).collect();
     // Flip bytes in one module (same size), truncate another, and damage every pass index.
     let flipped = output.join(&files[0]);
     let mut bytes = std::fs::read(&flipped).expect("read");
@@ -206,8 +206,12 @@ fn the_run_time_refuses_a_module_whose_bytes_are_not_the_manifest_s() {
     let output = dir.path().join("out");
     assert!(build_killed_at(&project, &output, None));
     let library = kiln::runtime::Library::open(&output).expect("opens");
-    let file =
-        library.manifest().files().into_iter().find(|f| f.path.ends_with(".spv.pack")).expect("a module");
+    let file = library
+        .manifest()
+        .files()
+        .into_iter()
+        .find(|f| f.path.as_str().ends_with(".spv.pack"))
+        .expect("a module");
     drop(library);
     let path = output.join(&file.path);
     let mut bytes = std::fs::read(&path).expect("read");

@@ -11,6 +11,7 @@ mod build;
 mod cache;
 mod cli;
 mod compute;
+mod confinement;
 mod conformance;
 mod cpp;
 mod docs;

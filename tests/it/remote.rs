@@ -31,6 +31,15 @@ enum Behaviour {
     ReadOnly,
     /// Serves this many requests, then closes every connection and stops listening.
     DieAfter(usize),
+    /// Answers every request with a redirect to this port on the same machine.
+    Redirect(u16),
+    /// Answers every `GET` with 404 and takes every `PUT`, after this long (within the client's
+    /// timeout).
+    SlowMiss(Duration),
+    /// Answers every request with 200 and an HTML page (a captive portal, a misconfigured proxy).
+    Page,
+    /// Answers every request with 200 and bytes without end (no length; closed when it is done).
+    Endless,
 }
 
 #[derive(Default)]
@@ -125,6 +134,31 @@ fn serve(stream: TcpStream, state: &ServerState, behaviour: &Mutex<Behaviour>) {
         let (status, answer) = match behaviour {
             Behaviour::DieAfter(n) if served > n => {
                 state.dead.store(true, Ordering::SeqCst);
+                return;
+            }
+            Behaviour::Redirect(port) => {
+                let head = format!(
+                    "HTTP/1.1 302 Found\r\nLocation: http://127.0.0.1:{port}{path}\r\nContent-Length: 0\r\n\r\n"
+                );
+                if writer.write_all(head.as_bytes()).is_err() {
+                    return;
+                }
+                continue;
+            }
+            Behaviour::SlowMiss(delay) => {
+                std::thread::sleep(delay);
+                (if method == "PUT" { 201 } else { 404 }, Vec::new())
+            }
+            Behaviour::Page => (200, b"<html><body>Please sign in</body></html>".to_vec()),
+            Behaviour::Endless => {
+                let _ = writer.write_all(b"HTTP/1.1 200 OK\r\nConnection: close\r\n\r\n");
+                let chunk = vec![b'x'; 1 << 16];
+                // 1 GiB at most, until the client hangs up.
+                for _ in 0..(1 << 14) {
+                    if writer.write_all(&chunk).is_err() {
+                        break;
+                    }
+                }
                 return;
             }
             Behaviour::Status(status) => (status, Vec::new()),
@@ -448,4 +482,106 @@ fn machines_share_modules_through_nginx_with_webdav() {
     let third = succeeded(build(&c, &m.b.1.with_file_name("c-cache"), &url, &[]));
     assert_eq!(third.matches("warning[K0620]").count(), 1, "{third}");
     assert_eq!(shipped(&c), shipped(&m.a.0));
+}
+
+/// A copy of the example project whose `kiln.toml` names the remote cache `url`.
+fn project_naming(dir: &Path, url: &str) -> PathBuf {
+    let project = crate::support::example_project_copy(dir);
+    let config = project.join("kiln.toml");
+    let mut text = std::fs::read_to_string(&config).unwrap_or_default();
+    text.insert_str(0, &format!("remote_cache = \"{url}\"\n"));
+    std::fs::write(&config, text).expect("write");
+    project
+}
+
+/// `kiln build` of `project` with the environment `env` and no remote cache on the command line.
+fn build_named_by_project(project: &Path, env: &[(&str, &str)]) -> Output {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_kiln"));
+    command
+        .args(["build", "."])
+        .current_dir(project)
+        .env("NO_COLOR", "1")
+        .env_remove("KILN_REMOTE_CACHE")
+        .env_remove("KILN_REMOTE_CACHE_HOST")
+        .env_remove("KILN_REMOTE_CACHE_TOKEN")
+        .env_remove("KILN_REMOTE_CACHE_USER")
+        .env("KILN_REMOTE_CACHE_TIMEOUT", "0.5");
+    for (name, value) in env {
+        command.env(name, value);
+    }
+    command.output().expect("kiln runs")
+}
+
+/// The rendered diagnostic with `code` from a command's error output (up to its blank line).
+fn diagnostic_with(text: &str, code: &str) -> String {
+    let start = text.find(&format!("warning[{code}]")).unwrap_or_else(|| panic!("no {code} in {text}"));
+    let end = text[start..].find("\n\n").map_or(text.len(), |n| start + n + 1);
+    text[start..end].to_string()
+}
+
+#[test]
+fn a_url_from_kiln_toml_gets_no_credentials_unless_the_environment_pins_its_host() {
+    let secret = "s3cret-from-ci";
+    let server = TestServer::start(Behaviour::Serve);
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = project_naming(dir.path(), &server.url());
+    let text = succeeded(build_named_by_project(&project, &[("KILN_REMOTE_CACHE_TOKEN", secret)]));
+    let requests = server.state.requests.lock().expect("lock").clone();
+    assert!(!requests.is_empty(), "the cache is still used, without credentials");
+    assert!(requests.iter().all(|(.., auth)| auth.is_none()), "{requests:?}");
+    assert!(!text.contains(secret), "{text}");
+    let shown = diagnostic_with(&text, "K0621").replace(&server.port.to_string(), "PORT");
+    expect_file![root().join("tests/golden/remote/withheld.stderr")].assert_eq(&shown);
+    // Pinned by the environment, the same URL gets them.
+    server.state.requests.lock().expect("lock").clear();
+    std::fs::remove_dir_all(project.join("build")).ok();
+    let host = format!("127.0.0.1:{}", server.port);
+    let text = succeeded(build_named_by_project(
+        &project,
+        &[("KILN_REMOTE_CACHE_TOKEN", secret), ("KILN_REMOTE_CACHE_HOST", &host)],
+    ));
+    assert!(!text.contains("K0621"), "{text}");
+    let bearer = format!("Bearer {secret}");
+    let requests = server.state.requests.lock().expect("lock").clone();
+    assert!(!requests.is_empty() && requests.iter().all(|(.., a)| a.as_deref() == Some(bearer.as_str())));
+}
+
+#[test]
+fn a_redirect_is_never_followed_and_takes_the_credentials_nowhere() {
+    let elsewhere = TestServer::start(Behaviour::Serve);
+    let redirecting = TestServer::start(Behaviour::Redirect(elsewhere.port));
+    let m = machines();
+    let text = succeeded(build(&m.a.0, &m.a.1, &redirecting.url(), &[("KILN_REMOTE_CACHE_TOKEN", "s3cret")]));
+    assert_eq!(elsewhere.state.requests.lock().expect("lock").len(), 0, "a redirect was followed");
+    assert_eq!(text.matches("warning[K0620]").count(), 1, "{text}");
+    assert!(text.contains("redirect"), "{text}");
+}
+
+#[test]
+fn a_server_that_misses_slowly_pages_or_never_ends_costs_the_build_its_budget_at_most() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let clean = clean_build(dir.path());
+    let slow = TestServer::start(Behaviour::SlowMiss(Duration::from_millis(400)));
+    let page = TestServer::start(Behaviour::Page);
+    let endless = TestServer::start(Behaviour::Endless);
+    for (name, server, expected) in [
+        ("slow", &slow, "budget"),
+        ("page", &page, "failed verification"),
+        ("endless", &endless, "too large"),
+    ] {
+        let (output, cache) =
+            (dir.path().join(format!("{name}-out")), dir.path().join(format!("{name}-cache")));
+        let started = Instant::now();
+        // Each request within its 5 s; together within 2 s of the build's time.
+        let env = [("KILN_REMOTE_CACHE_TIMEOUT", "5"), ("KILN_REMOTE_CACHE_BUDGET", "2")];
+        let text = succeeded(build(&output, &cache, &server.url(), &env));
+        assert!(started.elapsed() < Duration::from_secs(30), "{name}: {:?}", started.elapsed());
+        assert_eq!(text.matches("warning[K0620]").count(), 1, "{name}: one warning\n{text}");
+        assert!(text.contains(expected), "{name}: {text}");
+        assert_eq!(shipped(&output), clean, "{name}: what a build without caches ships");
+        // Asked no more once the budget is spent or three answers failed (what was in flight on
+        // the build's threads and the upload threads aside).
+        let asked = server.state.requests.lock().expect("lock").len();
+        assert!(asked <= 5 + 3 + 16, "{name}: {asked} requests");
+    }
 }

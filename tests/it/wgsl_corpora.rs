@@ -335,7 +335,7 @@ fn judge(corpus: &Corpus, spirv_tools: bool) -> Report {
                 for (i, stage) in part.iter().enumerate() {
                     let entry = format!(
                         "{} `{}`",
-                        stage.files().next().map_or_else(|| "?".to_string(), |f| f.path),
+                        stage.files().next().map_or_else(|| "?".to_string(), |f| f.path.to_string()),
                         stage.interface.entry_point
                     );
                     if let Some(file) = stage.wgsl() {

@@ -1,0 +1,163 @@
+//! Records kiln wrote earlier, as an adversary rewrites them: a manifest, a no-op record and a
+//! shard record whose paths lead out of their folder, re-sealed (a seal needs no secret), and
+//! packs replaced by links and devices. Nothing outside the folder is read, embedded or written.
+
+use crate::support::{build_clean as build, kiln, root};
+use kiln::store::{hash, seal, unsealed};
+use std::path::{Path, PathBuf};
+
+/// A path out of any folder, to a file every Linux machine has.
+const OUTSIDE: &str = "../../../../../../../../../../../../etc/hostname";
+
+/// Rewrites the sealed JSON file at `path` (sealed under `key`) through `edit`, and seals it again.
+fn reseal(path: &Path, key: &str, edit: impl FnOnce(&mut serde_json::Value)) {
+    let bytes = std::fs::read(path).expect("a sealed record");
+    let mut value: serde_json::Value =
+        serde_json::from_slice(unsealed(key, &bytes).expect("sealed as kiln seals")).expect("JSON");
+    edit(&mut value);
+    let json = serde_json::to_vec(&value).expect("JSON");
+    let mut sealed = seal(key, &json).into_bytes();
+    sealed.push(b'\n');
+    sealed.extend(json);
+    std::fs::write(path, sealed).expect("write");
+}
+
+/// An output folder of the example project whose manifest names `OUTSIDE` for its first pack,
+/// with its no-op record re-sealed to vouch for that manifest, as an attacker would ship it.
+fn hostile_output(dir: &Path) -> PathBuf {
+    let output = dir.join("prebuilt");
+    build(&root().join("fixtures/project"), Some(&output));
+    let manifest_path = output.join("manifest.json");
+    let text = std::fs::read_to_string(&manifest_path).expect("manifest");
+    let first: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    let pack = first["shaders"][0]["passes"][0]["packs"][0].as_str().expect("a pack").to_string();
+    let text = text.replace(&pack, OUTSIDE);
+    std::fs::write(&manifest_path, &text).expect("write");
+    reseal(&output.join(".cache/build/inputs.json"), ".cache/build/inputs.json", |record| {
+        for file in record["files"].as_array_mut().expect("files") {
+            if file["path"] == "manifest.json" {
+                file["len"] = text.len().into();
+                file["hash"] = hash(text.as_bytes()).into();
+            }
+            if file["path"] == pack.as_str() {
+                file["path"] = OUTSIDE.into();
+            }
+        }
+    });
+    output
+}
+
+#[test]
+fn a_manifest_naming_a_file_outside_its_folder_is_never_read_nor_embedded() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = hostile_output(dir.path());
+    // The run time refuses the folder as damaged, naming the path it will not follow.
+    let refused = kiln::runtime::Library::open(&output).expect_err("a manifest naming a path outside");
+    assert!(refused.to_string().contains("is not a pack's path"), "{refused}");
+    // A build script starting from it distrusts the record, builds, and embeds only its packs.
+    let out_dir = dir.path().join("out_dir");
+    let built = kiln::Build::new(root().join("fixtures/project"))
+        .prebuilt(&output)
+        .out_dir(&out_dir)
+        .execute()
+        .expect("builds");
+    let rebuilt = std::fs::read_to_string(out_dir.join("kiln/manifest.json")).expect("manifest");
+    assert!(!rebuilt.contains(OUTSIDE), "the re-sealed record was trusted as a no-op");
+    let module = std::fs::read_to_string(out_dir.join("kiln_shaders.rs")).expect("the generated module");
+    assert!(!module.contains("etc/hostname"), "a path out of the folder was embedded");
+    let included: Vec<&str> =
+        module.split("include_").skip(1).map(|rest| rest.split(')').next().unwrap_or("")).collect();
+    assert!(!included.is_empty());
+    for path in included {
+        assert!(!path.contains(".."), "a path out of the folder was embedded: {path}");
+    }
+    kiln::runtime::Library::open(out_dir.join("kiln")).expect("the folder the build script made opens");
+    // And `kiln build` into the hostile folder itself rebuilds it rather than taking it as a no-op.
+    build(&root().join("fixtures/project"), Some(&output));
+    assert!(!std::fs::read_to_string(output.join("manifest.json")).expect("manifest").contains(OUTSIDE));
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_pack_replaced_by_a_link_or_a_device_is_not_read() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = dir.path().join("out");
+    let project = root().join("fixtures/project");
+    build(&project, Some(&output));
+    let manifest = kiln::manifest::Manifest::read(&output).expect("manifest");
+    let (pack, _) = manifest.packs().into_iter().next().expect("a pack");
+    let pack = output.join(&pack);
+    for target in ["/dev/zero", "/etc/hostname"] {
+        std::fs::remove_file(&pack).expect("remove");
+        std::os::unix::fs::symlink(target, &pack).expect("link");
+        // `/dev/zero` read whole would never end; a link is refused before anything is read.
+        let refused = kiln::runtime::Library::open(&output).expect_err("a pack that is a link");
+        assert!(refused.to_string().contains("not a regular file"), "{refused}");
+        // The next build does not take the folder as unchanged: the link is replaced by the pack.
+        build(&project, Some(&output));
+        assert!(std::fs::symlink_metadata(&pack).expect("the pack").is_file(), "{target}: the link was kept");
+        kiln::runtime::Library::open_verified(&output).expect("the rebuilt folder opens");
+    }
+}
+
+/// Builds the example project as one shard into `shard`.
+fn one_shard(shard: &Path) {
+    let run = kiln(&[
+        "build",
+        root().join("fixtures/project").to_str().expect("utf-8"),
+        "--output",
+        shard.to_str().expect("utf-8"),
+        "--shard",
+        "1/1",
+    ]);
+    assert_eq!(run.status.code(), Some(0), "{}", String::from_utf8_lossy(&run.stderr));
+}
+
+#[test]
+fn a_shard_record_naming_paths_outside_its_folder_writes_nothing_outside() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (shards, merges) = (dir.path().join("shards"), dir.path().join("merges"));
+    let shard = shards.join("s1");
+    one_shard(&shard);
+    // What the paths below reach from the shard's copy: a pack's bytes (so the record's hashes
+    // and offsets still hold) and a pass's cache entry, beside the shards.
+    let record = std::fs::read(shard.join("shard.json")).expect("the record");
+    let record: serde_json::Value =
+        serde_json::from_slice(unsealed("shard.json", &record).expect("sealed")).expect("JSON");
+    let part: serde_json::Value =
+        serde_json::from_str(&record["passes"][0]["manifest"].to_string()).expect("a part");
+    let pack = part["packs"][0].as_str().expect("a pack");
+    std::fs::copy(shard.join(pack), shards.join("payload.pack")).expect("copy");
+    std::fs::write(shards.join("escaped.json"), b"{}").expect("write");
+    let hostile: [(&str, fn(&mut serde_json::Value)); 2] = [
+        ("pack", |record| {
+            let pass = &mut record["passes"][0];
+            let mut part: serde_json::Value =
+                serde_json::from_str(&pass["manifest"].to_string()).expect("a part");
+            part["packs"][0] = "../payload.pack".into();
+            pass["manifest"] = part;
+        }),
+        ("key", |record| record["passes"][0]["key"] = "../../../escaped".into()),
+    ];
+    for (what, edit) in hostile {
+        let copy = shards.join(format!("copy-{what}"));
+        for (path, bytes) in crate::support::tree(&shard) {
+            let to = copy.join(&path);
+            std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
+            std::fs::write(to, bytes).expect("write");
+        }
+        reseal(&copy.join("shard.json"), "shard.json", edit);
+        let merged = merges.join(format!("merged-{what}"));
+        let run = kiln(&["merge", merged.to_str().expect("utf-8"), copy.to_str().expect("utf-8")]);
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        assert_ne!(run.status.code(), Some(0), "{what}: a hostile shard merged: {stderr}");
+        assert!(stderr.contains("damaged") || stderr.contains("is not a"), "{what}: {stderr}");
+        // Nothing appeared beside the merged folders.
+        let beside: Vec<String> = (std::fs::read_dir(&merges).into_iter().flatten().flatten())
+            .map(|e| e.file_name().to_string_lossy().into_owned())
+            .filter(|name| !name.starts_with("merged-"))
+            .collect();
+        assert!(beside.is_empty(), "{what}: written outside the output folder: {beside:?}");
+        assert!(!merged.join("manifest.json").exists(), "{what}: a manifest was written");
+    }
+}
