@@ -494,6 +494,30 @@ pub fn relative_to(path: &Path, root: &Path) -> String {
     if parts.is_empty() { ".".to_string() } else { parts.join("/") }
 }
 
+/// Whether links that lead out of a project are followed (`KILN_FOLLOW_LINKS=1`), decided once
+/// when a project is opened. Refused by default: a link in a cloned project or a shader pack
+/// could name any file the user can read (`~/.ssh/id_rsa`), and its lines would reach
+/// diagnostics and logs. A sandbox that stages every input as a link (Bazel's) sets it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum LinksOut {
+    /// A link whose target is outside the project is not followed (the walk skips it; an
+    /// include through it is K0304).
+    #[default]
+    Refused,
+    /// Such links are the project's own files.
+    Followed,
+}
+
+impl LinksOut {
+    /// The environment's decision: `KILN_FOLLOW_LINKS=1` follows them.
+    pub fn from_env() -> LinksOut {
+        match std::env::var_os("KILN_FOLLOW_LINKS") {
+            Some(value) if value == "1" => LinksOut::Followed,
+            _ => LinksOut::Refused,
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

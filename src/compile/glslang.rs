@@ -25,26 +25,35 @@ const READ_LIMIT: Duration = Duration::from_secs(20);
 /// `kiln check` runs one per worker thread.
 const MEMORY_LIMIT: u64 = 2 << 30;
 
-#[cfg(unix)]
-fn limit_memory(command: &mut Command) {
+/// Bounds what a glslang child may take ([`MEMORY_LIMIT`]) and, on Linux, ends it with kiln: a
+/// kiln killed while glslang reads (a CI job cancelled, an editor closed) leaves no child behind
+/// holding gigabytes.
+#[cfg(target_os = "linux")]
+fn confine_child(command: &mut Command) {
     use std::os::unix::process::CommandExt;
-    // SAFETY: between fork and exec the closure only calls `setrlimit`, which is async-signal-safe
-    // and allocates nothing.
+    let parent = std::process::id();
+    // SAFETY: between fork and exec the closure only calls `setrlimit`, `prctl` and `getppid`,
+    // which are async-signal-safe and allocate nothing.
     unsafe {
-        command.pre_exec(|| {
+        command.pre_exec(move || {
             let limit = libc::rlimit {
                 rlim_cur: MEMORY_LIMIT as libc::rlim_t,
                 rlim_max: MEMORY_LIMIT as libc::rlim_t,
             };
             // A limit that cannot be set leaves glslang to the time limit alone.
             let _ = libc::setrlimit(libc::RLIMIT_AS, &limit);
+            // Killed when the thread that started it ends: kiln's worker threads live as long as
+            // the command. A kiln that died before this line is seen by its parent's change.
+            if libc::prctl(libc::PR_SET_PDEATHSIG, libc::SIGKILL) != 0 || libc::getppid() as u32 != parent {
+                return Err(std::io::Error::other("kiln ended before glslang started"));
+            }
             Ok(())
         });
     }
 }
 
-#[cfg(not(unix))]
-fn limit_memory(_: &mut Command) {}
+#[cfg(not(target_os = "linux"))]
+fn confine_child(_: &mut Command) {}
 
 /// What glslang made of a module.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -97,7 +106,7 @@ impl Glslang {
             // glslang reads HLSL only on its way to SPIR-V, which is thrown away.
             command.args(["-D", "-V", "-e", entry, "-o", "/dev/null"]);
         }
-        limit_memory(&mut command);
+        confine_child(&mut command);
         let mut child =
             match command.stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn() {
                 Ok(child) => child,

@@ -6,7 +6,7 @@ use super::error::PreprocessError;
 use super::pass::DynamicKeyword;
 use super::scan::{self, Item, Target, Unit};
 use crate::diagnostics::Diagnostic;
-use crate::source::{FileId, SourceStore, Span, normalize_lexically};
+use crate::source::{FileId, LinksOut, SourceStore, Span, normalize_lexically};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
@@ -19,13 +19,15 @@ pub struct IncludeConfig {
     pub include_paths: Vec<PathBuf>,
     /// The bundled library, searched last: `(name, text)` pairs such as `("BRDF.wgsl", ...)`.
     pub library: Vec<(String, String)>,
+    /// Whether a link under a root to a file elsewhere is the project's file.
+    pub links_out: LinksOut,
 }
 
 impl IncludeConfig {
     /// Includes may resolve under `roots`; the library is the one built into kiln.
     pub fn new(roots: Vec<PathBuf>) -> IncludeConfig {
         let library = crate::shaderlib::FILES.iter().map(|(n, t)| (n.to_string(), t.to_string())).collect();
-        IncludeConfig { roots, include_paths: Vec::new(), library }
+        IncludeConfig { roots, include_paths: Vec::new(), library, links_out: LinksOut::Refused }
     }
 }
 
@@ -47,8 +49,8 @@ enum Place {
 pub struct Includes {
     config: IncludeConfig,
     /// Roots and include paths, canonicalised once, and as written (made absolute): a file is
-    /// inside when its path is under one as written (a sandbox's link to a file elsewhere is the
-    /// project's file) or its target is under one canonicalised.
+    /// inside when its target is under one canonicalised, or (links out followed: a sandbox's
+    /// link to a file elsewhere is the project's file) its path is under one as written.
     allowed: Vec<PathBuf>,
     pub(crate) units: Vec<Unit>,
     places: Vec<Place>,
@@ -249,8 +251,15 @@ impl Includes {
             Place::Nowhere => {}
         }
         folders.extend(self.config.include_paths.iter().cloned());
+        // A path that leads out of the project is not looked at: whether a file is there must not
+        // change what kiln says (K0304 either way, never K0301 for one that is absent).
+        let mut outside = None;
         for folder in folders.iter() {
             let candidate = normalize_lexically(&folder.join(name));
+            if !self.written_inside(&candidate) {
+                outside.get_or_insert(candidate);
+                continue;
+            }
             let looked_up = self.looked_up.entry(candidate.clone());
             if let Some(canonical) = looked_up.or_insert_with(|| store.canonical_file(&candidate)).clone() {
                 return self.disk_unit(store, candidate, canonical, name, span, diagnostics);
@@ -260,6 +269,14 @@ impl Includes {
         }
         if let Some(target) = self.library_unit(store, name, diagnostics) {
             return target;
+        }
+        if let Some(path) = outside {
+            let resolved = path.to_string_lossy().replace('\\', "/");
+            return Target::Failed(PreprocessError::IncludeOutsideRoots {
+                span,
+                name: name.to_string(),
+                resolved,
+            });
         }
         searched.push("the bundled shader library".into());
         let suggestion = self.closest_include(name, &folders);
@@ -297,10 +314,14 @@ impl Includes {
 
     /// Whether the file at `path` (`canonical` once links are followed) is inside the project.
     fn inside(&self, path: &Path, canonical: &Path) -> bool {
+        self.allowed.iter().any(|root| canonical.starts_with(root))
+            || self.config.links_out == LinksOut::Followed && self.written_inside(path)
+    }
+
+    /// Whether `path`, as written (made absolute, `..` taken lexically), is under a root.
+    fn written_inside(&self, path: &Path) -> bool {
         let written = std::path::absolute(path).map(|p| normalize_lexically(&p));
-        self.allowed
-            .iter()
-            .any(|root| canonical.starts_with(root) || written.as_ref().is_ok_and(|w| w.starts_with(root)))
+        written.is_ok_and(|written| self.allowed.iter().any(|root| written.starts_with(root)))
     }
 
     fn disk_unit(

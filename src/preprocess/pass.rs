@@ -172,3 +172,28 @@ pub fn ubershader_macros(pragmas: &ProgramPragmas, stage: Stage) -> Option<Keywo
     });
     Some(KeywordMacros { defines: defines.collect(), ubershader: Some(pragma) })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_identifier_kiln_writes_into_a_text_is_a_name_no_keyword_may_take() {
+        // The declaration and a macro's value, as the ubershader's text holds them.
+        let macro_value = "((kiln_keywords.bits.x & 0x1u) != 0u) ((kiln_keywords.bits.y & 0x1u) != 0u)";
+        let words = |text: &str| -> Vec<String> {
+            text.split(|c: char| !c.is_ascii_alphanumeric() && c != '_')
+                .filter(|w| w.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_'))
+                .map(str::to_string)
+                .collect()
+        };
+        let wgsl = ["struct", "var", "immediate", "vec2", "u32"];
+        for word in words(UBERSHADER_DATA).into_iter().chain(words(macro_value)) {
+            let written_by_kiln = !wgsl.contains(&word.as_str());
+            assert!(
+                !written_by_kiln || crate::shaderlab::reserved::KILN_IDENTIFIERS.contains(&word.as_str()),
+                "`{word}` is written by kiln and may be a keyword's name"
+            );
+        }
+    }
+}

@@ -203,7 +203,7 @@ fn load_given(
     let (workspace, mut diagnostics) = open_workspace(store, paths)?;
     // Not after a broken kiln.toml: its error says why nothing was found.
     if workspace.shaders.is_empty() && !diagnostics::has_errors(&diagnostics) {
-        diagnostics.push(no_shaders(paths, mode.write));
+        diagnostics.push(no_shaders(paths, mode.write, workspace.links_refused));
     }
     let includes = Includes::new(workspace.include.clone().unwrap_or_else(|| include_config(paths)));
     let (shaders, found) = load_files(store, &workspace.shaders);
@@ -323,7 +323,7 @@ fn remote_cache(
 
 /// A project without shaders: a warning for a build, an error for a check, so that CI pointed at
 /// the wrong folder fails.
-fn no_shaders(paths: &[PathBuf], build: bool) -> Diagnostic {
+fn no_shaders(paths: &[PathBuf], build: bool, links_refused: usize) -> Diagnostic {
     let shown: Vec<String> = paths.iter().map(|p| format!("`{}`", p.display())).collect();
     let message = format!("no shaders in {}", shown.join(", "));
     // An empty folder is a project not started; one that holds files but no shader kiln could
@@ -334,6 +334,12 @@ fn no_shaders(paths: &[PathBuf], build: bool) -> Diagnostic {
         Diagnostic::warning("K0009", message)
     } else {
         Diagnostic::error("K0009", message).note("the folder holds files, none of them a shader kiln finds")
+    };
+    let diagnostic = match links_refused {
+        0 => diagnostic,
+        n => diagnostic.note(format!(
+            "{n} links lead out of the project and were not followed; a sandbox that stages its inputs as links (Bazel's) sets `KILN_FOLLOW_LINKS=1` to follow them"
+        )),
     };
     diagnostic.help(
         "give the project folder (kiln looks for `.shader` files in it, or in the folders its kiln.toml's \

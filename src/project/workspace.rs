@@ -6,7 +6,7 @@ use crate::catalog::CatalogInput;
 use crate::config::ProjectConfig;
 use crate::diagnostics::Diagnostic;
 use crate::preprocess::IncludeConfig;
-use crate::source::{FileId, LoadError, SourceStore, Span, Spanned};
+use crate::source::{FileId, LinksOut, LoadError, SourceStore, Span, Spanned};
 use std::path::{Path, PathBuf};
 
 /// The project a command without a path works on, as cargo finds its package: the nearest folder
@@ -59,6 +59,9 @@ pub struct Workspace {
     pub groups: crate::compile::bind::GroupNames,
     /// The same names, where `kiln.toml` writes them.
     pub group_names: Vec<Spanned<String>>,
+    /// Links out of the project the walk did not follow ([`LinksOut`]), for a project that seems
+    /// to hold no shader.
+    pub links_refused: usize,
 }
 
 impl Workspace {
@@ -187,6 +190,7 @@ pub fn open_workspace(
     let mut workspace = Workspace::default();
     let mut diagnostics = Vec::new();
     let mut roots = Vec::new();
+    let links_out = LinksOut::from_env();
     let mut include_paths = Vec::new();
     // How many files and folders the shaders and the materials were gathered from.
     let (mut shader_sources, mut material_sources) = (0, 0);
@@ -265,8 +269,13 @@ pub fn open_workspace(
         };
         let (shader_folders, material_folders) = (under(&config.shaders), under(&config.materials));
         let (include_folders, variant_logs) = (under(&config.include_paths), under(&config.variant_logs));
-        workspace.shaders.extend(find_files(&shader_folders, &SHADER_EXTENSIONS)?);
-        workspace.materials.extend(find_files(&material_folders, &["mat"])?);
+        for (found, files) in [
+            (find_files(&shader_folders, &SHADER_EXTENSIONS, links_out)?, &mut workspace.shaders),
+            (find_files(&material_folders, &["mat"], links_out)?, &mut workspace.materials),
+        ] {
+            files.extend(found.files);
+            workspace.links_refused += found.links_refused;
+        }
         for folder in shader_folders.iter().chain(&material_folders).chain(&include_folders) {
             store.record_searched(folder.clone());
         }
@@ -287,7 +296,8 @@ pub fn open_workspace(
         roots.push(path.clone());
     }
     // A shader under two roots (`.` and `shaders`) is still one shader. One root cannot list a
-    // file twice (links are not followed), which spares a large project a canonical path per file.
+    // file twice (`find_files` names each once), which spares a large project a canonical path
+    // per file.
     for (files, sources) in
         [(&mut workspace.shaders, shader_sources), (&mut workspace.materials, material_sources)]
     {
@@ -309,6 +319,7 @@ pub fn open_workspace(
     }
     let mut include = include_config(&roots);
     include.include_paths = include_paths;
+    include.links_out = links_out;
     workspace.include = Some(include);
     Ok((workspace, diagnostics))
 }
@@ -337,9 +348,13 @@ pub const SHADER_EXTENSIONS: [&str; 2] = ["shader", crate::shaderlab::compute::E
 /// in name order; a file named directly is taken whatever its extension, and symbolic links are
 /// not followed. A folder that does not exist contributes nothing (a project without materials
 /// is fine).
-pub fn find_files(paths: &[PathBuf], extensions: &[&str]) -> Result<Vec<PathBuf>, ProjectError> {
+pub fn find_files(
+    paths: &[PathBuf],
+    extensions: &[&str],
+    links_out: LinksOut,
+) -> Result<Found, ProjectError> {
     let mut files = Vec::new();
-    let mut linked = LinkedFolders::default();
+    let mut linked = LinkedFolders { links_out, ..LinkedFolders::default() };
     for path in paths.iter().filter(|p| p.exists()) {
         if path.is_file() {
             files.push(path.clone());
@@ -353,7 +368,16 @@ pub fn find_files(paths: &[PathBuf], extensions: &[&str]) -> Result<Vec<PathBuf>
         let mut seen = std::collections::HashSet::new();
         files.retain(|file| seen.insert(std::fs::canonicalize(file).unwrap_or_else(|_| file.clone())));
     }
-    Ok(files)
+    Ok(Found { files, links_refused: linked.refused })
+}
+
+/// What a walk found: the files, and how many links out of the project it did not follow.
+#[derive(Debug, Default)]
+pub struct Found {
+    /// The files, folder by folder in name order.
+    pub files: Vec<PathBuf>,
+    /// Links whose target is outside the folders walked, not followed ([`LinksOut::Refused`]).
+    pub links_refused: usize,
 }
 
 /// The folders a walk searches and those it entered through links, by canonical path: a link to
@@ -361,6 +385,8 @@ pub fn find_files(paths: &[PathBuf], extensions: &[&str]) -> Result<Vec<PathBuf>
 /// elsewhere is walked once however many links lead to it.
 #[derive(Default)]
 struct LinkedFolders {
+    links_out: LinksOut,
+    refused: usize,
     roots: Vec<PathBuf>,
     visited: std::collections::HashSet<PathBuf>,
     /// Whether any link was followed (only then may a file be found twice).
@@ -368,8 +394,9 @@ struct LinkedFolders {
 }
 
 /// The files with one of `extensions` in `folder` and its subfolders, each folder's entries by
-/// name. Links are followed, to files and (once each) to folders: a sandbox such as Bazel's
-/// stages every input as a link. By hand rather than with walkdir: every build, shard and merge
+/// name. Links inside the folders walked are found under their targets' names; links out of
+/// them are followed where `linked.links_out` says so, to files and (once each) to folders: a
+/// sandbox such as Bazel's stages every input as a link. By hand rather than with walkdir: every build, shard and merge
 /// walks the material folders, and at 50,000 materials walkdir's path per entry took twice as long.
 fn find_under(
     folder: &Path,
@@ -391,6 +418,10 @@ fn find_under(
             let Ok(canonical) = std::fs::canonicalize(folder.join(&name)) else { continue };
             let Ok(target) = std::fs::metadata(&canonical) else { continue };
             if linked.roots.iter().any(|root| canonical.starts_with(root)) {
+                continue;
+            }
+            if linked.links_out == LinksOut::Refused {
+                linked.refused += 1;
                 continue;
             }
             kind = target.file_type();
@@ -491,21 +522,31 @@ mod tests {
             symlink(root, root.join("sub/z/up")).expect("link");
             symlink(root.join("nothing.shader"), root.join("dangling.shader")).expect("link");
         }
-        let found = find_files(&[root.to_path_buf()], &SHADER_EXTENSIONS).expect("walk");
-        let names: Vec<String> = found.iter().map(|p| crate::source::relative_to(p, root)).collect();
+        let names = |links_out| {
+            let found = find_files(&[root.to_path_buf()], &SHADER_EXTENSIONS, links_out).expect("walk");
+            let names: Vec<String> =
+                found.files.iter().map(|p| crate::source::relative_to(p, root)).collect();
+            (names, found.links_refused)
+        };
         // Entries by their names' bytes: `sub` before `sub.shader`, a folder's files where it sorts.
         #[cfg(unix)]
-        assert_eq!(
-            names,
-            [
+        {
+            let followed = [
                 "a.SHADER",
                 "b.shader",
                 "l.shader",
                 "m/deep.shader",
                 "sub/b.shader",
                 "sub/z/c.shader",
-                "sub.shader"
-            ]
-        );
+                "sub.shader",
+            ];
+            assert_eq!(names(LinksOut::Followed), (followed.map(String::from).to_vec(), 0));
+            let refused = ["a.SHADER", "b.shader", "sub/b.shader", "sub/z/c.shader", "sub.shader"];
+            assert_eq!(
+                names(LinksOut::Refused),
+                (refused.map(String::from).to_vec(), 2),
+                "links out skipped, counted"
+            );
+        }
     }
 }

@@ -7,6 +7,7 @@ pub mod compute;
 pub(crate) mod error;
 mod parse;
 pub mod pragma;
+pub mod reserved;
 mod scan;
 
 pub use error::ShaderLabError;

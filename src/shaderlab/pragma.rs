@@ -222,6 +222,7 @@ pub enum PragmaError {
     MissingArgument { span: Span, pragma: String, expected: &'static str },
     EmptyKeywordSet { span: Span, pragma: String },
     InvalidKeyword { span: Span, found: String },
+    ReservedKeyword { span: Span, found: String, why: &'static str },
     DuplicateKeyword { span: Span, first: Span, keyword: String },
     KeywordInTwoSets { span: Span, first: Span, keyword: String },
     DynamicAndVariantKeyword { span: Span, first: Span, keyword: String, kinds: [&'static str; 2] },
@@ -254,6 +255,12 @@ impl From<PragmaError> for Diagnostic {
                 Diagnostic::error("K0204", format!("`{found}` is not a valid keyword name"))
                     .at(span, "invalid keyword")
                     .help("keywords are made of letters, digits and `_`, and do not start with a digit")
+            }
+            ReservedKeyword { span, found, why } => {
+                Diagnostic::error("K0204", format!("`{found}` cannot be a keyword's name: {why}"))
+                    .at(span, "reserved name")
+                    .note(format!("a keyword is a macro of its pass's text, so every `{found}` there would be replaced"))
+                    .help("keywords are usually written in capitals with a leading `_`: `_MY_KEYWORD`")
             }
             DuplicateKeyword { span, first, keyword } => {
                 Diagnostic::warning("K0205", format!("`{keyword}` appears twice in one keyword set"))
@@ -643,6 +650,10 @@ fn keyword_set(
     for arg in &line.args {
         if !is_keyword_name(&arg.value) {
             errors.push(PragmaError::InvalidKeyword { span: arg.span, found: arg.value.clone() });
+            continue;
+        }
+        if let Some(why) = super::reserved::reserved(&arg.value) {
+            errors.push(PragmaError::ReservedKeyword { span: arg.span, found: arg.value.clone(), why });
             continue;
         }
         let keyword = (!is_none_name(&arg.value)).then(|| arg.value.clone());

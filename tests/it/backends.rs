@@ -175,3 +175,61 @@ fn glslang_refusing_what_naga_wrote_is_a_diagnostic_at_the_entry_point() {
         shown.lines().filter(|l| !l.starts_with("checked ")).map(|l| format!("{l}\n")).collect();
     expect_file![root().join("tests/golden/backends/glslang.stderr")].assert_eq(&shown);
 }
+
+/// Whether process `pid` is gone (or a zombie nobody has reaped yet: it runs no more).
+#[cfg(target_os = "linux")]
+fn ended(pid: &str) -> bool {
+    std::fs::read_to_string(format!("/proc/{pid}/stat"))
+        .map_or(true, |stat| stat.rsplit(')').next().is_some_and(|rest| rest.trim_start().starts_with('Z')))
+}
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_glslang_child_ends_with_a_killed_kiln() {
+    // A stand-in for glslangValidator that says its process id and then takes its time.
+    let dir = tempfile::tempdir().expect("temp dir");
+    let bin = dir.path().join("bin");
+    std::fs::create_dir_all(&bin).expect("mkdir");
+    let pids = dir.path().join("pids");
+    let script = format!(
+        "#!/bin/sh\nif [ \"$1\" = --version ]; then echo 'Glslang Version: stand-in {}'; exit 0; fi\necho $$ >> '{}'\nexec sleep 120\n",
+        dir.path().display(),
+        pids.display()
+    );
+    std::fs::write(bin.join("glslangValidator"), script).expect("write");
+    let mut permissions = std::fs::metadata(bin.join("glslangValidator")).expect("meta").permissions();
+    std::os::unix::fs::PermissionsExt::set_mode(&mut permissions, 0o755);
+    std::fs::set_permissions(bin.join("glslangValidator"), permissions).expect("chmod");
+    let path = format!("{}:{}", bin.display(), std::env::var("PATH").unwrap_or_default());
+    let mut kiln = Command::new(env!("CARGO_BIN_EXE_kiln"))
+        .args(["check", "fixtures/project", "--backends", "glsl", "--cache-dir"])
+        .arg(dir.path().join("cache"))
+        .current_dir(root())
+        .env("PATH", path)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("kiln runs");
+    let started = std::time::Instant::now();
+    let first = loop {
+        let said = std::fs::read_to_string(&pids).unwrap_or_default();
+        if let Some(pid) = said.lines().next() {
+            break pid.to_string();
+        }
+        assert!(started.elapsed() < std::time::Duration::from_secs(60), "glslang never started");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    };
+    kiln.kill().expect("kill");
+    kiln.wait().expect("kiln ends");
+    let killed = std::time::Instant::now();
+    // Every stand-in started (one per worker thread) ends with kiln, not two minutes later.
+    while killed.elapsed() < std::time::Duration::from_secs(10) {
+        let said = std::fs::read_to_string(&pids).unwrap_or_default();
+        if said.lines().all(ended) {
+            assert!(said.lines().any(|pid| pid == first));
+            return;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    panic!("glslang children outlived kiln: {}", std::fs::read_to_string(&pids).unwrap_or_default());
+}

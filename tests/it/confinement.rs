@@ -56,7 +56,7 @@ fn a_manifest_naming_a_file_outside_its_folder_is_never_read_nor_embedded() {
     assert!(refused.to_string().contains("is not a pack's path"), "{refused}");
     // A build script starting from it distrusts the record, builds, and embeds only its packs.
     let out_dir = dir.path().join("out_dir");
-    let built = kiln::Build::new(root().join("fixtures/project"))
+    kiln::Build::new(root().join("fixtures/project"))
         .prebuilt(&output)
         .out_dir(&out_dir)
         .execute()
@@ -160,4 +160,48 @@ fn a_shard_record_naming_paths_outside_its_folder_writes_nothing_outside() {
         assert!(beside.is_empty(), "{what}: written outside the output folder: {beside:?}");
         assert!(!merged.join("manifest.json").exists(), "{what}: a manifest was written");
     }
+}
+
+/// A copy of `from` under `to` whose every file is a link to the original, as a sandbox stages a
+/// project (Bazel's, GNU `cp -rs`).
+#[cfg(unix)]
+fn linked_copy(from: &Path, to: &Path) {
+    for (path, _) in crate::support::tree(from) {
+        if path.starts_with("build") {
+            continue;
+        }
+        let link = to.join(&path);
+        std::fs::create_dir_all(link.parent().expect("folder")).expect("mkdir");
+        std::os::unix::fs::symlink(from.join(&path), link).expect("link");
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn a_project_staged_as_links_fails_loudly_and_builds_the_same_bytes_when_links_are_followed() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let staged = dir.path().join("sandbox/project");
+    linked_copy(&root().join("fixtures/project"), &staged);
+    let plain = dir.path().join("plain");
+    build(&root().join("fixtures/project"), Some(&plain));
+    let run = |follow: bool| {
+        let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_kiln"));
+        command.args(["build", ".", "--output"]).arg(dir.path().join("staged-out")).current_dir(&staged);
+        command.env("NO_COLOR", "1");
+        if follow {
+            command.env("KILN_FOLLOW_LINKS", "1")
+        } else {
+            command.env_remove("KILN_FOLLOW_LINKS")
+        };
+        command.output().expect("kiln runs")
+    };
+    // Links out of the project are not followed by default, and a build of nothing fails.
+    let refused = run(false);
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert_eq!(refused.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("error[K0009]") && stderr.contains("KILN_FOLLOW_LINKS=1"), "{stderr}");
+    // Followed, the staged project builds byte for byte what the project itself does.
+    let followed = run(true);
+    assert_eq!(followed.status.code(), Some(0), "{}", String::from_utf8_lossy(&followed.stderr));
+    assert_eq!(crate::support::shipped(&dir.path().join("staged-out")), crate::support::shipped(&plain));
 }

@@ -339,7 +339,12 @@ fn requests_that_name_nothing_are_usage_errors() {
 fn preprocess_in_memory(program: &str, library: Vec<(String, String)>) -> String {
     let mut store = SourceStore::new();
     let file = store.add("limits.wgsl", program);
-    let mut includes = Includes::new(IncludeConfig { roots: Vec::new(), include_paths: Vec::new(), library });
+    let mut includes = Includes::new(IncludeConfig {
+        roots: Vec::new(),
+        include_paths: Vec::new(),
+        library,
+        links_out: Default::default(),
+    });
     let span = kiln::source::Span::new(file, 0..program.len());
     let (program, mut diagnostics) = includes.load_program(&mut store, &[span]);
     diagnostics.extend(preprocess(&includes, &store, &program, &[], Stage::Fragment).diagnostics);
@@ -548,4 +553,30 @@ fn shaders_written_with_unity_style_macros_compile() {
         pass.uniform_blocks.iter().find(|b| b.name == "UnityPerMaterial").map(|b| b.type_name.as_str()),
         Some("UnityPerMaterial_Layout")
     );
+}
+
+#[test]
+fn an_include_out_of_the_project_gets_one_message_whether_or_not_the_file_exists() {
+    let outside = tempfile::tempdir().expect("temp dir");
+    std::fs::write(outside.path().join("exists.wgsl"), "fn secret() {}\n").expect("write");
+    let project = tempfile::tempdir().expect("temp dir");
+    let up = "../".repeat(project.path().components().count());
+    let target =
+        |name: &str| format!("{up}{}/{name}", outside.path().display().to_string().trim_start_matches('/'));
+    let said = |name: &str| {
+        std::fs::write(project.path().join("main.wgsl"), format!("#include \"{}\"\n", target(name)))
+            .expect("write");
+        let mut store = SourceStore::new();
+        let main = store.load(&project.path().join("main.wgsl")).expect("load");
+        let mut includes = Includes::new(IncludeConfig::new(vec![project.path().to_path_buf()]));
+        let span = kiln::source::Span::new(main, 0..store.text(main).len());
+        let (program, _) = includes.load_program(&mut store, &[span]);
+        let out = preprocess(&includes, &store, &program, &[], Stage::Fragment);
+        assert_eq!(out.diagnostics.len(), 1, "{name}");
+        let diagnostic = &out.diagnostics[0];
+        (diagnostic.code.to_string(), diagnostic.message.replace(name, "NAME"))
+    };
+    let (exists, absent) = (said("exists.wgsl"), said("absent.wgsl"));
+    assert_eq!(exists.0, "K0304");
+    assert_eq!(exists, absent, "what kiln says reveals whether a file outside exists");
 }
