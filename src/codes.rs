@@ -111,7 +111,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0418", "`override` expression naga cannot write"),
     ("K0419", "names that clash in the generated Rust"),
     ("K0420", "path cargo cannot watch"),
-    ("K0421", "expression too long"),
+    ("K0421", "expression or function too long"),
     ("K0422", "construct a back end's language lacks"),
     ("K0423", "written code glslang refuses"),
     ("K0501", "invalid material file"),

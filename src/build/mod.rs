@@ -324,10 +324,34 @@ fn threads_for(requested: Option<usize>, environment: Option<&str>, cores: usize
     requested.filter(|&n| n > 0).or(from_environment).unwrap_or(cores).min(MAX_THREADS)
 }
 
+/// Whether rayon's global pool is one [`init_global_pool`] made: with kiln's stacks, and bounded.
+static GLOBAL_POOL_IS_KILNS: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Makes rayon's global pool as a build's would be ([`thread_count`] workers with
+/// [`WORKER_STACK`] stacks), for a program whose main work is kiln's (the CLI): a build of that
+/// many threads then runs in it rather than in a second pool beside it, so the process never runs
+/// more than [`MAX_THREADS`] workers, whatever `RAYON_NUM_THREADS` says. Does nothing where the
+/// global pool exists already.
+pub fn init_global_pool() {
+    let built = rayon::ThreadPoolBuilder::new()
+        .num_threads(thread_count(None))
+        .stack_size(WORKER_STACK)
+        .build_global();
+    if built.is_ok() {
+        GLOBAL_POOL_IS_KILNS.store(true, std::sync::atomic::Ordering::Relaxed);
+    }
+}
+
 /// A pool of `threads` workers, made once in a process and kept: a build script, the language
 /// server and a benchmark build again in the same process, and a new pool's threads start with
-/// cold stacks and allocator heaps. `None` where one cannot be made.
+/// cold stacks and allocator heaps. `None` where one cannot be made, or where the global pool is
+/// kiln's own of that size (the build runs there).
 fn pool(threads: usize) -> Option<std::sync::Arc<rayon::ThreadPool>> {
+    if GLOBAL_POOL_IS_KILNS.load(std::sync::atomic::Ordering::Relaxed)
+        && rayon::current_num_threads() == threads
+    {
+        return None;
+    }
     static POOLS: std::sync::Mutex<Vec<(usize, std::sync::Arc<rayon::ThreadPool>)>> =
         std::sync::Mutex::new(Vec::new());
     let mut pools = POOLS.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
@@ -346,7 +370,8 @@ fn timed_in_pool(options: &BuildOptions, job: impl FnOnce() -> BuildResult + Sen
     let started = Instant::now();
     let mut result = match pool(thread_count(options.threads)) {
         Some(pool) => pool.install(job),
-        None => job(),
+        // On one of the global pool's workers (and their stacks), as `install` would run it.
+        None => rayon::scope(|_| job()),
     };
     result.summary.elapsed = started.elapsed();
     result

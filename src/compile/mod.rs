@@ -67,6 +67,21 @@ pub(crate) fn parse(text: &str, mapper: &Mapper) -> Result<naga::Module, Diagnos
         );
         return Err(diagnostic);
     }
+    if let Some((body, terms)) = largest_function(text).filter(|(_, n)| *n > MAX_FUNCTION_TERMS) {
+        let signature =
+            text[..body.start].rfind("fn").map_or(body.start..body.start + 1, |fn_at| fn_at..body.start);
+        let span = naga::Span::new(signature.start as u32, signature.end as u32);
+        let message = format!(
+            "a function of {terms} operands and operators, past kiln's limit of {MAX_FUNCTION_TERMS} in one function"
+        );
+        let mut diagnostic = mapper.diagnostic("K0421", message, vec![(span, "this function".to_string())]);
+        diagnostic.notes.push(
+            "naga's time grows with the square of a function's expressions (its typifier, naga 30): twice the limit takes it seconds, ten times the limit minutes"
+                .into(),
+        );
+        diagnostic.help = Some("split it into functions, or loop where macros repeat code".into());
+        return Err(diagnostic);
+    }
     naga::front::wgsl::parse_str(text).map_err(|error| {
         let mut labels: Vec<(naga::Span, String)> =
             error.labels().map(|(span, message)| (span, message.to_string())).collect();
@@ -111,6 +126,70 @@ fn end_of_previous_token(text: &str, at: usize) -> Option<usize> {
 /// once per level of an expression (some 600 bytes of stack each), and a worker's stack
 /// (`build::WORKER_STACK`, 256 MiB) holds this many levels with room to spare.
 const MAX_OPERATORS: usize = 100_000;
+
+/// The most operands and operators one function's body may have ([`largest_function`]): naga's
+/// WGSL front end types each new expression against those before it (`Typifier::grow`, naga
+/// 30.0.1), so its time grows with their square: 0.2 s for a function of 28,000 on a 2-core
+/// machine, 2.4 s at 112,000, minutes past half a million (docs/performance.md).
+pub(crate) const MAX_FUNCTION_TERMS: usize = 50_000;
+
+/// The top-level brace block of `text` (a function's body) with the most operands (names,
+/// numbers) and operators, with their count, where it may pass [`MAX_FUNCTION_TERMS`]: a token
+/// scan, comments skipped. A text shorter than the limit has fewer terms and is not scanned.
+pub(crate) fn largest_function(text: &str) -> Option<(std::ops::Range<usize>, usize)> {
+    if text.len() <= MAX_FUNCTION_TERMS {
+        return None;
+    }
+    let bytes = text.as_bytes();
+    let (mut largest, mut start, mut count, mut depth) = (None, 0, 0usize, 0usize);
+    let mut at = 0;
+    while at < bytes.len() {
+        let b = bytes[at];
+        match b {
+            b'/' if bytes.get(at + 1) == Some(&b'/') => {
+                at = text[at..].find('\n').map_or(bytes.len(), |n| at + n);
+                continue;
+            }
+            b'/' if bytes.get(at + 1) == Some(&b'*') => {
+                at = text[at + 2..].find("*/").map_or(bytes.len(), |n| at + 2 + n + 2);
+                continue;
+            }
+            b'{' => {
+                if depth == 0 {
+                    (start, count) = (at, 0);
+                }
+                depth += 1;
+            }
+            b'}' => {
+                depth = depth.saturating_sub(1);
+                if depth == 0 && count > largest.as_ref().map_or(0, |(_, n)| *n) {
+                    largest = Some((start..at + 1, count));
+                }
+            }
+            c if depth > 0 && (c.is_ascii_alphanumeric() || c == b'_') => {
+                // A name or a number is one term, however long.
+                count += 1;
+                while at + 1 < bytes.len()
+                    && (bytes[at + 1].is_ascii_alphanumeric() || b"_.".contains(&bytes[at + 1]))
+                {
+                    at += 1;
+                }
+            }
+            c if depth > 0 && b"+-*/%&|^<>=!".contains(&c) => {
+                count += 1;
+                while at + 1 < bytes.len() && b"+-*/%&|^<>=!".contains(&bytes[at + 1]) {
+                    at += 1;
+                }
+            }
+            _ => {}
+        }
+        at += 1;
+    }
+    if depth > 0 && count > largest.as_ref().map_or(0, |(_, n)| *n) {
+        largest = Some((start..bytes.len(), count));
+    }
+    largest
+}
 
 /// The statement of `text` with the most operators (binary ones, member accesses and indexing:
 /// what nests an expression one level deeper), with their count, where it may pass

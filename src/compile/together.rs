@@ -458,6 +458,11 @@ impl Together {
     /// refuses it (or panics): no one's error here, as each text is then parsed alone and its own
     /// error, if it has one, reported.
     pub(crate) fn parse(&self) -> Option<Parsed> {
+        // A function past the limit is refused when its own text is parsed, before naga's
+        // quadratic cost: never parsed here first.
+        if super::largest_function(&self.text).is_some_and(|(_, n)| n > super::MAX_FUNCTION_TERMS) {
+            return None;
+        }
         let module = contain_panics(|| naga::front::wgsl::parse_str(&self.text).ok()).ok().flatten()?;
         self.ready(module)
     }

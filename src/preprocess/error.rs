@@ -72,6 +72,11 @@ pub enum PreprocessError {
         name: String,
         limit: usize,
     },
+    ExpansionTooLarge {
+        span: Span,
+        name: String,
+        limit: usize,
+    },
     ErrorDirective {
         span: Span,
         message: String,
@@ -272,6 +277,13 @@ impl From<PreprocessError> for Diagnostic {
             )
             .at(span, "expanded here")
             .help("a chain of `#define`s probably refers back to itself"),
+            ExpansionTooLarge { span, name, limit } => Diagnostic::error(
+                "K0313",
+                format!("macro `{name}` expands to more than {limit} tokens"),
+            )
+            .at(span, "expanded here")
+            .note("each level of a chain that repeats its argument doubles what the next receives")
+            .help("expand less at once: a loop in the shader, or a smaller table"),
             ErrorDirective { span, message } => Diagnostic::error("K0310", message).at(span, "`#error` reached"),
             WarningDirective { span, message } => {
                 Diagnostic::warning("K0318", message).at(span, "`#warning` reached")

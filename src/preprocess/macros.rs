@@ -17,7 +17,7 @@ use std::ops::Range;
 pub(super) const MAX_EXPANSION_DEPTH: usize = 64;
 
 /// More tokens than this from one invocation is a runaway (exponential growth): an error.
-const MAX_EXPANSION_TOKENS: usize = 1 << 20;
+pub(super) const MAX_EXPANSION_TOKENS: usize = 1 << 20;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Kind {
@@ -389,6 +389,11 @@ pub(crate) enum ExpandError {
         at: Range<usize>,
         name: String,
     },
+    /// Past [`MAX_EXPANSION_TOKENS`] however shallow the chain.
+    TooMany {
+        at: Range<usize>,
+        name: String,
+    },
 }
 
 /// Where macro tokens come from during one expansion: tokens to rescan first, then the text.
@@ -638,7 +643,7 @@ impl<'m, 'a> Expander<'m, 'a> {
             self.produced += expansion.len();
             if self.produced > MAX_EXPANSION_TOKENS {
                 let (at, name) = self.outer.clone();
-                self.errors.push(ExpandError::TooDeep { at, name });
+                self.errors.push(ExpandError::TooMany { at, name });
                 return;
             }
             for t in expansion.into_iter().rev() {

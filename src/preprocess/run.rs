@@ -5,8 +5,8 @@ use super::error::PreprocessError;
 use super::expr::{self, ExprError};
 use super::include::{Includes, Program};
 use super::macros::{
-    ExpandError, Expander, HideSets, Lexer, MAX_EXPANSION_DEPTH, MacroDef, Macros, glues, splice_len,
-    unspliced,
+    ExpandError, Expander, HideSets, Lexer, MAX_EXPANSION_DEPTH, MAX_EXPANSION_TOKENS, MacroDef, Macros,
+    glues, splice_len, unspliced,
 };
 use super::pass::{KeywordMacros, UBERSHADER_DATA};
 use super::scan::{BranchKind, Condition, Item, Target};
@@ -359,6 +359,9 @@ impl<'a> Runner<'a> {
             }
             ExpandError::TooDeep { at, name } => {
                 PreprocessError::ExpansionTooDeep { span: span(at), name, limit: MAX_EXPANSION_DEPTH }
+            }
+            ExpandError::TooMany { at, name } => {
+                PreprocessError::ExpansionTooLarge { span: span(at), name, limit: MAX_EXPANSION_TOKENS }
             }
         }
     }

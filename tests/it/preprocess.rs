@@ -580,3 +580,16 @@ fn an_include_out_of_the_project_gets_one_message_whether_or_not_the_file_exists
     assert_eq!(exists.0, "K0304");
     assert_eq!(exists, absent, "what kiln says reveals whether a file outside exists");
 }
+
+#[test]
+fn a_shallow_chain_past_the_token_cap_says_tokens_not_depth() {
+    // 21 levels, each twice the one below: about two million tokens, a third of the depth limit.
+    let mut text = String::from("#define M0 a\n");
+    for level in 1..=21 {
+        text.push_str(&format!("#define M{level} M{below} M{below}\n", below = level - 1));
+    }
+    text.push_str("M21\n");
+    let said = preprocess_files(&[("main.wgsl", &text)], &[]);
+    assert!(said.contains("error[K0313]") && said.contains("more than 1048576 tokens"), "{said}");
+    assert!(!said.contains("levels deep"), "{said}");
+}

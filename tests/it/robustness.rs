@@ -219,3 +219,29 @@ fn a_project_over_the_global_keyword_limit_is_refused_at_the_first_keyword_over(
     let (mut store, files) = many_keyword_shaders("shader_feature_local");
     assert!(catalog_of(&mut store, files).iter().all(|d| d.code != "K0214"));
 }
+
+#[cfg(target_os = "linux")]
+#[test]
+fn a_thread_count_past_the_bound_runs_no_more_workers_than_the_bound() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("project");
+    crate::support::synthetic_project(&project, 160);
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kiln"))
+        .args(["build", project.to_str().expect("utf-8"), "--output"])
+        .arg(dir.path().join("out"))
+        .env("RAYON_NUM_THREADS", "100000")
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("kiln runs");
+    let status = format!("/proc/{}/status", child.id());
+    let mut most = 0;
+    while child.try_wait().expect("wait").is_none() {
+        let threads = std::fs::read_to_string(&status).ok().and_then(|s| {
+            s.lines().find_map(|l| l.strip_prefix("Threads:").and_then(|n| n.trim().parse::<usize>().ok()))
+        });
+        most = most.max(threads.unwrap_or(0));
+    }
+    assert!(child.wait().expect("ends").success());
+    // The workers, the main thread, the remote cache's uploaders and a few readers.
+    assert!(most > 0 && most <= kiln::build::MAX_THREADS + 32, "{most} threads");
+}

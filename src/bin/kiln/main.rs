@@ -20,11 +20,8 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 fn main() -> ExitCode {
     // Rayon's global pool would take `RAYON_NUM_THREADS` as it is, and 2 MiB stacks: it gets a
-    // build pool's bound and stacks.
-    let _ = rayon::ThreadPoolBuilder::new()
-        .num_threads(kiln::build::thread_count(None))
-        .stack_size(kiln::build::WORKER_STACK)
-        .build_global();
+    // build pool's bound and stacks, and builds run in it.
+    kiln::build::init_global_pool();
     match Cli::parse().command {
         Command::List { paths, format, materials } => inspect::list(paths, format, materials),
         Command::Preprocess { shader, pass, keywords, stage, reachable } => {
