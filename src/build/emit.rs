@@ -260,7 +260,7 @@ impl ManifestWriter {
     fn finish(mut self, materials_hash: String) -> std::io::Result<StagedJson> {
         self.put(manifest_ends(Some(materials_hash))?.1.as_bytes())?;
         self.put(b"\n")?;
-        self.file.into_inner().map_err(std::io::IntoInnerError::into_error)?;
+        crate::store::durable(&self.file.into_inner().map_err(std::io::IntoInnerError::into_error)?)?;
         Ok(StagedJson { staged: self.staged, digest: self.digest })
     }
 }
@@ -309,8 +309,17 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
     let mut files = Vec::new();
     let cache = Cache::new(&options.output, true);
     if options.write && !diagnostics::has_errors(&diagnostics) {
-        files = (pack_ends(manifest.shaders.iter().flat_map(|s| &s.passes)).into_iter())
-            .map(|(path, len)| RecordedFile { path: OutputFile::Pack(path), len, hash: None })
+        // Each pack's bytes hashed as written, so that a no-op build trusts no pack it has not
+        // read back whole (a pack damaged or replaced since is caught there, not shipped).
+        let ends: Vec<(PackPath, u64)> =
+            pack_ends(manifest.shaders.iter().flat_map(|s| &s.passes)).into_iter().collect();
+        files = ends
+            .into_par_iter()
+            .map(|(path, len)| {
+                let digest = Digest::of_file(&path.under(&options.output), len.saturating_add(1)).ok();
+                let hash = digest.filter(|d| d.len == len).map(|d| d.finish().to_hex()[..32].to_string());
+                RecordedFile { path: OutputFile::Pack(path), len, hash }
+            })
             .collect();
         // The materials, then the manifest that names their hash, while `alongside` runs.
         let (staged, alongside) = rayon::join(
@@ -328,7 +337,17 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
         match (staged, alongside.and_then(|copied| cache.forget_inputs().map(|()| copied))) {
             (Ok((materials, manifest)), Ok(copied)) => {
                 summary.bytes_written += copied;
-                for (name, staged) in [(OutputFile::Materials, materials), (OutputFile::Manifest, manifest)] {
+                // The packs' names durable before the manifest that names them is; else nothing
+                // is replaced.
+                let packs_durable = crate::store::durable_folder(&options.output.join(PACK_FOLDER))
+                    .map_err(|error| diagnostics.push(write_failure(&options.output, error)))
+                    .is_ok();
+                let staged = if packs_durable {
+                    vec![(OutputFile::Materials, materials), (OutputFile::Manifest, manifest)]
+                } else {
+                    Vec::new()
+                };
+                for (name, staged) in staged {
                     let hash = staged.hash();
                     match staged.commit() {
                         Ok((len, written)) => {
@@ -363,6 +382,10 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
             read: catalogue.read.clone(),
             absent: catalogue.absent.clone(),
         });
+    }
+    if options.write && !diagnostics::has_errors(&diagnostics) {
+        // The commit point's names (the manifest, the materials, the record) durable.
+        let _ = crate::store::durable_folder(&options.output);
     }
     BuildResult { manifest: None, summary, diagnostics, output: options.output.clone() }
 }

@@ -65,7 +65,7 @@ pub mod state;
 
 pub use backend::{Backend, PerBackend};
 pub use keywords::{KeywordKind, KeywordScope, KeywordSetManifest, KeywordStage};
-pub use path::{NotAPackPath, PACK_FOLDER, PackPath, read_regular};
+pub use path::{NotAPackPath, PACK_FOLDER, PackPath, open_regular, read_regular};
 pub use reflection::{
     Attribute, AttributeFormat, Member, OverrideConstant, OverrideType, Resource, SampleType, ShaderStage,
     StorageAccess, TexelFormat, UniformBlock, ViewDimension,

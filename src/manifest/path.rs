@@ -85,6 +85,15 @@ fn is_hash(text: &str) -> bool {
 /// file is checked again once open, so a link put in its place between the check and the open is
 /// refused too (on Linux, where the open itself refuses to follow a link).
 pub fn read_regular(path: &Path, at_most: u64) -> std::io::Result<Vec<u8>> {
+    let (file, length) = open_regular(path)?;
+    let mut bytes = Vec::with_capacity(length.min(at_most) as usize);
+    file.take(at_most).read_to_end(&mut bytes)?;
+    Ok(bytes)
+}
+
+/// `path` opened for reading, with its length, when it is a regular file and not a link to one
+/// (see [`read_regular`]).
+pub fn open_regular(path: &Path) -> std::io::Result<(std::fs::File, u64)> {
     let not_regular = || {
         std::io::Error::new(
             std::io::ErrorKind::InvalidData,
@@ -99,9 +108,7 @@ pub fn read_regular(path: &Path, at_most: u64) -> std::io::Result<Vec<u8>> {
     if !metadata.file_type().is_file() {
         return Err(not_regular());
     }
-    let mut bytes = Vec::with_capacity(metadata.len().min(at_most) as usize);
-    file.take(at_most).read_to_end(&mut bytes)?;
-    Ok(bytes)
+    Ok((file, metadata.len()))
 }
 
 #[cfg(target_os = "linux")]

@@ -2,7 +2,7 @@
 //! variant skip naga entirely, and atomic writes (a temporary file and a rename) for all of them.
 
 use super::pass_index::{CachedStage, PassIndex, PassIndexView};
-use crate::manifest::{Backend, FileRef, PackPath, read_regular};
+use crate::manifest::{Backend, FileRef, PackPath, open_regular};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeSet, HashMap};
@@ -79,15 +79,15 @@ pub struct Recorded {
     pub absent: Vec<String>,
 }
 
-/// A file a clean build left: a pack, with the length it must have at least (its modules' end),
-/// or the manifest or the materials, with their exact length and hash.
+/// A file a clean build left (the manifest, the materials or a pack), with its length and hash.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RecordedFile {
     /// Which file, in the output folder.
     pub path: OutputFile,
-    /// Its length (at least, without a hash).
+    /// Its length.
     pub len: u64,
-    /// Its [`hash`], where the no-op check verifies its bytes.
+    /// Its [`hash`], against which the no-op check verifies its bytes (a file without one, as an
+    /// older kiln recorded packs, is never taken as in place).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hash: Option<String>,
 }
@@ -222,20 +222,20 @@ impl Cache {
     }
 
     /// Whether every file the recorded build wrote is still in place (the manifest is not
-    /// parsed): the manifest and the materials are the bytes recorded (their hashes), each pack
-    /// holds its modules' range (its length), checked in parallel.
+    /// parsed): the manifest, the materials and each pack are the bytes recorded (their lengths
+    /// and hashes), each read back whole, in parallel.
     pub fn files_in_place(&self, recorded: &Recorded) -> bool {
+        // Every file read back whole (a regular file only: `Digest::of_file`) and hashed: a pack
+        // damaged since the build is no no-op's.
         let in_place = |file: &RecordedFile| {
-            let path = file.path.under(&self.output);
-            match &file.hash {
-                Some(expected) => Digest::of_file(&path, file.len.saturating_add(1))
-                    .is_ok_and(|d| d.len == file.len && d.finish().to_hex()[..32] == *expected),
-                // A regular file, not a link or a device that a record could point anywhere.
-                None => std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file() && m.len() >= file.len),
-            }
+            let expected = file.hash.as_deref();
+            expected.is_some_and(|expected| {
+                Digest::of_file(&file.path.under(&self.output), file.len.saturating_add(1))
+                    .is_ok_and(|d| d.len == file.len && d.finish().to_hex()[..32] == *expected)
+            })
         };
-        recorded.files.iter().filter(|f| f.hash.is_some()).count() == 2
-            && recorded.files.par_iter().all(in_place)
+        let named = |which: OutputFile| recorded.files.iter().filter(|f| f.path == which).count() == 1;
+        named(OutputFile::Manifest) && named(OutputFile::Materials) && recorded.files.par_iter().all(in_place)
     }
 
     /// Removes the record of the last clean build, before a build replaces what it names: a
@@ -455,8 +455,26 @@ pub fn stage(
     let (staged, file) = Staged::beside(path)?;
     let mut buffered = std::io::BufWriter::new(file);
     write(&mut buffered)?;
-    buffered.into_inner().map_err(std::io::IntoInnerError::into_error)?;
+    durable(&buffered.into_inner().map_err(std::io::IntoInnerError::into_error)?)?;
     Ok(staged)
+}
+
+/// Makes a staged file's bytes durable before it is named: a rename is the commit point, and
+/// without this a power cut after it can leave the new name on bytes never written (as SQLite and
+/// git do, the data first, then the name).
+pub fn durable(file: &std::fs::File) -> std::io::Result<()> {
+    file.sync_data()
+}
+
+/// Makes the names a folder holds durable (the renames and links into it): after an output
+/// folder's commit, and for its packs before the manifest that names them is renamed into place.
+/// A folder that is not there has nothing to make durable.
+pub fn durable_folder(folder: &Path) -> std::io::Result<()> {
+    match std::fs::File::open(folder) {
+        Ok(folder) => folder.sync_all(),
+        Err(error) if error.kind() == std::io::ErrorKind::NotFound => Ok(()),
+        Err(error) => Err(error),
+    }
 }
 
 impl Staged {
@@ -567,7 +585,7 @@ impl Digest {
     /// refused: a record may name the file).
     pub fn of_file(path: &Path, at_most: u64) -> std::io::Result<Digest> {
         let mut digest = Digest::default();
-        digest.write_all(&read_regular(path, at_most)?)?;
+        std::io::copy(&mut std::io::Read::take(open_regular(path)?.0, at_most), &mut digest)?;
         Ok(digest)
     }
 }
@@ -637,7 +655,9 @@ pub fn link_or_copy(from: &Path, to: &Path) -> std::io::Result<u64> {
         Ok(()) => 0,
         Err(_) => {
             let mut file = std::fs::File::options().write(true).create_new(true).open(&staged.temporary)?;
-            std::io::copy(&mut std::fs::File::open(from)?, &mut file)?
+            let copied = std::io::copy(&mut std::fs::File::open(from)?, &mut file)?;
+            durable(&file)?;
+            copied
         }
     };
     staged.commit(|_| true)?;

@@ -9,7 +9,7 @@ pub mod shared;
 
 pub use cache::{
     Cache, Digest, Hashed, ModuleBytes, OutputFile, OutputLock, PassKey, PlannedPack, Recorded, RecordedFile,
-    SealedEntry, Staged, hash, link_or_copy, pass_index_path, seal, sealed, stage, unsealed,
-    write_atomically,
+    SealedEntry, Staged, durable, durable_folder, hash, link_or_copy, pass_index_path, seal, sealed, stage,
+    unsealed, write_atomically,
 };
 pub use pass_index::{CachedStage, PassIndex, PassIndexView};

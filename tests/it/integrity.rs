@@ -223,3 +223,53 @@ fn the_run_time_refuses_a_module_whose_bytes_are_not_the_manifest_s() {
     };
     assert!(error.to_string().contains("is not what the manifest names"), "{error}");
 }
+
+#[cfg(target_os = "linux")]
+#[test]
+fn every_file_a_build_puts_in_place_is_durable_before_it_is_named() {
+    if !crate::support::tool("strace", "strace", "every_file_a_build_puts_in_place_is_durable") {
+        return;
+    }
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (output, log) = (dir.path().join("out"), dir.path().join("strace.log"));
+    let run = std::process::Command::new("strace")
+        .args(["-f", "-qq", "-e", "trace=fsync,fdatasync,rename,renameat,renameat2", "-o"])
+        .arg(&log)
+        .arg(env!("CARGO_BIN_EXE_kiln"))
+        .args(["build", "fixtures/project", "--output"])
+        .arg(&output)
+        .current_dir(root())
+        .output()
+        .expect("strace runs");
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let log = std::fs::read_to_string(&log).expect("the trace");
+    let calls = |names: &[&str]| {
+        log.lines()
+            .filter(|l| names.iter().any(|n| l.contains(&format!(" {n}(")) && !l.contains("= -1")))
+            .count()
+    };
+    let renames = calls(&["rename", "renameat", "renameat2"]);
+    let syncs = calls(&["fsync", "fdatasync"]);
+    assert!(renames >= 5, "{renames} renames:\n{log}");
+    // Each file's data before its rename, and the packs' and the output's folders after theirs.
+    assert!(syncs >= renames + 2, "{syncs} syncs for {renames} renames:\n{log}");
+}
+
+#[test]
+fn a_pack_damaged_after_a_clean_build_is_not_kept_by_the_next_no_op() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = dir.path().join("out");
+    let project = root().join("fixtures/project");
+    build(&project, Some(&output));
+    let manifest = verified_manifest(&output);
+    // One byte inside one module, the pack's length unchanged, the record untouched.
+    let victim = manifest.files()[0].clone();
+    let pack = output.join(&victim.path);
+    let mut bytes = std::fs::read(&pack).expect("read");
+    bytes[victim.offset as usize + victim.size as usize / 2] ^= 0x20;
+    std::fs::write(&pack, &bytes).expect("write");
+    let next = build(&project, Some(&output));
+    assert!(next.compiled >= 1, "the damaged pack was taken as in place: {next:?}");
+    kiln::runtime::Library::open_verified(&output).expect("every module is the manifest's again");
+    assert_eq!(build(&project, Some(&output)).compiled, 0, "and the build after it is a no-op");
+}
