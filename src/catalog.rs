@@ -128,6 +128,8 @@ pub struct CatalogPass {
 pub struct CatalogProgram {
     /// The language of its blocks.
     pub language: ProgramLanguage,
+    /// Its first block.
+    pub span: Span,
     /// Its pragmas.
     pub pragmas: ProgramPragmas,
     /// WGSL programs only: the blocks and their includes, ready to preprocess.
@@ -632,7 +634,7 @@ fn finished_program(
                 .help("split the pass, or make run-time choices `dynamic_branch` keywords"),
         );
     }
-    CatalogProgram { language, pragmas, wgsl, keywords, variants: Vec::new() }
+    CatalogProgram { language, span, pragmas, wgsl, keywords, variants: Vec::new() }
 }
 
 fn tags(state: &StateBlock) -> Vec<(String, String)> {

@@ -51,6 +51,15 @@ pub enum BuildLayerError {
     },
     /// The project is not what the shards read (K0413).
     ProjectChanged,
+    /// A pass whose program is in a language kiln lists but does not compile (K0424).
+    LanguageNotBuilt {
+        /// Its blocks' language.
+        language: crate::shaderlab::ast::ProgramLanguage,
+        /// Its shader's name.
+        shader: String,
+        /// Its first block.
+        span: Span,
+    },
 }
 
 impl From<BuildLayerError> for Diagnostic {
@@ -89,6 +98,18 @@ impl From<BuildLayerError> for Diagnostic {
                         "a file the build reads, the project's settings or the build's options changed since",
                     )
                     .help("build the shards again from this state of the project, then merge them")
+            }
+            BuildLayerError::LanguageNotBuilt { language, shader, span } => {
+                // The block's opening keyword, not the whole block.
+                let keyword = language.open_keyword(false).len().min(span.range().len());
+                let span = Span::new(span.file, span.range().start..span.range().start + keyword);
+                Diagnostic::error(
+                "K0424",
+                format!("`{}` blocks are listed but not compiled: `{shader}` is not built", language.open_keyword(false)),
+            )
+            .at(span, "this program")
+            .note("this kiln compiles `WGSLPROGRAM` blocks; a pass in another language is an error rather than a pass counted as checked")
+            .help("write the program in WGSL between `WGSLPROGRAM` and `ENDWGSL` (docs/first-shader.md)")
             }
         }
     }

@@ -35,7 +35,20 @@ pub(super) fn plan<'a>(
     for (shader_index, shader) in catalog.shaders.iter().enumerate() {
         let (mut built_any, mut has_wgsl) = (false, false);
         for pass in &shader.passes {
-            let Some(program) = pass.program.as_ref().filter(|p| p.wgsl.is_some()) else { continue };
+            let Some(program) = pass.program.as_ref() else { continue };
+            if program.wgsl.is_none() {
+                // Listed, and never counted as built or checked: a CI job pointed at a library
+                // of such shaders must not pass having checked nothing.
+                diagnostics.push(
+                    BuildLayerError::LanguageNotBuilt {
+                        language: program.language,
+                        shader: shader.shader.name.value.clone(),
+                        span: program.span,
+                    }
+                    .into(),
+                );
+                continue;
+            }
             has_wgsl = true;
             let variants = select_variants(shader, pass, program, selection, diagnostics);
             if variants.is_empty() {
