@@ -322,6 +322,26 @@ fn summarized(diagnostics: &[Diagnostic]) -> Vec<std::borrow::Cow<'_, Diagnostic
     shown
 }
 
+/// `text` as a diagnostic shows it: every control character (a terminal's escape, a carriage
+/// return, a line break where `breaks` is false) and bidirectional override written as `\u{..}`,
+/// so that a name from any input (a shader's, a usage log's, a trace's) can neither send a terminal
+/// a code nor forge a line of a log. The one place every message, label, note and help passes.
+pub fn shown_text(text: &str, breaks: bool) -> std::borrow::Cow<'_, str> {
+    let hidden = |c: char| (c.is_control() && !(breaks && c == '\n')) || ('\u{202a}'..='\u{202e}').contains(&c) || ('\u{2066}'..='\u{2069}').contains(&c);
+    if !text.chars().any(hidden) {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let mut shown = String::with_capacity(text.len() + 8);
+    for c in text.chars() {
+        if hidden(c) {
+            shown.push_str(&format!("\\u{{{:x}}}", c as u32));
+        } else {
+            shown.push(c);
+        }
+    }
+    std::borrow::Cow::Owned(shown)
+}
+
 fn to_codespan(store: &SourceStore, d: &Diagnostic) -> cs::Diagnostic<crate::source::FileId> {
     let severity = match d.severity {
         Severity::Error => cs::Severity::Error,
@@ -348,7 +368,7 @@ fn to_codespan(store: &SourceStore, d: &Diagnostic) -> cs::Diagnostic<crate::sou
             } else {
                 cs::Label::secondary(label.span.file, range)
             };
-            labels.push(made.with_message(&label.message));
+            labels.push(made.with_message(shown_text(&label.message, false)));
         } else {
             let at = store.line_col(label.span.file, label.span.start as usize);
             places.push(format!(
@@ -356,18 +376,18 @@ fn to_codespan(store: &SourceStore, d: &Diagnostic) -> cs::Diagnostic<crate::sou
                 store.display_name(label.span.file),
                 at.line,
                 at.column,
-                label.message
+                shown_text(&label.message, false)
             ));
         }
     }
     let mut notes: Vec<String> = places;
-    notes.extend(d.shown_notes().iter().map(|n| format!("note: {n}")));
+    notes.extend(d.shown_notes().iter().map(|n| format!("note: {}", shown_text(n, true))));
     if let Some(h) = &d.help {
-        notes.push(format!("help: {h}"));
+        notes.push(format!("help: {}", shown_text(h, true)));
     }
     cs::Diagnostic::new(severity)
         .with_code(d.code)
-        .with_message(&d.message)
+        .with_message(shown_text(&d.message, false))
         .with_labels(labels)
         .with_notes(notes)
 }
@@ -380,7 +400,7 @@ pub fn render_plain(store: &SourceStore, diagnostics: &[Diagnostic]) -> String {
         // A span pointing outside its file is a bug in the reporting stage; show the message anyway.
         match term::emit_into_string(&config, store, &to_codespan(store, &d)) {
             Ok(text) => out.push_str(&text),
-            Err(_) => out.push_str(&format!("{:?}[{}]: {}\n", d.severity, d.code, d.message)),
+            Err(_) => out.push_str(&format!("{:?}[{}]: {}\n", d.severity, d.code, shown_text(&d.message, false))),
         }
     }
     out
@@ -492,6 +512,21 @@ pub fn to_json(store: &SourceStore, diagnostics: &[Diagnostic]) -> Vec<JsonDiagn
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_name_from_any_input_can_neither_forge_a_line_nor_send_a_terminal_a_code() {
+        let mut store = SourceStore::new();
+        let log = store.add("usage.log", "Hostile\u{1b}[2J\nerror[K0001]: forged 0\n");
+        let name = "Hostile\u{1b}[2J\nerror[K0001]: forged\u{202e}";
+        let diagnostic = Diagnostic::error("K0531", format!("no shader named `{name}` in the project"))
+            .at(Span::new(log, 0..7), format!("`{name}` named here"))
+            .note(format!("a trace names `{name}`"))
+            .help(format!("rename `{name}`"));
+        let shown = render_plain(&store, &[diagnostic]);
+        assert!(!shown.contains(['\u{1b}', '\u{202e}', '\r']), "{shown:?}");
+        assert!(!shown.lines().any(|line| line.starts_with("error[K0001]")), "{shown}");
+        assert!(shown.contains("Hostile\\u{1b}[2J\\u{a}error[K0001]: forged"), "{shown}");
+    }
 
     fn in_variant(variant: &str, stage: &str) -> Diagnostic {
         let pass = PassId { shader: "S".into(), index: 0 };

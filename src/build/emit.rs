@@ -309,17 +309,8 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
     let mut files = Vec::new();
     let cache = Cache::new(&options.output, true);
     if options.write && !diagnostics::has_errors(&diagnostics) {
-        // Each pack's bytes hashed as written, so that a no-op build trusts no pack it has not
-        // read back whole (a pack damaged or replaced since is caught there, not shipped).
-        let ends: Vec<(PackPath, u64)> =
-            pack_ends(manifest.shaders.iter().flat_map(|s| &s.passes)).into_iter().collect();
-        files = ends
-            .into_par_iter()
-            .map(|(path, len)| {
-                let digest = Digest::of_file(&path.under(&options.output), len.saturating_add(1)).ok();
-                let hash = digest.filter(|d| d.len == len).map(|d| d.finish().to_hex()[..32].to_string());
-                RecordedFile { path: OutputFile::Pack(path), len, hash }
-            })
+        files = (pack_ends(manifest.shaders.iter().flat_map(|s| &s.passes)).into_iter())
+            .map(|(path, len)| RecordedFile { path: OutputFile::Pack(path), len, hash: None })
             .collect();
         // The materials, then the manifest that names their hash, while `alongside` runs.
         let (staged, alongside) = rayon::join(
@@ -337,6 +328,13 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
         match (staged, alongside.and_then(|copied| cache.forget_inputs().map(|()| copied))) {
             (Ok((materials, manifest)), Ok(copied)) => {
                 summary.bytes_written += copied;
+                // Each pack's bytes hashed once in place (a merge links them in `alongside`), so
+                // that a no-op build trusts no pack it has not read back whole.
+                files.par_iter_mut().for_each(|file| {
+                    let digest = Digest::of_file(&file.path.under(&options.output), file.len.saturating_add(1));
+                    let digest = digest.ok().filter(|digest| digest.len == file.len);
+                    file.hash = digest.map(|digest| digest.finish().to_hex()[..32].to_string());
+                });
                 // The packs' names durable before the manifest that names them is; else nothing
                 // is replaced.
                 let packs_durable = crate::store::durable_folder(&options.output.join(PACK_FOLDER))

@@ -326,18 +326,12 @@ fn remote_cache(
 fn no_shaders(paths: &[PathBuf], build: bool, links_refused: usize) -> Diagnostic {
     let shown: Vec<String> = paths.iter().map(|p| format!("`{}`", p.display())).collect();
     let message = format!("no shaders in {}", shown.join(", "));
-    // An empty folder is a project not started; one that holds files but no shader kiln could
-    // find is a mistake a build must not pass over (a sandbox's staging kiln misread, say).
-    let holds_entries =
-        paths.iter().any(|p| p.is_file() || std::fs::read_dir(p).is_ok_and(|mut e| e.next().is_some()));
-    let diagnostic = if build && !holds_entries {
-        Diagnostic::warning("K0009", message)
-    } else {
-        Diagnostic::error("K0009", message).note("the folder holds files, none of them a shader kiln finds")
-    };
-    let diagnostic = match links_refused {
-        0 => diagnostic,
-        n => diagnostic.note(format!(
+    // A folder of no shader is a project not started (a warning for a build); one whose shaders
+    // are links kiln did not follow is a build that would ship nothing (a sandbox's staging).
+    let diagnostic = match (build, links_refused) {
+        (true, 0) => Diagnostic::warning("K0009", message),
+        (_, 0) => Diagnostic::error("K0009", message),
+        (_, n) => Diagnostic::error("K0009", message).note(format!(
             "{n} links lead out of the project and were not followed; a sandbox that stages its inputs as links (Bazel's) sets `KILN_FOLLOW_LINKS=1` to follow them"
         )),
     };

@@ -205,3 +205,68 @@ fn a_project_staged_as_links_fails_loudly_and_builds_the_same_bytes_when_links_a
     assert_eq!(followed.status.code(), Some(0), "{}", String::from_utf8_lossy(&followed.stderr));
     assert_eq!(crate::support::shipped(&dir.path().join("staged-out")), crate::support::shipped(&plain));
 }
+
+/// The compact manifest of the example project, built once for the property test.
+fn example_manifest() -> &'static (String, String) {
+    static MANIFEST: std::sync::OnceLock<(String, String)> = std::sync::OnceLock::new();
+    MANIFEST.get_or_init(|| {
+        let dir = tempfile::tempdir().expect("temp dir");
+        build(&root().join("fixtures/project"), Some(dir.path()));
+        let text = std::fs::read_to_string(dir.path().join("manifest.json")).expect("manifest");
+        let first: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+        let pack = first["shaders"][0]["passes"][0]["packs"][0].as_str().expect("a pack").to_string();
+        (text, pack)
+    })
+}
+
+/// Whether `path` names something under `folder` once its `..` are taken.
+fn inside(path: &Path, folder: &Path) -> bool {
+    kiln::source::normalize_lexically(path).starts_with(folder)
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+
+    /// Every record reader, given a record whose paths are anything an attacker writes (or bytes
+    /// that are no record at all), either refuses it or names only files inside its folder, and
+    /// never panics.
+    #[test]
+    fn records_of_any_bytes_name_no_path_outside_their_folder(
+        path in "(\\.\\./|/|modules/|[0-9a-f]{4,32}|\\.|[a-z]{1,6}|\\\\|pack|%2e|\u{0}){0,12}",
+        bytes in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..512),
+    ) {
+        let folder = Path::new("/srv/kiln/output");
+        let (manifest, pack) = example_manifest();
+        let escaped = serde_json::to_string(&path).expect("a string");
+        let hostile = manifest.replace(&format!("\"{pack}\""), &escaped);
+        for text in [hostile.as_bytes(), &bytes] {
+            if let Ok(manifest) = kiln::manifest::Manifest::parse(text) {
+                for (pack, _) in manifest.packs() {
+                    proptest::prop_assert!(inside(&pack.under(folder), folder), "{pack}");
+                }
+            }
+            if let Ok(index) = serde_json::from_slice::<kiln::store::PassIndex>(text) {
+                for file in index.stage.values().flat_map(|s| s.files.values().flatten()) {
+                    proptest::prop_assert!(inside(&file.path.under(folder), folder), "{}", file.path);
+                }
+            }
+            if let Ok(record) = serde_json::from_slice::<kiln::store::Recorded>(text) {
+                for file in &record.files {
+                    proptest::prop_assert!(inside(&file.path.under(folder), folder), "{}", file.path.as_str());
+                }
+            }
+            let shard = tempfile::tempdir().expect("temp dir");
+            std::fs::write(shard.path().join("shard.json"), text).expect("write");
+            if let Ok(record) = kiln::build::shard::ShardRecord::read(shard.path()) {
+                for pass in &record.passes {
+                    let entry = kiln::store::pass_index_path(&pass.key);
+                    proptest::prop_assert!(inside(&shard.path().join(entry), shard.path()), "{}", pass.key.as_str());
+                }
+            }
+            let _ = kiln::runtime::read_trace(&String::from_utf8_lossy(text));
+        }
+        // And the hostile manifest itself is refused unless its path is a pack's.
+        let parsed = kiln::manifest::Manifest::parse(hostile.as_bytes());
+        proptest::prop_assert_eq!(parsed.is_ok(), kiln::manifest::PackPath::parse(&path).is_ok());
+    }
+}
