@@ -327,7 +327,11 @@ fn summarized(diagnostics: &[Diagnostic]) -> Vec<std::borrow::Cow<'_, Diagnostic
 /// so that a name from any input (a shader's, a usage log's, a trace's) can neither send a terminal
 /// a code nor forge a line of a log. The one place every message, label, note and help passes.
 pub fn shown_text(text: &str, breaks: bool) -> std::borrow::Cow<'_, str> {
-    let hidden = |c: char| (c.is_control() && !(breaks && c == '\n')) || ('\u{202a}'..='\u{202e}').contains(&c) || ('\u{2066}'..='\u{2069}').contains(&c);
+    let hidden = |c: char| {
+        (c.is_control() && !(breaks && c == '\n'))
+            || ('\u{202a}'..='\u{202e}').contains(&c)
+            || ('\u{2066}'..='\u{2069}').contains(&c)
+    };
     if !text.chars().any(hidden) {
         return std::borrow::Cow::Borrowed(text);
     }
@@ -400,7 +404,9 @@ pub fn render_plain(store: &SourceStore, diagnostics: &[Diagnostic]) -> String {
         // A span pointing outside its file is a bug in the reporting stage; show the message anyway.
         match term::emit_into_string(&config, store, &to_codespan(store, &d)) {
             Ok(text) => out.push_str(&text),
-            Err(_) => out.push_str(&format!("{:?}[{}]: {}\n", d.severity, d.code, shown_text(&d.message, false))),
+            Err(_) => {
+                out.push_str(&format!("{:?}[{}]: {}\n", d.severity, d.code, shown_text(&d.message, false)))
+            }
         }
     }
     out

@@ -331,7 +331,8 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
                 // Each pack's bytes hashed once in place (a merge links them in `alongside`), so
                 // that a no-op build trusts no pack it has not read back whole.
                 files.par_iter_mut().for_each(|file| {
-                    let digest = Digest::of_file(&file.path.under(&options.output), file.len.saturating_add(1));
+                    let digest =
+                        Digest::of_file(&file.path.under(&options.output), file.len.saturating_add(1));
                     let digest = digest.ok().filter(|digest| digest.len == file.len);
                     file.hash = digest.map(|digest| digest.finish().to_hex()[..32].to_string());
                 });

@@ -179,8 +179,9 @@ pub struct Runtime {
     warm: AtomicBool,
     misses: Mutex<Vec<Creation>>,
     pub(super) wgpu_cache: Option<wgpu::PipelineCache>,
-    /// Where [`Runtime::save_pipeline_cache`] writes `wgpu_cache`.
-    pub(super) cache_file: Option<PathBuf>,
+    /// Where [`Runtime::save_pipeline_cache`] writes `wgpu_cache`, with the header that names
+    /// its adapter.
+    pub(super) cache_file: Option<(PathBuf, String)>,
     /// Held while an ubershader's pipeline is made: warm-up threads asking for one state's
     /// make it once.
     pub(super) making_ubershader: Mutex<()>,

@@ -298,7 +298,12 @@ fn check_takes_the_project_flags_build_takes() {
 fn a_ci_job_pointed_at_unity_shaders_fails_rather_than_checking_nothing() {
     for command in ["check", "build"] {
         let out = tempfile::tempdir().expect("temp dir");
-        let run = crate::support::kiln(&[command, "fixtures/unity", "--output", out.path().to_str().expect("utf-8")]);
+        let run = crate::support::kiln(&[
+            command,
+            "fixtures/unity",
+            "--output",
+            out.path().to_str().expect("utf-8"),
+        ]);
         let stderr = String::from_utf8_lossy(&run.stderr);
         assert_eq!(run.status.code(), Some(1), "{command}: {stderr}");
         assert!(stderr.contains("error[K0424]"), "{command}: {stderr}");

@@ -646,14 +646,21 @@ fn the_driver_s_pipeline_cache_is_a_file_per_adapter_written_whole() {
     scene(&second);
     assert_eq!(second.pipelines_created(), first.pipelines_created());
 
-    // Torn: wgpu's header names the data's size, so it starts an empty cache instead.
+    // Torn, or one byte of the driver's data changed: kiln's hash refuses it before the driver
+    // sees a byte, and the cache starts empty.
     let data = std::fs::read(&path).expect("cache");
-    std::fs::write(&path, &data[..data.len() / 2]).expect("tear");
-    let mut third = Runtime::open(&gpu.device, &output).expect("opens");
-    // SAFETY: the file is this adapter's cache, cut short: wgpu's header check refuses it.
-    assert!(matches!(unsafe { third.open_pipeline_cache(&gpu.info, &caches) }, CacheFile::Loaded { .. }));
-    scene(&third);
-    assert!(third.save_pipeline_cache().expect("writes").is_some());
+    let mut changed = data.clone();
+    *changed.last_mut().expect("data") ^= 1;
+    for damaged in [&data[..data.len() / 2], &changed[..]] {
+        std::fs::write(&path, damaged).expect("damage");
+        let mut third = Runtime::open(&gpu.device, &output).expect("opens");
+        // SAFETY: nothing of a file that fails kiln's check reaches the driver.
+        let opened = unsafe { third.open_pipeline_cache(&gpu.info, &caches) };
+        assert!(matches!(opened, CacheFile::Discarded { .. }), "{opened:?}");
+        scene(&third);
+        assert!(third.save_pipeline_cache().expect("writes").is_some());
+    }
+    assert_eq!(std::fs::read(&path).expect("cache").len(), data.len(), "written whole again");
 }
 
 /// A trace line the project no longer has is skipped with a warning where it is written, the
