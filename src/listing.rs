@@ -310,13 +310,14 @@ pub fn render_text(listing: &Listing) -> String {
                     set.keywords.join(" ")
                 );
             }
-            let count = program.possible_variants.map_or("more than 2^128".to_string(), |n| n.to_string());
+            let count = crate::keywords::PassKeywords::count_text(program.possible_variants);
             if let Some(combinations) = program.dynamic_combinations {
                 let as_variants =
                     combinations.zip(program.possible_variants).and_then(|(c, p)| c.checked_mul(p));
+                let text = crate::keywords::PassKeywords::count_text;
                 let (combinations, as_variants, saved) = match (combinations, as_variants) {
-                    (Some(c), Some(v)) => (c.to_string(), v.to_string(), (v - v / c).to_string()),
-                    _ => ("more than 2^128".into(), "more than 2^128".into(), "more than 2^128".into()),
+                    (Some(c), Some(v)) => (text(Some(c)), text(Some(v)), text(Some(v - v / c))),
+                    _ => (text(combinations), text(None), text(None)),
                 };
                 let _ = writeln!(
                     out,

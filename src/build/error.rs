@@ -14,7 +14,7 @@ pub enum BuildLayerError {
         pass: usize,
         /// Its shader's name.
         shader: String,
-        /// How many variants it has (a number, or "more than 2^128").
+        /// How many variants it has (a number, or "more than 2^64").
         count: String,
         /// The limit.
         limit: u128,
@@ -65,12 +65,20 @@ pub enum BuildLayerError {
 impl From<BuildLayerError> for Diagnostic {
     fn from(error: BuildLayerError) -> Diagnostic {
         match error {
-            BuildLayerError::TooManyVariants { pass, shader, count, limit, span } => Diagnostic::error(
-                "K0408",
-                format!("pass {pass} of `{shader}` has {count} variants, over the limit of {limit}"),
-            )
-            .at(span, "its keyword sets multiply to that many")
-            .help("check the variants materials use with `kiln check` (without `--all-variants`)"),
+            BuildLayerError::TooManyVariants { pass, shader, count, limit, span } => {
+                let past_any_build = count.starts_with("more than");
+                let diagnostic = Diagnostic::error(
+                    "K0408",
+                    format!("pass {pass} of `{shader}` has {count} variants, over the limit of {limit}"),
+                )
+                .at(span, "its keyword sets multiply to that many");
+                let diagnostic = match past_any_build {
+                    true => diagnostic.note("that is past what any build could make: at a million variants a second, 2^64 takes half a million years"),
+                    false => diagnostic,
+                };
+                diagnostic
+                    .help("check the variants materials use with `kiln check` (without `--all-variants`)")
+            }
             BuildLayerError::Write { output, error } => {
                 Diagnostic::error("K0410", format!("cannot write to `{}`: {error}", output.display()))
             }

@@ -130,7 +130,7 @@ fn select_variants<'a>(
         VariantSelection::All { limit } => match program.keywords.possible() {
             Some(n) if n <= limit => program.keywords.enumerate(&[], true, None).unwrap_or_default(),
             count => {
-                let count = count.map_or("more than 2^128".to_string(), |n| n.to_string());
+                let count = crate::keywords::PassKeywords::count_text(count);
                 let span =
                     program.pragmas.keyword_sets.first().map(|s| s.span).unwrap_or(shader.shader.name.span);
                 let error = BuildLayerError::TooManyVariants {

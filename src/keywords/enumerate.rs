@@ -134,6 +134,16 @@ impl PassKeywords {
         }
     }
 
+    /// [`PassKeywords::possible`] as a listing or a diagnostic shows it: the number below 2^64,
+    /// and past it (or past counting) `more than 2^64`, a count no build could reach, rather than
+    /// 39 digits nobody reads.
+    pub fn count_text(count: Option<u128>) -> String {
+        match count {
+            Some(n) if n < 1 << 64 => n.to_string(),
+            _ => "more than 2^64".to_string(),
+        }
+    }
+
     /// The number of variants the pass could have: the product of its set sizes.
     pub fn possible(&self) -> Option<u128> {
         self.sets.iter().try_fold(1u128, |n, set| n.checked_mul(set.options.len() as u128))
@@ -300,4 +310,17 @@ fn product(options: &[Vec<usize>]) -> Vec<Vec<usize>> {
             })
             .collect()
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::PassKeywords;
+
+    #[test]
+    fn a_count_past_any_build_is_said_so_not_printed_in_39_digits() {
+        assert_eq!(PassKeywords::count_text(Some(1 << 20)), "1048576");
+        assert_eq!(PassKeywords::count_text(Some((1 << 64) - 1)), u64::MAX.to_string());
+        assert_eq!(PassKeywords::count_text(Some(1 << 127)), "more than 2^64");
+        assert_eq!(PassKeywords::count_text(None), "more than 2^64", "2^200 overflows the count");
+    }
 }

@@ -179,10 +179,12 @@ struct Document {
     version: i32,
 }
 
-/// A project's last check and the files it published diagnostics for (cleared when they go).
+/// A project's last check and what it last published for each file (the buffer's version and the
+/// diagnostics): a file is published again only when either changes, so an edit publishes its
+/// own buffer and the files whose diagnostics it changed, not every open buffer.
 struct Project {
     analysis: Analysis,
-    published: BTreeSet<PathBuf>,
+    published: std::collections::BTreeMap<PathBuf, (Option<i32>, Vec<lsp::Diagnostic>)>,
     /// Variants its last complete check compiled.
     variants: usize,
 }
@@ -262,7 +264,12 @@ impl Server<'_> {
                     text: p.text_document.text,
                     version: p.text_document.version,
                 };
-                self.changed(&canonical(&path), Some(document));
+                let path = canonical(&path);
+                // A document opened again is shown its diagnostics again, changed or not.
+                for project in self.projects.values_mut() {
+                    project.published.remove(&path);
+                }
+                self.changed(&path, Some(document));
             }
             "textDocument/didChange" => {
                 let Ok(p) = serde_json::from_value::<lsp::DidChangeTextDocumentParams>(params) else {
@@ -379,15 +386,21 @@ impl Server<'_> {
             .documents
             .keys()
             .filter(|path| project_of(path).as_deref() == Some(root) || analysis.file(path).is_some());
-        for path in project.published.iter().chain(open) {
+        for path in project.published.keys().chain(open) {
             files.entry(path.clone()).or_default();
         }
-        let mut published = BTreeSet::new();
+        let mut published = std::collections::BTreeMap::new();
         for (path, diagnostics) in files {
             let document = self.documents.get(&path);
             let Some(uri) = document.map(|d| d.uri.clone()).or_else(|| uri_of(&path)) else { continue };
-            if !diagnostics.is_empty() {
-                published.insert(path.clone());
+            // What the client shows already for this version of the buffer is not sent again.
+            let version = document.map(|d| d.version);
+            let shown = (version, diagnostics);
+            let unchanged = project.published.get(&path) == Some(&shown);
+            let diagnostics = shown.1.clone();
+            published.insert(path.clone(), shown);
+            if unchanged {
+                continue;
             }
             let params =
                 lsp::PublishDiagnosticsParams { uri, diagnostics, version: document.map(|d| d.version) };

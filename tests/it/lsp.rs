@@ -515,3 +515,37 @@ fn files_changed_behind_the_editor_are_checked_again() {
     );
     client.shutdown();
 }
+
+#[test]
+fn an_edit_publishes_its_own_buffer_and_what_it_changed_not_every_open_buffer() {
+    let Session { _dir, project, mut client } = session();
+    let others = [
+        "shaders/Lit.shader",
+        "shaders/Unlit.shader",
+        "shaders/Complex.shader",
+        "shaders/ComplexPass.wgsl",
+        "shaders/UnlitPass.wgsl",
+    ];
+    for relative in others {
+        open_saved(&mut client, &project, relative);
+    }
+    let (edited, text) = open_saved(&mut client, &project, "shaders/LitPass.wgsl");
+    client.diagnostics(&edited, Some(1));
+    let hover = |client: &mut Client| client.request("textDocument/hover", at(&edited, 0, 0));
+    hover(&mut client);
+    let opened = client.publications();
+    assert!(opened.len() >= others.len(), "each open buffer is shown its diagnostics once: {opened:?}");
+    // Edits that change no diagnostic: the edited buffer is published for each version, nothing else.
+    for version in 2..=11 {
+        client.change(&edited, version, &format!("{text}\n// edit {version}\n"));
+        client.diagnostics(&edited, Some(version));
+    }
+    hover(&mut client);
+    let published = client.publications();
+    let elsewhere: usize = published.iter().filter(|(uri, _)| **uri != edited).map(|(_, n)| n).sum();
+    assert_eq!(elsewhere, 0, "unchanged buffers published again: {published:?}");
+    // An edit that breaks a file the others include is published where it shows.
+    client.change(&edited, 12, &text.replace("return", "retrun"));
+    assert!(!errors(&client.diagnostics(&edited, Some(12))).is_empty());
+    client.shutdown();
+}

@@ -102,6 +102,21 @@ impl Client {
         latest["params"]["diagnostics"].as_array().cloned().unwrap_or_default()
     }
 
+    /// How many times each URI's diagnostics were published among the messages received so far
+    /// (which are dropped).
+    pub fn publications(&mut self) -> std::collections::BTreeMap<String, usize> {
+        self.pending.extend(self.incoming.try_iter());
+        let mut counts = std::collections::BTreeMap::new();
+        for message in self.pending.drain(..) {
+            if message["method"] == "textDocument/publishDiagnostics" {
+                *counts
+                    .entry(message["params"]["uri"].as_str().unwrap_or_default().to_string())
+                    .or_insert(0) += 1;
+            }
+        }
+        counts
+    }
+
     /// Waits for the next message from the server with `method` (a notification or a request)
     /// and returns its parameters.
     pub fn notification(&mut self, method: &str) -> Value {
