@@ -169,8 +169,8 @@ const MAX_OBJECT: u64 = 64 << 20;
 /// The largest module entry (64 hexadecimal digits, with room for a line break).
 const MAX_ENTRY: u64 = 1 << 10;
 
-/// The largest entry of a pass's parsed resources.
-const MAX_LAYOUTS: u64 = 16 << 20;
+/// The largest entry of a pass's parsed resources (a pass of thousands of texts is tens of KB).
+const MAX_LAYOUTS: u64 = 4 << 20;
 
 /// Uploads in flight at most, and the threads that make them: a build's workers hand what they
 /// compiled over and go on compiling (the queue's bound is its memory's).
@@ -579,11 +579,40 @@ fn read_at_most(response: &mut ureq::http::Response<ureq::Body>, limit: u64) -> 
     if said.is_some_and(|length| length > limit) {
         return Err(too_large());
     }
-    let mut bytes = Vec::with_capacity(said.unwrap_or(0).min(limit) as usize);
-    let reader = response.body_mut().as_reader();
-    std::io::Read::read_to_end(&mut std::io::Read::take(reader, limit + 1), &mut bytes)
-        .map_err(|_| "an answer could not be read".to_string())?;
-    if bytes.len() as u64 > limit { Err(too_large()) } else { Ok(bytes) }
+    if let Some(length) = said {
+        let mut bytes = Vec::with_capacity(length as usize);
+        let reader = response.body_mut().as_reader();
+        std::io::Read::read_to_end(&mut std::io::Read::take(reader, limit + 1), &mut bytes)
+            .map_err(|_| "an answer could not be read".to_string())?;
+        return if bytes.len() as u64 > limit { Err(too_large()) } else { Ok(bytes) };
+    }
+    // No length said: read in pieces of one size, joined once at the end, so that a body that
+    // never ends costs its limit once over, not a vector doubled up to it on every thread.
+    let mut reader = std::io::Read::take(response.body_mut().as_reader(), limit + 1);
+    let (mut pieces, mut total) = (Vec::new(), 0u64);
+    loop {
+        let mut piece = vec![0; 64 << 10];
+        let mut filled = 0;
+        while filled < piece.len() {
+            let read = std::io::Read::read(&mut reader, &mut piece[filled..])
+                .map_err(|_| "an answer could not be read".to_string())?;
+            if read == 0 {
+                break;
+            }
+            filled += read;
+        }
+        let ended = filled < piece.len();
+        piece.truncate(filled);
+        total += filled as u64;
+        if total > limit {
+            return Err(too_large());
+        }
+        pieces.push(piece);
+        if ended {
+            break;
+        }
+    }
+    Ok(pieces.concat())
 }
 
 /// A failed request in a few words (no URL, no header: nothing secret).
