@@ -70,7 +70,7 @@ impl Runtime {
         let cache = unsafe {
             self.device.create_pipeline_cache(&wgpu::PipelineCacheDescriptor {
                 label: Some("kiln"),
-                data: data.as_deref(),
+                data,
                 fallback: true,
             })
         };

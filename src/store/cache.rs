@@ -2,6 +2,7 @@
 //! variant skip naga entirely, and atomic writes (a temporary file and a rename) for all of them.
 
 use super::pass_index::{CachedStage, PassIndex, PassIndexView};
+pub use super::records::{OutputFile, PassKey};
 use crate::manifest::{Backend, FileRef, PackPath, open_regular};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -13,44 +14,6 @@ use std::path::{Path, PathBuf};
 pub fn hash(bytes: &[u8]) -> String {
     let digest = blake3::hash(bytes);
     digest.to_hex()[..32].to_string()
-}
-
-/// Identifies a pass across builds: a [`hash`] of its shader file and place. It names the pass's
-/// cache entry (`.cache/pass/<key>.json`) and is read from shard records, so nothing but 32
-/// lowercase hexadecimal digits parses.
-#[derive(Debug, Clone, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize)]
-#[serde(transparent)]
-pub struct PassKey(String);
-
-impl PassKey {
-    /// The key of the pass whose identity (shader file and place) reads `identity`.
-    pub fn of(identity: &str) -> PassKey {
-        PassKey(hash(identity.as_bytes()))
-    }
-
-    /// The key as text.
-    pub fn as_str(&self) -> &str {
-        &self.0
-    }
-}
-
-impl std::ops::Deref for PassKey {
-    type Target = str;
-    fn deref(&self) -> &str {
-        &self.0
-    }
-}
-
-impl<'de> Deserialize<'de> for PassKey {
-    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let text = String::deserialize(deserializer)?;
-        let hex = text.len() == 32 && text.bytes().all(|b| b.is_ascii_digit() || (b'a'..=b'f').contains(&b));
-        if hex {
-            Ok(PassKey(text))
-        } else {
-            Err(serde::de::Error::custom(format_args!("`{}` is not a pass's key", text.escape_debug())))
-        }
-    }
 }
 
 /// The last clean build: its inputs' hash, its counts, the files it left (packs and the
@@ -90,54 +53,6 @@ pub struct RecordedFile {
     /// older kiln recorded packs, is never taken as in place).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub hash: Option<String>,
-}
-
-/// A file a build leaves in its output folder, as the no-op record names it: the manifest, the
-/// materials or a pack, and nothing else (a record is untrusted: anyone can edit and re-seal it).
-#[derive(Debug, Clone, PartialEq, Eq, PartialOrd, Ord)]
-pub enum OutputFile {
-    /// `manifest.json`.
-    Manifest,
-    /// `materials.json`.
-    Materials,
-    /// A pack of modules.
-    Pack(PackPath),
-}
-
-impl OutputFile {
-    /// Its path relative to the output folder, with `/` separators.
-    pub fn as_str(&self) -> &str {
-        match self {
-            OutputFile::Manifest => crate::manifest::FILE_NAME,
-            OutputFile::Materials => crate::manifest::MATERIALS_FILE,
-            OutputFile::Pack(pack) => pack.as_str(),
-        }
-    }
-
-    /// Where it is under `output`.
-    pub fn under(&self, output: &Path) -> PathBuf {
-        match self {
-            OutputFile::Pack(pack) => pack.under(output),
-            _ => output.join(self.as_str()),
-        }
-    }
-}
-
-impl Serialize for OutputFile {
-    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
-        serializer.serialize_str(self.as_str())
-    }
-}
-
-impl<'de> Deserialize<'de> for OutputFile {
-    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        let text = std::borrow::Cow::<str>::deserialize(deserializer)?;
-        match &*text {
-            crate::manifest::FILE_NAME => Ok(OutputFile::Manifest),
-            crate::manifest::MATERIALS_FILE => Ok(OutputFile::Materials),
-            pack => PackPath::parse(pack).map(OutputFile::Pack).map_err(serde::de::Error::custom),
-        }
-    }
 }
 
 /// An output folder's cache and packs.

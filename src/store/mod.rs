@@ -3,7 +3,9 @@
 //! and verified on read, so damage costs a recompile, never a wrong module.
 
 mod cache;
+mod credentials;
 mod pass_index;
+mod records;
 pub mod remote;
 pub mod shared;
 

@@ -100,6 +100,9 @@ fn a_pack_replaced_by_a_link_or_a_device_is_not_read() {
     }
 }
 
+/// A change an attacker makes to a record's JSON.
+type Edit = fn(&mut serde_json::Value);
+
 /// Builds the example project as one shard into `shard`.
 fn one_shard(shard: &Path) {
     let run = kiln(&[
@@ -129,7 +132,7 @@ fn a_shard_record_naming_paths_outside_its_folder_writes_nothing_outside() {
     let pack = part["packs"][0].as_str().expect("a pack");
     std::fs::copy(shard.join(pack), shards.join("payload.pack")).expect("copy");
     std::fs::write(shards.join("escaped.json"), b"{}").expect("write");
-    let hostile: [(&str, fn(&mut serde_json::Value)); 2] = [
+    let hostile: [(&str, Edit); 2] = [
         ("pack", |record| {
             let pass = &mut record["passes"][0];
             let mut part: serde_json::Value =
