@@ -144,16 +144,12 @@ pub(crate) fn largest_function(text: &str) -> Option<(std::ops::Range<usize>, us
     let (mut largest, mut start, mut count, mut depth) = (None, 0, 0usize, 0usize);
     let mut at = 0;
     while at < bytes.len() {
+        if let Some(end) = comment_end(text, at) {
+            at = end;
+            continue;
+        }
         let b = bytes[at];
         match b {
-            b'/' if bytes.get(at + 1) == Some(&b'/') => {
-                at = text[at..].find('\n').map_or(bytes.len(), |n| at + n);
-                continue;
-            }
-            b'/' if bytes.get(at + 1) == Some(&b'*') => {
-                at = text[at + 2..].find("*/").map_or(bytes.len(), |n| at + 2 + n + 2);
-                continue;
-            }
             b'{' => {
                 if depth == 0 {
                     (start, count) = (at, 0);
@@ -191,6 +187,16 @@ pub(crate) fn largest_function(text: &str) -> Option<(std::ops::Range<usize>, us
     largest
 }
 
+/// Where the comment that starts at byte `at` of `text` ends (`None`: no comment starts there);
+/// one never closed runs to the end.
+fn comment_end(text: &str, at: usize) -> Option<usize> {
+    match &text.as_bytes()[at..] {
+        [b'/', b'/', ..] => Some(text[at..].find('\n').map_or(text.len(), |n| at + n)),
+        [b'/', b'*', ..] => Some(text[at + 2..].find("*/").map_or(text.len(), |n| at + 2 + n + 2)),
+        _ => None,
+    }
+}
+
 /// The statement of `text` with the most operators (binary ones, member accesses and indexing:
 /// what nests an expression one level deeper), with their count, where it may pass
 /// [`MAX_OPERATORS`]. A token-level scan: `;`, `{` and
@@ -208,16 +214,12 @@ fn longest_statement(text: &str) -> Option<(std::ops::Range<usize>, usize)> {
     let mut operand_before = false;
     let mut at = 0;
     while at < bytes.len() {
+        if let Some(end) = comment_end(text, at) {
+            at = end;
+            continue;
+        }
         let b = bytes[at];
         match b {
-            b'/' if bytes.get(at + 1) == Some(&b'/') => {
-                at = text[at..].find('\n').map_or(bytes.len(), |n| at + n);
-                continue;
-            }
-            b'/' if bytes.get(at + 1) == Some(&b'*') => {
-                at = text[at + 2..].find("*/").map_or(bytes.len(), |n| at + 2 + n + 2);
-                continue;
-            }
             b';' | b'{' | b'}' => {
                 if count > longest.as_ref().map_or(0, |(_, n)| *n) {
                     longest = Some((start..at, count));

@@ -213,8 +213,9 @@ pub struct Library {
 impl Library {
     /// The build in an output folder (`kiln build`'s, or `kiln watch`'s). The manifest and the
     /// materials must be of one build: a pair torn by a build stopped between writing the two is
-    /// refused. The modules' bytes are not checked against the manifest's hashes; for that, see
-    /// [`Library::open_verified`].
+    /// refused. Each module's bytes are checked against the manifest's hash when the run time
+    /// first makes a shader module of them (once a module, so the cost follows what is drawn);
+    /// [`Library::open_verified`] checks every one here, and [`Library::bytes`] gives them as read.
     pub fn open(output: impl AsRef<Path>) -> Result<Library, RuntimeError> {
         Library::open_checking(output.as_ref(), false)
     }

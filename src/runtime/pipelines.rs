@@ -659,6 +659,8 @@ impl Runtime {
     }
 
     /// A stage's WGSL module, created once per module (by its hash) and kept across pipelines.
+    /// Its bytes are checked against the manifest's hash before the driver sees them, once, on
+    /// first use: whatever [`Library::open`] read, a changed module never becomes a pipeline.
     pub(super) fn shader_module(
         &self,
         shader: &str,
@@ -669,6 +671,9 @@ impl Runtime {
             return Ok(module.clone());
         }
         let bytes = self.library.bytes(stage.pass, file).ok_or("its module is missing from its pack")?;
+        if blake3::hash(bytes).to_hex()[..32] != file.hash {
+            return Err("its module's bytes are not what the manifest names (the build was changed since): build again".into());
+        }
         let text = std::str::from_utf8(bytes).map_err(|e| e.to_string())?;
         let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some(&format!("{shader} {}", stage.interface.entry_point)),

@@ -68,6 +68,17 @@ fn damaged_cache_entries_and_modules_are_rebuilt_never_used() {
     assert_eq!(third.compiled, 0);
 }
 
+/// Flips one byte in the middle of the manifest's first module (its pack's length unchanged);
+/// returns the module's reference.
+fn flip_a_byte_of_the_first_module(manifest: &Manifest, output: &std::path::Path) -> kiln::manifest::FileRef {
+    let victim = manifest.files()[0].clone();
+    let pack = output.join(&victim.path);
+    let mut bytes = std::fs::read(&pack).expect("read");
+    bytes[victim.offset as usize + victim.size as usize / 2] ^= 0x20;
+    std::fs::write(&pack, &bytes).expect("write");
+    victim
+}
+
 #[test]
 fn a_damaged_module_in_a_pack_is_recompiled_though_its_cache_entry_is_intact() {
     let dir = tempfile::tempdir().expect("temp dir");
@@ -75,11 +86,7 @@ fn a_damaged_module_in_a_pack_is_recompiled_though_its_cache_entry_is_intact() {
     let first = build(&root().join("fixtures/project"), Some(&output));
     let manifest = verified_manifest(&output);
     // Flip one byte inside one module (same size); the pass indexes stay as they were.
-    let victim = manifest.files()[0].clone();
-    let pack = output.join(&victim.path);
-    let mut bytes = std::fs::read(&pack).expect("read");
-    bytes[victim.offset as usize + victim.size as usize / 2] ^= 0x20;
-    std::fs::write(&pack, &bytes).expect("write");
+    let victim = flip_a_byte_of_the_first_module(&manifest, &output);
     // Forget that the last build was clean, as any edit would, so the build looks at each module.
     std::fs::remove_dir_all(output.join(".cache/build")).expect("remove the inputs record");
     let second = build(&root().join("fixtures/project"), Some(&output));
@@ -263,11 +270,7 @@ fn a_pack_damaged_after_a_clean_build_is_not_kept_by_the_next_no_op() {
     build(&project, Some(&output));
     let manifest = verified_manifest(&output);
     // One byte inside one module, the pack's length unchanged, the record untouched.
-    let victim = manifest.files()[0].clone();
-    let pack = output.join(&victim.path);
-    let mut bytes = std::fs::read(&pack).expect("read");
-    bytes[victim.offset as usize + victim.size as usize / 2] ^= 0x20;
-    std::fs::write(&pack, &bytes).expect("write");
+    flip_a_byte_of_the_first_module(&manifest, &output);
     let next = build(&project, Some(&output));
     assert!(next.compiled >= 1, "the damaged pack was taken as in place: {next:?}");
     kiln::runtime::Library::open_verified(&output).expect("every module is the manifest's again");

@@ -460,6 +460,17 @@ fn guards_and_pragma_once_include_a_file_once() {
     assert_eq!(preprocess_files(&guarded, &[]), "g\n");
 }
 
+/// `main.wgsl` of the project in `folder` preprocessed for the fragment stage, the folder its
+/// includes' only root.
+fn preprocess_main(folder: &Path) -> kiln::preprocess::Preprocessed {
+    let mut store = SourceStore::new();
+    let main = store.load(&folder.join("main.wgsl")).expect("load");
+    let mut includes = Includes::new(IncludeConfig::new(vec![folder.to_path_buf()]));
+    let span = kiln::source::Span::new(main, 0..store.text(main).len());
+    let (program, _) = includes.load_program(&mut store, &[span]);
+    preprocess(&includes, &store, &program, &[], Stage::Fragment)
+}
+
 #[cfg(unix)]
 #[test]
 fn a_symlink_out_of_the_project_is_refused() {
@@ -469,12 +480,7 @@ fn a_symlink_out_of_the_project_is_refused() {
     std::fs::write(project.path().join("main.wgsl"), "#include \"link.wgsl\"\n").expect("write");
     std::os::unix::fs::symlink(outside.path().join("secret.wgsl"), project.path().join("link.wgsl"))
         .expect("symlink");
-    let mut store = SourceStore::new();
-    let main = store.load(&project.path().join("main.wgsl")).expect("load");
-    let mut includes = Includes::new(IncludeConfig::new(vec![project.path().to_path_buf()]));
-    let span = kiln::source::Span::new(main, 0..store.text(main).len());
-    let (program, _) = includes.load_program(&mut store, &[span]);
-    let out = preprocess(&includes, &store, &program, &[], Stage::Fragment);
+    let out = preprocess_main(project.path());
     assert_eq!(out.diagnostics.len(), 1);
     assert_eq!(out.diagnostics[0].code, "K0304");
     assert!(!out.text.contains("secret"));
@@ -566,12 +572,7 @@ fn an_include_out_of_the_project_gets_one_message_whether_or_not_the_file_exists
     let said = |name: &str| {
         std::fs::write(project.path().join("main.wgsl"), format!("#include \"{}\"\n", target(name)))
             .expect("write");
-        let mut store = SourceStore::new();
-        let main = store.load(&project.path().join("main.wgsl")).expect("load");
-        let mut includes = Includes::new(IncludeConfig::new(vec![project.path().to_path_buf()]));
-        let span = kiln::source::Span::new(main, 0..store.text(main).len());
-        let (program, _) = includes.load_program(&mut store, &[span]);
-        let out = preprocess(&includes, &store, &program, &[], Stage::Fragment);
+        let out = preprocess_main(project.path());
         assert_eq!(out.diagnostics.len(), 1, "{name}");
         let diagnostic = &out.diagnostics[0];
         (diagnostic.code.to_string(), diagnostic.message.replace(name, "NAME"))

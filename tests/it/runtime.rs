@@ -687,3 +687,29 @@ fn a_stale_trace_entry_is_a_warning_and_a_stale_usage_log_line_an_error() {
     assert_eq!(run.status.code(), Some(1), "{stderr}");
     assert!(stderr.contains("error[K0533]") && stderr.contains("usage.jsonl:1:1"), "{stderr}");
 }
+
+/// A module changed in its pack since the build (its text still UTF-8 and the same length) opens,
+/// as `Library::open` reads no module whole, but never reaches the driver: the first pipeline
+/// that needs it is refused.
+#[test]
+fn a_module_changed_since_the_build_never_reaches_the_driver() {
+    let Some(gpu) = gpu("the changed module test") else { return };
+    let dir = tempfile::tempdir().expect("temp dir");
+    let output = dir.path().join("out");
+    built(&root().join("fixtures/runtime"), &output);
+    let manifest = kiln::manifest::Manifest::read(&output).expect("manifest");
+    for file in manifest.files().into_iter().filter(|f| f.path.as_str().ends_with(".wgsl.pack")) {
+        let path = output.join(&file.path);
+        let mut bytes = std::fs::read(&path).expect("pack");
+        let module = file.offset as usize..(file.offset + file.size) as usize;
+        let letter = module.clone().rev().find(|&at| bytes[at].is_ascii_alphabetic()).expect("a letter");
+        bytes[letter] ^= 0x20;
+        std::fs::write(&path, bytes).expect("write");
+    }
+    let runtime = Runtime::open(&gpu.device, &output).expect("opens");
+    let material = runtime.library().material(PRESETS[0]).expect("built").clone();
+    let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
+    let refused = draw(&runtime, &gpu, &material, &keywords).expect_err("a changed module was drawn");
+    assert!(refused.to_string().contains("not what the manifest names"), "{refused}");
+    assert_eq!(runtime.pipelines_created(), 0);
+}
