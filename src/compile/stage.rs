@@ -101,6 +101,32 @@ fn compile_unguarded(
                 request.stage.name()
             )),
             None => match closest_function(&module, request.entry) {
+                // The function is there, unmarked: as Unity's HLSL needs no mark, every user
+                // coming from it meets this first.
+                Some(name) if name == request.entry => {
+                    let stage = request.stage.name();
+                    let unmarked =
+                        module.functions.iter().find(|(_, f)| f.name.as_deref() == Some(request.entry));
+                    let place = unmarked
+                        .and_then(|(handle, _)| module.functions.get_span(handle).to_range())
+                        // `fn NAME`, not the whole body.
+                        .map(|range| {
+                            range.start..range.end.min(range.start + "fn ".len() + request.entry.len())
+                        })
+                        .and_then(|range| mapper.map.map_range(range));
+                    let mut d = match place {
+                        Some(origin) => d.label(origin.span, format!("this function has no `@{stage}`")),
+                        None => d,
+                    };
+                    d.message = format!(
+                        "`{}` is a function, not a {stage} entry point: it lacks `@{stage}`",
+                        request.entry
+                    );
+                    d.note(format!(
+                        "in WGSL the function itself is marked as an entry point: `#pragma {stage}` names it, `@{stage}` makes it one"
+                    ))
+                    .help(format!("mark it: `@{stage} fn {}(...)`", request.entry))
+                }
                 Some(name) => d.help(format!("did you mean `{name}`?")),
                 None => d.help(format!(
                     "define `@{} fn {}(...)` in the program or its includes",
