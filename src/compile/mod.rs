@@ -94,10 +94,54 @@ pub(crate) fn parse(text: &str, mapper: &Mapper) -> Result<naga::Module, Diagnos
             labels.insert(0, (naga::Span::new(end as u32 - 1, end as u32), "expected `;` after this".into()));
             labels[1].1 = "found here".into();
         }
+        let hlsl = labels
+            .first()
+            .and_then(|(span, _)| span.to_range())
+            .and_then(|range| hlsl_spelling(text, range.start));
         let mut diagnostic = mapper.diagnostic("K0401", error.message().to_string(), labels);
         diagnostic.notes.extend(error.notes().map(str::to_string));
+        if let Some((hlsl, wgsl)) = hlsl {
+            diagnostic
+                .notes
+                .push(format!("`{hlsl}` is HLSL; WGSL writes {wgsl} (a `WGSLPROGRAM` block is WGSL)"));
+        }
         diagnostic
     })
+}
+
+/// HLSL's spellings users bring from Unity, with WGSL's (docs/first-shader.md's table).
+const HLSL_SPELLINGS: &[(&str, &str)] = &[
+    ("float", "`f32`"),
+    ("float2", "`vec2<f32>` (or `vec2f`)"),
+    ("float3", "`vec3<f32>` (or `vec3f`)"),
+    ("float4", "`vec4<f32>` (or `vec4f`)"),
+    ("half", "`f16` (with `enable f16;`), or `f32`"),
+    ("half2", "`vec2<f16>`, or `vec2<f32>`"),
+    ("half3", "`vec3<f16>`, or `vec3<f32>`"),
+    ("half4", "`vec4<f16>`, or `vec4<f32>`"),
+    ("int2", "`vec2<i32>`"),
+    ("int3", "`vec3<i32>`"),
+    ("int4", "`vec4<i32>`"),
+    ("uint", "`u32`"),
+    ("float2x2", "`mat2x2<f32>`"),
+    ("float3x3", "`mat3x3<f32>`"),
+    ("float4x4", "`mat4x4<f32>`"),
+    ("mul", "`a * b` (matrix times vector, in that order)"),
+    ("lerp", "`mix(a, b, t)`"),
+    ("frac", "`fract(x)`"),
+    ("tex2D", "`textureSample(texture, sampler, uv)`"),
+    ("static", "`const` (or a `var<private>`)"),
+    ("cbuffer", "a `struct` and `var<uniform>`"),
+];
+
+/// The HLSL spelling on the line of `at` in `text`, if one is there, with WGSL's.
+fn hlsl_spelling(text: &str, at: usize) -> Option<(&'static str, &'static str)> {
+    let at = at.min(text.len());
+    let start = text[..at].rfind('\n').map_or(0, |n| n + 1);
+    let end = text[at..].find('\n').map_or(text.len(), |n| at + n);
+    let line = &text[start..end];
+    let words = line.split(|c: char| !c.is_ascii_alphanumeric() && c != '_');
+    words.filter_map(|word| HLSL_SPELLINGS.iter().find(|(hlsl, _)| *hlsl == word)).next().copied()
 }
 
 /// Where the token before `at` ends in `text`: blanks, line breaks and `//` comments skipped
