@@ -672,7 +672,9 @@ pub struct FileRef {
 impl FileRef {
     /// Where the module ends in its pack.
     pub fn end(&self) -> u64 {
-        self.offset + self.size
+        // Saturating: a record's offset and size are untrusted (a pass's cache entry is read
+        // unchecked), and an end past any pack is a module that cannot be read, not a panic.
+        self.offset.saturating_add(self.size)
     }
 
     /// The module's bytes within its pack's bytes (`None` when the pack is too short).

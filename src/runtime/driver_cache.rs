@@ -14,8 +14,9 @@ use std::path::{Path, PathBuf};
 /// What [`Runtime::open_pipeline_cache`] found.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub enum CacheFile {
-    /// The adapter's file, this many bytes, given to the driver (which starts empty where its
-    /// header names another vendor, device or driver version).
+    /// The adapter's file, of this many bytes (kiln's header and the driver's data), whose data
+    /// was given to the driver (which starts empty where wgpu's own header names another vendor
+    /// or device).
     Loaded {
         /// The file.
         path: PathBuf,

@@ -259,4 +259,15 @@ mod tests {
             assert!(serde_json::from_str::<PassIndex>(&damaged).is_err(), "{missing} refused");
         }
     }
+
+    #[test]
+    fn a_module_placed_past_any_pack_reads_as_missing_not_a_panic() {
+        let json = serde_json::to_string(&index())
+            .expect("serializes")
+            .replace("\"offset\":20", &format!("\"offset\":{}", u64::MAX));
+        let index: PassIndex = serde_json::from_str(&json).expect("reads");
+        let far = index.stage["k3"].files.values().flatten().next().expect("a file").clone();
+        assert_eq!(far.end(), u64::MAX);
+        assert_eq!(far.slice(&[0; 64]), None);
+    }
 }
