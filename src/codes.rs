@@ -115,6 +115,7 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0422", "construct a back end's language lacks"),
     ("K0423", "written code glslang refuses"),
     ("K0424", "program in a language kiln does not compile"),
+    ("K0425", "a struct larger than 4 GiB"),
     ("K0501", "invalid material file"),
     ("K0502", "unknown shader"),
     ("K0503", "unknown property"),

@@ -133,6 +133,33 @@ pub struct BuildOptions {
     pub groups: crate::compile::bind::GroupNames,
     /// Reads back the GLSL and HLSL each module is written in (`kiln check`, where installed).
     pub glslang: Option<crate::compile::glslang::Glslang>,
+    /// Stops the build before its next pass when set.
+    pub cancel: Cancel,
+}
+
+/// A caller's way to stop a build early: cloned into the build, set from another thread.
+/// A build told to stop starts no further pass; what it returns is partial and is for the
+/// caller to drop.
+#[derive(Clone, Debug, Default)]
+pub struct Cancel(Option<std::sync::Arc<std::sync::atomic::AtomicBool>>);
+
+impl Cancel {
+    /// A token that [`Cancel::cancel`] can set (the default one never is).
+    pub fn new() -> Cancel {
+        Cancel(Some(Default::default()))
+    }
+
+    /// Tells every build holding a clone of this token to stop.
+    pub fn cancel(&self) {
+        if let Some(flag) = &self.0 {
+            flag.store(true, std::sync::atomic::Ordering::Relaxed);
+        }
+    }
+
+    /// Whether the build was told to stop.
+    pub fn is_cancelled(&self) -> bool {
+        self.0.as_ref().is_some_and(|flag| flag.load(std::sync::atomic::Ordering::Relaxed))
+    }
 }
 
 impl BuildOptions {
@@ -165,6 +192,7 @@ impl BuildOptions {
             given_files: 0,
             groups: Default::default(),
             glslang: None,
+            cancel: Cancel::default(),
         }
     }
 }
@@ -421,7 +449,7 @@ fn build_passes(
             // one a thread is in flight (a pass's own steps are tasks an item: `tasks`).
             let next = std::sync::atomic::AtomicUsize::new(0);
             rayon::broadcast(|_| {
-                loop {
+                while !options.cancel.is_cancelled() {
                     let index = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                     let Some(work) = mine.get(index) else { return };
                     let (part, built) = pass::build_pass(work, store, includes, catalog, options, &session);

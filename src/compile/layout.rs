@@ -39,7 +39,7 @@ struct TypeLayout {
 impl TypeLayout {
     /// The stride of an array of this type (and of a matrix's columns).
     fn stride(self) -> u32 {
-        round_up(self.alignment, self.size)
+        u32::try_from(round_up(self.alignment, u64::from(self.size))).unwrap_or(u32::MAX)
     }
 }
 
@@ -180,8 +180,9 @@ fn attribute_value(module: &Module, attribute: &LayoutAttribute) -> Option<u32> 
     })
 }
 
-fn round_up(alignment: u32, n: u32) -> u32 {
-    n.div_ceil(alignment.max(1)) * alignment.max(1)
+fn round_up(alignment: u32, n: u64) -> u64 {
+    let alignment = u64::from(alignment.max(1));
+    n.div_ceil(alignment) * alignment
 }
 
 /// The spec's size and alignment of a non-struct type whose parts are laid out in `layouts`.
@@ -285,6 +286,37 @@ pub(crate) fn correct(module: &mut Module, text: &str, mapper: &Mapper) -> Resul
     Ok(host)
 }
 
+/// A struct whose members' `@size` literals (and 2 bytes for each other member, the least a
+/// member takes) add up past 4 GiB, refused before naga parses
+/// it: naga sums offsets in 32 bits (they wrap, and its message then says a member "crosses the
+/// structure boundary"; a debug build of naga panics). Sums that only types push past are caught
+/// after the parse, by [`correct`].
+pub(super) fn oversized_struct(text: &str, mapper: &Mapper) -> Option<Diagnostic> {
+    if !has_layout_attribute(text) {
+        return None;
+    }
+    for declared in scan_structs(text) {
+        let mut end = 0u64;
+        for member in &declared.members {
+            // A member without `@size` takes at least an `f16`'s 2 bytes.
+            let size = member.size.as_ref();
+            let literal = size.map(|s| s.expression.trim().trim_end_matches(['u', 'i']));
+            end += literal.map_or(2, |l| l.parse::<u64>().unwrap_or(0));
+            if end > u64::from(u32::MAX) {
+                let range = size.map_or(member.range.clone(), |s| s.range.clone());
+                let message = format!(
+                    "struct `{}` is larger than 4 GiB: its members take at least {end} bytes by `{}`",
+                    declared.name, member.name
+                );
+                let help =
+                    "a struct's size must fit in 32 bits; make the member's `@size` (or its array) smaller";
+                return Some(refusal(mapper, "K0425", message, range, "past 4 GiB here", help));
+            }
+        }
+    }
+    None
+}
+
 /// Whether the text has an `@align` or `@size` attribute (or the words in a comment).
 pub(super) fn has_layout_attribute(text: &str) -> bool {
     text.match_indices('@').any(|(at, _)| {
@@ -312,7 +344,7 @@ fn place_members(
     mapper: &Mapper,
 ) -> Result<Option<StructPlacement>, Diagnostic> {
     let mut placement = StructPlacement { offsets: Vec::new(), members: Vec::new(), alignment: 1, size: 0 };
-    let mut end = 0u32;
+    let mut end = 0u64;
     let struct_name = written.map_or("", |w| w.name.as_str());
     for (index, member) in members.iter().enumerate() {
         let Some(ty) = layouts[member.ty.index()] else { return Ok(None) };
@@ -358,13 +390,31 @@ fn place_members(
         }
         let alignment = explicit_align.unwrap_or(ty.alignment);
         let size = explicit_size.unwrap_or(ty.size).max(ty.size);
+        // In 64 bits: naga's own sums wrap at 2^32 (a member past the end reads as one that
+        // crosses it), and a struct's size is a `u32` everywhere after.
         let offset = round_up(alignment, end);
-        placement.offsets.push(offset);
-        placement.members.push((alignment, size));
+        let member_end = offset + u64::from(size);
         placement.alignment = placement.alignment.max(alignment);
-        end = offset.saturating_add(size);
+        let struct_end = round_up(placement.alignment, member_end);
+        let (Ok(offset32), Ok(_)) = (u32::try_from(offset), u32::try_from(struct_end)) else {
+            let name = member.name.as_deref().unwrap_or_default();
+            let message = format!(
+                "struct `{struct_name}` is larger than 4 GiB: `{name}` at byte {offset} with size {size} ends at \
+                 byte {member_end}"
+            );
+            let help =
+                "a struct's size must fit in 32 bits; make the member's `@size` (or its array) smaller";
+            let Some(declared) = declared else {
+                return Err(Diagnostic::error("K0425", message).help(help.to_string()));
+            };
+            let range = declared.size.as_ref().map_or(declared.range.clone(), |a| a.range.clone());
+            return Err(refusal(mapper, "K0425", message, range, "this member ends past 4 GiB", help));
+        };
+        placement.offsets.push(offset32);
+        placement.members.push((alignment, size));
+        end = member_end;
     }
-    placement.size = round_up(placement.alignment, end);
+    placement.size = u32::try_from(round_up(placement.alignment, end)).unwrap_or(u32::MAX);
     Ok(Some(placement))
 }
 

@@ -82,6 +82,9 @@ pub(crate) fn parse(text: &str, mapper: &Mapper) -> Result<naga::Module, Diagnos
         diagnostic.help = Some("split it into functions, or loop where macros repeat code".into());
         return Err(diagnostic);
     }
+    if let Some(diagnostic) = layout::oversized_struct(text, mapper) {
+        return Err(diagnostic);
+    }
     naga::front::wgsl::parse_str(text).map_err(|error| {
         let mut labels: Vec<(naga::Span, String)> =
             error.labels().map(|(span, message)| (span, message.to_string())).collect();

@@ -38,6 +38,7 @@ pub(super) struct Analysis {
 }
 
 /// Where checks keep what outlives them.
+#[derive(Clone)]
 pub(super) struct Caches {
     /// The shared module cache given to the server (`--cache-dir`), which wins over the
     /// project's.
@@ -64,6 +65,7 @@ impl Analysis {
         overlay: Arc<Overlay>,
         caches: &Caches,
         active_only: Option<&Selections>,
+        cancel: crate::project::Cancel,
     ) -> Analysis {
         let mut store = SourceStore::with_overlay(overlay);
         let mode = BuildMode {
@@ -73,6 +75,7 @@ impl Analysis {
             // A check runs on every edit: a slow server must not hold the editor's diagnostics
             // (each check is a new build, with a breaker of its own). The shared folder serves.
             remote_cache_mode: Some(crate::store::remote::RemoteMode::Off),
+            cancel,
             ..BuildMode::default()
         };
         let narrow = |catalog: &mut Catalog| {

@@ -6,6 +6,11 @@
 //! Every request is answered from one [`analysis::Analysis`] per project: `kiln check` run over the
 //! editor's unsaved buffers (a [`crate::source::Overlay`]), with the project's caches, so a pass
 //! whose text did not change costs preprocessing only. Edits that arrive together are checked once.
+//!
+//! A check runs on a thread of its own, one at a time, so requests are answered while it runs,
+//! from the project's last check; only a request about text that check has not seen (a project
+//! never checked, a buffer typed in since) waits for the check to come. An edit to the project a check is reading cancels that check: it starts no
+//! further pass, its result is dropped, and the project is checked again with the edit.
 
 mod analysis;
 mod complete;
@@ -15,6 +20,7 @@ mod text;
 mod transport;
 mod variants;
 
+use crate::project::Cancel;
 use analysis::{Analysis, Caches, project_of, write_library};
 use lsp_server::{Connection, ErrorCode, Message, Notification, Request, RequestId, Response};
 use lsp_types as lsp;
@@ -113,8 +119,14 @@ pub fn serve(connection: &Connection, options: &ServerOptions) -> Result<(), Lsp
     };
     // Without the copy, go-to-definition into the library has nothing to open; nothing else needs it.
     let _ = write_library(&caches.library);
+    let (finished, checks) = crossbeam_channel::unbounded();
     let mut server = Server {
         connection,
+        running: None,
+        finished,
+        deferred: Vec::new(),
+        widen: BTreeSet::new(),
+        cancelled: 0,
         documents: HashMap::new(),
         projects: HashMap::new(),
         stale: BTreeSet::new(),
@@ -123,19 +135,12 @@ pub fn serve(connection: &Connection, options: &ServerOptions) -> Result<(), Lsp
         refresh_lenses,
         next_request: 0,
     };
-    while let Ok(message) = connection.receiver.recv() {
-        if server.handle(message)? == Flow::Exit {
-            return Ok(());
-        }
-        // Edits that came together are checked once, after the last of them.
-        while let Ok(message) = connection.receiver.try_recv() {
-            if server.handle(message)? == Flow::Exit {
-                return Ok(());
-            }
-        }
-        server.refresh()?;
+    let served = server.run(&checks);
+    // A check still running is of no use to anyone now.
+    if let Some(running) = &server.running {
+        running.cancel.cancel();
     }
-    Ok(())
+    served
 }
 
 fn initialize_result() -> Value {
@@ -189,12 +194,25 @@ struct Project {
     variants: usize,
 }
 
+/// A check running on its own thread.
+struct Running {
+    root: PathBuf,
+    cancel: Cancel,
+}
+
+/// What a check's thread sends back.
+struct Finished {
+    root: PathBuf,
+    analysis: Analysis,
+}
+
 /// Past this many variants, an edit's first diagnostics come from the active variants alone.
 const ACTIVE_FIRST_ABOVE: usize = 64;
 
 /// The notification sent when a check of every variant of a project is published
-/// (`{"root": URI, "variants": N, "compiled": N, "reused": N}`: stage modules naga compiled and
-/// those taken from caches): `$/` marks it as one clients may ignore.
+/// (`{"root": URI, "variants": N, "compiled": N, "reused": N, "cancelled": N}`: stage modules
+/// naga compiled and those taken from caches, and checks that newer edits cancelled since the
+/// last one): `$/` marks it as one clients may ignore.
 pub const CHECKED: &str = "$/kiln/checked";
 
 struct Server<'c> {
@@ -210,6 +228,16 @@ struct Server<'c> {
     caches: Caches,
     refresh_lenses: bool,
     next_request: i32,
+    /// The check in flight, if any (one at a time: each spreads over every core already).
+    running: Option<Running>,
+    /// Where check threads send what they found.
+    finished: crossbeam_channel::Sender<Finished>,
+    /// Requests about projects not yet checked, answered when their first check ends.
+    deferred: Vec<Request>,
+    /// Large projects whose active variants were checked, to be checked whole next.
+    widen: BTreeSet<PathBuf>,
+    /// Checks cancelled by newer edits since the last `$/kiln/checked`.
+    cancelled: usize,
 }
 
 /// The canonical path of a document (as given when the file is not on disk).
@@ -218,11 +246,44 @@ fn canonical(path: &Path) -> PathBuf {
 }
 
 impl Server<'_> {
+    /// Serves messages and checks' results until `exit` or the client goes away.
+    fn run(&mut self, checks: &crossbeam_channel::Receiver<Finished>) -> Result<(), LspError> {
+        loop {
+            crossbeam_channel::select! {
+                recv(self.connection.receiver) -> message => {
+                    let Ok(message) = message else { return Ok(()) };
+                    if self.handle(message)? == Flow::Exit {
+                        return Ok(());
+                    }
+                    // Edits that came together are checked once, after the last of them.
+                    while let Ok(message) = self.connection.receiver.try_recv() {
+                        if self.handle(message)? == Flow::Exit {
+                            return Ok(());
+                        }
+                    }
+                }
+                recv(checks) -> finished => {
+                    if let Ok(finished) = finished {
+                        self.finished(finished)?;
+                    }
+                }
+            }
+            self.refresh();
+        }
+    }
+
     fn handle(&mut self, message: Message) -> Result<Flow, LspError> {
         match message {
             Message::Request(request) => {
                 if self.connection.handle_shutdown(&request)? {
                     return Ok(Flow::Exit);
+                }
+                if let Some(root) = self.unchecked_root(&request) {
+                    if self.running.as_ref().map(|r| &r.root) != Some(&root) {
+                        self.stale.insert(root);
+                    }
+                    self.deferred.push(request);
+                    return Ok(Flow::Continue);
                 }
                 let id = request.id.clone();
                 // A bug in one answer must not end the session: the request fails, not the server.
@@ -243,10 +304,35 @@ impl Server<'_> {
                     return Ok(Flow::Exit);
                 }
                 self.notification(notification);
+                // A check reading what just changed is moot.
+                if let Some(running) = &self.running
+                    && self.stale.contains(&running.root)
+                {
+                    running.cancel.cancel();
+                }
             }
             Message::Response(_) => {}
         }
         Ok(Flow::Continue)
+    }
+
+    /// The project a request must wait for: one not checked yet, or one whose check to come
+    /// reads the request's buffer as it is now and its last check did not (a completion just
+    /// after typing is about the text typed). Every other request is answered at once.
+    fn unchecked_root(&self, request: &Request) -> Option<PathBuf> {
+        let uri = match request.method.as_str() {
+            "workspace/executeCommand" => request.params.get("arguments")?.get(0)?,
+            _ => request.params.get("textDocument")?.get("uri")?,
+        };
+        let uri: lsp::Uri = serde_json::from_value(uri.clone()).ok()?;
+        let path = canonical(&path_of(&uri)?);
+        let root = self.root_of(&path)?;
+        let Some(project) = self.projects.get(&root) else { return Some(root) };
+        let coming = self.stale.contains(&root) || self.running.as_ref().is_some_and(|r| r.root == root);
+        let analysis = &project.analysis;
+        let seen = |text: &str| analysis.file(&path).is_some_and(|file| analysis.store.text(file) == text);
+        let typed = self.documents.get(&path).is_some_and(|document| !seen(&document.text));
+        (coming && typed).then_some(root)
     }
 
     fn send(&self, message: Message) -> Result<(), LspError> {
@@ -318,24 +404,72 @@ impl Server<'_> {
                 self.stale.insert(root.clone());
             }
         }
+        self.widen.retain(|root| !self.stale.contains(root));
     }
 
-    /// Checks every stale project again and publishes what changed. A large project is checked
-    /// in two steps: each pass's active variant first (published at once), then every variant,
-    /// unless more edits arrived meanwhile (they are taken first, and the project stays stale).
-    fn refresh(&mut self) -> Result<(), LspError> {
-        while let Some(root) = self.stale.pop_first() {
+    /// Starts the next check when none runs: a stale project (a large one's active variants
+    /// first, published at once), else the whole of a large project whose active variants were
+    /// checked last.
+    fn refresh(&mut self) {
+        if self.running.is_some() {
+            return;
+        }
+        let (root, active_only) = if let Some(root) = self.stale.pop_first() {
             let large = self.projects.get(&root).is_some_and(|p| p.variants > ACTIVE_FIRST_ABOVE);
-            if large {
-                self.analyse(&root, true);
-                self.publish(&root)?;
-                if !self.connection.receiver.is_empty() {
-                    self.stale.insert(root);
-                    return Ok(());
-                }
-            }
-            self.analyse(&root, false);
-            self.publish(&root)?;
+            (root, large)
+        } else if let Some(root) = self.widen.pop_first() {
+            (root, false)
+        } else {
+            return;
+        };
+        let overlay: Arc<crate::source::Overlay> =
+            Arc::new(self.documents.iter().map(|(path, d)| (path.clone(), d.text.clone())).collect());
+        let selections = active_only.then(|| self.selections.get(&root).cloned().unwrap_or_default());
+        let (caches, cancel, sender) = (self.caches.clone(), Cancel::new(), self.finished.clone());
+        let (checked, told) = (root.clone(), cancel.clone());
+        let check = move || {
+            let run = || Analysis::run(&checked, overlay, &caches, selections.as_ref(), told);
+            // A panic in a dependency must not end the session: the project shows it and is
+            // checked again after the next edit.
+            let analysis = std::panic::catch_unwind(std::panic::AssertUnwindSafe(run)).unwrap_or_else(|_| {
+                Analysis::failed(
+                    &checked,
+                    &caches.library,
+                    "kiln failed while checking this project (a bug: please report it)",
+                )
+            });
+            // The server may have stopped meanwhile: then nobody waits for this.
+            let _ = sender.send(Finished { root: checked, analysis });
+        };
+        if let Err(error) = std::thread::Builder::new().name("kiln-check".into()).spawn(check) {
+            let why = format!("kiln could not start a check: {error}");
+            let analysis = Analysis::failed(&root, &self.caches.library, &why);
+            let _ = self.finished.send(Finished { root: root.clone(), analysis });
+        }
+        self.running = Some(Running { root, cancel });
+    }
+
+    /// A check ended: unless an edit cancelled it, its project keeps it and is published, and
+    /// the requests that waited for it are answered.
+    fn finished(&mut self, finished: Finished) -> Result<(), LspError> {
+        let Finished { root, analysis } = finished;
+        // Decided here, where edits cancel: a check that ended as an edit came is moot too.
+        if self.running.take().is_some_and(|running| running.cancel.is_cancelled()) {
+            self.cancelled += 1;
+            return Ok(());
+        }
+        let partial = analysis.partial;
+        let before = self.projects.remove(&root);
+        let variants = match (&before, partial) {
+            (Some(before), true) => before.variants,
+            _ => analysis.variants(),
+        };
+        let published = before.map(|p| p.published).unwrap_or_default();
+        self.projects.insert(root.clone(), Project { analysis, published, variants });
+        self.publish(&root)?;
+        if partial {
+            self.widen.insert(root.clone());
+        } else {
             let summary =
                 self.projects.get(&root).and_then(|p| p.analysis.checked.as_ref()).map(|c| &c.summary);
             let checked = json!({
@@ -343,35 +477,14 @@ impl Server<'_> {
                 "variants": summary.map(|s| s.variants),
                 "compiled": summary.map(|s| s.compiled),
                 "reused": summary.map(|s| s.reused + s.shared),
+                "cancelled": std::mem::take(&mut self.cancelled),
             });
             self.send(Message::Notification(Notification::new(CHECKED.into(), checked)))?;
         }
+        for request in std::mem::take(&mut self.deferred) {
+            self.handle(Message::Request(request))?;
+        }
         Ok(())
-    }
-
-    /// Checks a project (`active_only`: each pass's active variant alone) and keeps the result.
-    fn analyse(&mut self, root: &Path, active_only: bool) {
-        let overlay: Arc<crate::source::Overlay> =
-            Arc::new(self.documents.iter().map(|(path, d)| (path.clone(), d.text.clone())).collect());
-        let selections = active_only.then(|| self.selections.entry(root.to_path_buf()).or_default());
-        let selections = selections.map(|s| &*s);
-        let run = || Analysis::run(root, overlay, &self.caches, selections);
-        // A panic in a dependency must not end the session: the project shows it and is checked
-        // again after the next edit.
-        let analysis = std::panic::catch_unwind(std::panic::AssertUnwindSafe(run)).unwrap_or_else(|_| {
-            Analysis::failed(
-                root,
-                &self.caches.library,
-                "kiln failed while checking this project (a bug: please report it)",
-            )
-        });
-        let before = self.projects.remove(root);
-        let variants = match (&before, active_only) {
-            (Some(before), true) => before.variants,
-            _ => analysis.variants(),
-        };
-        let published = before.map(|p| p.published).unwrap_or_default();
-        self.projects.insert(root.to_path_buf(), Project { analysis, published, variants });
     }
 
     /// Publishes a project's diagnostics and inactive regions: for every file that has some, every
@@ -415,21 +528,19 @@ impl Server<'_> {
         Ok(())
     }
 
-    /// The root of the project that answers for `path`, checked now if stale (a file no project
-    /// reads: none).
-    fn ensure(&mut self, path: &Path) -> Option<PathBuf> {
-        let root = project_of(path)
+    /// The root of the project that answers for `path` (a file no project reads: none).
+    fn root_of(&self, path: &Path) -> Option<PathBuf> {
+        project_of(path)
             .filter(|root| self.projects.contains_key(root) || self.documents.contains_key(path))
             .or_else(|| {
                 self.projects.iter().find(|(_, p)| p.analysis.file(path).is_some()).map(|(r, _)| r.clone())
-            })?;
-        if self.stale.contains(&root) || !self.projects.contains_key(&root) {
-            self.stale.remove(&root);
-            self.analyse(&root, false);
-            // A publish that fails means the client is gone; the request's answer fails next.
-            let _ = self.publish(&root);
-        }
-        Some(root)
+            })
+    }
+
+    /// The root of the checked project that answers for `path`: its last check answers, even
+    /// while a newer one runs.
+    fn ensure(&self, path: &Path) -> Option<PathBuf> {
+        self.root_of(path).filter(|root| self.projects.contains_key(root))
     }
 
     fn request(&mut self, request: Request) -> Result<Value, (ErrorCode, String)> {

@@ -12,7 +12,7 @@ use std::collections::{HashMap, HashSet};
 pub(super) type PassName = (String, usize);
 
 /// The variants chosen in the editor, per pass.
-#[derive(Default)]
+#[derive(Default, Clone)]
 pub(super) struct Selections {
     chosen: HashMap<PassName, Vec<String>>,
 }

@@ -5,7 +5,7 @@ use super::ProjectError;
 use super::workspace::{
     Workspace, include_config, load_files, load_variant_logs, open_workspace, unknown_group_names,
 };
-use crate::build::{BuildOptions, BuildResult, ParseScope, Part, VariantSelection, build};
+use crate::build::{BuildOptions, BuildResult, Cancel, ParseScope, Part, VariantSelection, build};
 use crate::catalog::{Catalog, CatalogInput, catalog};
 use crate::compile::glslang::Glslang;
 use crate::diagnostics::{self, Diagnostic};
@@ -70,6 +70,9 @@ pub struct BuildMode {
     /// What naga parses of each stage text; else the declarations each entry point reaches for
     /// a build, the whole text for a check (`--parse-whole`).
     pub parse: Option<ParseScope>,
+    /// Set by the caller to stop the build early (the language server, when a newer edit
+    /// makes the check moot): no pass starts after it is set, and the result is partial.
+    pub cancel: Cancel,
 }
 
 impl Default for BuildMode {
@@ -90,6 +93,7 @@ impl Default for BuildMode {
             remote_cache_mode: None,
             backends: Vec::new(),
             parse: None,
+            cancel: Cancel::default(),
         }
     }
 }
@@ -248,6 +252,7 @@ fn load_given(
         given_files: store.files_read().count(),
         groups: workspace.groups.clone(),
         glslang: None,
+        cancel: mode.cancel.clone(),
     };
     // A check reads the GLSL and HLSL it writes back with glslang, where it is installed.
     let reread = !options.write && options.backends.iter().any(|&b| Glslang::reads(b));

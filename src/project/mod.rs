@@ -10,7 +10,7 @@ mod materials;
 mod variant;
 mod workspace;
 
-pub use crate::build::Part;
+pub use crate::build::{Cancel, Part};
 pub use jobs::{
     BuildMode, Checked, build_part, build_project, check_project, list_project, merge_shards, watch_build,
 };

@@ -117,6 +117,12 @@ impl Client {
         counts
     }
 
+    /// How many messages with `method` arrived so far and are not yet taken (none is taken).
+    pub fn received(&mut self, method: &str) -> usize {
+        self.pending.extend(self.incoming.try_iter());
+        self.pending.iter().filter(|m| m["method"] == method).count()
+    }
+
     /// Waits for the next message from the server with `method` (a notification or a request)
     /// and returns its parameters.
     pub fn notification(&mut self, method: &str) -> Value {

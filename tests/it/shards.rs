@@ -493,3 +493,79 @@ fn a_merge_killed_before_any_rename_or_link_is_whole_when_run_again() {
     }
     assert!(kill_at > 4, "a merge puts {} files in place", kill_at - 1);
 }
+
+/// The Starlark rules docs/scaling.md gives, run by Debian's `bazel-bootstrap` in its Linux
+/// sandbox (inputs staged as links, outputs as `declare_directory` folders): four shards and the
+/// merge write byte for byte what one plain build writes. The rules and the BUILD file are taken
+/// from the doc itself, so the doc cannot drift from what runs.
+#[test]
+fn the_bazel_rules_in_the_docs_build_in_bazel_s_sandbox_what_a_plain_build_writes() {
+    if !crate::support::tool("bazel", "bazel-bootstrap", "bazel_rules") {
+        return;
+    }
+    let doc = std::fs::read_to_string(crate::support::root().join("docs/scaling.md")).expect("doc");
+    let section = &doc[doc.find("## From Bazel").expect("the Bazel section")..];
+    let blocks: Vec<&str> =
+        section.split("```python\n").skip(1).map(|b| &b[..b.find("```").expect("end")]).collect();
+    let (rules, build) = (blocks[0], blocks[1]);
+    assert!(rules.contains("declare_directory") && build.contains("kiln_merge("), "{blocks:?}");
+
+    let dir = tempfile::tempdir().expect("tempdir");
+    let workspace = dir.path().join("workspace");
+    let package = workspace.join("game");
+    std::fs::create_dir_all(workspace.join("tools")).expect("tools");
+    let project = crate::support::example_project_copy(&package);
+    std::fs::rename(&project, package.join("shaders")).expect("the project where the BUILD file has it");
+    std::fs::write(workspace.join("WORKSPACE"), "").expect("WORKSPACE");
+    std::fs::write(package.join("kiln.bzl"), rules).expect("rules");
+    std::fs::write(package.join("BUILD"), build).expect("BUILD");
+    std::fs::write(
+        workspace.join("tools/BUILD"),
+        "exports_files([\"kiln\"], visibility = [\"//visibility:public\"])\n",
+    )
+    .expect("tools");
+    let wrapper = workspace.join("tools/kiln");
+    std::fs::write(&wrapper, format!("#!/bin/sh\nexec '{}' \"$@\"\n", env!("CARGO_BIN_EXE_kiln")))
+        .expect("wrapper");
+    let mut permissions = std::fs::metadata(&wrapper).expect("meta").permissions();
+    std::os::unix::fs::PermissionsExt::set_mode(&mut permissions, 0o755);
+    std::fs::set_permissions(&wrapper, permissions).expect("chmod");
+
+    // Bazel's own state in the test's folder; the sandbox required, never a silent fallback to
+    // running the actions unsandboxed.
+    let user_root = dir.path().join("bazel-root");
+    let bazel = Command::new("bazel")
+        .arg("--batch")
+        .arg(format!("--output_user_root={}", user_root.display()))
+        .args(["build", "//game:kiln_build", "--spawn_strategy=linux-sandbox", "--noshow_progress"])
+        .current_dir(&workspace)
+        .env_remove("KILN_FOLLOW_LINKS")
+        .output()
+        .expect("bazel runs");
+    assert!(bazel.status.success(), "bazel build failed:\n{}", text(&bazel));
+    let staged = text(&bazel);
+    assert!(staged.contains("merged 4 shards"), "{staged}");
+
+    let plain = dir.path().join("plain");
+    let built = kiln(&[
+        "build",
+        package.join("shaders").to_str().expect("utf-8"),
+        "--output",
+        plain.to_str().expect("utf-8"),
+    ]);
+    assert!(built.status.success(), "{}", text(&built));
+    let bazel_output = workspace.join("bazel-bin/game/kiln_build");
+    let (from_bazel, from_plain) = (tree(&bazel_output), tree(&plain));
+    assert!(from_plain.keys().any(|k| k.starts_with("modules")), "{:?}", from_plain.keys());
+    assert_eq!(
+        from_bazel.keys().collect::<Vec<_>>(),
+        from_plain.keys().collect::<Vec<_>>(),
+        "the same files"
+    );
+    assert!(
+        from_bazel == from_plain,
+        "Bazel's sandboxed shards and merge wrote other bytes than a plain build"
+    );
+    // Bazel leaves its output base read-only; the folder is removed only once it is writable.
+    let _ = Command::new("chmod").args(["-R", "u+w"]).arg(dir.path()).status();
+}
