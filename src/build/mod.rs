@@ -133,13 +133,13 @@ pub struct BuildOptions {
     pub groups: crate::compile::bind::GroupNames,
     /// Reads back the GLSL and HLSL each module is written in (`kiln check`, where installed).
     pub glslang: Option<crate::compile::glslang::Glslang>,
-    /// Stops the build before its next pass when set.
+    /// Stops a check (a build that writes nothing) before its next pass when set.
     pub cancel: Cancel,
 }
 
-/// A caller's way to stop a build early: cloned into the build, set from another thread.
-/// A build told to stop starts no further pass; what it returns is partial and is for the
-/// caller to drop.
+/// A caller's way to stop a check early: cloned into the build, set from another thread.
+/// A check told to stop starts no further pass and returns what it found so far, for the
+/// caller to drop. A build that writes is not stopped (its output is old or new, never cut).
 #[derive(Clone, Debug, Default)]
 pub struct Cancel(Option<std::sync::Arc<std::sync::atomic::AtomicBool>>);
 
@@ -441,6 +441,8 @@ fn build_passes(
     // (the inputs key hashes them and the catalogue's part lists them; nothing is read while
     // passes compile, the store is only shared), the inputs key, the materials' texts. Only what
     // is written needs them: a check (the language server's, on every edit) makes none.
+    // Only a check stops early: a build that writes finishes what it began.
+    let stopped = || !options.write && options.cancel.is_cancelled();
     let ((), (read, inputs, materials)) = rayon::join(
         || {
             // Every worker takes the next pass in plan order until none is left. No pass waits
@@ -449,7 +451,7 @@ fn build_passes(
             // one a thread is in flight (a pass's own steps are tasks an item: `tasks`).
             let next = std::sync::atomic::AtomicUsize::new(0);
             rayon::broadcast(|_| {
-                while !options.cancel.is_cancelled() {
+                while !stopped() {
                     let index = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                     let Some(work) = mine.get(index) else { return };
                     let (part, built) = pass::build_pass(work, store, includes, catalog, options, &session);
@@ -470,6 +472,10 @@ fn build_passes(
             (read, inputs, materials)
         },
     );
+    if stopped() {
+        // Whoever stopped it drops what it would say: what it found so far is not the project's.
+        return BuildResult::failed(options, summary, diagnostics);
+    }
     let (parts, built, streamed) = passes.into_parts();
     let mut modules = Vec::with_capacity(built.len());
     for pass in built {

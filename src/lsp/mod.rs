@@ -232,7 +232,7 @@ struct Server<'c> {
     running: Option<Running>,
     /// Where check threads send what they found.
     finished: crossbeam_channel::Sender<Finished>,
-    /// Requests about projects not yet checked, answered when their first check ends.
+    /// Requests about text no check has seen yet, answered when the check to come ends.
     deferred: Vec<Request>,
     /// Large projects whose active variants were checked, to be checked whole next.
     widen: BTreeSet<PathBuf>,
