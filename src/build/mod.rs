@@ -437,12 +437,12 @@ fn build_passes(
     let manifest_path = options.output.join(crate::manifest::FILE_NAME);
     let streamed = options.write && !options.pretty_manifest && matches!(options.part, Part::Whole);
     let passes = emit::PassParts::new(mine.len(), streamed.then_some((&heads[..], manifest_path.as_path())));
+    // Only a check stops early: a build that writes finishes what it began.
+    let stopped = || !options.write && options.cancel.is_cancelled();
     // What needs no compiled pass is made while the passes compile: the files read, named once
     // (the inputs key hashes them and the catalogue's part lists them; nothing is read while
     // passes compile, the store is only shared), the inputs key, the materials' texts. Only what
     // is written needs them: a check (the language server's, on every edit) makes none.
-    // Only a check stops early: a build that writes finishes what it began.
-    let stopped = || !options.write && options.cancel.is_cancelled();
     let ((), (read, inputs, materials)) = rayon::join(
         || {
             // Every worker takes the next pass in plan order until none is left. No pass waits

@@ -287,10 +287,10 @@ pub(crate) fn correct(module: &mut Module, text: &str, mapper: &Mapper) -> Resul
 }
 
 /// A struct whose members' `@size` literals (and 2 bytes for each other member, the least a
-/// member takes) add up past 4 GiB, refused before naga parses
-/// it: naga sums offsets in 32 bits (they wrap, and its message then says a member "crosses the
-/// structure boundary"; a debug build of naga panics). Sums that only types push past are caught
-/// after the parse, by [`correct`].
+/// member takes) add up past 4 GiB, refused before naga parses it: naga sums offsets in 32 bits
+/// (they wrap, and its message then says a member "crosses the structure boundary"; a debug
+/// build of naga panics). Sums that only types push past are caught after the parse, by
+/// [`correct`].
 pub(super) fn oversized_struct(text: &str, mapper: &Mapper) -> Option<Diagnostic> {
     if !has_layout_attribute(text) {
         return None;
@@ -308,9 +308,7 @@ pub(super) fn oversized_struct(text: &str, mapper: &Mapper) -> Option<Diagnostic
                     "struct `{}` is larger than 4 GiB: its members take at least {end} bytes by `{}`",
                     declared.name, member.name
                 );
-                let help =
-                    "a struct's size must fit in 32 bits; make the member's `@size` (or its array) smaller";
-                return Some(refusal(mapper, "K0425", message, range, "past 4 GiB here", help));
+                return Some(too_large(mapper, message, Some(range), "past 4 GiB here"));
             }
         }
     }
@@ -402,13 +400,8 @@ fn place_members(
                 "struct `{struct_name}` is larger than 4 GiB: `{name}` at byte {offset} with size {size} ends at \
                  byte {member_end}"
             );
-            let help =
-                "a struct's size must fit in 32 bits; make the member's `@size` (or its array) smaller";
-            let Some(declared) = declared else {
-                return Err(Diagnostic::error("K0425", message).help(help.to_string()));
-            };
-            let range = declared.size.as_ref().map_or(declared.range.clone(), |a| a.range.clone());
-            return Err(refusal(mapper, "K0425", message, range, "this member ends past 4 GiB", help));
+            let range = declared.map(|d| d.size.as_ref().map_or(d.range.clone(), |a| a.range.clone()));
+            return Err(too_large(mapper, message, range, "this member ends past 4 GiB"));
         };
         placement.offsets.push(offset32);
         placement.members.push((alignment, size));
@@ -416,6 +409,16 @@ fn place_members(
     }
     placement.size = u32::try_from(round_up(placement.alignment, end)).unwrap_or(u32::MAX);
     Ok(Some(placement))
+}
+
+/// K0425 at `range` (the member's `@size`, else its name), or unplaced where the text's struct
+/// was not found.
+fn too_large(mapper: &Mapper, message: String, range: Option<Range<usize>>, label: &str) -> Diagnostic {
+    let help = "a struct's size must fit in 32 bits; make the member's `@size` (or its array) smaller";
+    match range {
+        Some(range) => refusal(mapper, "K0425", message, range, label, help),
+        None => Diagnostic::error("K0425", message).help(help.to_string()),
+    }
 }
 
 fn refusal(

@@ -9,8 +9,9 @@
 //!
 //! A check runs on a thread of its own, one at a time, so requests are answered while it runs,
 //! from the project's last check; only a request about text that check has not seen (a project
-//! never checked, a buffer typed in since) waits for the check to come. An edit to the project a check is reading cancels that check: it starts no
-//! further pass, its result is dropped, and the project is checked again with the edit.
+//! never checked, a buffer typed in since) waits for the check to come. An edit to the project
+//! a check is reading cancels that check: it starts no further pass, its result is dropped, and
+//! the project is checked again with the edit.
 
 mod analysis;
 mod complete;
@@ -279,7 +280,7 @@ impl Server<'_> {
                     return Ok(Flow::Exit);
                 }
                 if let Some(root) = self.unchecked_root(&request) {
-                    if self.running.as_ref().map(|r| &r.root) != Some(&root) {
+                    if !self.checking(&root) {
                         self.stale.insert(root);
                     }
                     self.deferred.push(request);
@@ -328,11 +329,16 @@ impl Server<'_> {
         let path = canonical(&path_of(&uri)?);
         let root = self.root_of(&path)?;
         let Some(project) = self.projects.get(&root) else { return Some(root) };
-        let coming = self.stale.contains(&root) || self.running.as_ref().is_some_and(|r| r.root == root);
+        let coming = self.stale.contains(&root) || self.checking(&root);
         let analysis = &project.analysis;
         let seen = |text: &str| analysis.file(&path).is_some_and(|file| analysis.store.text(file) == text);
         let typed = self.documents.get(&path).is_some_and(|document| !seen(&document.text));
         (coming && typed).then_some(root)
+    }
+
+    /// Whether the check in flight is of `root`.
+    fn checking(&self, root: &Path) -> bool {
+        self.running.as_ref().is_some_and(|running| running.root == root)
     }
 
     fn send(&self, message: Message) -> Result<(), LspError> {
@@ -539,7 +545,7 @@ impl Server<'_> {
 
     /// The root of the checked project that answers for `path`: its last check answers, even
     /// while a newer one runs.
-    fn ensure(&self, path: &Path) -> Option<PathBuf> {
+    fn checked_root(&self, path: &Path) -> Option<PathBuf> {
         self.root_of(path).filter(|root| self.projects.contains_key(root))
     }
 
@@ -611,7 +617,7 @@ impl Server<'_> {
     /// A document's analysis and file id.
     fn document(&mut self, uri: &lsp::Uri) -> Option<(&Analysis, crate::source::FileId)> {
         let path = canonical(&path_of(uri)?);
-        let root = self.ensure(&path)?;
+        let root = self.checked_root(&path)?;
         let analysis = &self.projects.get(&root)?.analysis;
         Some((analysis, analysis.file(&path)?))
     }
@@ -629,7 +635,7 @@ impl Server<'_> {
     /// A lens above each pass of a shader: its active variant; clicking it moves to the next.
     fn code_lenses(&mut self, uri: &lsp::Uri) -> Vec<lsp::CodeLens> {
         let Some(path) = path_of(uri).map(|p| canonical(&p)) else { return Vec::new() };
-        let Some(root) = self.ensure(&path) else { return Vec::new() };
+        let Some(root) = self.checked_root(&path) else { return Vec::new() };
         let Some(analysis) = self.projects.get(&root).map(|p| &p.analysis) else { return Vec::new() };
         let Some(file) = analysis.file(&path) else { return Vec::new() };
         let selections = self.selections.entry(root).or_default();
@@ -676,7 +682,8 @@ impl Server<'_> {
             arguments.get(2).and_then(Value::as_u64).ok_or_else(|| bad("the third is the pass index"))?;
         let name: PassName = (shader.to_string(), pass as usize);
         let path = path_of(&uri).map(|p| canonical(&p)).ok_or_else(|| bad("not a file URI"))?;
-        let root = self.ensure(&path).ok_or_else(|| bad("the file is not part of a checked project"))?;
+        let root =
+            self.checked_root(&path).ok_or_else(|| bad("the file is not part of a checked project"))?;
         let analysis = &self.projects.get(&root).ok_or_else(|| bad("not checked"))?.analysis;
         let found =
             analysis.passes().find(|&(at, ..)| variants::pass_name(analysis, at).as_ref() == Some(&name));

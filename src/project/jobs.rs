@@ -70,8 +70,9 @@ pub struct BuildMode {
     /// What naga parses of each stage text; else the declarations each entry point reaches for
     /// a build, the whole text for a check (`--parse-whole`).
     pub parse: Option<ParseScope>,
-    /// Set by the caller to stop the build early (the language server, when a newer edit
-    /// makes the check moot): no pass starts after it is set, and the result is partial.
+    /// Set by the caller to stop a check early (the language server, when a newer edit makes
+    /// it moot): no pass starts after it is set, and the result is partial. A build that
+    /// writes is never stopped.
     pub cancel: Cancel,
 }
 
