@@ -132,8 +132,9 @@ pub struct CatalogProgram {
     pub span: Span,
     /// Its pragmas.
     pub pragmas: ProgramPragmas,
-    /// WGSL programs only: the blocks and their includes, ready to preprocess.
-    pub wgsl: Option<Program>,
+    /// Programs in a language kiln compiles ([`ProgramLanguage::is_compiled`]): the blocks and
+    /// their includes, ready to preprocess.
+    pub source: Option<Program>,
     /// Its keywords and sets.
     pub keywords: PassKeywords,
     /// The variants the materials need (or all, for an always-included shader), in key order.
@@ -224,7 +225,7 @@ fn add_listed_variants(listed: &[ListedVariant], shaders: &mut [CatalogShader]) 
             continue;
         };
         let position = shaders[index].passes.iter().position(|p| {
-            p.index == logged.pass && p.program.as_ref().is_some_and(|program| program.wgsl.is_some())
+            p.index == logged.pass && p.program.as_ref().is_some_and(|program| program.source.is_some())
         });
         let Some((position, Some(program))) =
             position.map(|p| (p, shaders[index].passes[p].program.as_ref()))
@@ -289,7 +290,7 @@ pub fn catalog(
         .par_iter()
         .map(|&file| {
             let parsed = parse_shader(store_view, file);
-            let blocks = parsed.shader.iter().flat_map(wgsl_blocks);
+            let blocks = parsed.shader.iter().flat_map(compiled_blocks);
             let scanned = blocks.map(|block| ScannedBlock::scan(store_view, block.body_span)).collect();
             ((file, parsed), scanned)
         })
@@ -527,17 +528,19 @@ fn passes(
     passes
 }
 
-/// Where a shader's pass programs go while the catalogue loads them: WGSL programs wait in
+/// Where a shader's pass programs go while the catalogue loads them: compiled programs wait in
 /// `unfinished` for [`finish_programs`].
 struct Loading<'a> {
     shader: usize,
     unfinished: &'a mut Vec<Unfinished>,
 }
 
-/// A WGSL pass program with its blocks and includes loaded, its pragmas and keywords not yet read.
+/// A pass program kiln compiles, with its blocks and includes loaded, its pragmas and keywords not
+/// yet read.
 struct Unfinished {
     shader: usize,
     pass: usize,
+    language: ProgramLanguage,
     program: Program,
     /// Where a diagnostic about the whole program points (its first block).
     span: Span,
@@ -546,7 +549,7 @@ struct Unfinished {
 }
 
 impl Loading<'_> {
-    /// Loads the program of pass `pass` from its blocks: other languages' whole, WGSL's blocks and
+    /// Loads the program of pass `pass` from its blocks: uncompiled languages' whole, the blocks and
     /// includes (which adds units to `includes`, so one pass after another), the rest left for
     /// [`finish_programs`] (`None` until then).
     fn load(
@@ -559,7 +562,7 @@ impl Loading<'_> {
     ) -> Option<CatalogProgram> {
         let blocks = program_blocks(shader, sub, programs);
         let language = programs.first().map_or(ProgramLanguage::Wgsl, |p| p.language);
-        if language != ProgramLanguage::Wgsl {
+        if !language.is_compiled() {
             let (pragmas, errors) = collect_pragmas(blocks.into_iter().map(PragmaSource::from));
             diagnostics.extend(errors);
             return Some(finished_program(language, pragmas, None, programs[0].span, diagnostics));
@@ -567,12 +570,14 @@ impl Loading<'_> {
         let (program, found) = load_blocks(includes, store, &blocks);
         diagnostics.extend(found);
         let at = diagnostics.len();
-        self.unfinished.push(Unfinished { shader: self.shader, pass, program, span: programs[0].span, at });
+        let unfinished =
+            Unfinished { shader: self.shader, pass, language, program, span: programs[0].span, at };
+        self.unfinished.push(unfinished);
         None
     }
 }
 
-/// Reads the loaded WGSL programs' pragmas and keywords, in parallel (nothing is loaded any
+/// Reads the loaded programs' pragmas and keywords, in parallel (nothing is loaded any
 /// more), and places each one's diagnostics where loading it left off: the order is a serial
 /// catalogue's.
 fn finish_programs(
@@ -584,10 +589,10 @@ fn finish_programs(
 ) {
     let finished: Vec<_> = unfinished
         .into_par_iter()
-        .map(|Unfinished { shader, pass, program, span, at }| {
+        .map(|Unfinished { shader, pass, language, program, span, at }| {
             let (loaded, mut found) = finish_pass(includes, store, program);
-            let wgsl = Some(loaded.program);
-            let program = finished_program(ProgramLanguage::Wgsl, loaded.pragmas, wgsl, span, &mut found);
+            let source = Some(loaded.program);
+            let program = finished_program(language, loaded.pragmas, source, span, &mut found);
             (shader, pass, at, program, found)
         })
         .collect();
@@ -609,7 +614,7 @@ fn finish_programs(
 fn finished_program(
     language: ProgramLanguage,
     pragmas: ProgramPragmas,
-    wgsl: Option<Program>,
+    source: Option<Program>,
     span: Span,
     diagnostics: &mut Vec<Diagnostic>,
 ) -> CatalogProgram {
@@ -634,16 +639,16 @@ fn finished_program(
                 .help("split the pass, or make run-time choices `dynamic_branch` keywords"),
         );
     }
-    CatalogProgram { language, span, pragmas, wgsl, keywords, variants: Vec::new() }
+    CatalogProgram { language, span, pragmas, source, keywords, variants: Vec::new() }
 }
 
 fn tags(state: &StateBlock) -> Vec<(String, String)> {
     state.tags.iter().map(|t| (t.key.value.clone(), t.value.value.clone())).collect()
 }
 
-/// Every WGSL program block of a shader, its include blocks among them: what loading its programs
-/// scans.
-fn wgsl_blocks(shader: &Shader) -> impl Iterator<Item = &ProgramBlock> {
+/// Every program block of a shader in a language kiln compiles, its include blocks among them:
+/// what loading its programs scans.
+fn compiled_blocks(shader: &Shader) -> impl Iterator<Item = &ProgramBlock> {
     let passes = shader.subshaders.iter().flat_map(|sub| &sub.passes).filter_map(|item| match item {
         PassItem::Pass(pass) => Some(&pass.programs),
         _ => None,
@@ -651,7 +656,7 @@ fn wgsl_blocks(shader: &Shader) -> impl Iterator<Item = &ProgramBlock> {
     let subshaders = shader.subshaders.iter().map(|sub| &sub.programs);
     (std::iter::once(&shader.includes).chain(subshaders).chain(passes))
         .flatten()
-        .filter(|block| block.language == ProgramLanguage::Wgsl)
+        .filter(|block| block.language.is_compiled())
 }
 
 /// The include blocks a program sees (shader-level, then SubShader-level, of its language),

@@ -51,6 +51,15 @@ pub enum BuildLayerError {
     },
     /// The project is not what the shards read (K0413).
     ProjectChanged,
+    /// A `dynamic_branch` or `ubershader` pragma in an HLSL or Cg program (K0428).
+    WgslOnlyPragma {
+        /// The pragma's name.
+        pragma: &'static str,
+        /// The program's language.
+        language: crate::shaderlab::ast::ProgramLanguage,
+        /// The pragma.
+        span: Span,
+    },
     /// A pass whose program is in a language kiln lists but does not compile (K0424).
     LanguageNotBuilt {
         /// Its blocks' language.
@@ -107,6 +116,16 @@ impl From<BuildLayerError> for Diagnostic {
                     )
                     .help("build the shards again from this state of the project, then merge them")
             }
+            BuildLayerError::WgslOnlyPragma { pragma, language, span } => Diagnostic::error(
+                "K0428",
+                format!("`#pragma {pragma}` is for WGSL programs: this is an `{}`", language.open_keyword(false)),
+            )
+            .at(span, "here")
+            .note(match pragma {
+                "dynamic_branch" => "kiln declares each `dynamic_branch` keyword as a WGSL `override` constant, which an HLSL or Cg program cannot use",
+                _ => "kiln reads the ubershader's keywords from WGSL immediate data, which an HLSL or Cg program cannot declare",
+            })
+            .help("make the keywords `shader_feature` or `multi_compile` (each value is then a variant), or write the pass in WGSL"),
             BuildLayerError::LanguageNotBuilt { language, shader, span } => {
                 // The block's opening keyword, not the whole block.
                 let keyword = language.open_keyword(false).len().min(span.range().len());
@@ -116,8 +135,8 @@ impl From<BuildLayerError> for Diagnostic {
                 format!("`{}` blocks are listed but not compiled: `{shader}` is not built", language.open_keyword(false)),
             )
             .at(span, "this program")
-            .note("this kiln compiles `WGSLPROGRAM` blocks; a pass in another language is an error rather than a pass counted as checked")
-            .help("write the program in WGSL between `WGSLPROGRAM` and `ENDWGSL` (docs/first-shader.md)")
+            .note("kiln compiles `WGSLPROGRAM`, `HLSLPROGRAM` and `CGPROGRAM` blocks; a pass in another language is an error rather than a pass counted as checked")
+            .help("write the program in WGSL (docs/first-shader.md) or HLSL (docs/hlsl.md)")
             }
         }
     }

@@ -13,6 +13,7 @@ use crate::keywords::KeywordBits;
 use crate::preprocess::{
     Includes, MAX_UBERSHADER_KEYWORDS, SourceMap, Stage, keyword_macros, preprocess_with, ubershader_macros,
 };
+use crate::shaderlab::ast::ProgramLanguage;
 use crate::shaderlab::pragma::ProgramPragmas;
 use crate::source::{SourceStore, Span, Spanned};
 use crate::store::hash;
@@ -20,6 +21,8 @@ use std::collections::HashMap;
 
 /// One distinct stage module of a pass.
 pub(super) struct Job<'a> {
+    /// Its program's language: WGSL for naga's front end, HLSL and Cg for glslang's.
+    pub language: ProgramLanguage,
     pub stage: Stage,
     pub entry: &'a str,
     pub entry_pragma: Span,
@@ -103,6 +106,15 @@ fn cuts(text: String, map: SourceMap, entries: &[&str], scope: ParseScope) -> Ve
     given.collect()
 }
 
+/// The hash a stage text is known by: of its bytes, and of its language where that is not WGSL
+/// (an HLSL and a Cg text alike are compiled differently, and never share a module).
+fn text_hash(language: ProgramLanguage, text: &str) -> String {
+    match language {
+        ProgramLanguage::Wgsl => hash(text.as_bytes()),
+        other => hash(format!("{}\0{text}", other.name()).as_bytes()),
+    }
+}
+
 /// What [`cuts`] gives for an entry point.
 type Cut = (String, SourceMap, Option<Box<WholeText>>, Option<reach::CutScan>);
 
@@ -156,7 +168,7 @@ pub(super) fn pass_jobs<'a>(
 ) -> PassJobs<'a> {
     let (shader, pass, program) = (work.shader, work.pass, work.program);
     let mut jobs: Vec<Job<'a>> = Vec::new();
-    let Some(wgsl) = program.wgsl.as_ref() else {
+    let Some(source) = program.source.as_ref() else {
         let stages = vec![Vec::new(); work.variants.len()];
         return PassJobs { jobs, stages, ubershader: None, preprocessed: 0 };
     };
@@ -224,11 +236,14 @@ pub(super) fn pass_jobs<'a>(
             true => ubershader_macros(&program.pragmas, r.stage).unwrap_or_default(),
             false => keyword_macros(&program.pragmas, &keywords),
         };
-        let out = preprocess_with(includes, store, wgsl, &macros, r.stage);
-        let scope = if diagnostics::has_errors(&out.diagnostics) { ParseScope::Whole } else { scope };
+        let out = preprocess_with(includes, store, source, &macros, r.stage);
+        // A cut reads WGSL's declarations; glslang reads the other languages' texts whole.
+        let wgsl = program.language == ProgramLanguage::Wgsl;
+        let scope =
+            if !wgsl || diagnostics::has_errors(&out.diagnostics) { ParseScope::Whole } else { scope };
         let entries: Vec<&str> = asking.iter().map(|&i| requests[i].entry.value.as_str()).collect();
         let cuts = cuts(out.text, out.source_map, &entries, scope);
-        let cuts: Vec<_> = cuts.into_iter().map(|cut| (hash(cut.0.as_bytes()), cut)).collect();
+        let cuts: Vec<_> = cuts.into_iter().map(|cut| (text_hash(program.language, &cut.0), cut)).collect();
         (out.diagnostics, cuts)
     });
     let mut outputs: Vec<Option<_>> = requests.iter().map(|_| None).collect();
@@ -253,6 +268,7 @@ pub(super) fn pass_jobs<'a>(
         let key = (request.stage, request.entry.value.as_str(), text_hash.clone(), request.allowed.key());
         let job = *job_of_text.entry(key).or_insert_with(|| {
             jobs.push(Job {
+                language: program.language,
                 stage: request.stage,
                 entry: &request.entry.value,
                 entry_pragma: request.entry.span,

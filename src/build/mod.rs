@@ -39,20 +39,24 @@ use std::time::{Duration, Instant};
 /// Part of every cache key: a new naga may compile differently.
 const NAGA_VERSION: &str = "naga 30";
 
+/// Part of every cache key: HLSL and Cg modules are glslang's SPIR-V first.
+const GLSLANG_VERSION: &str = "glslang 0.9";
+
 /// Part of every cache key, raised when kiln compiles the same text differently (revision 2:
 /// layouts by the WGSL spec, a wider capability baseline; 3: `override` constants reflected, their
 /// modules WGSL only, compute kernels; 4: WGSL repaired where naga misspells it, modules naga's
 /// SPIR-V writer cannot write shipped WGSL only; 5: storage texture access reflected as WGSL's
-/// modes; 6: MSL, HLSL and GLSL back ends), so that a cache an earlier kiln of the
+/// modes; 6: MSL, HLSL and GLSL back ends; 7: HLSL and Cg programs), so that a cache an earlier kiln of the
 /// same version filled is not taken for current.
-const COMPILER_REVISION: u32 = 6;
+const COMPILER_REVISION: u32 = 7;
 
 /// What compiled a module, as the shared cache records it beside each object: kiln's version and
-/// revision and naga's. Made once: every object fetched or published names it.
+/// revision, naga's and glslang's. Made once: every object fetched or published names it.
 pub(crate) fn compiler_id() -> &'static str {
     static ID: std::sync::OnceLock<String> = std::sync::OnceLock::new();
     ID.get_or_init(|| {
-        format!("kiln {} revision {COMPILER_REVISION} {NAGA_VERSION}", env!("CARGO_PKG_VERSION"))
+        let version = env!("CARGO_PKG_VERSION");
+        format!("kiln {version} revision {COMPILER_REVISION} {NAGA_VERSION} {GLSLANG_VERSION}")
     })
 }
 

@@ -36,7 +36,7 @@ pub(super) fn plan<'a>(
         let (mut built_any, mut has_wgsl) = (false, false);
         for pass in &shader.passes {
             let Some(program) = pass.program.as_ref() else { continue };
-            if program.wgsl.is_none() {
+            if program.source.is_none() {
                 // Listed, and never counted as built or checked: a CI job pointed at a library
                 // of such shaders must not pass having checked nothing.
                 diagnostics.push(
@@ -50,6 +50,10 @@ pub(super) fn plan<'a>(
                 continue;
             }
             has_wgsl = true;
+            if let Some(refused) = wgsl_only_pragma(program) {
+                diagnostics.push(refused.into());
+                continue;
+            }
             let variants = select_variants(shader, pass, program, selection, diagnostics);
             if variants.is_empty() {
                 continue;
@@ -65,6 +69,24 @@ pub(super) fn plan<'a>(
         }
     }
     work
+}
+
+/// A pragma whose code kiln writes in WGSL (`dynamic_branch`'s `override` constants, the
+/// ubershader's immediate data), in a program of another language: refused at the pragma, for
+/// its code would not compile there.
+fn wgsl_only_pragma(program: &crate::catalog::CatalogProgram) -> Option<BuildLayerError> {
+    use crate::manifest::KeywordKind;
+    if program.language == crate::shaderlab::ast::ProgramLanguage::Wgsl {
+        return None;
+    }
+    let pragmas = &program.pragmas;
+    let dynamic = pragmas.keyword_sets.iter().find(|s| s.kind == KeywordKind::DynamicBranch);
+    let (pragma, span) = match (dynamic, pragmas.ubershader) {
+        (Some(set), _) => ("dynamic_branch", set.span),
+        (None, Some(span)) => ("ubershader", span),
+        (None, None) => return None,
+    };
+    Some(BuildLayerError::WgslOnlyPragma { pragma, language: program.language, span })
 }
 
 /// What each pass costs to build, known before preprocessing: its distinct stage requests (a

@@ -15,8 +15,9 @@ use super::session::Session;
 use super::tasks::map_tasks;
 use crate::compile::bind::{self, Declared, PassLayout};
 use crate::compile::stage::{self, StageRequest};
-use crate::compile::{Mapper, parse, together};
+use crate::compile::{Mapper, hlsl, parse, together};
 use crate::diagnostics::Diagnostic;
+use crate::shaderlab::ast::ProgramLanguage;
 use crate::source::SourceStore;
 use crate::store::remote::{RemoteCache, RemoteMode};
 use crate::store::{ModuleBytes, PassIndex, hash, shared};
@@ -280,7 +281,12 @@ impl Naga {
     /// the cut.
     fn parse_job(&self, pass: &PassSources, job: &Job) -> Result<Parsed, Diagnostic> {
         pass.session.parses.fetch_add(1, Ordering::Relaxed);
-        match parse(&job.text, &Mapper { map: &job.map, store: pass.store }) {
+        let mapper = Mapper { map: &job.map, store: pass.store };
+        let parsed = match job.language {
+            ProgramLanguage::Wgsl => parse(&job.text, &mapper),
+            language => hlsl::parse(&job.text, language, job.stage, (job.entry, job.entry_pragma), &mapper),
+        };
+        match parsed {
             Ok(module) => Ok(Parsed { module, from: ParsedFrom::Text }),
             Err(error) => match &job.whole {
                 None => Err(error),
@@ -354,6 +360,7 @@ impl Naga {
             _ => (&job.text, &job.map),
         };
         let request = StageRequest {
+            language: job.language,
             text,
             stage: job.stage,
             entry: job.entry,
@@ -380,7 +387,9 @@ pub(super) fn parse_together(pass: &PassSources, jobs: &[Job], asked: &[bool]) -
     // By stage: a compute pass's kernels are entry points of one text, and a variant's kernels
     // share all but their own entry point.
     let mut groups: BTreeMap<&str, Vec<usize>> = BTreeMap::new();
-    for (index, job) in jobs.iter().enumerate().filter(|&(i, _)| asked[i]) {
+    // glslang compiles one entry point of one text at a time: only WGSL texts parse together.
+    let wgsl = |job: &Job| job.language == ProgramLanguage::Wgsl;
+    for (index, job) in jobs.iter().enumerate().filter(|&(i, job)| asked[i] && wgsl(job)) {
         groups.entry(job.stage.name()).or_default().push(index);
     }
     // Each group's first few jobs (`first`), or the rest.

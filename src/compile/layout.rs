@@ -286,6 +286,41 @@ pub(crate) fn correct(module: &mut Module, text: &str, mapper: &Mapper) -> Resul
     Ok(host)
 }
 
+/// The layout a module read from SPIR-V already has (HLSL's packing, its offsets decorated), in
+/// the form the WGSL writer writes back: each member its type's alignment and, where the next
+/// member (or the struct's end) is further on than its own size, an `@size` reaching it.
+/// Offsets WGSL cannot give are refused before this ([`super::hlsl`]).
+pub(super) fn from_offsets(module: &Module) -> HostLayout {
+    let mut layouter = naga::proc::Layouter::default();
+    if layouter.update(module.to_ctx()).is_err() {
+        return HostLayout::default();
+    }
+    let mut host = HostLayout::default();
+    for (_, ty) in module.types.iter() {
+        let (TypeInner::Struct { members, span }, Some(name)) = (&ty.inner, &ty.name) else { continue };
+        let alignment = members.iter().map(|m| layouter[m.ty].alignment.round_up(1)).max().unwrap_or(1);
+        // Where WGSL would put what follows each member (the next member, or the struct's end).
+        let nexts = members.iter().skip(1).map(|m| (m.offset, layouter[m.ty].alignment.round_up(1)));
+        let nexts = nexts.chain(std::iter::once((*span, alignment)));
+        let placed: Vec<(u32, u32)> = members
+            .iter()
+            .zip(nexts)
+            .map(|(member, (end, next_alignment))| {
+                let natural = &layouter[member.ty];
+                let own_end = u64::from(member.offset) + u64::from(natural.size);
+                let size = if round_up(next_alignment, own_end) == u64::from(end) {
+                    natural.size
+                } else {
+                    end.saturating_sub(member.offset).max(natural.size)
+                };
+                (natural.alignment.round_up(1), size)
+            })
+            .collect();
+        host.structs.insert(name.clone(), StructLayout { alignment, members: placed });
+    }
+    host
+}
+
 /// A struct whose members' `@size` literals (and 2 bytes for each other member, the least a
 /// member takes) add up past 4 GiB, refused before naga parses it: naga sums offsets in 32 bits
 /// (they wrap, and its message then says a member "crosses the structure boundary"; a debug

@@ -5,6 +5,8 @@
 //! - `target.rs`: what `#pragma target` / `require` allow.
 //! - `layout.rs`: host-shareable layouts by the WGSL spec (naga's offsets corrected, `@align`/`@size`
 //!   written back into emitted WGSL).
+//! - `hlsl.rs`: HLSL and Cg programs through glslang's HLSL front end to SPIR-V, read back by
+//!   naga; their constant buffers' packing kept, or refused at the member.
 //! - `stage.rs`: one stage module from parsed text to WGSL, SPIR-V and reflection.
 //! - `wgsl.rs`: WGSL out, repaired where naga's writer misspells a construct, so that it loads again.
 //! - `gaps.rs`: what naga's SPIR-V writer cannot write (a module with it ships as WGSL only).
@@ -20,6 +22,7 @@
 pub mod bind;
 mod gaps;
 pub mod glslang;
+pub(crate) mod hlsl;
 mod layout;
 mod messages;
 mod panics;

@@ -11,8 +11,9 @@ use super::target::Allowed;
 use super::{Mapper, validate};
 use crate::diagnostics::Diagnostic;
 use crate::manifest::{Backend, PerBackend};
-use crate::preprocess::Stage;
+use crate::preprocess::{SourceMap, Stage};
 use crate::reflect::{StageReflection, reflect_stage};
+use crate::shaderlab::ast::ProgramLanguage;
 use crate::source::Span;
 use naga::valid::ValidationFlags;
 
@@ -23,6 +24,9 @@ pub(crate) struct StageOutput {
 }
 
 pub(crate) struct StageRequest<'a> {
+    /// The program's language: an HLSL or Cg module was read from glslang's SPIR-V, with its
+    /// layout already decided and spans no source map knows.
+    pub language: ProgramLanguage,
     /// The preprocessed text, for locating declarations naga gives no span for.
     pub text: &'a str,
     pub stage: Stage,
@@ -84,7 +88,14 @@ fn compile_unguarded(
     if injected("KILN_INJECT_PANIC", request.entry) {
         panic!("fault injected by KILN_INJECT_PANIC");
     }
-    let host = layout::correct(&mut module, request.text, mapper)?;
+    // A module read from SPIR-V has its spans in the SPIR-V: what naga says of it is placed at
+    // the entry point's pragma ([`located`]), not through the text's map.
+    let unmapped = SourceMap::default();
+    let spirv_mapper = Mapper { map: &unmapped, store: mapper.store };
+    let (host, mapper) = match request.language {
+        ProgramLanguage::Wgsl => (layout::correct(&mut module, request.text, mapper)?, mapper),
+        _ => (layout::from_offsets(&module), &spirv_mapper),
+    };
     let stage = naga_stage(request.stage);
     if !module.entry_points.iter().any(|e| e.name == request.entry && e.stage == stage) {
         let other = module.entry_points.iter().find(|e| e.name == request.entry);

@@ -162,7 +162,7 @@ impl Analysis {
         let shaders = self.checked.iter().flat_map(|c| c.catalog.shaders.iter().enumerate());
         shaders.flat_map(|(s, shader)| {
             shader.passes.iter().enumerate().filter_map(move |(p, pass)| {
-                let program = pass.program.as_ref().filter(|program| program.wgsl.is_some())?;
+                let program = pass.program.as_ref().filter(|program| program.source.is_some())?;
                 Some((PassRef { shader: s, pass: p }, shader, pass, program))
             })
         })

@@ -65,7 +65,7 @@ pub(super) fn inactive(analysis: &Analysis, selections: &Selections) -> HashMap<
     let mut readers: HashMap<FileId, usize> = HashMap::new();
     let mut skips: HashMap<FileId, HashMap<Span, usize>> = HashMap::new();
     for (at, _, _, program) in analysis.passes() {
-        let (Some(name), Some(wgsl)) = (pass_name(analysis, at), program.wgsl.as_ref()) else { continue };
+        let (Some(name), Some(wgsl)) = (pass_name(analysis, at), program.source.as_ref()) else { continue };
         let Some((_, variant)) = selections.active(&name, program) else { continue };
         let stages: &[Stage] = if program.pragmas.kernels.is_empty() {
             &[Stage::Vertex, Stage::Fragment]
@@ -107,7 +107,7 @@ pub(super) fn expansion_at(
 ) -> Option<(String, String)> {
     let checked = analysis.checked.as_ref()?;
     analysis.passes().find_map(|(at, shader, pass, program)| {
-        let (name, wgsl) = (pass_name(analysis, at)?, program.wgsl.as_ref()?);
+        let (name, wgsl) = (pass_name(analysis, at)?, program.source.as_ref()?);
         let (_, variant) = selections.active(&name, program)?;
         let stage = if program.pragmas.kernels.is_empty() { Stage::Fragment } else { Stage::Compute };
         let keywords: Vec<&str> = program.keywords.keywords(program.keywords_for(variant, stage)).collect();

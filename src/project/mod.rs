@@ -39,7 +39,9 @@ pub enum ProjectError {
     Load(#[from] LoadError),
     #[error("`{shader}` has no pass {}", selector.as_ref().map_or("with a program".to_string(), |s| format!("`{s}`")))]
     PassNotFound { shader: String, selector: Option<String> },
-    #[error("the pass's program is {language}: only WGSL programs are preprocessed and compiled")]
+    #[error(
+        "the pass's program is {language}: only WGSL, HLSL and Cg programs are preprocessed and compiled"
+    )]
     NotWgsl { language: &'static str },
     #[error(transparent)]
     Variant(#[from] VariantError),

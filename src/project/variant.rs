@@ -74,7 +74,7 @@ fn requested_variant(
         .find(|&i| shader.pass_ast(&shader.passes[i]).is_some_and(|p| std::ptr::eq(p, chosen)))
         .ok_or_else(not_found)?;
     let program = shader.passes[pass].program.as_ref().ok_or_else(not_found)?;
-    if program.language != ProgramLanguage::Wgsl {
+    if !program.language.is_compiled() {
         return Err(ProjectError::NotWgsl { language: program.language.name() });
     }
     let keywords =
@@ -98,11 +98,11 @@ pub fn preprocess_variant(
     let (requested, mut diagnostics) = requested_variant(store, request)?;
     let Some(requested) = requested else { return Ok((None, diagnostics)) };
     let program = requested.program();
-    let Some(wgsl) = program.wgsl.as_ref() else { return Ok((None, diagnostics)) };
+    let Some(source) = program.source.as_ref() else { return Ok((None, diagnostics)) };
     let keywords: Vec<&str> =
         program.keywords.keywords(program.keywords_for(&requested.variant, request.stage)).collect();
     let macros = keyword_macros(&program.pragmas, &keywords);
-    let mut output = preprocess_with(&requested.includes, store, wgsl, &macros, request.stage);
+    let mut output = preprocess_with(&requested.includes, store, source, &macros, request.stage);
     diagnostics.extend(output.diagnostics.iter().cloned());
     let ok = !diagnostics::has_errors(&output.diagnostics);
     // What a build hands naga: the declarations the stage's entry point reaches (a compute file's
@@ -113,7 +113,9 @@ pub fn preprocess_variant(
         Stage::Fragment => pragmas.fragment.as_ref(),
         Stage::Compute => pragmas.kernels.first(),
     };
-    if let (true, ParseScope::Reachable, Some(entry)) = (ok, scope, entry)
+    // A cut reads WGSL's declarations: other languages' texts are glslang's whole.
+    let wgsl = program.language == ProgramLanguage::Wgsl;
+    if let (true, true, ParseScope::Reachable, Some(entry)) = (ok, wgsl, scope, entry)
         && let Some((text, map)) = crate::compile::reach::cut(&output.text, &output.source_map, &entry.value)
     {
         (output.text, output.source_map) = (text, map);

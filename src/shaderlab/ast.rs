@@ -423,6 +423,12 @@ pub enum ProgramLanguage {
 }
 
 impl ProgramLanguage {
+    /// Whether kiln compiles programs in it: WGSL, and HLSL and Cg through glslang
+    /// (`compile::hlsl`). GLSL programs are listed, and refused by `build` and `check` (K0424).
+    pub fn is_compiled(self) -> bool {
+        !matches!(self, ProgramLanguage::Glsl)
+    }
+
     /// Lowercase name, as listings show it.
     pub fn name(self) -> &'static str {
         match self {

@@ -18,6 +18,7 @@ mod docs;
 mod dynamic;
 mod fingerprint;
 mod gpu;
+mod hlsl;
 mod hostile;
 mod integrity;
 mod layouts;

@@ -57,6 +57,15 @@ pub(crate) fn draw_pass(
 /// Draws a full-screen triangle with a pipeline (or an ubershader) as [`draw_pass`] does; returns
 /// the centre pixel and its depth.
 pub(crate) fn draw_with(gpu: &Gpu, drawable: &Drawable) -> ([u8; 4], f32) {
+    draw_bound(gpu, drawable, &[])
+}
+
+/// [`draw_with`], with bind groups set (each at its index).
+pub(crate) fn draw_bound(
+    gpu: &Gpu,
+    drawable: &Drawable,
+    groups: &[(u32, &wgpu::BindGroup)],
+) -> ([u8; 4], f32) {
     let targets = targets();
     let device = &gpu.device;
     let size = wgpu::Extent3d { width: 4, height: 4, depth_or_array_layers: 1 };
@@ -107,6 +116,9 @@ pub(crate) fn draw_with(gpu: &Gpu, drawable: &Drawable) -> ([u8; 4], f32) {
             ..Default::default()
         });
         drawable.set_on(&mut pass);
+        for (index, group) in groups {
+            pass.set_bind_group(*index, *group, &[]);
+        }
         pass.set_vertex_buffer(0, vertex_buffer.slice(..));
         pass.draw(0..3, 0..1);
     }

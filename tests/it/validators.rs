@@ -34,6 +34,7 @@ fn outputs() -> Outputs {
         root().join("fixtures/macros"),
         root().join("fixtures/blocks"),
         root().join("fixtures/accepted"),
+        root().join("fixtures/hlsl"),
         root().join("fixtures/warn/build"),
         generated,
     ];
