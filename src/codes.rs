@@ -119,6 +119,8 @@ pub const CODES: &[(&str, &str)] = &[
     ("K0426", "HLSL or Cg that glslang refuses"),
     ("K0427", "an HLSL packing WGSL cannot hold"),
     ("K0428", "a WGSL-only pragma in an HLSL or Cg program"),
+    ("K0429", "a texture or sampler passed to a function"),
+    ("K0430", "a pass program with no entry point"),
     ("K0501", "invalid material file"),
     ("K0502", "unknown shader"),
     ("K0503", "unknown property"),

@@ -51,6 +51,13 @@ pub enum BuildLayerError {
     },
     /// The project is not what the shards read (K0413).
     ProjectChanged,
+    /// A pass program without a vertex, fragment or kernel entry point (K0430).
+    NoEntryPoint {
+        /// The pragma of a stage or form kiln does not build (`#pragma surface`), if there is one.
+        pragma: Option<crate::source::Spanned<String>>,
+        /// The opening keyword of the program's first block.
+        span: Span,
+    },
     /// A `dynamic_branch` or `ubershader` pragma in an HLSL or Cg program (K0428).
     WgslOnlyPragma {
         /// The pragma's name.
@@ -115,6 +122,21 @@ impl From<BuildLayerError> for Diagnostic {
                         "a file the build reads, the project's settings or the build's options changed since",
                     )
                     .help("build the shards again from this state of the project, then merge them")
+            }
+            BuildLayerError::NoEntryPoint { pragma: Some(pragma), .. } => Diagnostic::error(
+                "K0430",
+                format!("`#pragma {}` is not built: the program names no vertex or fragment entry point", pragma.value),
+            )
+            .at(pragma.span, "a stage or form kiln does not compile")
+            .note(match pragma.value.as_str() {
+                "surface" => "Unity generates a surface shader's vertex and fragment programs; kiln compiles only the programs a pass writes",
+                _ => "kiln compiles vertex, fragment and compute programs",
+            })
+            .help("write the pass's `#pragma vertex` and `#pragma fragment` programs"),
+            BuildLayerError::NoEntryPoint { pragma: None, span } => {
+                Diagnostic::error("K0430", "the program names no entry point: it would build nothing")
+                    .at(span, "this program")
+                    .help("name them: `#pragma vertex NAME` and `#pragma fragment NAME` (or `#pragma kernel NAME` in a `.compute` file)")
             }
             BuildLayerError::WgslOnlyPragma { pragma, language, span } => Diagnostic::error(
                 "K0428",

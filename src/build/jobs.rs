@@ -234,7 +234,7 @@ pub(super) fn pass_jobs<'a>(
         let keywords: Vec<&str> = r.keywords.iter().map(String::as_str).collect();
         let macros = match r.ubershader {
             true => ubershader_macros(&program.pragmas, r.stage).unwrap_or_default(),
-            false => keyword_macros(&program.pragmas, &keywords),
+            false => keyword_macros(&program.pragmas, &keywords).in_language(program.language),
         };
         let out = preprocess_with(includes, store, source, &macros, r.stage);
         // A cut reads WGSL's declarations; glslang reads the other languages' texts whole.

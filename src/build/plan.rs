@@ -50,6 +50,10 @@ pub(super) fn plan<'a>(
                 continue;
             }
             has_wgsl = true;
+            if let Some(refused) = without_entry_point(program) {
+                diagnostics.push(refused.into());
+                continue;
+            }
             if let Some(refused) = wgsl_only_pragma(program) {
                 diagnostics.push(refused.into());
                 continue;
@@ -69,6 +73,25 @@ pub(super) fn plan<'a>(
         }
     }
     work
+}
+
+/// A pass program that names no entry point (no `#pragma vertex`, `fragment` or `kernel`): it
+/// would build nothing, so it is refused rather than counted as checked. Unity's surface shaders
+/// (`#pragma surface`) are the usual case.
+fn without_entry_point(program: &crate::catalog::CatalogProgram) -> Option<BuildLayerError> {
+    let pragmas = &program.pragmas;
+    if pragmas.vertex.is_some() || pragmas.fragment.is_some() || !pragmas.kernels.is_empty() {
+        return None;
+    }
+    let unbuilt = ["surface", "geometry", "hull", "domain", "raytracing"];
+    let stage = pragmas.other.iter().find(|(name, _)| unbuilt.contains(&name.value.as_str()));
+    // The block's opening keyword, not the whole block.
+    let (file, start) = (program.span.file, program.span.range().start);
+    let keyword = program.language.open_keyword(false).len().min(program.span.range().len());
+    Some(BuildLayerError::NoEntryPoint {
+        pragma: stage.map(|(name, _)| name.clone()),
+        span: crate::source::Span::new(file, start..start + keyword),
+    })
 }
 
 /// A pragma whose code kiln writes in WGSL (`dynamic_branch`'s `override` constants, the

@@ -1,5 +1,6 @@
-//! The HLSL and Cg front end: one preprocessed stage text through Khronos' glslang (its HLSL
-//! front end, built from source by cargo and run in process) to SPIR-V, and naga's SPIR-V
+//! The HLSL and Cg front end: one preprocessed stage text, Cg's samplers rewritten (`cg.rs`),
+//! through Khronos' glslang (its HLSL front end, built from source by cargo and run in process)
+//! to SPIR-V, and naga's SPIR-V
 //! reader back to a module. From there a module goes the way a WGSL one does: kiln binds it
 //! by resource name, validates, compacts and writes every back end (docs/hlsl.md).
 //!
@@ -8,6 +9,7 @@
 //! so what naga says of it later is placed at the entry point's pragma.
 
 use super::Mapper;
+use super::cg;
 use super::panics::contain_panics;
 use crate::diagnostics::Diagnostic;
 use crate::preprocess::Stage;
@@ -51,6 +53,18 @@ fn parse_unguarded(
     entry: &str,
     mapper: &Mapper,
 ) -> Result<Module, Diagnostic> {
+    let cg::Rewrite { rewritten, texture_parameters } = cg::rewrite(text, mapper.map);
+    // A failure of naga's reader where a function takes a texture is said at the parameter.
+    let texture_parameter = texture_parameters.first().cloned();
+    let original = mapper;
+    let rewritten_mapper;
+    let (text, mapper) = match &rewritten {
+        Some(rewritten) => {
+            rewritten_mapper = Mapper { map: &rewritten.map, store: mapper.store };
+            (rewritten.text.as_str(), &rewritten_mapper)
+        }
+        None => (text, mapper),
+    };
     let words = glslang_spirv(text, stage, entry, mapper).map_err(|d| in_language(d, language))?;
     let options = naga::front::spv::Options {
         // HLSL's clip space is WGSL's (y up, depth 0 to 1): nothing to flip.
@@ -59,9 +73,15 @@ fn parse_unguarded(
         block_ctx_dump_prefix: None,
     };
     let bytes: Vec<u8> = words.iter().flat_map(|word| word.to_le_bytes()).collect();
-    let mut module = naga::front::spv::parse_u8_slice(&bytes, &options).map_err(|error| {
-        Diagnostic::error("K0426", format!("naga cannot read the SPIR-V glslang wrote for `{entry}`: {error}"))
-            .note("glslang compiled the program; naga's SPIR-V reader lacks what it wrote (docs/hlsl.md lists what is known)")
+    let mut module = naga::front::spv::parse_u8_slice(&bytes, &options).map_err(|error| match &texture_parameter {
+        // What naga says of a function's texture parameter: it loads from no global.
+        Some(parameter) if matches!(error, naga::front::spv::Error::InvalidGlobalVar(_)) => {
+            let d = Diagnostic::error("K0429", format!("a texture passed to a function: naga cannot read the SPIR-V glslang writes for it ({error})"))
+                .help("sample the texture where it is declared, and pass the function what it samples");
+            original.diagnostic_at(d, vec![(parameter.clone(), "this parameter".to_string())])
+        }
+        _ => Diagnostic::error("K0426", format!("naga cannot read the SPIR-V glslang wrote for `{entry}`: {error}"))
+            .note("glslang compiled the program; naga's SPIR-V reader lacks what it wrote (docs/hlsl.md lists what is known)"),
     })?;
     name_resources(&mut module);
     check_layouts(&module, text, mapper)?;

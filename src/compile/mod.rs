@@ -5,6 +5,8 @@
 //! - `target.rs`: what `#pragma target` / `require` allow.
 //! - `layout.rs`: host-shareable layouts by the WGSL spec (naga's offsets corrected, `@align`/`@size`
 //!   written back into emitted WGSL).
+//! - `cg.rs`: Cg's `sampler2D` and `tex2D` rewritten as HLSL's textures, sampler states and
+//!   methods, with the source map kept.
 //! - `hlsl.rs`: HLSL and Cg programs through glslang's HLSL front end to SPIR-V, read back by
 //!   naga; their constant buffers' packing kept, or refused at the member.
 //! - `stage.rs`: one stage module from parsed text to WGSL, SPIR-V and reflection.
@@ -20,6 +22,7 @@
 //! `crate::store`).
 
 pub mod bind;
+mod cg;
 mod gaps;
 pub mod glslang;
 pub(crate) mod hlsl;

@@ -18,7 +18,7 @@ mod source_map;
 
 pub use error::PreprocessError;
 pub use include::{IncludeConfig, Includes, LIBRARY_PREFIX, Program, ScannedBlock};
-pub(crate) use macros::{Kind, lex};
+pub(crate) use macros::{Kind, Token, lex};
 pub use pass::{
     DynamicKeyword, KeywordMacros, MAX_UBERSHADER_KEYWORDS, PassProgram, UBERSHADER_DATA, finish_pass,
     keyword_macros, load_blocks, load_pass, load_pass_text, ubershader_macros,

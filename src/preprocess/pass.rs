@@ -118,7 +118,21 @@ pub struct KeywordMacros<'a> {
     pub ubershader: Option<Span>,
 }
 
+/// What an HLSL or Cg program is preprocessed with besides its keywords: Unity's Direct3D 11, whose
+/// conventions are WebGPU's (clip space y up, depth 0 to 1, texture rows from the top) and whose
+/// branches of `HLSLSupport.cginc` and the includes written against it are plain HLSL
+/// (docs/hlsl.md).
+pub(super) const HLSL_MACROS: [(&str, &str); 1] = [("SHADER_API_D3D11", "1")];
+
 impl<'a> KeywordMacros<'a> {
+    /// These macros and a program's language's own ([`HLSL_MACROS`] for HLSL and Cg).
+    pub fn in_language(mut self, language: crate::shaderlab::ast::ProgramLanguage) -> KeywordMacros<'a> {
+        if language != crate::shaderlab::ast::ProgramLanguage::Wgsl {
+            self.defines.extend(HLSL_MACROS.iter().map(|&(name, value)| (name, Cow::Borrowed(value))));
+        }
+        self
+    }
+
     /// The keywords on, each defined as `1` (Unity's way); the others undefined.
     pub fn on(keywords: &[&'a str]) -> KeywordMacros<'a> {
         KeywordMacros {

@@ -144,6 +144,63 @@ impl SourceMap {
         cut
     }
 
+    /// The map of the text made from this map's text by `edits`: each an old range and the length
+    /// of what replaces it, in order and apart. Kept bytes map where they did; each replacement
+    /// maps, every byte of it, to where its old range starts (the whole old range, where that is
+    /// one run of one file), as a macro's expansion maps to its invocation.
+    pub fn edited(&self, edits: &[(Range<usize>, usize)]) -> SourceMap {
+        let mut edited = SourceMap {
+            segments: Vec::new(),
+            inclusions: self.inclusions.clone(),
+            definitions: self.definitions.clone(),
+            len: 0,
+        };
+        let (mut out, mut kept_from) = (0u32, 0u32);
+        let keep = |edited: &mut SourceMap, out: &mut u32, start: u32, end: u32| {
+            if start >= end {
+                return;
+            }
+            let first = self.segments.partition_point(|s| s.out <= start).saturating_sub(1);
+            for s in self.segments[first..].iter().take_while(|s| s.out < end) {
+                let mut segment = *s;
+                if s.out <= start {
+                    if s.expansion == 0 {
+                        segment.src += start - s.out;
+                    }
+                    segment.out = *out;
+                } else {
+                    segment.out = *out + (s.out - start);
+                }
+                edited.push(segment);
+            }
+            *out += end - start;
+        };
+        for (range, written) in edits {
+            let (start, end) = (range.start as u32, range.end as u32);
+            keep(&mut edited, &mut out, kept_from, start);
+            let at = start.min(self.len.saturating_sub(1));
+            let index = self.segments.partition_point(|s| s.out <= at).saturating_sub(1);
+            if let Some(s) = self.segments.get(index) {
+                let mut segment = *s;
+                if s.expansion == 0 {
+                    segment.src += at - s.out;
+                    // The old range, where it lies in this run; else its first byte.
+                    let run_end = self.segments.get(index + 1).map_or(self.len, |next| next.out);
+                    segment.expansion = if end <= run_end { (end - at).max(1) } else { 1 };
+                }
+                segment.out = out;
+                if *written > 0 {
+                    edited.push(segment);
+                }
+            }
+            out += *written as u32;
+            kept_from = end;
+        }
+        keep(&mut edited, &mut out, kept_from, self.len);
+        edited.len = out;
+        edited
+    }
+
     /// The origin of one output byte. Offsets at or past the end map to the end of the last run.
     pub fn locate(&self, offset: usize) -> Option<Origin> {
         let offset = offset.min(self.len as usize) as u32;

@@ -101,7 +101,7 @@ pub fn preprocess_variant(
     let Some(source) = program.source.as_ref() else { return Ok((None, diagnostics)) };
     let keywords: Vec<&str> =
         program.keywords.keywords(program.keywords_for(&requested.variant, request.stage)).collect();
-    let macros = keyword_macros(&program.pragmas, &keywords);
+    let macros = keyword_macros(&program.pragmas, &keywords).in_language(program.language);
     let mut output = preprocess_with(&requested.includes, store, source, &macros, request.stage);
     diagnostics.extend(output.diagnostics.iter().cloned());
     let ok = !diagnostics::has_errors(&output.diagnostics);
