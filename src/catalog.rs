@@ -298,11 +298,16 @@ pub fn catalog(
     includes.add_scanned(scanned.into_iter().flatten());
     let mut failed = Vec::new();
     let mut unfinished = Vec::new();
+    let mut cg_prelude = CgPrelude::default();
     for (file, parsed) in parsed {
         diagnostics.extend(parsed.diagnostics);
         match parsed.shader {
             Some(shader) => {
-                let loading = Loading { shader: shaders.len(), unfinished: &mut unfinished };
+                let loading = Loading {
+                    shader: shaders.len(),
+                    unfinished: &mut unfinished,
+                    cg_prelude: &mut cg_prelude,
+                };
                 let passes = passes(store, includes, &shader, loading, &mut diagnostics);
                 shaders.push(CatalogShader { file, shader, passes });
             }
@@ -533,6 +538,27 @@ fn passes(
 struct Loading<'a> {
     shader: usize,
     unfinished: &'a mut Vec<Unfinished>,
+    cg_prelude: &'a mut CgPrelude,
+}
+
+/// What Unity includes in every `CGPROGRAM` block before its own text (`HLSLSupport.cginc`, then
+/// `UnityShaderVariables.cginc`), where a project's include paths hold Unity's `CGIncludes`: made
+/// once per catalogue, as a file of its own, when a Cg program first asks.
+#[derive(Default)]
+struct CgPrelude(Option<Option<Span>>);
+
+impl CgPrelude {
+    /// The prelude's text, where the include paths have Unity's files.
+    fn span(&mut self, store: &mut SourceStore, includes: &Includes) -> Option<Span> {
+        *self.0.get_or_insert_with(|| {
+            if !includes.on_include_path("HLSLSupport.cginc") {
+                return None;
+            }
+            let text = "#include \"HLSLSupport.cginc\"\n#include \"UnityShaderVariables.cginc\"\n";
+            let file = store.add("<Unity's CGPROGRAM prelude>", text);
+            Some(Span::new(file, 0..text.len()))
+        })
+    }
 }
 
 /// A pass program kiln compiles, with its blocks and includes loaded, its pragmas and keywords not
@@ -567,7 +593,15 @@ impl Loading<'_> {
             diagnostics.extend(errors);
             return Some(finished_program(language, pragmas, None, programs[0].span, diagnostics));
         }
-        let (program, found) = load_blocks(includes, store, &blocks);
+        let (program, found) = match language {
+            ProgramLanguage::Cg => {
+                let prelude = self.cg_prelude.span(store, includes);
+                let spans: Vec<Span> =
+                    prelude.into_iter().chain(blocks.iter().map(|b| b.body_span)).collect();
+                includes.load_program(store, &spans)
+            }
+            _ => load_blocks(includes, store, &blocks),
+        };
         diagnostics.extend(found);
         let at = diagnostics.len();
         let unfinished =

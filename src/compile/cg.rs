@@ -249,13 +249,18 @@ mod tests {
         let text = "sampler2D _MainTex;\nfloat4 f(float2 uv) { return tex2D(_MainTex, uv) + tex2Dlod(_MainTex, float4(uv, 0, 0)); }";
         let out = rewritten(text);
         assert!(out.contains("Texture2D _MainTex; SamplerState sampler_MainTex;"), "{out}");
-        assert!(out.contains("kiln_tex2D1(_MainTex, uv)") && out.contains("kiln_tex2Dlod1(_MainTex,"), "{out}");
+        assert!(
+            out.contains("kiln_tex2D1(_MainTex, uv)") && out.contains("kiln_tex2Dlod1(_MainTex,"),
+            "{out}"
+        );
         assert!(out.starts_with("#define kiln_tex2D1(t, a) (t).Sample(sampler##t, a)\n"), "{out}");
     }
 
     #[test]
     fn a_sampler_state_declared_already_is_not_declared_again() {
-        let out = rewritten("sampler2D _A, _B; SamplerState sampler_A;\nfloat4 g(float2 uv) { return tex2D(_B, uv); }");
+        let out = rewritten(
+            "sampler2D _A, _B; SamplerState sampler_A;\nfloat4 g(float2 uv) { return tex2D(_B, uv); }",
+        );
         assert!(out.contains("Texture2D _A, _B; SamplerState sampler_B;"), "{out}");
         assert!(!out.contains("SamplerState sampler_A; SamplerState sampler_A"), "{out}");
     }

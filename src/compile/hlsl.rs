@@ -73,7 +73,19 @@ fn parse_unguarded(
         block_ctx_dump_prefix: None,
     };
     let bytes: Vec<u8> = words.iter().flat_map(|word| word.to_le_bytes()).collect();
-    let mut module = naga::front::spv::parse_u8_slice(&bytes, &options).map_err(|error| match &texture_parameter {
+    // naga's reader panics on some of what glslang writes (a multisampled texture array's
+    // coordinates, naga 30): said as its refusal, where the variant is.
+    let read = contain_panics(|| naga::front::spv::parse_u8_slice(&bytes, &options)).map_err(|panic| {
+        Diagnostic::error(
+            "K0426",
+            format!("naga's SPIR-V reader fails on what glslang wrote for `{entry}`: {}", panic.message),
+        )
+        .note(format!(
+            "naga panicked at {}; glslang compiled the program (docs/hlsl.md lists what is known)",
+            panic.location
+        ))
+    })?;
+    let mut module = read.map_err(|error| match &texture_parameter {
         // What naga says of a function's texture parameter: it loads from no global.
         Some(parameter) if matches!(error, naga::front::spv::Error::InvalidGlobalVar(_)) => {
             let d = Diagnostic::error("K0429", format!("a texture passed to a function: naga cannot read the SPIR-V glslang writes for it ({error})"))

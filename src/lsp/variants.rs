@@ -111,7 +111,8 @@ pub(super) fn expansion_at(
         let (_, variant) = selections.active(&name, program)?;
         let stage = if program.pragmas.kernels.is_empty() { Stage::Fragment } else { Stage::Compute };
         let keywords: Vec<&str> = program.keywords.keywords(program.keywords_for(variant, stage)).collect();
-        let macros = crate::preprocess::keyword_macros(&program.pragmas, &keywords).in_language(program.language);
+        let macros =
+            crate::preprocess::keyword_macros(&program.pragmas, &keywords).in_language(program.language);
         let out =
             crate::preprocess::preprocess_with(&checked.includes, &analysis.store, wgsl, &macros, stage);
         let range = out.source_map.expansion_at(file, offset)?;

@@ -139,7 +139,8 @@ pub(super) fn analyze_keywords(
     }
     let mut reported: HashSet<&str> = HashSet::new();
     for (name, span) in project_tests {
-        if declared.contains(name) || defined.contains(name) || !reported.insert(name) {
+        let platform = super::PLATFORM_MACRO_PREFIXES.iter().any(|prefix| name.starts_with(prefix));
+        if declared.contains(name) || defined.contains(name) || platform || !reported.insert(name) {
             continue;
         }
         let suggestion = declared

@@ -148,6 +148,12 @@ impl Includes {
         })
     }
 
+    /// Whether a file of this name is in one of the include paths (not the including file's
+    /// folder, nor the bundled library).
+    pub fn on_include_path(&self, name: &str) -> bool {
+        self.config.include_paths.iter().any(|folder| folder.join(name).is_file())
+    }
+
     /// Every file a unit was scanned from, each once, in the order first scanned.
     pub fn files(&self) -> Vec<FileId> {
         let mut seen = std::collections::HashSet::new();

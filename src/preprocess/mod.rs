@@ -72,6 +72,12 @@ impl Stage {
     }
 }
 
+/// The macros Unity's compiler defines for a platform, target and stage (`SHADER_API_D3D11`,
+/// `SHADER_TARGET`, ...), which HLSL and Cg includes test: never keywords, so keyword analysis
+/// does not call them undeclared.
+pub const PLATFORM_MACRO_PREFIXES: [&str; 4] =
+    ["SHADER_API_", "SHADER_TARGET", "UNITY_COMPILER_", "SHADER_STAGE_"];
+
 /// Macros kiln defines itself, which keyword analysis must not call undeclared.
 pub const BUILTIN_MACROS: [&str; 3] =
     ["SHADER_STAGE_VERTEX", "SHADER_STAGE_FRAGMENT", "SHADER_STAGE_COMPUTE"];
