@@ -604,3 +604,36 @@ fn an_edit_cancels_the_check_it_makes_moot_and_requests_are_answered_meanwhile()
     assert_eq!(published, vec![json!(2)], "only the edit the editor has is published");
     client.shutdown();
 }
+
+#[test]
+fn an_error_typed_into_an_hlsl_include_is_shown_at_its_line_with_its_variants() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let project = dir.path().join("hlsl");
+    for entry in walkdir::WalkDir::new(root().join("fixtures/hlsl")) {
+        let entry = entry.expect("entry");
+        let relative = entry.path().strip_prefix(root().join("fixtures/hlsl")).expect("inside");
+        if entry.file_type().is_dir() {
+            std::fs::create_dir_all(project.join(relative)).expect("mkdir");
+        } else {
+            std::fs::copy(entry.path(), project.join(relative)).expect("copy");
+        }
+    }
+    let mut client = Client::start(dir.path());
+    let (pass_uri, saved) = open_saved(&mut client, &project, "shaders/UnlitPass.hlsl");
+    assert_eq!(errors(&client.diagnostics(&pass_uri, Some(1))), Vec::<&Value>::new());
+    // Unsaved: a name that does not exist, inside the `_CLIPPING` group.
+    let broken = saved.replace("    clip(base.a - _Cutoff);\n", "    clip(base.a - _Cutoff);\n    base *= undefined_thing;\n");
+    client.change(&pass_uri, 2, &broken);
+    let diagnostics = client.diagnostics(&pass_uri, Some(2));
+    let found = errors(&diagnostics);
+    assert_eq!(found.len(), 1, "{diagnostics:#?}");
+    let (line, column) = find(&broken, "undefined_thing");
+    assert_eq!(found[0]["range"]["start"]["line"], line, "{:#}", found[0]);
+    assert_eq!(found[0]["range"]["start"]["character"], column, "{:#}", found[0]);
+    let message = found[0]["message"].as_str().expect("message");
+    assert!(message.contains("undefined_thing") && message.contains("glslang"), "{message}");
+    assert!(message.contains("_CLIPPING"), "{message}");
+    client.change(&pass_uri, 3, &saved);
+    assert_eq!(errors(&client.diagnostics(&pass_uri, Some(3))), Vec::<&Value>::new());
+    client.shutdown();
+}

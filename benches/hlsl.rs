@@ -1,0 +1,204 @@
+//! kiln's HLSL route against glslang alone, on the same variants, in one run: `cargo bench
+//! --bench hlsl` (sizes: `-- 64,256`). For each size it writes a project of one HLSL shader (the
+//! fixture's unlit pass with lighting terms behind eight `shader_feature_fragment` keywords) and
+//! materials choosing distinct combinations, then measures, in interleaved rounds: kiln's cold
+//! build; glslang alone in process on the very stage texts kiln compiles (its HLSL front end to
+//! SPIR-V, on every core, as kiln runs it); the same followed by naga's SPIR-V reader (kiln's
+//! front end, without binding, validation or any back end); Khronos' `glslangValidator`, one
+//! process per stage text, where it is installed; and a no-op rebuild. Results:
+//! docs/performance.md ("HLSL").
+
+use kiln::build::stage_texts;
+use kiln::catalog::catalog;
+use kiln::preprocess::{Includes, Stage};
+use kiln::project::{BuildMode, build_project, load_files, open_workspace};
+use kiln::source::SourceStore;
+use rayon::prelude::*;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
+const KEYWORDS: usize = 8;
+
+/// A project of `variants` materials of one HLSL shader, each a distinct keyword combination.
+fn generate(dir: &Path, variants: usize) {
+    let fixture = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/hlsl/shaders");
+    std::fs::create_dir_all(dir.join("materials")).expect("mkdir");
+    let pass = std::fs::read_to_string(fixture.join("UnlitPass.hlsl")).expect("UnlitPass.hlsl");
+    let terms: String = (0..KEYWORDS)
+        .map(|k| {
+            format!(
+                "#if defined(_F{k})\n    base.rgb = lerp(base.rgb, pow(saturate(base.gbr * {s} + {o}), {p}) * exp2(-base.rgb), {t});\n#endif\n",
+                s = 1.0 + k as f32 * 0.25,
+                o = 0.1 * k as f32,
+                p = 1.5 + k as f32 * 0.125,
+                t = 0.5 / (k + 1) as f32
+            )
+        })
+        .collect();
+    let pass = pass.replace("    return base;\n", &format!("{terms}    return base;\n"));
+    std::fs::write(dir.join("BenchPass.hlsl"), pass).expect("write");
+    let pragmas: String =
+        (0..KEYWORDS).map(|k| format!("            #pragma shader_feature_fragment _ _F{k}\n")).collect();
+    let shader = std::fs::read_to_string(fixture.join("Unlit.shader"))
+        .expect("Unlit.shader")
+        .replace("Shader \"HLSL/Unlit\"", "Shader \"Bench/Hlsl\"")
+        .replace("#pragma shader_feature _CLIPPING\n", &format!("#pragma shader_feature _CLIPPING\n{pragmas}"))
+        .replace("#include \"UnlitPass.hlsl\"", "#include \"BenchPass.hlsl\"");
+    std::fs::write(dir.join("Bench.shader"), shader).expect("write");
+    std::fs::write(dir.join("kiln.toml"), "global_keywords = []\n").expect("write");
+    for m in 0..variants {
+        let keywords: Vec<String> = (0..KEYWORDS).filter(|b| m & (1 << b) != 0).map(|b| format!("\"_F{b}\"")).collect();
+        let clip = if m >> KEYWORDS & 1 == 1 { "\n[properties]\n_Clipping = 1\n" } else { "" };
+        let text = format!("shader = \"Bench/Hlsl\"\nkeywords = [{}]\n{clip}", keywords.join(", "));
+        std::fs::write(dir.join(format!("materials/M{m:04}.mat")), text).expect("write");
+    }
+}
+
+/// The distinct stage texts a build compiles.
+fn texts(project: &Path) -> Vec<(Stage, String, String)> {
+    let mut store = SourceStore::new();
+    let (workspace, _) = open_workspace(&mut store, &[project.to_path_buf()]).expect("project");
+    let mut includes = Includes::new(workspace.include.clone().expect("include config"));
+    let (shaders, _) = load_files(&mut store, &workspace.shaders);
+    let (materials, _) = load_files(&mut store, &workspace.materials);
+    let input = workspace.catalog_input(shaders, materials);
+    let (catalog, _) = catalog(&mut store, &mut includes, &input);
+    stage_texts(&store, &includes, &catalog)
+}
+
+fn kiln_build(project: &Path, output: &Path) -> (usize, Duration) {
+    let started = Instant::now();
+    let mut store = SourceStore::new();
+    let mode = BuildMode { output: Some(output.to_path_buf()), ..BuildMode::default() };
+    let (result, diagnostics) = build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
+    let mut all = diagnostics;
+    all.extend(result.diagnostics);
+    assert!(all.is_empty(), "{}", kiln::diagnostics::render_plain(&store, &all));
+    (result.summary.compiled, started.elapsed())
+}
+
+/// glslang's SPIR-V for one stage text, as kiln asks it.
+fn glslang_spirv(stage: Stage, entry: &str, text: &str) -> Vec<u32> {
+    use glslang::*;
+    let compiler = Compiler::acquire().expect("glslang");
+    let source = ShaderSource::from(text);
+    let options = CompilerOptions {
+        source_language: SourceLanguage::HLSL,
+        target: Target::Vulkan { version: VulkanVersion::Vulkan1_1, spirv_version: SpirvVersion::SPIRV1_3 },
+        version_profile: None,
+        messages: ShaderMessage::DEFAULT | ShaderMessage::READ_HLSL,
+    };
+    let stage = if stage == Stage::Vertex { ShaderStage::Vertex } else { ShaderStage::Fragment };
+    let input = ShaderInput::new(&source, stage, &options, None, None).expect("input");
+    let mut builder = Shader::new(compiler, input);
+    builder.entry_point(entry);
+    builder.parse().expect("parses").compile().expect("compiles")
+}
+
+fn spv_in(words: &[u32]) -> naga::Module {
+    let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+    let options = naga::front::spv::Options { adjust_coordinate_space: false, strict_capabilities: false, block_ctx_dump_prefix: None };
+    naga::front::spv::parse_u8_slice(&bytes, &options).expect("naga reads it")
+}
+
+/// `glslangValidator`, one process per text, as many at once as there are cores.
+fn glslang_processes(texts: &[(Stage, String, String)], scratch: &Path) -> Option<Duration> {
+    let found = std::process::Command::new("glslangValidator").arg("--version").output().is_ok_and(|o| o.status.success());
+    if !found {
+        return None;
+    }
+    let files: Vec<PathBuf> = texts
+        .iter()
+        .enumerate()
+        .map(|(i, (_, _, text))| {
+            let path = scratch.join(format!("{i}.hlsl"));
+            std::fs::write(&path, text).expect("write");
+            path
+        })
+        .collect();
+    let started = Instant::now();
+    texts.par_iter().zip(&files).for_each(|((stage, entry, _), file)| {
+        let stage = if *stage == Stage::Vertex { "vert" } else { "frag" };
+        let out = file.with_extension("spv");
+        let run = std::process::Command::new("glslangValidator")
+            .args(["-D", "-S", stage, "-e", entry, "-V", "--target-env", "vulkan1.1", "-o"])
+            .arg(&out)
+            .arg(file)
+            .output()
+            .expect("runs");
+        assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stdout));
+    });
+    Some(started.elapsed())
+}
+
+fn median(mut times: Vec<Duration>) -> Duration {
+    times.sort();
+    times[times.len() / 2]
+}
+
+fn spread(mut ratios: Vec<f64>) -> String {
+    ratios.sort_by(f64::total_cmp);
+    format!("{:.2}x ({:.2}-{:.2})", ratios[ratios.len() / 2], ratios[0], ratios[ratios.len() - 1])
+}
+
+fn main() {
+    let sizes: Vec<usize> = std::env::args()
+        .skip(1)
+        .find(|a| a.chars().next().is_some_and(|c| c.is_ascii_digit()))
+        .map(|list| list.split(',').filter_map(|n| n.parse().ok()).collect())
+        .unwrap_or_else(|| vec![64, 256]);
+    let rounds: usize = std::env::var("KILN_SCALE_ROUNDS").ok().and_then(|n| n.parse().ok()).unwrap_or(5).max(1);
+    println!("threads: {}, rounds: {rounds}", rayon::current_num_threads());
+    for size in sizes {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let project = dir.path().join("project");
+        generate(&project, size);
+        let texts = texts(&project);
+        let (mut kiln, mut alone, mut front, mut processes, mut noop) = (vec![], vec![], vec![], vec![], vec![]);
+        let mut compiled = 0;
+        for round in 0..rounds {
+            let output = dir.path().join(format!("out{round}"));
+            let (modules, took) = kiln_build(&project, &output);
+            compiled = modules;
+            kiln.push(took);
+            let started = Instant::now();
+            texts.par_iter().for_each(|(stage, entry, text)| drop(glslang_spirv(*stage, entry, text)));
+            alone.push(started.elapsed());
+            let started = Instant::now();
+            texts.par_iter().for_each(|(stage, entry, text)| drop(spv_in(&glslang_spirv(*stage, entry, text))));
+            front.push(started.elapsed());
+            let scratch = dir.path().join(format!("cli{round}"));
+            std::fs::create_dir_all(&scratch).expect("mkdir");
+            if let Some(took) = glslang_processes(&texts, &scratch) {
+                processes.push(took);
+            }
+            noop.push(kiln_build(&project, &output).1);
+        }
+        assert_eq!(compiled, texts.len(), "kiln compiles each distinct text once");
+        let ratio = |a: &[Duration], b: &[Duration]| spread(a.iter().zip(b).map(|(a, b)| a.as_secs_f64() / b.as_secs_f64()).collect());
+        let per = |d: Duration| d.as_secs_f64() * 1000.0 / texts.len() as f64;
+        let (k, g, f) = (median(kiln.clone()), median(alone.clone()), median(front.clone()));
+        println!("{size} materials: {} distinct stage texts (kiln compiled {compiled})", texts.len());
+        println!("  kiln build          {:>8.1} ms  ({:.2} ms a stage module)", k.as_secs_f64() * 1000.0, per(k));
+        println!("  glslang in process  {:>8.1} ms  ({:.2} ms)", g.as_secs_f64() * 1000.0, per(g));
+        println!("  + naga's spv-in     {:>8.1} ms  ({:.2} ms)", f.as_secs_f64() * 1000.0, per(f));
+        if !processes.is_empty() {
+            let p = median(processes.clone());
+            println!("  glslangValidator    {:>8.1} ms  ({:.2} ms, a process per text)", p.as_secs_f64() * 1000.0, per(p));
+            println!("  kiln / glslangValidator processes: {}", ratio(&kiln, &processes));
+        }
+        println!("  kiln / glslang in process: {}", ratio(&kiln, &alone));
+        println!("  kiln / (glslang + spv-in): {}", ratio(&kiln, &front));
+        let share = |part: Duration| 100.0 * part.as_secs_f64() / k.as_secs_f64();
+        println!(
+            "  shares of kiln's build: glslang {:.0}%, spv-in {:.0}%, the rest of kiln {:.0}%",
+            share(g),
+            share(f.saturating_sub(g)),
+            share(k.saturating_sub(f))
+        );
+        println!("  no-op rebuild       {:>8.1} ms  (cold / no-op: {})", median(noop.clone()).as_secs_f64() * 1000.0, ratio(&kiln, &noop));
+    }
+}
