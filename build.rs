@@ -1,5 +1,6 @@
-//! Embeds the bundled WGSL shader library (`shaderlib/*.wgsl`) into the crate, so kiln finds its
-//! library from any working directory, and records the optimisation level kiln is built with.
+//! Embeds the bundled shader library (`shaderlib/*.wgsl`, and its HLSL mirror `*.hlsl`) into the
+//! crate, so kiln finds its library from any working directory, and records the optimisation
+//! level kiln is built with.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -13,7 +14,7 @@ fn main() {
     let mut names: Vec<String> = std::fs::read_dir(&dir)
         .expect("shaderlib/ exists")
         .filter_map(|entry| entry.ok().map(|e| e.file_name().to_string_lossy().into_owned()))
-        .filter(|name| name.ends_with(".wgsl"))
+        .filter(|name| name.ends_with(".wgsl") || name.ends_with(".hlsl"))
         .collect();
     names.sort();
     let mut module = String::from("/// The bundled library: (file name, text), sorted by name.\n");

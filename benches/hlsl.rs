@@ -45,12 +45,16 @@ fn generate(dir: &Path, variants: usize) {
     let shader = std::fs::read_to_string(fixture.join("Unlit.shader"))
         .expect("Unlit.shader")
         .replace("Shader \"HLSL/Unlit\"", "Shader \"Bench/Hlsl\"")
-        .replace("#pragma shader_feature _CLIPPING\n", &format!("#pragma shader_feature _CLIPPING\n{pragmas}"))
+        .replace(
+            "#pragma shader_feature _CLIPPING\n",
+            &format!("#pragma shader_feature _CLIPPING\n{pragmas}"),
+        )
         .replace("#include \"UnlitPass.hlsl\"", "#include \"BenchPass.hlsl\"");
     std::fs::write(dir.join("Bench.shader"), shader).expect("write");
     std::fs::write(dir.join("kiln.toml"), "global_keywords = []\n").expect("write");
     for m in 0..variants {
-        let keywords: Vec<String> = (0..KEYWORDS).filter(|b| m & (1 << b) != 0).map(|b| format!("\"_F{b}\"")).collect();
+        let keywords: Vec<String> =
+            (0..KEYWORDS).filter(|b| m & (1 << b) != 0).map(|b| format!("\"_F{b}\"")).collect();
         let clip = if m >> KEYWORDS & 1 == 1 { "\n[properties]\n_Clipping = 1\n" } else { "" };
         let text = format!("shader = \"Bench/Hlsl\"\nkeywords = [{}]\n{clip}", keywords.join(", "));
         std::fs::write(dir.join(format!("materials/M{m:04}.mat")), text).expect("write");
@@ -73,7 +77,8 @@ fn kiln_build(project: &Path, output: &Path) -> (usize, Duration) {
     let started = Instant::now();
     let mut store = SourceStore::new();
     let mode = BuildMode { output: Some(output.to_path_buf()), ..BuildMode::default() };
-    let (result, diagnostics) = build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
+    let (result, diagnostics) =
+        build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
     let mut all = diagnostics;
     all.extend(result.diagnostics);
     assert!(all.is_empty(), "{}", kiln::diagnostics::render_plain(&store, &all));
@@ -100,13 +105,20 @@ fn glslang_spirv(stage: Stage, entry: &str, text: &str) -> Vec<u32> {
 
 fn spv_in(words: &[u32]) -> naga::Module {
     let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
-    let options = naga::front::spv::Options { adjust_coordinate_space: false, strict_capabilities: false, block_ctx_dump_prefix: None };
+    let options = naga::front::spv::Options {
+        adjust_coordinate_space: false,
+        strict_capabilities: false,
+        block_ctx_dump_prefix: None,
+    };
     naga::front::spv::parse_u8_slice(&bytes, &options).expect("naga reads it")
 }
 
 /// `glslangValidator`, one process per text, as many at once as there are cores.
 fn glslang_processes(texts: &[(Stage, String, String)], scratch: &Path) -> Option<Duration> {
-    let found = std::process::Command::new("glslangValidator").arg("--version").output().is_ok_and(|o| o.status.success());
+    let found = std::process::Command::new("glslangValidator")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success());
     if !found {
         return None;
     }
@@ -150,14 +162,16 @@ fn main() {
         .find(|a| a.chars().next().is_some_and(|c| c.is_ascii_digit()))
         .map(|list| list.split(',').filter_map(|n| n.parse().ok()).collect())
         .unwrap_or_else(|| vec![64, 256]);
-    let rounds: usize = std::env::var("KILN_SCALE_ROUNDS").ok().and_then(|n| n.parse().ok()).unwrap_or(5).max(1);
+    let rounds: usize =
+        std::env::var("KILN_SCALE_ROUNDS").ok().and_then(|n| n.parse().ok()).unwrap_or(5).max(1);
     println!("threads: {}, rounds: {rounds}", rayon::current_num_threads());
     for size in sizes {
         let dir = tempfile::tempdir().expect("temp dir");
         let project = dir.path().join("project");
         generate(&project, size);
         let texts = texts(&project);
-        let (mut kiln, mut alone, mut front, mut processes, mut noop) = (vec![], vec![], vec![], vec![], vec![]);
+        let (mut kiln, mut alone, mut front, mut processes, mut noop) =
+            (vec![], vec![], vec![], vec![], vec![]);
         let mut compiled = 0;
         for round in 0..rounds {
             let output = dir.path().join(format!("out{round}"));
@@ -168,7 +182,9 @@ fn main() {
             texts.par_iter().for_each(|(stage, entry, text)| drop(glslang_spirv(*stage, entry, text)));
             alone.push(started.elapsed());
             let started = Instant::now();
-            texts.par_iter().for_each(|(stage, entry, text)| drop(spv_in(&glslang_spirv(*stage, entry, text))));
+            texts
+                .par_iter()
+                .for_each(|(stage, entry, text)| drop(spv_in(&glslang_spirv(*stage, entry, text))));
             front.push(started.elapsed());
             let scratch = dir.path().join(format!("cli{round}"));
             std::fs::create_dir_all(&scratch).expect("mkdir");
@@ -178,16 +194,26 @@ fn main() {
             noop.push(kiln_build(&project, &output).1);
         }
         assert_eq!(compiled, texts.len(), "kiln compiles each distinct text once");
-        let ratio = |a: &[Duration], b: &[Duration]| spread(a.iter().zip(b).map(|(a, b)| a.as_secs_f64() / b.as_secs_f64()).collect());
+        let ratio = |a: &[Duration], b: &[Duration]| {
+            spread(a.iter().zip(b).map(|(a, b)| a.as_secs_f64() / b.as_secs_f64()).collect())
+        };
         let per = |d: Duration| d.as_secs_f64() * 1000.0 / texts.len() as f64;
         let (k, g, f) = (median(kiln.clone()), median(alone.clone()), median(front.clone()));
         println!("{size} materials: {} distinct stage texts (kiln compiled {compiled})", texts.len());
-        println!("  kiln build          {:>8.1} ms  ({:.2} ms a stage module)", k.as_secs_f64() * 1000.0, per(k));
+        println!(
+            "  kiln build          {:>8.1} ms  ({:.2} ms a stage module)",
+            k.as_secs_f64() * 1000.0,
+            per(k)
+        );
         println!("  glslang in process  {:>8.1} ms  ({:.2} ms)", g.as_secs_f64() * 1000.0, per(g));
         println!("  + naga's spv-in     {:>8.1} ms  ({:.2} ms)", f.as_secs_f64() * 1000.0, per(f));
         if !processes.is_empty() {
             let p = median(processes.clone());
-            println!("  glslangValidator    {:>8.1} ms  ({:.2} ms, a process per text)", p.as_secs_f64() * 1000.0, per(p));
+            println!(
+                "  glslangValidator    {:>8.1} ms  ({:.2} ms, a process per text)",
+                p.as_secs_f64() * 1000.0,
+                per(p)
+            );
             println!("  kiln / glslangValidator processes: {}", ratio(&kiln, &processes));
         }
         println!("  kiln / glslang in process: {}", ratio(&kiln, &alone));
@@ -199,6 +225,10 @@ fn main() {
             share(f.saturating_sub(g)),
             share(k.saturating_sub(f))
         );
-        println!("  no-op rebuild       {:>8.1} ms  (cold / no-op: {})", median(noop.clone()).as_secs_f64() * 1000.0, ratio(&kiln, &noop));
+        println!(
+            "  no-op rebuild       {:>8.1} ms  (cold / no-op: {})",
+            median(noop.clone()).as_secs_f64() * 1000.0,
+            ratio(&kiln, &noop)
+        );
     }
 }

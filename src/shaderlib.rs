@@ -1,4 +1,5 @@
-//! The bundled WGSL shader library (`shaderlib/`), embedded at build time by `build.rs`.
+//! The bundled shader library (`shaderlib/`: WGSL, and an HLSL mirror of it), embedded at build
+//! time by `build.rs`.
 //! `#include "Common.wgsl"` finds these files after the including file's folder and the
 //! project's include paths.
 
@@ -35,7 +36,7 @@ mod tests {
         for entry in std::fs::read_dir(dir).expect("shaderlib/") {
             let path = entry.expect("entry").path();
             let name = path.file_name().expect("name").to_string_lossy().into_owned();
-            if name.ends_with(".wgsl") {
+            if name.ends_with(".wgsl") || name.ends_with(".hlsl") {
                 on_disk += 1;
                 let text = std::fs::read_to_string(&path).expect("UTF-8");
                 assert_eq!(super::file(&name), Some(text.as_str()), "{name}");

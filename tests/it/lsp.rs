@@ -622,7 +622,10 @@ fn an_error_typed_into_an_hlsl_include_is_shown_at_its_line_with_its_variants() 
     let (pass_uri, saved) = open_saved(&mut client, &project, "shaders/UnlitPass.hlsl");
     assert_eq!(errors(&client.diagnostics(&pass_uri, Some(1))), Vec::<&Value>::new());
     // Unsaved: a name that does not exist, inside the `_CLIPPING` group.
-    let broken = saved.replace("    clip(base.a - _Cutoff);\n", "    clip(base.a - _Cutoff);\n    base *= undefined_thing;\n");
+    let broken = saved.replace(
+        "    clip(base.a - _Cutoff);\n",
+        "    clip(base.a - _Cutoff);\n    base *= undefined_thing;\n",
+    );
     client.change(&pass_uri, 2, &broken);
     let diagnostics = client.diagnostics(&pass_uri, Some(2));
     let found = errors(&diagnostics);

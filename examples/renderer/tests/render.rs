@@ -286,3 +286,37 @@ fn new_keyword_combinations_draw_through_the_ubershader_and_end_in_the_same_imag
     let cells: std::collections::HashSet<&[u8]> = fallback.image.pixels.chunks_exact(4).collect();
     assert!(cells.len() >= 12, "{} distinct colours", cells.len());
 }
+
+/// The seed's Lit shader as the tutorial writes it in HLSL (fixtures/hlsl_lit: the tutorial's pass
+/// on kiln's HLSL library, compiled through glslang) draws the scene the WGSL Lit shader draws:
+/// every pixel within one step of 255 of it, through the same run time and bindings.
+#[test]
+fn the_tutorial_s_hlsl_lit_shader_draws_the_wgsl_lit_shader_s_pixels() {
+    let Some((device, queue, adapter)) = common::gpu("the HLSL Lit render test") else { return };
+    let scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
+    let dir = tempfile::tempdir().expect("temp dir");
+    let materials = dir.path().join("materials");
+    std::fs::create_dir(&materials).expect("mkdir");
+    for (name, text) in scene.material_files() {
+        std::fs::write(materials.join(name), text).expect("write");
+    }
+    let shaders = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/hlsl_lit/shaders");
+    kiln::Build::new(shaders)
+        .materials(materials)
+        .global_keywords(scene.global_keywords())
+        .out_dir(dir.path().join("out"))
+        .execute()
+        .expect("the HLSL Lit shader builds");
+    let library = kiln::runtime::Library::open(dir.path().join("out/kiln")).expect("opens");
+    let mut runtime = kiln::runtime::Runtime::new(&device, library);
+    let hlsl = kiln_renderer::render_with(&mut runtime, &device, &queue, &scene).expect("HLSL renders");
+    let wgsl = render(&device, &queue, &scene).expect("WGSL renders");
+    assert_eq!((hlsl.width, hlsl.height), (wgsl.width, wgsl.height));
+    let steps: Vec<u8> = hlsl.pixels.iter().zip(&wgsl.pixels).map(|(h, w)| h.abs_diff(*w)).collect();
+    let largest = steps.iter().copied().max().unwrap_or(0);
+    let differing = steps.iter().filter(|&&s| s > 0).count();
+    println!("{adapter}: HLSL against WGSL Lit: largest step {largest}, {differing} channels differ");
+    assert!(largest <= 1, "a channel {largest} steps of 255 apart ({differing} differ)");
+    // Not two blank images: the spheres are lit.
+    assert!(hlsl.pixels.chunks(4).filter(|p| p[0] > 100 || p[1] > 100 || p[2] > 100).count() > 2000);
+}
