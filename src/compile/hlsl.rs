@@ -1,8 +1,8 @@
 //! The HLSL and Cg front end: one preprocessed stage text, Cg's samplers rewritten (`cg.rs`),
 //! through Khronos' glslang (its HLSL front end, built from source by cargo and run in process)
-//! to SPIR-V, and naga's SPIR-V
-//! reader back to a module. From there a module goes the way a WGSL one does: kiln binds it
-//! by resource name, validates, compacts and writes every back end (docs/hlsl.md).
+//! to SPIR-V, and naga's SPIR-V reader back to a module. From there a module goes the way a
+//! WGSL one does: kiln binds it by resource name, validates, compacts and writes every back end
+//! (docs/hlsl.md).
 //!
 //! glslang's messages are placed through the preprocessor's source map (its lines and columns
 //! are the text's); the module's own spans are offsets into SPIR-V, which no source map knows,
@@ -29,6 +29,8 @@ pub(crate) fn parse(
     (entry, entry_pragma): (&str, Span),
     mapper: &Mapper,
 ) -> Result<Module, Diagnostic> {
+    // What bounds naga's time bounds glslang's: the same limits on a statement and a function.
+    super::within_limits(text, mapper, ProgramLanguage::Hlsl)?;
     // glslang compiles a missing entry point as an empty one, with only a warning.
     if !defines_function(text, entry) {
         let d = Diagnostic::error("K0403", format!("{} entry point `{entry}` not found", stage.name()))
@@ -215,7 +217,8 @@ fn parse_error_line(line: &str) -> Option<ErrorLine> {
 /// Says which language a message is about: glslang's messages read the same for both.
 fn in_language(mut diagnostic: Diagnostic, language: ProgramLanguage) -> Diagnostic {
     if diagnostic.code == "K0426" && !diagnostic.message.starts_with("glslang") {
-        diagnostic.message = format!("{} (glslang, {})", diagnostic.message, language.name().to_uppercase());
+        let language = if language == ProgramLanguage::Cg { "Cg" } else { "HLSL" };
+        diagnostic.message = format!("{} (glslang, {language})", diagnostic.message);
     }
     diagnostic
 }

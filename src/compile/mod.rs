@@ -39,6 +39,7 @@ mod wgsl;
 
 use crate::diagnostics::Diagnostic;
 use crate::preprocess::{Preprocessed, SourceMap};
+use crate::shaderlab::ast::ProgramLanguage;
 use crate::source::SourceStore;
 use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
 
@@ -62,6 +63,21 @@ pub fn check(preprocessed: &Preprocessed, store: &SourceStore) -> Result<Checked
 }
 
 pub(crate) fn parse(text: &str, mapper: &Mapper) -> Result<naga::Module, Diagnostic> {
+    within_limits(text, mapper, ProgramLanguage::Wgsl)?;
+    if let Some(diagnostic) = layout::oversized_struct(text, mapper) {
+        return Err(diagnostic);
+    }
+    naga::front::wgsl::parse_str(text).map_err(|error| wgsl_error(&error, text, mapper))
+}
+
+/// A text's longest statement and largest function against kiln's limits (K0421): past them a
+/// front end recurses deeper than a worker's stack, or takes minutes (naga's typifier; glslang's
+/// HLSL front end the same way). `language` says how a function's signature is found.
+pub(crate) fn within_limits(
+    text: &str,
+    mapper: &Mapper,
+    language: ProgramLanguage,
+) -> Result<(), Diagnostic> {
     if let Some((statement, operators)) = longest_statement(text).filter(|(_, n)| *n > MAX_OPERATORS) {
         let blank = text[statement.clone()].len() - text[statement.clone()].trim_start().len();
         let span = naga::Span::new((statement.start + blank) as u32, statement.end as u32);
@@ -74,8 +90,13 @@ pub(crate) fn parse(text: &str, mapper: &Mapper) -> Result<naga::Module, Diagnos
         return Err(diagnostic);
     }
     if let Some((body, terms)) = largest_function(text).filter(|(_, n)| *n > MAX_FUNCTION_TERMS) {
-        let signature =
-            text[..body.start].rfind("fn").map_or(body.start..body.start + 1, |fn_at| fn_at..body.start);
+        // WGSL's `fn NAME(...)` before the body; in HLSL the line the body opens on.
+        let signature = match language {
+            ProgramLanguage::Wgsl => {
+                text[..body.start].rfind("fn").map_or(body.start..body.start + 1, |fn_at| fn_at..body.start)
+            }
+            _ => text[..body.start].rfind('\n').map_or(0, |n| n + 1)..body.start + 1,
+        };
         let span = naga::Span::new(signature.start as u32, signature.end as u32);
         let message = format!(
             "a function of {terms} operands and operators, past kiln's limit of {MAX_FUNCTION_TERMS} in one function"
@@ -88,34 +109,34 @@ pub(crate) fn parse(text: &str, mapper: &Mapper) -> Result<naga::Module, Diagnos
         diagnostic.help = Some("split it into functions, or loop where macros repeat code".into());
         return Err(diagnostic);
     }
-    if let Some(diagnostic) = layout::oversized_struct(text, mapper) {
-        return Err(diagnostic);
+    Ok(())
+}
+
+/// naga's WGSL parse error, placed, with the HLSL spelling it may be.
+fn wgsl_error(error: &naga::front::wgsl::ParseError, text: &str, mapper: &Mapper) -> Diagnostic {
+    let mut labels: Vec<(naga::Span, String)> =
+        error.labels().map(|(span, message)| (span, message.to_string())).collect();
+    // naga points at the token after a missing `;` (often the next line's `}`); rustc, and the
+    // rest of kiln, at the end of the statement that lacks it.
+    if error.message().starts_with("expected `;`")
+        && let Some((found, _)) = labels.first().cloned()
+        && let Some(end) = found.to_range().and_then(|r| end_of_previous_token(text, r.start))
+    {
+        labels.insert(0, (naga::Span::new(end as u32 - 1, end as u32), "expected `;` after this".into()));
+        labels[1].1 = "found here".into();
     }
-    naga::front::wgsl::parse_str(text).map_err(|error| {
-        let mut labels: Vec<(naga::Span, String)> =
-            error.labels().map(|(span, message)| (span, message.to_string())).collect();
-        // naga points at the token after a missing `;` (often the next line's `}`); rustc, and the
-        // rest of kiln, at the end of the statement that lacks it.
-        if error.message().starts_with("expected `;`")
-            && let Some((found, _)) = labels.first().cloned()
-            && let Some(end) = found.to_range().and_then(|r| end_of_previous_token(text, r.start))
-        {
-            labels.insert(0, (naga::Span::new(end as u32 - 1, end as u32), "expected `;` after this".into()));
-            labels[1].1 = "found here".into();
-        }
-        let hlsl = labels
-            .first()
-            .and_then(|(span, _)| span.to_range())
-            .and_then(|range| hlsl_spelling(text, range.start));
-        let mut diagnostic = mapper.diagnostic("K0401", error.message().to_string(), labels);
-        diagnostic.notes.extend(error.notes().map(str::to_string));
-        if let Some((hlsl, wgsl)) = hlsl {
-            diagnostic
-                .notes
-                .push(format!("`{hlsl}` is HLSL; WGSL writes {wgsl} (a `WGSLPROGRAM` block is WGSL)"));
-        }
+    let hlsl = labels
+        .first()
+        .and_then(|(span, _)| span.to_range())
+        .and_then(|range| hlsl_spelling(text, range.start));
+    let mut diagnostic = mapper.diagnostic("K0401", error.message().to_string(), labels);
+    diagnostic.notes.extend(error.notes().map(str::to_string));
+    if let Some((hlsl, wgsl)) = hlsl {
         diagnostic
-    })
+            .notes
+            .push(format!("`{hlsl}` is HLSL; WGSL writes {wgsl} (a `WGSLPROGRAM` block is WGSL)"));
+    }
+    diagnostic
 }
 
 /// HLSL's spellings users bring from Unity, with WGSL's (docs/first-shader.md's table).

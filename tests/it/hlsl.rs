@@ -53,7 +53,18 @@ fn an_hlsl_pass_builds_every_variant_its_materials_use_with_one_layout_for_both_
 }
 
 #[test]
-fn kiln_preprocess_prints_an_hlsl_variant_as_glslang_reads_it() {
+fn kiln_preprocess_and_reflect_work_on_an_hlsl_variant() {
+    let reflected = kiln(&["reflect", "fixtures/hlsl/shaders/Unlit.shader", "--keywords", "_CLIPPING"]);
+    assert!(reflected.status.success(), "{}", String::from_utf8_lossy(&reflected.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&reflected.stdout).expect("JSON");
+    let names: Vec<&str> = json["layout"]
+        .as_array()
+        .expect("layout")
+        .iter()
+        .flat_map(|g| g["entries"].as_array().expect("entries"))
+        .filter_map(|e| e["name"].as_str())
+        .collect();
+    assert!(names.contains(&"UnityPerMaterial") && names.contains(&"sampler_BaseMap"), "{names:?}");
     let printed = kiln(&["preprocess", "fixtures/hlsl/shaders/Unlit.shader", "--keywords", "_CLIPPING"]);
     assert!(printed.status.success(), "{}", String::from_utf8_lossy(&printed.stderr));
     let text = String::from_utf8(printed.stdout).expect("UTF-8");
@@ -325,4 +336,25 @@ fn an_hlsl_pass_draws_the_pixels_of_its_wgsl_twin() {
             );
         }
     }
+}
+
+/// An HLSL function past kiln's limit on one function's terms is refused before glslang reads it
+/// (K0421, at the line it opens on), as a WGSL one is before naga: neither front end's time is
+/// left unbounded by a hostile text.
+#[test]
+fn an_hlsl_function_past_the_limit_is_refused_before_glslang_reads_it() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let statements: String = (0..9000).map(|i| format!("    x = x * 1.0001 + {i}.0;\n")).collect();
+    let shader = format!(
+        "Shader \"Hostile/Long\" {{ SubShader {{ Pass {{\nHLSLPROGRAM\n#pragma vertex Vertex\n#pragma fragment Fragment\n\
+         float4 Vertex(float3 p : POSITION) : SV_POSITION {{ return float4(p, 1.0); }}\n\
+         float4 Fragment() : SV_TARGET {{\n    float x = 0.0;\n{statements}    return x;\n}}\nENDHLSL\n}} }} }}\n"
+    );
+    let path = dir.path().join("Long.shader");
+    std::fs::write(&path, shader).expect("write");
+    let run = kiln(&["check", path.to_str().expect("UTF-8")]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("error[K0421]") && stderr.contains("past kiln's limit"), "{stderr}");
+    assert!(stderr.contains("Long.shader:7:"), "placed at the function's line: {stderr}");
 }

@@ -330,9 +330,10 @@ fn requests_that_name_nothing_are_usage_errors() {
             assert!(stderr.contains(message), "{args:?}: {stderr}");
         }
     }
-    let output = kiln(&["preprocess", "fixtures/unity/UniversalLit.shader"]);
-    assert_eq!(output.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&output.stderr).contains("only WGSL programs are preprocessed"));
+    let output = kiln(&["preprocess", "fixtures/unity/SurfaceToon.shader", "--pass", "GLSL"]);
+    assert_eq!(output.status.code(), Some(2), "{}", String::from_utf8_lossy(&output.stderr));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("only WGSL, HLSL and Cg programs are preprocessed"), "{stderr}");
 }
 
 /// Preprocesses an in-memory program against an in-memory library and renders what it reports.
