@@ -10,6 +10,7 @@ use kiln::project::{BuildMode, build_project};
 use kiln::runtime::{Drawable, PipelineRequest, Runtime};
 use kiln::source::SourceStore;
 use std::fmt::Write as _;
+use std::path::Path;
 
 fn pass<'a>(manifest: &'a Manifest, shader: &str) -> &'a PassManifest {
     let shader = manifest.shaders.iter().find(|s| s.name == shader).expect("shader built");
@@ -357,4 +358,32 @@ fn an_hlsl_function_past_the_limit_is_refused_before_glslang_reads_it() {
     assert_eq!(run.status.code(), Some(1), "{stderr}");
     assert!(stderr.contains("error[K0421]") && stderr.contains("past kiln's limit"), "{stderr}");
     assert!(stderr.contains("Long.shader:6:1"), "placed at the function's line: {stderr}");
+}
+
+/// HLSL modules are cached as WGSL ones are: a rebuild into the same output compiles nothing, a
+/// build into a new output with the shared cache fetches every module, and the outputs are
+/// byte for byte a cold build's.
+#[test]
+fn hlsl_modules_come_from_the_output_s_cache_and_the_shared_cache() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let (cache, first, second) = (dir.path().join("cache"), dir.path().join("a"), dir.path().join("b"));
+    let build = |output: &Path| {
+        let mut store = SourceStore::new();
+        let mode = BuildMode {
+            output: Some(output.to_path_buf()),
+            cache_dir: Some(cache.clone()),
+            ..BuildMode::default()
+        };
+        let project = root().join("fixtures/hlsl");
+        let (result, diagnostics) = build_project(&mut store, &[project], &mode, &|_, _| {}).expect("builds");
+        assert!(diagnostics.iter().chain(&result.diagnostics).all(|d| !d.is_error()));
+        result.summary
+    };
+    let cold = build(&first);
+    assert!(cold.compiled >= 8, "{cold:?}");
+    let again = build(&first);
+    assert_eq!((again.compiled, again.reused), (0, cold.modules), "{again:?}");
+    let fetched = build(&second);
+    assert_eq!((fetched.compiled, fetched.reused), (0, cold.modules), "{fetched:?}");
+    assert_eq!(crate::support::shipped(&first), crate::support::shipped(&second));
 }
