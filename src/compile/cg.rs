@@ -58,7 +58,7 @@ pub(super) fn rewrite(text: &str, map: &SourceMap) -> Rewrite {
     let word = |i: usize| tokens.get(i).filter(|t| t.kind == Kind::Ident).map(|t| t.text.as_ref());
     let punct = |i: usize, p: &str| tokens.get(i).is_some_and(|t| t.kind == Kind::Punct && t.text == p);
     let range = |i: usize| tokens[i].at..tokens[i].at + tokens[i].text.len();
-    // Samplers states already declared (Unity's `UNITY_DECLARE_TEX2D` declares both).
+    // Sampler states already declared (Unity's `UNITY_DECLARE_TEX2D` declares both).
     let states: BTreeSet<&str> =
         (1..tokens.len()).filter(|&i| word(i - 1) == Some("SamplerState")).filter_map(word).collect();
     let mut edits: Vec<(Range<usize>, String)> = Vec::new();
