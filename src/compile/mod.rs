@@ -134,7 +134,7 @@ fn wgsl_error(error: &naga::front::wgsl::ParseError, text: &str, mapper: &Mapper
     if let Some((hlsl, wgsl)) = hlsl {
         diagnostic
             .notes
-            .push(format!("`{hlsl}` is HLSL; WGSL writes {wgsl} (a `WGSLPROGRAM` block is WGSL)"));
+            .push(format!("`{hlsl}` is HLSL; WGSL writes {wgsl} (a `WGSLPROGRAM` block is WGSL; as `HLSLPROGRAM` ... `ENDHLSL` the block compiles as HLSL)"));
     }
     diagnostic
 }

@@ -85,7 +85,7 @@ fn watch_rebuilds_on_an_edit_and_reports_a_broken_one() {
         seen.join("\n")
     };
     let first = next_build();
-    assert!(first.contains("built 1 shaders, 1 passes, 1 variants"), "{first}");
+    assert!(first.contains("built 1 shader, 1 pass, 1 variant: 2 stage modules"), "{first}");
     let shader = project.path().join("Blend.shader");
     let text = std::fs::read_to_string(&shader).expect("shader");
     std::fs::write(&shader, text.replace("return color;", "return colour;")).expect("edit");
@@ -308,4 +308,15 @@ fn a_ci_job_pointed_at_unity_shaders_fails_rather_than_checking_nothing() {
         assert_eq!(run.status.code(), Some(1), "{command}: {stderr}");
         assert!(stderr.contains("error[K0424]"), "{command}: {stderr}");
     }
+}
+
+/// The summary line counts in the singular where there is one, and says how many modules failed
+/// rather than leave them out of every count.
+#[test]
+fn the_summary_line_counts_one_in_the_singular_and_counts_what_failed() {
+    let run = crate::support::kiln(&["check", "fixtures/bad/build/hlsl_missing_entry_point.shader"]);
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    let summary = "checked 1 shader, 1 pass, 1 variant: 2 stage modules (0 compiled, 0 reused from cache, 2 failed)";
+    assert!(stderr.contains(summary), "{stderr}");
 }

@@ -258,7 +258,7 @@ fn first_shader_project(dir: &Path) -> (std::path::PathBuf, String, Vec<(String,
     assert_eq!(String::from_utf8_lossy(&list.stdout), listing, "docs/first-shader.md's listing is stale");
     let build = crate::support::kiln_in(&project, &["build"]);
     let stderr = String::from_utf8_lossy(&build.stderr);
-    assert!(build.status.success() && stderr.starts_with("built 1 shaders"), "{stderr}");
+    assert!(build.status.success() && stderr.starts_with("built 1 shader,"), "{stderr}");
     let draw = code_blocks(&page, "rust").into_iter().next().expect("the page's draw_flat");
     let pixels = page
         .lines()

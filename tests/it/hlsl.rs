@@ -240,6 +240,12 @@ fn constant_buffers_keep_hlsl_s_packing_or_are_refused_at_the_member() {
         let Some((_, ty)) = block_type else { panic!("no Block{index} in\n{wgsl}") };
         let naga::TypeInner::Struct { members: read, .. } = &ty.inner else { panic!("not a struct") };
         assert_eq!(read.iter().map(|m| m.offset).collect::<Vec<_>>(), offsets, "{what}\n{wgsl}");
+        // The generated `#[repr(C)]` struct asserts the same offsets.
+        let rust = kiln::codegen::generate(&manifest, "out").expect("names do not clash");
+        for (i, offset) in offsets.iter().enumerate() {
+            let asserted = rust.lines().any(|l| l.contains("offset_of!(") && l.contains(&format!(", m{i}) == {offset})")));
+            assert!(asserted, "the generated Rust places m{i} elsewhere than {offset}: {what}\n{rust}");
+        }
         kept += 1;
     }
     println!("constant buffers: {kept} kept as HLSL packs them, {refused} refused");

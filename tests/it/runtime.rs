@@ -687,7 +687,7 @@ fn a_stale_trace_entry_is_a_warning_and_a_stale_usage_log_line_an_error() {
     // The diagnostics, not the summary's timing.
     let diagnostics = stderr.split("\nchecked ").next().unwrap_or_default();
     expect_test::expect_file![root().join("tests/golden/runtime/stale_trace.stderr")].assert_eq(diagnostics);
-    assert!(stderr.contains("checked 1 shaders, 1 passes, 3 variants"), "the rest built: {stderr}");
+    assert!(stderr.contains("checked 1 shader, 1 pass, 3 variants"), "the rest built: {stderr}");
     // The same first line without its `version` is a usage log's line.
     let dir = tempfile::tempdir().expect("temp dir");
     let log = dir.path().join("usage.jsonl");

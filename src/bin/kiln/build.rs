@@ -104,12 +104,23 @@ fn run(project: PathBuf, mode: BuildMode, format: Format, part: Part) -> ExitCod
 fn print_summary(s: &kiln::build::BuildSummary, written_to: Option<&std::path::Path>, errors: bool) {
     let write = written_to.is_some();
     let verb = if write { "built" } else { "checked" };
+    let counted = |n: usize, one: &str, many: &str| if n == 1 { format!("1 {one}") } else { format!("{n} {many}") };
     let mut line = format!(
-        "{verb} {} shaders, {} passes, {} variants: {} stage modules ({} compiled, {} reused from cache",
-        s.shaders, s.passes, s.variants, s.modules, s.compiled, s.reused
+        "{verb} {}, {}, {}: {} ({} compiled, {} reused from cache",
+        counted(s.shaders, "shader", "shaders"),
+        counted(s.passes, "pass", "passes"),
+        counted(s.variants, "variant", "variants"),
+        counted(s.modules, "stage module", "stage modules"),
+        s.compiled,
+        s.reused
     );
     if s.shared > 0 {
         line.push_str(&format!(", {} shared between passes", s.shared));
+    }
+    // Modules neither made nor found: their errors (or their pass's) are above.
+    let failed = s.modules.saturating_sub(s.compiled + s.reused + s.shared);
+    if failed > 0 {
+        line.push_str(&format!(", {failed} failed"));
     }
     if s.uncut > 0 {
         // A miss of the cut to what entry points reach: a bug to report, never a wrong module.
