@@ -226,6 +226,9 @@ fn material_new_and_preset_write_files_that_load() {
         project_arg,
     ]);
     assert_eq!(new.status.code(), Some(0), "{}", String::from_utf8_lossy(&new.stderr));
+    // Said, once written: which file, of which shader, in which preset.
+    let said = String::from_utf8_lossy(&new.stderr);
+    assert!(said.contains("Glass.mat") && said.contains("`Custom RP/Lit`, preset Clip"), "{said}");
     let again = kiln(&["material", "new", mat_arg, "--shader", "Custom RP/Lit", "--project", project_arg]);
     assert_eq!(again.status.code(), Some(2), "an existing file is never overwritten");
 
@@ -243,6 +246,7 @@ fn material_new_and_preset_write_files_that_load() {
     std::fs::write(&mat, format!("# glass for the demo\n{edited}")).expect("write");
     let preset = kiln(&["material", "preset", mat_arg, "Transparent", "--project", project_arg]);
     assert_eq!(preset.status.code(), Some(0), "{}", String::from_utf8_lossy(&preset.stderr));
+    assert!(String::from_utf8_lossy(&preset.stderr).contains("applied preset Transparent to"));
     let text = std::fs::read_to_string(&mat).expect("read");
     assert!(text.starts_with("# glass for the demo\n"), "{text}");
     assert!(text.contains("_Metallic = 0.75 # hand-tuned"), "{text}");
