@@ -40,6 +40,23 @@ impl Backend {
         }
     }
 
+    /// The back end a name that is none means: the API it is for (`metal` is `msl`, `vulkan`
+    /// `spirv`, `dx12` `hlsl`, `gl` `glsl`, `webgpu` `wgsl`), or a spelling two edits away.
+    pub fn meant(name: &str) -> Option<Backend> {
+        let by_api = match name.to_ascii_lowercase().as_str() {
+            "metal" | "mtl" | "macos" | "ios" => Some(Backend::Msl),
+            "vulkan" | "vk" | "spv" | "spir-v" => Some(Backend::Spirv),
+            "dx12" | "d3d12" | "directx" | "dx" | "d3d" => Some(Backend::Hlsl),
+            "gl" | "opengl" | "gles" | "webgl" | "webgl2" => Some(Backend::Glsl),
+            "webgpu" | "wgpu" => Some(Backend::Wgsl),
+            _ => None,
+        };
+        by_api.or_else(|| {
+            let closest = crate::diagnostics::closest(name, Backend::ALL.iter().map(|b| b.name()))?;
+            Backend::ALL.iter().copied().find(|b| b.name() == closest)
+        })
+    }
+
     fn index(self) -> usize {
         self as usize
     }

@@ -320,3 +320,14 @@ fn the_summary_line_counts_one_in_the_singular_and_counts_what_failed() {
     let summary = "checked 1 shader, 1 pass, 1 variant: 2 stage modules (0 compiled, 0 reused from cache, 2 failed)";
     assert!(stderr.contains(summary), "{stderr}");
 }
+
+/// A back end named for its API (`metal`) or misspelt is refused with the one meant.
+#[test]
+fn a_back_end_named_for_its_api_is_told_the_one_meant() {
+    for (given, meant) in [("metal", "msl"), ("vulkan", "spirv"), ("dx12", "hlsl"), ("spirvv", "spirv")] {
+        let run = crate::support::kiln(&["check", "fixtures/project", "--backends", given]);
+        let stderr = String::from_utf8_lossy(&run.stderr);
+        assert_eq!(run.status.code(), Some(2), "{given}: {stderr}");
+        assert!(stderr.contains(&format!("no back end `{given}` (did you mean `{meant}`?)")), "{stderr}");
+    }
+}

@@ -58,7 +58,8 @@ fn backend(name: &str) -> Result<kiln::manifest::Backend, String> {
     let all = kiln::manifest::Backend::ALL;
     all.iter().copied().find(|b| b.name() == name).ok_or_else(|| {
         let names: Vec<&str> = all.iter().map(|b| b.name()).collect();
-        format!("no back end `{name}`; kiln writes {}", names.join(", "))
+        let meant = kiln::manifest::Backend::meant(name).map(|b| format!(" (did you mean `{}`?)", b.name()));
+        format!("no back end `{name}`{}; kiln writes {}", meant.unwrap_or_default(), names.join(", "))
     })
 }
 
