@@ -123,22 +123,8 @@ impl SourceMap {
         };
         let mut out = 0u32;
         for range in kept {
-            let (start, end) = (range.start as u32, range.end as u32);
-            let first = self.segments.partition_point(|s| s.out <= start).saturating_sub(1);
-            for s in self.segments[first..].iter().take_while(|s| s.out < end) {
-                let mut segment = *s;
-                if s.out <= start {
-                    // The run began before the range: it now begins at the range's first byte.
-                    if s.expansion == 0 {
-                        segment.src += start - s.out;
-                    }
-                    segment.out = out;
-                } else {
-                    segment.out = out + (s.out - start);
-                }
-                cut.push(segment);
-            }
-            out += end - start + 1;
+            self.copy_runs(&mut cut, out, range.start as u32, range.end as u32);
+            out += (range.end - range.start) as u32 + 1;
         }
         cut.len = out;
         cut
@@ -156,28 +142,10 @@ impl SourceMap {
             len: 0,
         };
         let (mut out, mut kept_from) = (0u32, 0u32);
-        let keep = |edited: &mut SourceMap, out: &mut u32, start: u32, end: u32| {
-            if start >= end {
-                return;
-            }
-            let first = self.segments.partition_point(|s| s.out <= start).saturating_sub(1);
-            for s in self.segments[first..].iter().take_while(|s| s.out < end) {
-                let mut segment = *s;
-                if s.out <= start {
-                    if s.expansion == 0 {
-                        segment.src += start - s.out;
-                    }
-                    segment.out = *out;
-                } else {
-                    segment.out = *out + (s.out - start);
-                }
-                edited.push(segment);
-            }
-            *out += end - start;
-        };
         for (range, written) in edits {
             let (start, end) = (range.start as u32, range.end as u32);
-            keep(&mut edited, &mut out, kept_from, start);
+            self.copy_runs(&mut edited, out, kept_from, start);
+            out += start.saturating_sub(kept_from);
             let at = start.min(self.len.saturating_sub(1));
             let index = self.segments.partition_point(|s| s.out <= at).saturating_sub(1);
             if let Some(s) = self.segments.get(index) {
@@ -196,9 +164,31 @@ impl SourceMap {
             out += *written as u32;
             kept_from = end;
         }
-        keep(&mut edited, &mut out, kept_from, self.len);
-        edited.len = out;
+        self.copy_runs(&mut edited, out, kept_from, self.len);
+        edited.len = out + self.len.saturating_sub(kept_from);
         edited
+    }
+
+    /// Copies the runs of this map's output `start..end` into `into`, as output from `out` on:
+    /// every byte maps where it did.
+    fn copy_runs(&self, into: &mut SourceMap, out: u32, start: u32, end: u32) {
+        if start >= end {
+            return;
+        }
+        let first = self.segments.partition_point(|s| s.out <= start).saturating_sub(1);
+        for s in self.segments[first..].iter().take_while(|s| s.out < end) {
+            let mut segment = *s;
+            if s.out <= start {
+                // The run began before the range: it now begins at the range's first byte.
+                if s.expansion == 0 {
+                    segment.src += start - s.out;
+                }
+                segment.out = out;
+            } else {
+                segment.out = out + (s.out - start);
+            }
+            into.push(segment);
+        }
     }
 
     /// The origin of one output byte. Offsets at or past the end map to the end of the last run.
@@ -329,5 +319,34 @@ impl SourceMap {
             .partition_point(|s| s.out <= offset)
             .checked_sub(1)
             .is_some_and(|i| self.segments[i].expansion > 0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_edited_text_maps_kept_bytes_where_they_were_and_written_ones_to_what_they_replace() {
+        let mut store = SourceStore::new();
+        let file = store.add("a.hlsl", "sampler2D _T; float4 f() { return tex2D(_T, uv); }");
+        let text = store.text(file).to_string();
+        let mut map = SourceMap::default();
+        map.copied(0, file, 0, ROOT);
+        map.finish(text.len());
+        // `sampler2D` becomes `Texture2D`, a state is inserted after the `;`, `tex2D` renamed.
+        let call = text.find("tex2D").expect("call");
+        let edits =
+            [(0..9, "Texture2D".len()), (13..13, " SamplerState sampler_T;".len()), (call..call + 5, 11)];
+        let edited = map.edited(&edits);
+        let origin = |at: usize| edited.locate(at).expect("maps").span;
+        // `_T` after the type: kept, at its own place.
+        assert_eq!((origin(10).start, origin(10).end), (10, 11));
+        // The inserted state maps to the byte it is inserted before; the renamed call to `tex2D`.
+        let inserted = 9 + 4;
+        assert_eq!(origin(inserted).start, 13);
+        let renamed = call + 24;
+        assert_eq!((origin(renamed).start, origin(renamed).end), (call as u32, call as u32 + 5));
+        assert_eq!(edited.len as usize, text.len() + 24 + (11 - 5));
     }
 }

@@ -317,7 +317,8 @@ fn the_summary_line_counts_one_in_the_singular_and_counts_what_failed() {
     let run = crate::support::kiln(&["check", "fixtures/bad/build/hlsl_missing_entry_point.shader"]);
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert_eq!(run.status.code(), Some(1), "{stderr}");
-    let summary = "checked 1 shader, 1 pass, 1 variant: 2 stage modules (0 compiled, 0 reused from cache, 2 failed)";
+    let summary =
+        "checked 1 shader, 1 pass, 1 variant: 2 stage modules (0 compiled, 0 reused from cache, 2 failed)";
     assert!(stderr.contains(summary), "{stderr}");
 }
 

@@ -243,7 +243,9 @@ fn constant_buffers_keep_hlsl_s_packing_or_are_refused_at_the_member() {
         // The generated `#[repr(C)]` struct asserts the same offsets.
         let rust = kiln::codegen::generate(&manifest, "out").expect("names do not clash");
         for (i, offset) in offsets.iter().enumerate() {
-            let asserted = rust.lines().any(|l| l.contains("offset_of!(") && l.contains(&format!(", m{i}) == {offset})")));
+            let asserted = rust
+                .lines()
+                .any(|l| l.contains("offset_of!(") && l.contains(&format!(", m{i}) == {offset})")));
             assert!(asserted, "the generated Rust places m{i} elsewhere than {offset}: {what}\n{rust}");
         }
         kept += 1;

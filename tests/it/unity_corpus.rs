@@ -63,7 +63,8 @@ fn unity_s_built_in_vertex_and_fragment_passes_build_with_their_own_cg_includes(
         .collect();
     for path in &files {
         let (mut store, ids, _) = load(std::slice::from_ref(path));
-        let mut includes = kiln::preprocess::Includes::new(kiln::project::include_config(&[project.clone()]));
+        let mut includes =
+            kiln::preprocess::Includes::new(kiln::project::include_config(std::slice::from_ref(&project)));
         let (catalog, _) = kiln::listing::list_shaders(
             &mut store,
             &mut includes,

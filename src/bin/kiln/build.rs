@@ -104,7 +104,8 @@ fn run(project: PathBuf, mode: BuildMode, format: Format, part: Part) -> ExitCod
 fn print_summary(s: &kiln::build::BuildSummary, written_to: Option<&std::path::Path>, errors: bool) {
     let write = written_to.is_some();
     let verb = if write { "built" } else { "checked" };
-    let counted = |n: usize, one: &str, many: &str| if n == 1 { format!("1 {one}") } else { format!("{n} {many}") };
+    let counted =
+        |n: usize, one: &str, many: &str| if n == 1 { format!("1 {one}") } else { format!("{n} {many}") };
     let mut line = format!(
         "{verb} {}, {}, {}: {} ({} compiled, {} reused from cache",
         counted(s.shaders, "shader", "shaders"),

@@ -13,13 +13,18 @@ pub fn run(command: MaterialCommand) -> ExitCode {
             let project = project.unwrap_or_else(|| kiln::project::project_of(&path));
             kiln::project::new_material(&path, &shader, preset.as_deref(), &project).map(|()| {
                 let preset = preset.map(|p| format!(", preset {}", shown(&p))).unwrap_or_default();
-                format!("wrote {}: a material of `{}`{preset}", shown(&path.display().to_string()), shown(&shader))
+                format!(
+                    "wrote {}: a material of `{}`{preset}",
+                    shown(&path.display().to_string()),
+                    shown(&shader)
+                )
             })
         }
         MaterialCommand::Preset { path, preset, project } => {
             let project = project.unwrap_or_else(|| kiln::project::project_of(&path));
-            kiln::project::apply_preset(&path, &preset, &project)
-                .map(|()| format!("applied preset {} to {}", shown(&preset), shown(&path.display().to_string())))
+            kiln::project::apply_preset(&path, &preset, &project).map(|()| {
+                format!("applied preset {} to {}", shown(&preset), shown(&path.display().to_string()))
+            })
         }
     };
     match done {
