@@ -4,7 +4,9 @@
 //! materials choosing distinct combinations, then measures, in interleaved rounds: kiln's cold
 //! build; glslang alone in process on the very stage texts kiln compiles (its HLSL front end to
 //! SPIR-V, on every core, as kiln runs it); the same followed by naga's SPIR-V reader (kiln's
-//! front end, without binding, validation or any back end); Khronos' `glslangValidator`, one
+//! front end, without binding, validation or any back end); the tools alone making the same
+//! outputs (that, with naga's validation and its WGSL and SPIR-V writers); Khronos'
+//! `glslangValidator`, one
 //! process per stage text, where it is installed; and a no-op rebuild. Results:
 //! docs/performance.md ("HLSL").
 
@@ -103,6 +105,20 @@ fn glslang_spirv(stage: Stage, entry: &str, text: &str) -> Vec<u32> {
     builder.parse().expect("parses").compile().expect("compiles")
 }
 
+/// What the tools alone make of a SPIR-V module as kiln ships it: naga validates it and writes
+/// WGSL and SPIR-V (no binding, compaction, layout check, reflection or files).
+fn outputs(module: &naga::Module) -> usize {
+    use naga::valid::{Capabilities, ValidationFlags, Validator};
+    // glslang numbers every resource 0: only kiln's binding makes them valid, so that check is off.
+    let flags = ValidationFlags::all() - ValidationFlags::BINDINGS;
+    let info = Validator::new(flags, Capabilities::all()).validate(module).expect("valid");
+    let wgsl =
+        naga::back::wgsl::write_string(module, &info, naga::back::wgsl::WriterFlags::empty()).expect("WGSL");
+    let spirv = naga::back::spv::write_vec(module, &info, &naga::back::spv::Options::default(), None)
+        .expect("SPIR-V");
+    wgsl.len() + spirv.len()
+}
+
 fn spv_in(words: &[u32]) -> naga::Module {
     let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
     let options = naga::front::spv::Options {
@@ -172,6 +188,7 @@ fn main() {
         let texts = texts(&project);
         let (mut kiln, mut alone, mut front, mut processes, mut noop) =
             (vec![], vec![], vec![], vec![], vec![]);
+        let mut tools = vec![];
         let mut compiled = 0;
         for round in 0..rounds {
             let output = dir.path().join(format!("out{round}"));
@@ -186,6 +203,11 @@ fn main() {
                 .par_iter()
                 .for_each(|(stage, entry, text)| drop(spv_in(&glslang_spirv(*stage, entry, text))));
             front.push(started.elapsed());
+            let started = Instant::now();
+            texts
+                .par_iter()
+                .for_each(|(stage, entry, text)| drop(outputs(&spv_in(&glslang_spirv(*stage, entry, text)))));
+            tools.push(started.elapsed());
             let scratch = dir.path().join(format!("cli{round}"));
             std::fs::create_dir_all(&scratch).expect("mkdir");
             if let Some(took) = glslang_processes(&texts, &scratch) {
@@ -218,6 +240,12 @@ fn main() {
         }
         println!("  kiln / glslang in process: {}", ratio(&kiln, &alone));
         println!("  kiln / (glslang + spv-in): {}", ratio(&kiln, &front));
+        let t = median(tools.clone());
+        println!(
+            "  the tools alone, same outputs (+ naga's validation, WGSL and SPIR-V): {:.1} ms",
+            t.as_secs_f64() * 1000.0
+        );
+        println!("  kiln / the tools alone: {}", ratio(&kiln, &tools));
         let share = |part: Duration| 100.0 * part.as_secs_f64() / k.as_secs_f64();
         println!(
             "  shares of kiln's build: glslang {:.0}%, spv-in {:.0}%, the rest of kiln {:.0}%",
