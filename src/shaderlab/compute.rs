@@ -1,4 +1,5 @@
-//! `.compute` files, as Unity has them: WGSL with the preprocessor, includes and pragmas
+//! `.compute` files, as Unity has them: WGSL (or HLSL, as Unity's are) with the preprocessor,
+//! includes and pragmas
 //! (`#pragma kernel NAME` for each kernel, keyword pragmas, `target`, `require`), and no ShaderLab
 //! around it. One reads as a shader of one pass whose program is the whole file, named after the
 //! file (`Particles.compute` is `Particles`), so that the catalogue, keywords, builds, usage logs
@@ -17,6 +18,18 @@ pub fn is_compute_file(path: &Path) -> bool {
     path.extension().is_some_and(|e| e.eq_ignore_ascii_case(EXTENSION))
 }
 
+/// The language of a `.compute` file: HLSL where a kernel is marked `[numthreads(...)]`, as
+/// Unity's compute shaders are, else WGSL (whose kernels are `@compute @workgroup_size(...)`).
+/// Comments and strings are not read.
+fn compute_language(text: &str) -> ProgramLanguage {
+    use crate::preprocess::{Kind, lex};
+    let tokens = lex(text);
+    let marked = tokens.windows(2).any(|pair| {
+        pair[0].kind == Kind::Punct && pair[0].text == "[" && pair[1].kind == Kind::Ident && pair[1].text == "numthreads"
+    });
+    if marked { ProgramLanguage::Hlsl } else { ProgramLanguage::Wgsl }
+}
+
 /// A `.compute` file as a shader: its name is the file's stem, its one pass's program the file.
 pub fn parse_compute(store: &SourceStore, file: FileId) -> ParsedShader {
     let text = store.text(file);
@@ -33,7 +46,7 @@ pub fn parse_compute(store: &SourceStore, file: FileId) -> ParsedShader {
         legacy: Vec::new(),
     };
     let program = ProgramBlock {
-        language: ProgramLanguage::Wgsl,
+        language: compute_language(text),
         is_include: false,
         body: text.to_string(),
         body_span: whole,

@@ -376,3 +376,29 @@ fn a_kernel_reads_one_storage_texture_and_writes_another() {
         );
     }
 }
+
+/// A `.compute` file as Unity writes one, in HLSL (`[numthreads]`, `RWStructuredBuffer`, a
+/// `cbuffer`): fixtures/compute's kernels, built through glslang, compute on the GPU what the CPU
+/// computes for both variants.
+#[test]
+fn an_hlsl_compute_file_s_kernels_compute_what_the_cpu_computes() {
+    let Some(gpu) = gpu("the HLSL compute kernels test") else { return };
+    let output = built_fixture("compute_hlsl");
+    let runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
+    let input: Vec<f32> = (0..1000).map(|i| (i as f32) * 0.25 - 100.0).collect();
+    let offset = 3.5;
+    for keywords in [&[][..], &["_SQUARE"][..]] {
+        let shaped = |x: f32| if keywords.is_empty() { x } else { x * x };
+        for (kernel, cpu) in [
+            ("Double", &(|x: f32| shaped(x) * 2.0) as &dyn Fn(f32) -> f32),
+            ("AddOffset", &|x: f32| shaped(x) + offset),
+        ] {
+            let gpu_values = dispatch(&runtime, &gpu, kernel, keywords, &input, offset);
+            let expected: Vec<f32> = input.iter().map(|&x| cpu(x)).collect();
+            assert_eq!(gpu_values, expected, "{kernel} {keywords:?}");
+        }
+    }
+    let variant = runtime.variant(SHADER, 0, &[]).expect("built");
+    let request = KernelRequest { variant, kernel: "AddOffset", overrides: &[] };
+    assert_eq!(runtime.kernel(&request).expect("pipeline").workgroup_size, [32, 2, 1]);
+}

@@ -35,6 +35,8 @@ fn outputs() -> Outputs {
         root().join("fixtures/blocks"),
         root().join("fixtures/accepted"),
         root().join("fixtures/hlsl"),
+        root().join("fixtures/hlsl_lit"),
+        root().join("fixtures/compute_hlsl"),
         root().join("fixtures/warn/build"),
         generated,
     ];
