@@ -107,7 +107,7 @@ fn cuts(text: String, map: SourceMap, entries: &[&str], scope: ParseScope) -> Ve
 }
 
 /// The hash a stage text is known by: of its bytes, and of its language where that is not WGSL
-/// (an HLSL and a Cg text alike are compiled differently, and never share a module).
+/// (glslang's front end is not naga's: an HLSL text never shares a WGSL text's module).
 fn text_hash(language: ProgramLanguage, text: &str) -> String {
     match language {
         ProgramLanguage::Wgsl => hash(text.as_bytes()),

@@ -25,7 +25,10 @@ fn compute_language(text: &str) -> ProgramLanguage {
     use crate::preprocess::{Kind, lex};
     let tokens = lex(text);
     let marked = tokens.windows(2).any(|pair| {
-        pair[0].kind == Kind::Punct && pair[0].text == "[" && pair[1].kind == Kind::Ident && pair[1].text == "numthreads"
+        pair[0].kind == Kind::Punct
+            && pair[0].text == "["
+            && pair[1].kind == Kind::Ident
+            && pair[1].text == "numthreads"
     });
     if marked { ProgramLanguage::Hlsl } else { ProgramLanguage::Wgsl }
 }
