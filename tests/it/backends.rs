@@ -55,7 +55,8 @@ fn the_example_project_checks_clean_on_every_backend() {
     let run = kiln(&["check", "fixtures/project", "--backends", "msl,vulkan"]);
     assert_eq!(run.status.code(), Some(2), "an unknown back end is refused by the command line");
     assert!(
-        String::from_utf8_lossy(&run.stderr).contains("no back end `vulkan`; kiln writes wgsl, spirv, msl")
+        String::from_utf8_lossy(&run.stderr)
+            .contains("no back end `vulkan` (did you mean `spirv`?); kiln writes wgsl, spirv, msl")
     );
 }
 
