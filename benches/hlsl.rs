@@ -204,10 +204,12 @@ fn main() {
                 .for_each(|(stage, entry, text)| drop(spv_in(&glslang_spirv(*stage, entry, text))));
             front.push(started.elapsed());
             let started = Instant::now();
-            texts
+            let written: usize = texts
                 .par_iter()
-                .for_each(|(stage, entry, text)| drop(outputs(&spv_in(&glslang_spirv(*stage, entry, text)))));
+                .map(|(stage, entry, text)| outputs(&spv_in(&glslang_spirv(*stage, entry, text))))
+                .sum();
             tools.push(started.elapsed());
+            assert!(written > 0, "the tools wrote nothing");
             let scratch = dir.path().join(format!("cli{round}"));
             std::fs::create_dir_all(&scratch).expect("mkdir");
             if let Some(took) = glslang_processes(&texts, &scratch) {
