@@ -75,7 +75,9 @@ pub(super) fn inactive(analysis: &Analysis, selections: &Selections) -> HashMap<
         for &stage in stages {
             let keywords: Vec<&str> =
                 program.keywords.keywords(program.keywords_for(variant, stage)).collect();
-            let skipped = inactive_regions(&checked.includes, &analysis.store, wgsl, &keywords, stage);
+            // As a build preprocesses it: the language's macros too (`SHADER_API_D3D11`).
+            let macros = crate::preprocess::KeywordMacros::on(&keywords).in_language(program.language);
+            let skipped = inactive_regions(&checked.includes, &analysis.store, wgsl, &macros, stage);
             for file in skipped.files {
                 *readers.entry(file).or_default() += 1;
             }

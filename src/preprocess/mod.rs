@@ -117,22 +117,15 @@ pub fn preprocess_with(
     run::run(includes, store, program, keywords, stage)
 }
 
-/// What [`preprocess`] skips for this variant: each text run, include and define of a
-/// conditional group not taken (an editor's inactive regions), and the files it reads.
+/// What [`preprocess_with`] skips for this variant (its keywords and language as macros): each
+/// text run, include and define of a conditional group not taken (an editor's inactive regions),
+/// and the files it reads.
 pub fn inactive_regions(
     includes: &Includes,
     store: &SourceStore,
     program: &Program,
-    keywords: &[&str],
+    keywords: &KeywordMacros,
     stage: Stage,
 ) -> Skipped {
-    run::run_recording(
-        includes,
-        store,
-        program,
-        &KeywordMacros::on(keywords),
-        stage,
-        Some(Skipped::default()),
-    )
-    .1
+    run::run_recording(includes, store, program, keywords, stage, Some(Skipped::default())).1
 }
