@@ -644,10 +644,14 @@ fn an_error_typed_into_an_hlsl_include_is_shown_at_its_line_with_its_variants() 
     let shader_uri = uri(&shader);
     client.open(&shader_uri, &std::fs::read_to_string(&shader).expect("Unlit"));
     let clip = find(&saved, "clip(base.a - _Cutoff)").0 as u64;
-    for (keywords, greyed) in [(json!(["_CLIPPING"]), false), (json!([]), true), (json!(["_CLIPPING"]), false)] {
+    for (keywords, greyed) in
+        [(json!(["_CLIPPING"]), false), (json!([]), true), (json!(["_CLIPPING"]), false)]
+    {
         let args = json!([shader_uri, "HLSL/Unlit", 0, keywords]);
-        let chosen = client
-            .request("workspace/executeCommand", json!({ "command": "kiln.selectVariant", "arguments": args }));
+        let chosen = client.request(
+            "workspace/executeCommand",
+            json!({ "command": "kiln.selectVariant", "arguments": args }),
+        );
         assert_eq!(chosen, keywords);
         client.request("textDocument/documentSymbol", json!({ "textDocument": { "uri": pass_uri } }));
         let lines = inactive_lines(&client.latest_diagnostics(&pass_uri));
