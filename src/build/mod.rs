@@ -254,7 +254,7 @@ pub struct BuildSummary {
     pub remote_bytes: [u64; 2],
     /// Wall-clock time of the build.
     pub elapsed: Duration,
-    /// Shaders with WGSL programs that no material uses, so nothing of them was built.
+    /// Shaders with programs kiln compiles that no material uses, so nothing of them was built.
     pub unused: Vec<String>,
 }
 

@@ -33,7 +33,7 @@ pub(super) fn plan<'a>(
 ) -> Vec<PassWork<'a>> {
     let mut work: Vec<PassWork> = Vec::new();
     for (shader_index, shader) in catalog.shaders.iter().enumerate() {
-        let (mut built_any, mut has_wgsl) = (false, false);
+        let (mut built_any, mut has_program) = (false, false);
         for pass in &shader.passes {
             let Some(program) = pass.program.as_ref() else { continue };
             if program.source.is_none() {
@@ -49,7 +49,7 @@ pub(super) fn plan<'a>(
                 );
                 continue;
             }
-            has_wgsl = true;
+            has_program = true;
             if let Some(refused) = without_entry_point(program) {
                 diagnostics.push(refused.into());
                 continue;
@@ -68,7 +68,7 @@ pub(super) fn plan<'a>(
             work.push(PassWork { shader, shader_index, pass, program, variants });
         }
         summary.shaders += usize::from(built_any);
-        if has_wgsl && !built_any && selection == VariantSelection::Used {
+        if has_program && !built_any && selection == VariantSelection::Used {
             summary.unused.push(shader.shader.name.value.clone());
         }
     }

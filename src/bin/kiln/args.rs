@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 /// The command line.
 #[derive(Parser)]
-#[command(name = "kiln", version, about = "Shader-variant compiler and keyword system for WGSL")]
+#[command(name = "kiln", version, about = "Shader-variant compiler and keyword system for WGSL and HLSL")]
 pub struct Cli {
     /// What to do.
     #[command(subcommand)]
@@ -115,8 +115,8 @@ pub enum Command {
         #[arg(long)]
         materials: bool,
     },
-    /// Print the WGSL the compiler sees for one variant of one pass: includes spliced,
-    /// conditionals resolved, macros substituted.
+    /// Print the text (WGSL or HLSL) the compiler sees for one variant of one pass: includes
+    /// spliced, conditionals resolved, macros substituted.
     Preprocess {
         /// The `.shader` file.
         shader: PathBuf,
