@@ -20,17 +20,27 @@ pub fn is_compute_file(path: &Path) -> bool {
 
 /// The language of a `.compute` file: HLSL where a kernel is marked `[numthreads(...)]`, as
 /// Unity's compute shaders are, else WGSL (whose kernels are `@compute @workgroup_size(...)`).
-/// Comments and strings are not read.
+/// Comments are not read.
 fn compute_language(text: &str) -> ProgramLanguage {
-    use crate::preprocess::{Kind, lex};
-    let tokens = lex(text);
-    let marked = tokens.windows(2).any(|pair| {
-        pair[0].kind == Kind::Punct
-            && pair[0].text == "["
-            && pair[1].kind == Kind::Ident
-            && pair[1].text == "numthreads"
-    });
-    if marked { ProgramLanguage::Hlsl } else { ProgramLanguage::Wgsl }
+    let bytes = text.as_bytes();
+    let mut at = 0;
+    while at < bytes.len() {
+        match &bytes[at..] {
+            [b'/', b'/', ..] => at += text[at..].find('\n').unwrap_or(text.len() - at),
+            [b'/', b'*', ..] => at += text[at + 2..].find("*/").map_or(text.len() - at, |n| n + 4),
+            // `[` is one byte: `at + 1` is a character's start.
+            [b'[', ..] => {
+                let after = text[at + 1..].trim_start();
+                let word = after.strip_prefix("numthreads");
+                if word.is_some_and(|w| !w.starts_with(|c: char| c.is_alphanumeric() || c == '_')) {
+                    return ProgramLanguage::Hlsl;
+                }
+                at += 1;
+            }
+            _ => at += 1,
+        }
+    }
+    ProgramLanguage::Wgsl
 }
 
 /// A `.compute` file as a shader: its name is the file's stem, its one pass's program the file.
@@ -75,4 +85,20 @@ pub fn parse_compute(store: &SourceStore, file: FileId) -> ParsedShader {
         span: whole,
     };
     ParsedShader { shader: Some(shader), diagnostics: Vec::new() }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numthreads_marks_a_compute_file_as_hlsl_outside_comments() {
+        assert_eq!(compute_language("[ numthreads(8, 1, 1)]\nvoid CSMain() {}"), ProgramLanguage::Hlsl);
+        assert_eq!(compute_language("@compute @workgroup_size(8) fn main() {}"), ProgramLanguage::Wgsl);
+        let commented =
+            "// [numthreads(8, 1, 1)]\n/* [numthreads(1,1,1)] */ @compute @workgroup_size(8) fn f() {}";
+        assert_eq!(compute_language(commented), ProgramLanguage::Wgsl);
+        assert_eq!(compute_language("let a = b[numthreadsX];"), ProgramLanguage::Wgsl);
+        assert_eq!(compute_language("é[numthreads(1,1,1)]"), ProgramLanguage::Hlsl);
+    }
 }
