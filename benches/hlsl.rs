@@ -10,14 +10,16 @@
 //! process per stage text, where it is installed; and a no-op rebuild. Results:
 //! docs/performance.md ("HLSL").
 
-use kiln::build::stage_texts;
-use kiln::catalog::catalog;
-use kiln::preprocess::{Includes, Stage};
-use kiln::project::{BuildMode, build_project, load_files, open_workspace};
+use kiln::preprocess::Stage;
+use kiln::project::{BuildMode, build_project};
 use kiln::source::SourceStore;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
+
+#[path = "support/measure.rs"]
+mod measure;
+use measure::{median, spread, whole_texts};
 
 #[global_allocator]
 static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
@@ -61,18 +63,6 @@ fn generate(dir: &Path, variants: usize) {
         let text = format!("shader = \"Bench/Hlsl\"\nkeywords = [{}]\n{clip}", keywords.join(", "));
         std::fs::write(dir.join(format!("materials/M{m:04}.mat")), text).expect("write");
     }
-}
-
-/// The distinct stage texts a build compiles.
-fn texts(project: &Path) -> Vec<(Stage, String, String)> {
-    let mut store = SourceStore::new();
-    let (workspace, _) = open_workspace(&mut store, &[project.to_path_buf()]).expect("project");
-    let mut includes = Includes::new(workspace.include.clone().expect("include config"));
-    let (shaders, _) = load_files(&mut store, &workspace.shaders);
-    let (materials, _) = load_files(&mut store, &workspace.materials);
-    let input = workspace.catalog_input(shaders, materials);
-    let (catalog, _) = catalog(&mut store, &mut includes, &input);
-    stage_texts(&store, &includes, &catalog)
 }
 
 fn kiln_build(project: &Path, output: &Path) -> (usize, Duration) {
@@ -162,16 +152,6 @@ fn glslang_processes(texts: &[(Stage, String, String)], scratch: &Path) -> Optio
     Some(started.elapsed())
 }
 
-fn median(mut times: Vec<Duration>) -> Duration {
-    times.sort();
-    times[times.len() / 2]
-}
-
-fn spread(mut ratios: Vec<f64>) -> String {
-    ratios.sort_by(f64::total_cmp);
-    format!("{:.2}x ({:.2}-{:.2})", ratios[ratios.len() / 2], ratios[0], ratios[ratios.len() - 1])
-}
-
 fn main() {
     let sizes: Vec<usize> = std::env::args()
         .skip(1)
@@ -185,7 +165,7 @@ fn main() {
         let dir = tempfile::tempdir().expect("temp dir");
         let project = dir.path().join("project");
         generate(&project, size);
-        let texts = texts(&project);
+        let texts = whole_texts(&project);
         let (mut kiln, mut alone, mut front, mut processes, mut noop) =
             (vec![], vec![], vec![], vec![], vec![]);
         let mut tools = vec![];

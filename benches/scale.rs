@@ -12,10 +12,9 @@
 //! same kernel texts. Both sides allocate with mimalloc, as the CLI does. Results and how to read
 //! them: docs/performance.md.
 
-use kiln::build::{ParseScope, stage_texts};
-use kiln::catalog::catalog;
-use kiln::preprocess::{Includes, Stage};
-use kiln::project::{BuildMode, build_project, load_files, open_workspace};
+use kiln::build::ParseScope;
+use kiln::preprocess::Stage;
+use kiln::project::{BuildMode, build_project};
 use kiln::source::SourceStore;
 use rayon::prelude::*;
 use std::fmt::Write as _;
@@ -24,7 +23,10 @@ use std::time::{Duration, Instant};
 
 #[path = "support/generate.rs"]
 mod generate;
+#[path = "support/measure.rs"]
+mod measure;
 use generate::{SHARED_INCLUDES, generate};
+use measure::{median, spread, whole_texts};
 
 // kiln and naga alone both allocate through the CLI's allocator, as `kiln build` does: on the
 // system allocator, sixteen threads spend part of a build contending for it (docs/performance.md).
@@ -44,17 +46,6 @@ fn peak_mib() -> f64 {
 
 fn reset_peak() {
     let _ = std::fs::write("/proc/self/clear_refs", "5");
-}
-
-fn median(mut times: Vec<Duration>) -> Duration {
-    times.sort();
-    times[times.len() / 2]
-}
-
-/// Ratios as `median (lowest-highest)`.
-fn spread(mut ratios: Vec<f64>) -> String {
-    ratios.sort_by(f64::total_cmp);
-    format!("{:.2}x ({:.2}-{:.2})", ratios[ratios.len() / 2], ratios[0], ratios[ratios.len() - 1])
 }
 
 /// Interleaved rounds at a size: five, fewer past 10,000 variants; `KILN_SCALE_ROUNDS` says.
@@ -84,18 +75,6 @@ fn kiln_build(
         kiln::diagnostics::render_plain(&store, &all)
     );
     (result.summary, started.elapsed())
-}
-
-/// The stage texts a build of `project` compiles, whole: what naga alone is given.
-fn whole_texts(project: &Path) -> Vec<(Stage, String, String)> {
-    let mut store = SourceStore::new();
-    let (workspace, _) = open_workspace(&mut store, &[project.to_path_buf()]).expect("project");
-    let mut includes = Includes::new(workspace.include.clone().expect("include config"));
-    let (shaders, _) = load_files(&mut store, &workspace.shaders);
-    let (materials, _) = load_files(&mut store, &workspace.materials);
-    let input = workspace.catalog_input(shaders, materials);
-    let (catalog, _) = catalog(&mut store, &mut includes, &input);
-    stage_texts(&store, &includes, &catalog)
 }
 
 /// How much of each stage kind's text a build hands naga: per stage, the texts, their bytes whole

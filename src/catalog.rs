@@ -10,7 +10,7 @@
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{KeywordBits, MAX_VARIANTS_PER_PASS, PassKeywords, Variant};
 use crate::material::{Material, ShaderEntries, ShaderEntry, load_material};
-use crate::preprocess::{Includes, Program, ScannedBlock, finish_pass, load_blocks};
+use crate::preprocess::{Includes, Program, ScannedBlock, finish_pass};
 use crate::shaderlab::ast::{PassItem, ProgramBlock, ProgramLanguage, Shader, StateBlock, SubShader};
 use crate::shaderlab::parse_shader;
 use crate::shaderlab::pragma::{
@@ -593,15 +593,11 @@ impl Loading<'_> {
             diagnostics.extend(errors);
             return Some(finished_program(language, pragmas, None, programs[0].span, diagnostics));
         }
-        let (program, found) = match language {
-            ProgramLanguage::Cg => {
-                let prelude = self.cg_prelude.span(store, includes);
-                let spans: Vec<Span> =
-                    prelude.into_iter().chain(blocks.iter().map(|b| b.body_span)).collect();
-                includes.load_program(store, &spans)
-            }
-            _ => load_blocks(includes, store, &blocks),
-        };
+        // A Cg program reads Unity's prelude first, as a block before its own.
+        let prelude =
+            (language == ProgramLanguage::Cg).then(|| self.cg_prelude.span(store, includes)).flatten();
+        let spans: Vec<Span> = prelude.into_iter().chain(blocks.iter().map(|b| b.body_span)).collect();
+        let (program, found) = includes.load_program(store, &spans);
         diagnostics.extend(found);
         let at = diagnostics.len();
         let unfinished =
@@ -722,6 +718,13 @@ pub fn property_references(text: &str) -> Vec<&str> {
 }
 
 impl CatalogProgram {
+    /// The macros a variant's text is preprocessed with: its keywords (`on`) and its language's
+    /// own (`SHADER_API_D3D11` for HLSL and Cg), as a build, `kiln preprocess` and the language
+    /// server all read it.
+    pub fn keyword_macros<'a>(&'a self, on: &[&'a str]) -> crate::preprocess::KeywordMacros<'a> {
+        crate::preprocess::keyword_macros(&self.pragmas, on).in_language(self.language)
+    }
+
     /// The keywords a variant's `stage` is preprocessed with.
     pub fn keywords_for<'a>(
         &self,

@@ -55,7 +55,9 @@ pub enum BuildLayerError {
     NoEntryPoint {
         /// The pragma of a stage or form kiln does not build (`#pragma surface`), if there is one.
         pragma: Option<crate::source::Spanned<String>>,
-        /// The opening keyword of the program's first block.
+        /// The program's language.
+        language: crate::shaderlab::ast::ProgramLanguage,
+        /// Its first block.
         span: Span,
     },
     /// A `dynamic_branch` or `ubershader` pragma in an HLSL or Cg program (K0428).
@@ -133,9 +135,9 @@ impl From<BuildLayerError> for Diagnostic {
                 _ => "kiln compiles vertex, fragment and compute programs",
             })
             .help("write the pass's `#pragma vertex` and `#pragma fragment` programs"),
-            BuildLayerError::NoEntryPoint { pragma: None, span } => {
+            BuildLayerError::NoEntryPoint { pragma: None, language, span } => {
                 Diagnostic::error("K0430", "the program names no entry point: it would build nothing")
-                    .at(span, "this program")
+                    .at(opening_keyword(language, span), "this program")
                     .help("name them: `#pragma vertex NAME` and `#pragma fragment NAME` (or `#pragma kernel NAME` in a `.compute` file)")
             }
             BuildLayerError::WgslOnlyPragma { pragma, language, span } => Diagnostic::error(
@@ -149,9 +151,7 @@ impl From<BuildLayerError> for Diagnostic {
             })
             .help("make the keywords `shader_feature` or `multi_compile` (each value is then a variant), or write the pass in WGSL"),
             BuildLayerError::LanguageNotBuilt { language, shader, span } => {
-                // The block's opening keyword, not the whole block.
-                let keyword = language.open_keyword(false).len().min(span.range().len());
-                let span = Span::new(span.file, span.range().start..span.range().start + keyword);
+                let span = opening_keyword(language, span);
                 Diagnostic::error(
                 "K0424",
                 format!("`{}` blocks are listed but not compiled: `{shader}` is not built", language.open_keyword(false)),
@@ -162,4 +162,11 @@ impl From<BuildLayerError> for Diagnostic {
             }
         }
     }
+}
+
+/// Where a diagnostic about a whole program block points: its opening keyword (`HLSLPROGRAM`), not
+/// the whole block.
+fn opening_keyword(language: crate::shaderlab::ast::ProgramLanguage, block: Span) -> Span {
+    let keyword = language.open_keyword(false).len().min(block.range().len());
+    Span::new(block.file, block.range().start..block.range().start + keyword)
 }

@@ -11,7 +11,7 @@ use crate::diagnostics;
 use crate::diagnostics::{Diagnostic, PassId};
 use crate::keywords::KeywordBits;
 use crate::preprocess::{
-    Includes, MAX_UBERSHADER_KEYWORDS, SourceMap, Stage, keyword_macros, preprocess_with, ubershader_macros,
+    Includes, MAX_UBERSHADER_KEYWORDS, SourceMap, Stage, preprocess_with, ubershader_macros,
 };
 use crate::shaderlab::ast::ProgramLanguage;
 use crate::shaderlab::pragma::ProgramPragmas;
@@ -234,7 +234,7 @@ pub(super) fn pass_jobs<'a>(
         let keywords: Vec<&str> = r.keywords.iter().map(String::as_str).collect();
         let macros = match r.ubershader {
             true => ubershader_macros(&program.pragmas, r.stage).unwrap_or_default(),
-            false => keyword_macros(&program.pragmas, &keywords).in_language(program.language),
+            false => program.keyword_macros(&keywords),
         };
         let out = preprocess_with(includes, store, source, &macros, r.stage);
         // A cut reads WGSL's declarations; glslang reads the other languages' texts whole.

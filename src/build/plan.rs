@@ -85,12 +85,10 @@ fn without_entry_point(program: &crate::catalog::CatalogProgram) -> Option<Build
     }
     let unbuilt = ["surface", "geometry", "hull", "domain", "raytracing"];
     let stage = pragmas.other.iter().find(|(name, _)| unbuilt.contains(&name.value.as_str()));
-    // The block's opening keyword, not the whole block.
-    let (file, start) = (program.span.file, program.span.range().start);
-    let keyword = program.language.open_keyword(false).len().min(program.span.range().len());
     Some(BuildLayerError::NoEntryPoint {
         pragma: stage.map(|(name, _)| name.clone()),
-        span: crate::source::Span::new(file, start..start + keyword),
+        language: program.language,
+        span: program.span,
     })
 }
 

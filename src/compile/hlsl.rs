@@ -67,7 +67,7 @@ fn parse_unguarded(
         }
         None => (text, mapper),
     };
-    let words = glslang_spirv(text, stage, entry, mapper).map_err(|d| in_language(d, language))?;
+    let words = glslang_spirv(text, stage, entry, mapper).map_err(|d| naming_the_language(d, language))?;
     let options = naga::front::spv::Options {
         // HLSL's clip space is WGSL's (y up, depth 0 to 1): nothing to flip.
         adjust_coordinate_space: false,
@@ -215,7 +215,7 @@ fn parse_error_line(line: &str) -> Option<ErrorLine> {
 }
 
 /// Says which language a message is about: glslang's messages read the same for both.
-fn in_language(mut diagnostic: Diagnostic, language: ProgramLanguage) -> Diagnostic {
+fn naming_the_language(mut diagnostic: Diagnostic, language: ProgramLanguage) -> Diagnostic {
     if diagnostic.code == "K0426" && !diagnostic.message.starts_with("glslang") {
         let language = if language == ProgramLanguage::Cg { "Cg" } else { "HLSL" };
         diagnostic.message = format!("{} (glslang, {language})", diagnostic.message);

@@ -90,8 +90,8 @@ fn compile_unguarded(
     }
     // A module read from SPIR-V has its spans in the SPIR-V: what naga says of it is placed at
     // the entry point's pragma ([`located`]), not through the text's map.
-    let unmapped = SourceMap::default();
-    let spirv_mapper = Mapper { map: &unmapped, store: mapper.store };
+    static UNMAPPED: std::sync::LazyLock<SourceMap> = std::sync::LazyLock::new(SourceMap::default);
+    let spirv_mapper = Mapper { map: &UNMAPPED, store: mapper.store };
     let (host, mapper) = match request.language {
         ProgramLanguage::Wgsl => (layout::correct(&mut module, request.text, mapper)?, mapper),
         _ => (layout::from_offsets(&module), &spirv_mapper),

@@ -65,7 +65,7 @@ pub(super) fn inactive(analysis: &Analysis, selections: &Selections) -> HashMap<
     let mut readers: HashMap<FileId, usize> = HashMap::new();
     let mut skips: HashMap<FileId, HashMap<Span, usize>> = HashMap::new();
     for (at, _, _, program) in analysis.passes() {
-        let (Some(name), Some(wgsl)) = (pass_name(analysis, at), program.source.as_ref()) else { continue };
+        let (Some(name), Some(source)) = (pass_name(analysis, at), program.source.as_ref()) else { continue };
         let Some((_, variant)) = selections.active(&name, program) else { continue };
         let stages: &[Stage] = if program.pragmas.kernels.is_empty() {
             &[Stage::Vertex, Stage::Fragment]
@@ -77,7 +77,7 @@ pub(super) fn inactive(analysis: &Analysis, selections: &Selections) -> HashMap<
                 program.keywords.keywords(program.keywords_for(variant, stage)).collect();
             // As a build preprocesses it: the language's macros too (`SHADER_API_D3D11`).
             let macros = crate::preprocess::KeywordMacros::on(&keywords).in_language(program.language);
-            let skipped = inactive_regions(&checked.includes, &analysis.store, wgsl, &macros, stage);
+            let skipped = inactive_regions(&checked.includes, &analysis.store, source, &macros, stage);
             for file in skipped.files {
                 *readers.entry(file).or_default() += 1;
             }
@@ -109,14 +109,13 @@ pub(super) fn expansion_at(
 ) -> Option<(String, String)> {
     let checked = analysis.checked.as_ref()?;
     analysis.passes().find_map(|(at, shader, pass, program)| {
-        let (name, wgsl) = (pass_name(analysis, at)?, program.source.as_ref()?);
+        let (name, source) = (pass_name(analysis, at)?, program.source.as_ref()?);
         let (_, variant) = selections.active(&name, program)?;
         let stage = if program.pragmas.kernels.is_empty() { Stage::Fragment } else { Stage::Compute };
         let keywords: Vec<&str> = program.keywords.keywords(program.keywords_for(variant, stage)).collect();
-        let macros =
-            crate::preprocess::keyword_macros(&program.pragmas, &keywords).in_language(program.language);
+        let macros = program.keyword_macros(&keywords);
         let out =
-            crate::preprocess::preprocess_with(&checked.includes, &analysis.store, wgsl, &macros, stage);
+            crate::preprocess::preprocess_with(&checked.includes, &analysis.store, source, &macros, stage);
         let range = out.source_map.expansion_at(file, offset)?;
         let place = format!(
             "`{}` pass {}, variant `{}`",

@@ -21,7 +21,7 @@ pub use include::{IncludeConfig, Includes, LIBRARY_PREFIX, Program, ScannedBlock
 pub(crate) use macros::{Kind, Token, lex};
 pub use pass::{
     DynamicKeyword, KeywordMacros, MAX_UBERSHADER_KEYWORDS, PassProgram, UBERSHADER_DATA, finish_pass,
-    keyword_macros, load_blocks, load_pass, load_pass_text, ubershader_macros,
+    keyword_macros, load_pass, load_pass_text, ubershader_macros,
 };
 pub use run::MAX_INCLUDE_DEPTH;
 pub use run::Skipped;

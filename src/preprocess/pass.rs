@@ -29,16 +29,6 @@ pub fn load_pass(
     load_pass_text(includes, store, &body_spans(blocks))
 }
 
-/// The first half of [`load_pass`]: the blocks and everything they include, loaded (which adds
-/// units to `includes`); [`finish_pass`] reads the rest.
-pub fn load_blocks(
-    includes: &mut Includes,
-    store: &mut SourceStore,
-    blocks: &[&ProgramBlock],
-) -> (Program, Vec<Diagnostic>) {
-    includes.load_program(store, &body_spans(blocks))
-}
-
 fn body_spans(blocks: &[&ProgramBlock]) -> Vec<Span> {
     blocks.iter().map(|b| b.body_span).collect()
 }

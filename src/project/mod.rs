@@ -42,7 +42,7 @@ pub enum ProjectError {
     #[error(
         "the pass's program is {language}: only WGSL, HLSL and Cg programs are preprocessed and compiled"
     )]
-    NotWgsl { language: &'static str },
+    NotCompiled { language: &'static str },
     #[error(transparent)]
     Variant(#[from] VariantError),
     #[error("no shader named `{name}` in the project at `{}`{}", project.display(), suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_else(|| " (pass `--project` to look elsewhere)".into()))]

@@ -9,7 +9,7 @@ use crate::catalog::{Catalog, CatalogInput, CatalogProgram, catalog};
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{Variant, select_variant};
 use crate::manifest::StageView;
-use crate::preprocess::{Includes, Preprocessed, Stage, keyword_macros, preprocess_with};
+use crate::preprocess::{Includes, Preprocessed, Stage, preprocess_with};
 use crate::reflect::UniformBlock;
 use crate::shaderlab::ast::ProgramLanguage;
 use crate::source::SourceStore;
@@ -75,7 +75,7 @@ fn requested_variant(
         .ok_or_else(not_found)?;
     let program = shader.passes[pass].program.as_ref().ok_or_else(not_found)?;
     if !program.language.is_compiled() {
-        return Err(ProjectError::NotWgsl { language: program.language.name() });
+        return Err(ProjectError::NotCompiled { language: program.language.name() });
     }
     let keywords =
         select_variant(program.keywords.sets(), &program.pragmas.variant_keywords(&request.keywords))?;
@@ -101,7 +101,7 @@ pub fn preprocess_variant(
     let Some(source) = program.source.as_ref() else { return Ok((None, diagnostics)) };
     let keywords: Vec<&str> =
         program.keywords.keywords(program.keywords_for(&requested.variant, request.stage)).collect();
-    let macros = keyword_macros(&program.pragmas, &keywords).in_language(program.language);
+    let macros = program.keyword_macros(&keywords);
     let mut output = preprocess_with(&requested.includes, store, source, &macros, request.stage);
     diagnostics.extend(output.diagnostics.iter().cloned());
     let ok = !diagnostics::has_errors(&output.diagnostics);

@@ -127,6 +127,28 @@ fn dispatch_with(
     mapped.chunks_exact(4).map(|c| f32::from_le_bytes(c.try_into().expect("4 bytes"))).collect()
 }
 
+/// `Double` and `AddOffset` of both variants over 1,000 numbers (more than one workgroup, not a
+/// multiple of its size), each against the CPU; the numbers and the offset.
+fn double_and_add_offset_compute_what_the_cpu_computes(
+    runtime: &Runtime,
+    gpu: &kiln::accuracy::gpu::Gpu,
+) -> (Vec<f32>, f32) {
+    let input: Vec<f32> = (0..1000).map(|i| (i as f32) * 0.25 - 100.0).collect();
+    let offset = 3.5;
+    for keywords in [&[][..], &["_SQUARE"][..]] {
+        let shaped = |x: f32| if keywords.is_empty() { x } else { x * x };
+        for (kernel, cpu) in [
+            ("Double", &(|x: f32| shaped(x) * 2.0) as &dyn Fn(f32) -> f32),
+            ("AddOffset", &|x: f32| shaped(x) + offset),
+        ] {
+            let gpu_values = dispatch(runtime, gpu, kernel, keywords, &input, offset);
+            let expected: Vec<f32> = input.iter().map(|&x| cpu(x)).collect();
+            assert_eq!(gpu_values, expected, "{kernel} {keywords:?}");
+        }
+    }
+    (input, offset)
+}
+
 #[test]
 fn every_kernel_variant_computes_what_the_cpu_computes() {
     let Some(gpu) = gpu("the compute kernels test") else { return };
@@ -144,20 +166,7 @@ fn every_kernel_variant_computes_what_the_cpu_computes() {
     // A kernel asked for again is found by its handle, allocating nothing.
     let again = crate::support::allocations_in(|| drop(runtime.kernel(&requests[3]).expect("warm")));
     assert_eq!(again, 0, "a kernel asked for again allocates");
-    // 1,000 numbers: more than one workgroup, not a multiple of its size.
-    let input: Vec<f32> = (0..1000).map(|i| (i as f32) * 0.25 - 100.0).collect();
-    let offset = 3.5;
-    for keywords in [&[][..], &["_SQUARE"][..]] {
-        let shaped = |x: f32| if keywords.is_empty() { x } else { x * x };
-        for (kernel, cpu) in [
-            ("Double", &(|x: f32| shaped(x) * 2.0) as &dyn Fn(f32) -> f32),
-            ("AddOffset", &|x: f32| shaped(x) + offset),
-        ] {
-            let gpu_values = dispatch(&runtime, &gpu, kernel, keywords, &input, offset);
-            let expected: Vec<f32> = input.iter().map(|&x| cpu(x)).collect();
-            assert_eq!(gpu_values, expected, "{kernel} {keywords:?}");
-        }
-    }
+    let (input, offset) = double_and_add_offset_compute_what_the_cpu_computes(&runtime, &gpu);
     // The keyword changes the result: squaring is visible.
     assert_ne!(
         dispatch(&runtime, &gpu, "Double", &[], &input, offset),
@@ -385,19 +394,7 @@ fn an_hlsl_compute_file_s_kernels_compute_what_the_cpu_computes() {
     let Some(gpu) = gpu("the HLSL compute kernels test") else { return };
     let output = built_fixture("compute_hlsl");
     let runtime = Runtime::open(&gpu.device, output.path()).expect("opens");
-    let input: Vec<f32> = (0..1000).map(|i| (i as f32) * 0.25 - 100.0).collect();
-    let offset = 3.5;
-    for keywords in [&[][..], &["_SQUARE"][..]] {
-        let shaped = |x: f32| if keywords.is_empty() { x } else { x * x };
-        for (kernel, cpu) in [
-            ("Double", &(|x: f32| shaped(x) * 2.0) as &dyn Fn(f32) -> f32),
-            ("AddOffset", &|x: f32| shaped(x) + offset),
-        ] {
-            let gpu_values = dispatch(&runtime, &gpu, kernel, keywords, &input, offset);
-            let expected: Vec<f32> = input.iter().map(|&x| cpu(x)).collect();
-            assert_eq!(gpu_values, expected, "{kernel} {keywords:?}");
-        }
-    }
+    double_and_add_offset_compute_what_the_cpu_computes(&runtime, &gpu);
     let variant = runtime.variant(SHADER, 0, &[]).expect("built");
     let request = KernelRequest { variant, kernel: "AddOffset", overrides: &[] };
     assert_eq!(runtime.kernel(&request).expect("pipeline").workgroup_size, [32, 2, 1]);
