@@ -265,14 +265,7 @@ fn joined_stages(first: &str, second: &str) -> Option<String> {
     })
 }
 
-/// The closest name within two edits, ignoring case, for "did you mean" help.
-pub(crate) fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Option<String> {
-    candidates
-        .map(|c| (strsim::damerau_levenshtein(&c.to_lowercase(), &name.to_lowercase()), c))
-        .filter(|&(distance, _)| distance <= 2)
-        .min()
-        .map(|(_, c)| c.to_string())
-}
+pub(crate) use kiln_manifest::closest;
 
 /// Strict mode: every warning becomes an error (with the same code).
 pub fn promote_warnings(diagnostics: &mut [Diagnostic]) {

@@ -56,18 +56,18 @@ pub mod listing;
 #[doc(hidden)]
 #[cfg(feature = "lsp")]
 pub mod lsp;
-pub mod manifest;
+pub use kiln_manifest as manifest;
 #[doc(hidden)]
 pub mod material;
 #[doc(hidden)]
 pub mod preprocess;
 pub mod project;
 #[doc(hidden)]
-pub mod reference;
+pub use kiln_reference as reference;
 #[doc(hidden)]
 pub mod reflect;
 #[cfg(feature = "wgpu")]
-pub mod runtime;
+pub use kiln_runtime as runtime;
 #[doc(hidden)]
 pub mod shaderlab;
 #[doc(hidden)]

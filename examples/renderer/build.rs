@@ -13,8 +13,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let manifest_dir = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR")?);
     let scene_path = manifest_dir.join("scene.toml");
     println!("cargo:rerun-if-changed={}", scene_path.display());
-    let scene = scene::Scene::parse(&std::fs::read_to_string(&scene_path)?)?;
-    let materials = PathBuf::from(std::env::var("OUT_DIR")?).join("scene-materials");
+    let scene: scene::Scene = toml::from_str(&std::fs::read_to_string(&scene_path)?)?;
+    let out_dir = PathBuf::from(std::env::var("OUT_DIR")?);
+    std::fs::write(out_dir.join("scene.json"), serde_json::to_string(&scene)?)?;
+    let materials = out_dir.join("scene-materials");
     // Materials of an earlier scene must not keep their variants alive.
     let _ = std::fs::remove_dir_all(&materials);
     std::fs::create_dir_all(&materials)?;
@@ -27,7 +29,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .run()?;
     // Uniform and storage blocks of every shape, for the GPU round trip of generated structs
     // (tests/uniform_blocks.rs), in a folder of their own.
-    let out_dir = PathBuf::from(std::env::var("OUT_DIR")?);
     kiln::Build::new(manifest_dir.join("../../fixtures/blocks")).out_dir(out_dir.join("blocks")).run()?;
     // A pass with an ubershader, every variant built (`always_include`), for `--keywords`.
     kiln::Build::new(manifest_dir.join("../../fixtures/ubershader"))

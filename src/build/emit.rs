@@ -558,7 +558,7 @@ pub(super) fn pass_manifest<'a>(
     let mut interface_of: Map<StageInterface> = Map::with_capacity_and_hasher(jobs.len(), Default::default());
     let mut modules: Vec<ModuleManifest> = Vec::with_capacity(jobs.len());
     // A module is its interface, its files' hashes and the features it was validated with.
-    type ModuleIdentity<'a> = (usize, PerBackend<Option<&'a str>>, Vec<String>);
+    type ModuleIdentity<'a> = (usize, PerBackend<Option<&'a str>>, Vec<GpuFeature>);
     let mut module_of: Map<ModuleIdentity> = Map::with_capacity_and_hasher(jobs.len(), Default::default());
     // For each job, its module (`None` when it failed).
     let mut module_of_job: Vec<Option<usize>> = Vec::with_capacity(jobs.len());

@@ -1,6 +1,7 @@
 //! What a variant's `#pragma target` and `#pragma require` allow: naga capabilities, and the
 //! limits kiln checks itself (interpolators between stages, colour targets).
 
+use crate::manifest::GpuFeature;
 use crate::shaderlab::pragma::{ProgramPragmas, TARGET_LEVELS};
 use naga::valid::Capabilities;
 
@@ -8,23 +9,23 @@ use naga::valid::Capabilities;
 /// device needs for them (`None`: every WebGPU-compliant device has it, so it is granted at every
 /// target anyway). The other requirement names are limits kiln checks itself (interpolators,
 /// colour targets) or core WebGPU (`msaatex`: multisampled textures). docs/keywords.md.
-pub const REQUIREMENT_CAPABILITIES: [(&str, Capabilities, Option<&str>); 11] = [
-    ("native16bit", Capabilities::SHADER_FLOAT16, Some("shader-f16")),
-    ("int64", Capabilities::SHADER_INT64, Some("shader-int64")),
+pub const REQUIREMENT_CAPABILITIES: [(&str, Capabilities, Option<GpuFeature>); 11] = [
+    ("native16bit", Capabilities::SHADER_FLOAT16, Some(GpuFeature::ShaderF16)),
+    ("int64", Capabilities::SHADER_INT64, Some(GpuFeature::ShaderInt64)),
     ("cubearray", Capabilities::CUBE_ARRAY_TEXTURES, None),
     ("sampleshading", Capabilities::MULTISAMPLED_SHADING, None),
     ("msaatex", Capabilities::empty(), None),
-    ("barycentrics", Capabilities::SHADER_BARYCENTRICS, Some("shader-barycentrics")),
-    ("wavebasic", Capabilities::SUBGROUP, Some("subgroup")),
-    ("wavevote", Capabilities::SUBGROUP, Some("subgroup")),
-    ("waveballot", Capabilities::SUBGROUP, Some("subgroup")),
-    ("wavemath", Capabilities::SUBGROUP, Some("subgroup")),
-    ("waveshuffle", Capabilities::SUBGROUP, Some("subgroup")),
+    ("barycentrics", Capabilities::SHADER_BARYCENTRICS, Some(GpuFeature::ShaderBarycentrics)),
+    ("wavebasic", Capabilities::SUBGROUP, Some(GpuFeature::Subgroup)),
+    ("wavevote", Capabilities::SUBGROUP, Some(GpuFeature::Subgroup)),
+    ("waveballot", Capabilities::SUBGROUP, Some(GpuFeature::Subgroup)),
+    ("wavemath", Capabilities::SUBGROUP, Some(GpuFeature::Subgroup)),
+    ("waveshuffle", Capabilities::SUBGROUP, Some(GpuFeature::Subgroup)),
 ];
 
-/// wgpu's feature for immediate data, which kiln grants an ubershader (no `#pragma require`
-/// names it).
-pub const IMMEDIATES: &str = "immediates";
+/// The requirement kiln grants an ubershader for immediate data ([`GpuFeature::Immediates`]; no
+/// `#pragma require` names it).
+const IMMEDIATES: &str = "immediates";
 
 /// What wgpu lets every WebGPU-compliant device's shaders use: its mapping from no optional
 /// features and the compliant downlevel flags to naga capabilities.
@@ -98,13 +99,13 @@ impl Allowed {
         capabilities
     }
 
-    /// The optional GPU features the requirements need, by wgpu's names (`shader-f16`).
-    pub fn features(&self) -> Vec<String> {
-        let mut features: Vec<String> = REQUIREMENT_CAPABILITIES
+    /// The optional GPU features the requirements need.
+    pub fn features(&self) -> Vec<GpuFeature> {
+        let mut features: Vec<GpuFeature> = REQUIREMENT_CAPABILITIES
             .iter()
-            .filter(|(name, _, feature)| feature.is_some() && self.has(name))
-            .filter_map(|(_, _, feature)| feature.map(str::to_string))
-            .chain(self.has(IMMEDIATES).then(|| IMMEDIATES.to_string()))
+            .filter(|(name, _, _)| self.has(name))
+            .filter_map(|(_, _, feature)| *feature)
+            .chain(self.has(IMMEDIATES).then_some(GpuFeature::Immediates))
             .collect();
         features.sort();
         features.dedup();

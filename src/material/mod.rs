@@ -10,7 +10,7 @@ pub use error::MaterialError;
 pub use preset::Preset;
 
 use crate::diagnostics::{Diagnostic, closest};
-use crate::manifest::{MaterialManifest, ShaderManifest};
+use crate::manifest::{Manifest, MaterialManifest, ShaderManifest};
 use crate::shaderlab::ast::{PropertyDefault, PropertyType, Shader};
 use crate::shaderlab::pragma::{KeywordKind, KeywordSet};
 use crate::source::{FileId, SourceStore, Span};
@@ -216,6 +216,23 @@ pub fn load_material(
     let mut errors = Vec::new();
     let material = resolve(store, file, shaders, &mut errors);
     (material, errors.into_iter().map(Diagnostic::from).collect())
+}
+
+/// A material from a `.mat` file's text, resolved against a built manifest's shaders by the
+/// resolver builds use (defaults, then the preset, then the file's values; keywords from the
+/// property drawers and the `keywords` list), so it resolves as a build would resolve it: for a
+/// tool or an editor that edits materials beside a running game. The run time reads materials
+/// as a build resolved them (`materials.json`) and parses none. Any diagnostic refuses it,
+/// warnings too, rendered as a build renders them: `name:line:col`.
+pub fn resolve_for_manifest(manifest: &Manifest, name: &str, text: &str) -> Result<MaterialManifest, String> {
+    let shaders = ShaderEntries::new(manifest.shaders.iter().filter_map(ShaderEntry::from_manifest).collect());
+    let mut store = SourceStore::new();
+    let file = store.add(name, text.to_string());
+    let (material, problems) = load_material(&store, file, &shaders);
+    match material {
+        Some(material) if problems.is_empty() => Ok(material.to_manifest(&shaders.entry(material.shader).name)),
+        _ => Err(crate::diagnostics::render_plain(&store, &problems)),
+    }
 }
 
 fn resolve(

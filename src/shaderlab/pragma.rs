@@ -12,16 +12,15 @@ use crate::source::{Span, Spanned};
 
 pub use crate::manifest::{KeywordKind, KeywordScope, KeywordStage};
 
-impl KeywordStage {
-    const SUFFIXES: [(&'static str, KeywordStage); 6] = [
+/// The suffixes of stage-scoped keyword pragmas (`multi_compile_vertex`), with their stages.
+const STAGE_SUFFIXES: [(&str, KeywordStage); 6] = [
         ("_vertex", KeywordStage::Vertex),
         ("_fragment", KeywordStage::Fragment),
         ("_geometry", KeywordStage::Geometry),
         ("_hull", KeywordStage::Hull),
         ("_domain", KeywordStage::Domain),
         ("_raytracing", KeywordStage::RayTracing),
-    ];
-}
+];
 
 /// One choice of a keyword set: a keyword, or `None` for the all-off choice (`_`).
 #[derive(Debug, Clone, PartialEq)]
@@ -595,7 +594,7 @@ fn misspelt(name: &str) -> Option<String> {
     .collect();
     for kind in ["multi_compile", "shader_feature", "dynamic_branch"] {
         for scope in ["", "_local"] {
-            for stage in std::iter::once("").chain(KeywordStage::SUFFIXES.iter().map(|(s, _)| *s)) {
+            for stage in std::iter::once("").chain(STAGE_SUFFIXES.iter().map(|(s, _)| *s)) {
                 known.push(format!("{kind}{scope}{stage}"));
             }
         }
@@ -621,7 +620,7 @@ fn keyword_pragma(name: &str) -> Option<(KeywordKind, KeywordScope, KeywordStage
     };
     let stage = match rest {
         "" => KeywordStage::All,
-        suffix => KeywordStage::SUFFIXES.iter().find(|(s, _)| *s == suffix)?.1,
+        suffix => STAGE_SUFFIXES.iter().find(|(s, _)| *s == suffix)?.1,
     };
     Some((kind, scope, stage))
 }

@@ -5,7 +5,7 @@
 
 use crate::support::{build_without_errors, root, synthetic_project, tool};
 use kiln::build::VariantSelection;
-use kiln::manifest::Manifest;
+use kiln::manifest::{GpuFeature, Manifest};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -53,7 +53,7 @@ fn outputs() -> Outputs {
 }
 
 /// Each module of every output, once per distinct file: (description, bytes, its features).
-fn modules(outputs: &Outputs, spirv: bool) -> Vec<(String, Vec<u8>, Vec<String>)> {
+fn modules(outputs: &Outputs, spirv: bool) -> Vec<(String, Vec<u8>, Vec<GpuFeature>)> {
     let mut seen = std::collections::HashSet::new();
     let mut found = Vec::new();
     for (project, output) in &outputs.folders {
@@ -117,10 +117,12 @@ fn every_wgsl_module_parses_and_validates_again() {
         // What every WebGPU device has, as kiln grants it, plus the module's features.
         let mut capabilities = kiln::compile::target::webgpu_baseline();
         for feature in features {
-            capabilities |= match feature.as_str() {
-                "shader-f16" => Capabilities::SHADER_FLOAT16,
-                "shader-int64" => Capabilities::SHADER_INT64,
-                other => panic!("{name}: unknown feature `{other}`"),
+            capabilities |= match feature {
+                GpuFeature::ShaderF16 => Capabilities::SHADER_FLOAT16,
+                GpuFeature::ShaderInt64 => Capabilities::SHADER_INT64,
+                GpuFeature::ShaderBarycentrics => Capabilities::SHADER_BARYCENTRICS,
+                GpuFeature::Subgroup => Capabilities::SUBGROUP,
+                GpuFeature::Immediates => Capabilities::IMMEDIATES,
             };
         }
         let text = std::str::from_utf8(bytes).expect("WGSL is UTF-8");

@@ -15,7 +15,7 @@
 
 use kiln::build::VariantSelection;
 use kiln::project::{BuildMode, build_project};
-use kiln::runtime::Runtime;
+use kiln_runtime::Runtime;
 use kiln::source::SourceStore;
 use kiln_renderer::{Image, Scene, device, render_frames};
 use std::path::{Path, PathBuf};
@@ -172,7 +172,7 @@ fn max_difference(a: &Image, b: &Image) -> u8 {
 fn main() {
     let args: Vec<u32> = std::env::args().skip(1).filter_map(|a| a.parse().ok()).collect();
     let frames = args.first().copied().unwrap_or(20);
-    let mut scene = Scene::parse(include_str!("../scene.toml")).expect("scene");
+    let mut scene = Scene::bundled();
     scene.width = args.get(1).copied().unwrap_or(1920);
     scene.height = args.get(2).copied().unwrap_or(1440);
     let gpu = device();

@@ -4,8 +4,8 @@
 //! the pass's ubershader while a worker creates the pipeline (docs/keywords.md).
 
 use crate::Image;
-use kiln::manifest::MaterialManifest;
-use kiln::runtime::{Drawable, Library, PipelineRequest, Runtime, Targets};
+use kiln_runtime::manifest::MaterialManifest;
+use kiln_runtime::{Drawable, Library, PipelineRequest, Runtime, Targets};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -58,7 +58,7 @@ pub struct Introduced {
     /// Creating the ubershader's pipeline before the first frame (with `fallback`).
     pub warm_up: Option<Duration>,
     /// Each variant's pipeline creation: on which thread and how long.
-    pub created: Vec<kiln::runtime::Creation>,
+    pub created: Vec<kiln_runtime::Creation>,
     /// The grid with every combination, drawn once all pipelines are ready.
     pub image: Image,
 }

@@ -17,8 +17,8 @@ pub mod blocks {
     include!(concat!(env!("OUT_DIR"), "/blocks/kiln_shaders.rs"));
 }
 
-use kiln::reference as r;
-use kiln::runtime::{Library, PipelineRequest, Runtime, Targets};
+use kiln_reference as r;
+use kiln_runtime::{Library, PipelineRequest, Runtime, Targets};
 pub use scene::Scene;
 use shaders::custom_rp_lit as lit;
 
@@ -187,7 +187,7 @@ fn sphere_mesh(rings: u32, segments: u32) -> (Vec<f32>, Vec<u32>) {
 /// where it has them), or why there is none.
 pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
     let backends = wgpu::Backends::from_env().unwrap_or_default();
-    let adapter = kiln::runtime::adapter(backends)
+    let adapter = kiln_runtime::adapter(backends)
         .map_err(|e| format!("{e}; lavapipe runs it: apt-get install mesa-vulkan-drivers libvulkan1"))?;
     device_on(adapter, wgpu::Limits::default())
 }
@@ -196,7 +196,7 @@ pub fn device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
 /// own limits: kiln's run time passes such an adapter by as below WebGPU, but the scene must
 /// still draw the same there (docs/backends.md).
 pub fn gl_device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
-    let adapter = kiln::runtime::gl_adapter()
+    let adapter = kiln_runtime::gl_adapter()
         .map_err(|e| format!("{e}; Mesa's OpenGL runs it: apt-get install libegl1 libgl1-mesa-dri"))?;
     let limits = adapter.limits();
     device_on(adapter, limits)
@@ -213,12 +213,12 @@ fn device_on(
                 | wgpu::Features::TIMESTAMP_QUERY
                 | wgpu::Features::PIPELINE_CACHE
                 | wgpu::Features::IMMEDIATES),
-        // An ubershader's keywords (kiln::runtime::UBERSHADER_IMMEDIATE_SIZE), where the adapter has them.
+        // An ubershader's keywords (kiln_runtime::UBERSHADER_IMMEDIATE_SIZE), where the adapter has them.
         required_limits: wgpu::Limits {
             max_immediate_size: adapter
                 .limits()
                 .max_immediate_size
-                .min(kiln::runtime::UBERSHADER_IMMEDIATE_SIZE),
+                .min(kiln_runtime::UBERSHADER_IMMEDIATE_SIZE),
             ..limits
         },
         ..wgpu::DeviceDescriptor::default()
@@ -228,7 +228,15 @@ fn device_on(
     Ok((device, queue, name))
 }
 
-/// The build the program embeds, as `kiln::runtime` reads it.
+impl Scene {
+    /// The bundled scene, `scene.toml`, as `build.rs` wrote it.
+    pub fn bundled() -> Scene {
+        // build.rs wrote it from a file it parsed, with this crate's own types.
+        Scene::parse(include_str!(concat!(env!("OUT_DIR"), "/scene.json"))).expect("build.rs writes a scene that parses")
+    }
+}
+
+/// The build the program embeds, as `kiln_runtime` reads it.
 pub fn library() -> Result<Library, String> {
     Library::embedded(shaders::MANIFEST_JSON, shaders::MATERIALS_JSON, &shaders::PACKS)
         .map_err(|e| e.to_string())
@@ -262,7 +270,7 @@ struct SceneTextures<'a> {
     sampler: &'a wgpu::Sampler,
 }
 
-impl kiln::runtime::MaterialTextures for SceneTextures<'_> {
+impl kiln_runtime::MaterialTextures for SceneTextures<'_> {
     fn texture(&self, _property: &str, texture: &str) -> Option<&wgpu::TextureView> {
         (texture == "white").then_some(self.white)
     }

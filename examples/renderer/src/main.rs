@@ -18,7 +18,7 @@
 //! worker creates it. Run each in its own process, so that neither finds the other's pipelines in
 //! the driver's memory.
 
-use kiln::runtime::{Reload, Runtime};
+use kiln_runtime::{Reload, Runtime};
 use kiln_renderer::{
     Geometry, Scene, Target, compare, device, difference, reference, reference_image, reference_with, render,
     render_with,
@@ -26,7 +26,7 @@ use kiln_renderer::{
 use std::path::{Path, PathBuf};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let scene = Scene::parse(include_str!("../scene.toml"))?;
+    let scene = Scene::bundled();
     let (device, queue, adapter) = device()?;
     if std::env::args().nth(1).as_deref() == Some("--watch") {
         return watch(&scene, &device, &queue);
@@ -97,16 +97,16 @@ fn introduce(
     let value = |flag: &str| args.iter().position(|a| a == flag).and_then(|at| args.get(at + 1));
     let mut runtime = Runtime::new(device, kiln_renderer::library()?);
     if let Some(path) = value("--trace") {
-        runtime.record_pipelines(kiln::runtime::PipelineTrace::append(Path::new(path))?);
+        runtime.record_pipelines(kiln_runtime::PipelineTrace::append(Path::new(path))?);
     }
     if let Some(dir) = value("--cache") {
-        let info = kiln::runtime::adapter(wgpu::Backends::from_env().unwrap_or_default())?.get_info();
+        let info = kiln_runtime::adapter(wgpu::Backends::from_env().unwrap_or_default())?.get_info();
         // SAFETY: the folder holds only what this program's `save_pipeline_cache` wrote.
         let opened = unsafe { runtime.open_pipeline_cache(&info, Path::new(dir)) };
         println!("pipeline cache: {opened:?}");
     }
     if let Some(path) = value("--warm-up") {
-        let (entries, skipped) = kiln::runtime::read_trace(&std::fs::read_to_string(path)?);
+        let (entries, skipped) = kiln_runtime::read_trace(&std::fs::read_to_string(path)?);
         let started = std::time::Instant::now();
         let errors = runtime.warm_up_trace(&entries, 4);
         println!(
@@ -154,7 +154,7 @@ fn introduce_keywords(
     }
     let main = std::thread::current().name().unwrap_or("main").to_string();
     let (here, elsewhere): (Vec<_>, Vec<_>) = introduced.created.iter().partition(|c| c.thread == main);
-    let total = |c: &[&kiln::runtime::Creation]| c.iter().map(|c| ms(c.duration)).fold(0.0, |a, b| a + b);
+    let total = |c: &[&kiln_runtime::Creation]| c.iter().map(|c| ms(c.duration)).fold(0.0, |a, b| a + b);
     let worst = introduced.frames.iter().map(|f| ms(f.time)).fold(0.0, f64::max);
     let mut times: Vec<f64> = introduced.frames.iter().map(|f| ms(f.time)).collect();
     times.sort_by(f64::total_cmp);
@@ -193,7 +193,7 @@ fn watch(
     )?;
     let output = project.join("build");
     println!("in another terminal:  kiln watch {}", project.display());
-    while !output.join(kiln::manifest::FILE_NAME).exists() {
+    while !output.join(kiln_runtime::manifest::FILE_NAME).exists() {
         std::thread::sleep(std::time::Duration::from_millis(200));
     }
     let mut runtime = Runtime::open(device, &output)?;

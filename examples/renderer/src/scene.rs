@@ -1,9 +1,10 @@
 //! The scene file: camera, lights, spheres and their materials (a preset plus a few values).
-//! Shared with `build.rs`, which turns the materials into `.mat` files for kiln.
+//! Shared with `build.rs`, which reads `scene.toml`, turns the materials into `.mat` files for
+//! kiln and writes the scene as JSON for the renderer (which ships no TOML parser).
 
-use serde::Deserialize;
+use serde::{Deserialize, Serialize};
 
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Scene {
     pub width: u32,
@@ -15,7 +16,7 @@ pub struct Scene {
     pub objects: Vec<Object>,
 }
 
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Camera {
     pub position: [f64; 3],
@@ -23,7 +24,7 @@ pub struct Camera {
     pub fov_y_degrees: f64,
 }
 
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct DirectionalLight {
     /// Towards the light.
@@ -31,7 +32,7 @@ pub struct DirectionalLight {
     pub color: [f64; 3],
 }
 
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Object {
     pub position: [f64; 3],
@@ -39,7 +40,7 @@ pub struct Object {
     pub material: SceneMaterial,
 }
 
-#[derive(Debug, Clone, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SceneMaterial {
     /// Opaque, Clip, Fade or Transparent, as the seed's shader GUI sets them.
@@ -59,8 +60,9 @@ fn default_cutoff() -> f64 {
 pub const SHADER: &str = "Custom RP/Lit";
 
 impl Scene {
-    pub fn parse(text: &str) -> Result<Scene, toml::de::Error> {
-        toml::from_str(text)
+    /// A scene as `build.rs` writes it (JSON).
+    pub fn parse(json: &str) -> Result<Scene, serde_json::Error> {
+        serde_json::from_str(json)
     }
 
     /// The global keywords the scene runs with, which the build specialises for: with one light,

@@ -26,7 +26,7 @@ fn the_scene_matches_the_f64_reference_on_wgpu_s_gl_back_end() {
 }
 
 fn matches_the_f64_reference((device, queue, adapter): (wgpu::Device, wgpu::Queue, String)) {
-    let scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
+    let scene = Scene::bundled();
     let image = render(&device, &queue, &scene).expect("renders");
     let (colors, edge) = reference(&scene);
     let (max, mean, pixels) = compare(&image, &colors, &edge);
@@ -64,7 +64,7 @@ fn variants_for(scene: &Scene) -> BTreeSet<Vec<String>> {
 
 #[test]
 fn a_material_preset_decides_the_variants_built() {
-    let scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
+    let scene = Scene::bundled();
     let built = variants_for(&scene);
     let expected: BTreeSet<Vec<String>> =
         [vec![], vec!["_CLIPPING".to_string()], vec!["_PREMULTIPLY_ALPHA".to_string()]].into_iter().collect();
@@ -80,7 +80,7 @@ fn a_material_preset_decides_the_variants_built() {
 
 #[test]
 fn a_scene_with_one_light_gets_only_the_single_light_variants() {
-    let mut scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
+    let mut scene = Scene::bundled();
     scene.lights.truncate(1);
     let built = variants_for(&scene);
     let single = |mut keywords: Vec<&str>| {
@@ -122,7 +122,7 @@ struct Textures {
     sampler: wgpu::Sampler,
 }
 
-impl kiln::runtime::MaterialTextures for Textures {
+impl kiln_runtime::MaterialTextures for Textures {
     fn texture(&self, _property: &str, _texture: &str) -> Option<&wgpu::TextureView> {
         self.view.as_ref()
     }
@@ -137,7 +137,7 @@ impl kiln::runtime::MaterialTextures for Textures {
 #[test]
 fn a_material_bind_group_follows_its_material() {
     let Some((device, queue, _)) = common::gpu("the material bind group test") else { return };
-    let runtime = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
+    let runtime = kiln_runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
     let lit = runtime.pass("Custom RP/Lit", 0).expect("the lit pass");
     let textures = Textures {
         view: Some(kiln_renderer::white_texture(&device, &queue)),
@@ -145,7 +145,7 @@ fn a_material_bind_group_follows_its_material() {
     };
     let material = runtime.library().material("object00").expect("a scene material").clone();
     let group = runtime.material_bind_group(&material, lit, &textures).expect("binds");
-    assert_eq!(group.group, kiln::runtime::MATERIAL_GROUP);
+    assert_eq!(group.group, kiln_runtime::MATERIAL_GROUP);
     // The generated module's group constants are the run time's.
     assert_eq!(
         [
@@ -153,7 +153,7 @@ fn a_material_bind_group_follows_its_material() {
             kiln_renderer::shaders::MATERIAL_GROUP,
             kiln_renderer::shaders::OBJECT_GROUP
         ],
-        [kiln::runtime::FRAME_GROUP, group.group, kiln::runtime::OBJECT_GROUP]
+        [kiln_runtime::FRAME_GROUP, group.group, kiln_runtime::OBJECT_GROUP]
     );
     let read = |buffer: &wgpu::Buffer| {
         let size = buffer.size();
@@ -189,7 +189,7 @@ fn a_material_bind_group_follows_its_material() {
 #[test]
 fn buffer_groups_bind_by_name_and_name_what_is_wrong() {
     let Some((device, _queue, _)) = common::gpu("the buffer bind group test") else { return };
-    let runtime = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
+    let runtime = kiln_runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
     let buffer = device.create_buffer(&wgpu::BufferDescriptor {
         label: None,
         size: 1024,
@@ -223,7 +223,7 @@ fn buffer_groups_bind_by_name_and_name_what_is_wrong() {
 fn the_rest_is_tessellation_and_the_8_bit_target() {
     use kiln_renderer::{Geometry, Target, difference, reference_with};
     let Some((device, queue, adapter)) = common::gpu("the error budget test") else { return };
-    let scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
+    let scene = Scene::bundled();
     let image = render(&device, &queue, &scene).expect("renders").colors();
     let emulated = reference_with(&scene, Geometry::Tessellated, Target::EightBit);
     let step = 1.0 / 255.0;
@@ -244,18 +244,18 @@ fn the_rest_is_tessellation_and_the_8_bit_target() {
 #[test]
 fn a_warm_up_from_the_scene_s_trace_leaves_the_render_thread_nothing_to_create() {
     let Some((device, queue, _)) = common::gpu("the scene trace test") else { return };
-    let scene = kiln_renderer::Scene::parse(include_str!("../scene.toml")).expect("scene");
+    let scene = kiln_renderer::Scene::bundled();
     let dir = tempfile::tempdir().expect("temp dir");
     let trace = dir.path().join("pipelines.jsonl");
-    let mut first = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
-    first.record_pipelines(kiln::runtime::PipelineTrace::append(&trace).expect("trace"));
+    let mut first = kiln_runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
+    first.record_pipelines(kiln_runtime::PipelineTrace::append(&trace).expect("trace"));
     let (cold, cold_image) = kiln_renderer::introduce(&mut first, &device, &queue, &scene).expect("draws");
     let created: usize = cold.iter().map(|(created, _)| created).sum();
     assert!(created > 1, "the scene's materials need several pipelines: {cold:?}");
 
-    let (entries, skipped) = kiln::runtime::read_trace(&std::fs::read_to_string(&trace).expect("trace"));
+    let (entries, skipped) = kiln_runtime::read_trace(&std::fs::read_to_string(&trace).expect("trace"));
     assert!(skipped.is_empty(), "{skipped:?}");
-    let mut second = kiln::runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
+    let mut second = kiln_runtime::Runtime::new(&device, kiln_renderer::library().expect("embedded build"));
     assert!(second.warm_up_trace(&entries, 4).is_empty());
     assert_eq!(second.pipelines_created(), created);
     let (warm, warm_image) = kiln_renderer::introduce(&mut second, &device, &queue, &scene).expect("draws");
@@ -271,7 +271,7 @@ fn a_warm_up_from_the_scene_s_trace_leaves_the_render_thread_nothing_to_create()
 fn new_keyword_combinations_draw_through_the_ubershader_and_end_in_the_same_image() {
     let Some((device, queue, _)) = common::gpu("the keyword introduction test") else { return };
     let here = std::thread::current().name().map(str::to_string);
-    let on_this_thread = |created: &[kiln::runtime::Creation]| {
+    let on_this_thread = |created: &[kiln_runtime::Creation]| {
         created.iter().filter(|c| Some(&c.thread) == here.as_ref()).count()
     };
     let waited = kiln_renderer::keywords::introduce(&device, &queue, false).expect("draws");
@@ -293,7 +293,7 @@ fn new_keyword_combinations_draw_through_the_ubershader_and_end_in_the_same_imag
 #[test]
 fn the_tutorial_s_hlsl_lit_shader_draws_the_wgsl_lit_shader_s_pixels() {
     let Some((device, queue, adapter)) = common::gpu("the HLSL Lit render test") else { return };
-    let scene = Scene::parse(include_str!("../scene.toml")).expect("scene parses");
+    let scene = Scene::bundled();
     let dir = tempfile::tempdir().expect("temp dir");
     let materials = dir.path().join("materials");
     std::fs::create_dir(&materials).expect("mkdir");
@@ -307,8 +307,8 @@ fn the_tutorial_s_hlsl_lit_shader_draws_the_wgsl_lit_shader_s_pixels() {
         .out_dir(dir.path().join("out"))
         .execute()
         .expect("the HLSL Lit shader builds");
-    let library = kiln::runtime::Library::open(dir.path().join("out/kiln")).expect("opens");
-    let mut runtime = kiln::runtime::Runtime::new(&device, library);
+    let library = kiln_runtime::Library::open(dir.path().join("out/kiln")).expect("opens");
+    let mut runtime = kiln_runtime::Runtime::new(&device, library);
     let hlsl = kiln_renderer::render_with(&mut runtime, &device, &queue, &scene).expect("HLSL renders");
     let wgsl = render(&device, &queue, &scene).expect("WGSL renders");
     assert_eq!((hlsl.width, hlsl.height), (wgsl.width, wgsl.height));

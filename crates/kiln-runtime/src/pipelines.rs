@@ -6,7 +6,7 @@ use super::layout::{PassLayout, VertexLayout};
 use super::overrides::{ConstantRequest, stage_constants};
 use super::trace::{PipelineTrace, TRACE_VERSION, TraceEntry, TracedPipeline};
 use super::{Library, PassId, RuntimeError, VariantId};
-use crate::manifest::{AttributeFormat, ERRORS_FILE, FILE_NAME, MaterialManifest, StageView};
+use kiln_manifest::{AttributeFormat, ERRORS_FILE, FILE_NAME, GpuFeature, MaterialManifest, StageView};
 use std::collections::{HashMap, HashSet};
 use std::hash::{Hash, Hasher};
 use std::io::Write as _;
@@ -66,7 +66,7 @@ pub(super) enum Modules {
 
 /// A request resolved against its pass ([`Runtime::resolve`]).
 pub(super) struct Resolved<'a> {
-    pub(super) pass: &'a crate::manifest::PassManifest,
+    pub(super) pass: &'a kiln_manifest::PassManifest,
     pub(super) facts: PassFacts,
     pub(super) state: super::RenderState,
     /// The request's hash: its key in [`Made::requests`].
@@ -439,7 +439,7 @@ impl Runtime {
     pub(super) fn create_pipeline(
         &self,
         request: &PipelineRequest,
-        pass: &crate::manifest::PassManifest,
+        pass: &kiln_manifest::PassManifest,
         facts: &PassFacts,
         state: super::RenderState,
         modules: Modules,
@@ -488,20 +488,8 @@ impl Runtime {
         if let Some(pipeline) = self.made().pipelines.get(&key) {
             return Ok(pipeline.clone());
         }
-        let missing_feature =
-            vertex.module.features.iter().chain(fragment.iter().flat_map(|f| &f.module.features)).find(|f| {
-                let needs = match f.as_str() {
-                    "shader-f16" => wgpu::Features::SHADER_F16,
-                    crate::compile::target::IMMEDIATES => wgpu::Features::IMMEDIATES,
-                    _ => wgpu::Features::empty(),
-                };
-                !self.device.features().contains(needs)
-            });
-        if let Some(feature) = missing_feature {
-            return Err(layout_error(format!(
-                "the variant needs `{feature}`, which the device was not created with"
-            )));
-        }
+        let stages = [Some(&vertex), fragment.as_ref()];
+        self.check_features(stages.iter().flatten().flat_map(|stage| &stage.module.features)).map_err(layout_error)?;
         let module = |stage: &StageView| {
             let module = self.shader_module(shader, stage).map_err(layout_error)?;
             Ok::<_, RuntimeError>((module, stage.interface.entry_point.clone()))
@@ -658,6 +646,16 @@ impl Runtime {
         Ok(Reload::Swapped { dropped_pipelines })
     }
 
+    /// Refuses modules that need a GPU feature the device was not created with, before the
+    /// driver sees them (wgpu would fail the pipeline, or a driver take it and draw wrongly).
+    pub(super) fn check_features<'a>(&self, needed: impl IntoIterator<Item = &'a GpuFeature>) -> Result<(), String> {
+        let device = self.device.features();
+        match needed.into_iter().find(|&&feature| !device.contains(wgpu_feature(feature))) {
+            Some(feature) => Err(format!("the variant needs `{feature}`, which the device was not created with")),
+            None => Ok(()),
+        }
+    }
+
     /// A stage's WGSL module, created once per module (by its hash) and kept across pipelines.
     /// Its bytes are checked against the manifest's hash before the driver sees them, once, on
     /// first use: whatever [`Library::open`] read, a changed module never becomes a pipeline.
@@ -739,4 +737,15 @@ fn manifest_hash(output: &Path) -> Result<blake3::Hash, RuntimeError> {
     let path = output.join(FILE_NAME);
     let bytes = std::fs::read(&path).map_err(|e| RuntimeError::Read { path, message: e.to_string() })?;
     Ok(blake3::hash(&bytes))
+}
+
+/// wgpu's flag for a feature a manifest names.
+pub fn wgpu_feature(feature: GpuFeature) -> wgpu::Features {
+    match feature {
+        GpuFeature::ShaderF16 => wgpu::Features::SHADER_F16,
+        GpuFeature::ShaderInt64 => wgpu::Features::SHADER_INT64,
+        GpuFeature::ShaderBarycentrics => wgpu::Features::SHADER_BARYCENTRICS,
+        GpuFeature::Subgroup => wgpu::Features::SUBGROUP,
+        GpuFeature::Immediates => wgpu::Features::IMMEDIATES,
+    }
 }

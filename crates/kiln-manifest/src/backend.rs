@@ -52,7 +52,7 @@ impl Backend {
             _ => None,
         };
         by_api.or_else(|| {
-            let closest = crate::diagnostics::closest(name, Backend::ALL.iter().map(|b| b.name()))?;
+            let closest = crate::closest(name, Backend::ALL.iter().map(|b| b.name()))?;
             Backend::ALL.iter().copied().find(|b| b.name() == closest)
         })
     }

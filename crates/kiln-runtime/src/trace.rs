@@ -7,7 +7,7 @@
 use super::layout::VertexLayout;
 use super::pipelines::{PipelineRequest, Runtime, Targets};
 use super::{KernelRequest, RuntimeError};
-use crate::manifest::MaterialManifest;
+use kiln_manifest::MaterialManifest;
 use serde::{Deserialize, Serialize};
 use std::collections::{BTreeMap, HashSet};
 use std::io::Write as _;

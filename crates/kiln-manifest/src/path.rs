@@ -27,7 +27,7 @@ pub struct PackPath(String);
 pub struct NotAPackPath(pub String);
 
 impl PackPath {
-    /// The pack of modules whose hashes hash to `hash` ([`crate::store::hash`]) for `backend`.
+    /// The pack of modules whose hashes hash to `hash` for `backend`.
     ///
     /// # Panics
     /// When `hash` is not 32 lowercase hexadecimal digits (kiln's own hashes always are).

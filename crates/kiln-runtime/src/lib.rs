@@ -3,7 +3,11 @@
 //! material's render state and its pipelines (each created once), loads a build from an output
 //! folder and swaps in a newer one, and records which variants a scene asked for.
 //!
-//! Behind the `wgpu` feature; the compiler stages never import it.
+//! What a game links: this crate reads what the kiln compiler wrote (through `kiln-manifest`)
+//! and holds no compiler, HTTP client, TOML parser or thread pool. A renderer's `build.rs` runs
+//! the compiler (`kiln`); the generated module names only this crate.
+
+#![warn(missing_docs, unreachable_pub)]
 
 mod adapter;
 mod compute;
@@ -17,24 +21,25 @@ mod trace;
 mod ubershader;
 mod uniforms;
 
-pub use crate::manifest::{FRAME_GROUP, OBJECT_GROUP};
+/// The schema the run time reads (`manifest.json`, `materials.json`), for a game's own use.
+pub use kiln_manifest as manifest;
+pub use kiln_manifest::{FRAME_GROUP, OBJECT_GROUP};
 pub use adapter::{AdapterError, adapter, gl_adapter};
 pub use compute::{Kernel, KernelRequest};
 pub use driver_cache::CacheFile;
 pub use layout::{LayoutError, PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
 pub use material::{MATERIAL_GROUP, MaterialBindGroup, MaterialTextures};
-pub use pipelines::{Creation, PipelineRequest, Reload, Runtime, Targets, UsageLog};
+pub use pipelines::{Creation, PipelineRequest, Reload, Runtime, Targets, UsageLog, wgpu_feature};
 pub use state::{
     MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state,
 };
 pub use trace::{PipelineTrace, TRACE_VERSION, TraceEntry, TracedPipeline, WarmUp, read_trace};
 pub use ubershader::{Drawable, UBERSHADER_IMMEDIATE_SIZE};
 
-use crate::manifest::{
+use kiln_manifest::{
     FILE_NAME, MATERIALS_FILE, Manifest, MaterialManifest, ModuleFile, OverrideType, PassManifest,
     ShaderManifest, VariantManifest,
 };
-use crate::material::ShaderEntries;
 use std::borrow::Cow;
 use std::collections::{BTreeSet, HashMap};
 use std::path::{Path, PathBuf};
@@ -74,15 +79,28 @@ pub const MAX_DYNAMIC_KEYWORDS: usize = 64;
 /// Tells builds apart, so that a handle outlives no build it was made for.
 static BUILDS: AtomicU32 = AtomicU32::new(0);
 
-/// A module whose bytes in `packs` are not what `manifest` names, if any (checked in parallel).
+/// A module whose bytes in `packs` are not what `manifest` names, if any: checked on scoped
+/// threads, one share of the files each (the run time needs no thread pool of its own).
 fn first_damaged(
     manifest: &Manifest,
     packs: &HashMap<String, Cow<'static, [u8]>>,
-) -> Option<crate::manifest::FileRef> {
-    use rayon::prelude::*;
-    manifest.files().into_par_iter().find_any(|file| {
+) -> Option<kiln_manifest::FileRef> {
+    let files = manifest.files();
+    let damaged = |file: &kiln_manifest::FileRef| {
         let bytes = packs.get(file.path.as_str()).and_then(|pack| file.slice(pack));
         bytes.is_none_or(|bytes| blake3::hash(bytes).to_hex()[..32] != file.hash)
+    };
+    let threads = std::thread::available_parallelism().map_or(1, std::num::NonZero::get);
+    let share = files.len().div_ceil(threads).max(1);
+    std::thread::scope(|scope| {
+        let workers: Vec<_> = files
+            .chunks(share)
+            .map(|part| scope.spawn(move || part.iter().find(|file| damaged(file)).cloned()))
+            .collect();
+        workers
+            .into_iter()
+            .map(|worker| worker.join().unwrap_or_else(|panic| std::panic::resume_unwind(panic)))
+            .find_map(|found| found)
     })
 }
 
@@ -160,9 +178,6 @@ pub enum RuntimeError {
         suggestion.as_ref().map(|s| format!(" (did you mean `{s}`?)")).unwrap_or_default()
     )]
     NoMaterial { name: String, suggestion: Option<String> },
-    /// A material file read at run time has errors.
-    #[error("material: {0}")]
-    Material(String),
     /// The pass's render state cannot be made with the material's values.
     #[error("render state of `{shader}` pass {pass}: {error}")]
     State { shader: String, pass: usize, error: StateError },
@@ -206,8 +221,6 @@ pub struct Library {
     shader_indices: HashMap<String, usize>,
     /// Per pass (shader index, pass position): its variants by keyword set.
     variants: HashMap<(usize, usize), HashMap<BTreeSet<String>, usize>>,
-    /// The shaders as `.mat` files are resolved against, made at the first `load_material`.
-    material_shaders: std::sync::OnceLock<ShaderEntries>,
 }
 
 impl Library {
@@ -224,7 +237,7 @@ impl Library {
     /// that a pack changed since the build (damaged on disk, tampered with) is refused here and
     /// never handed to the driver. An option, not the default: at 10,000 variants the check added
     /// 13% to `open` on 16 threads and 69% on 2 (docs/performance.md), past the 5% a default may
-    /// cost. It runs while the materials are parsed.
+    /// cost.
     pub fn open_verified(output: impl AsRef<Path>) -> Result<Library, RuntimeError> {
         Library::open_checking(output.as_ref(), true)
     }
@@ -249,10 +262,8 @@ impl Library {
             })?;
             packs.insert(path.as_str().to_string(), Cow::Owned(bytes));
         }
-        let (materials, damaged) = rayon::join(
-            || serde_json::from_slice(&materials_bytes),
-            || modules.then(|| first_damaged(&manifest, &packs)).flatten(),
-        );
+        let damaged = modules.then(|| first_damaged(&manifest, &packs)).flatten();
+        let materials: Result<Vec<MaterialManifest>, _> = serde_json::from_slice(&materials_bytes);
         if let Some(file) = damaged {
             return Err(RuntimeError::Read {
                 path: file.path.under(output),
@@ -311,7 +322,6 @@ impl Library {
             materials,
             shader_indices,
             variants,
-            material_shaders: std::sync::OnceLock::new(),
         }
     }
 
@@ -329,7 +339,7 @@ impl Library {
     pub fn material(&self, name: &str) -> Result<&MaterialManifest, RuntimeError> {
         self.materials.iter().find(|m| m.name == name).ok_or_else(|| RuntimeError::NoMaterial {
             name: name.to_string(),
-            suggestion: crate::diagnostics::closest(name, self.materials.iter().map(|m| m.name.as_str())),
+            suggestion: kiln_manifest::closest(name, self.materials.iter().map(|m| m.name.as_str())),
         })
     }
 
@@ -391,7 +401,7 @@ impl Library {
                 shader: shader.to_string(),
                 pass: index,
                 keyword: unknown.to_string(),
-                suggestion: crate::diagnostics::closest(unknown, names),
+                suggestion: kiln_manifest::closest(unknown, names),
             });
         }
         for set in manifest.dynamic_sets() {
@@ -485,29 +495,4 @@ impl Library {
         pack.get(file.offset as usize..(file.offset + file.size) as usize)
     }
 
-    /// A material from a `.mat` file's text, resolved against this build's shaders by the
-    /// resolver builds use (defaults, then the preset, then the file's values; keywords from the
-    /// property drawers and the `keywords` list), so it resolves as a build would resolve it.
-    /// Any diagnostic refuses it, warnings too (at run time no one would see them), rendered as
-    /// a build renders them: `name:line:col`.
-    pub fn load_material(&self, name: &str, text: &str) -> Result<MaterialManifest, RuntimeError> {
-        let shaders = self.material_shaders.get_or_init(|| {
-            ShaderEntries::new(
-                self.manifest
-                    .shaders
-                    .iter()
-                    .filter_map(crate::material::ShaderEntry::from_manifest)
-                    .collect(),
-            )
-        });
-        let mut store = crate::source::SourceStore::new();
-        let file = store.add(name, text.to_string());
-        let (material, problems) = crate::material::load_material(&store, file, shaders);
-        match material {
-            Some(material) if problems.is_empty() => {
-                Ok(material.to_manifest(&shaders.entry(material.shader).name))
-            }
-            _ => Err(RuntimeError::Material(crate::diagnostics::render_plain(&store, &problems))),
-        }
-    }
 }

@@ -3,11 +3,11 @@
 //! property name from the renderer, so a renderer writes no binding code per material.
 
 use super::{Library, PassId, Runtime, RuntimeError};
-use crate::manifest::MaterialManifest;
-use crate::reflect::Resource;
+use kiln_manifest::MaterialManifest;
+use kiln_manifest::Resource;
 use wgpu::util::DeviceExt;
 
-pub use crate::manifest::MATERIAL_GROUP;
+pub use kiln_manifest::MATERIAL_GROUP;
 
 /// The renderer's textures and samplers, as materials name them.
 pub trait MaterialTextures {
@@ -163,7 +163,7 @@ impl Runtime {
             .ok_or_else(|| layout_error(format!("the pass has no bind group {group}")))?;
         if let Some((name, _)) = buffers.iter().find(|(name, _)| !entries.iter().any(|e| e.name == *name)) {
             let names: Vec<&str> = entries.iter().map(|e| e.name.as_str()).collect();
-            let hint = crate::diagnostics::closest(name, names.iter().copied())
+            let hint = kiln_manifest::closest(name, names.iter().copied())
                 .map(|s| format!(" (did you mean `{s}`?)"))
                 .unwrap_or_default();
             return Err(layout_error(format!("group {group} has no binding `{name}`{hint}")));

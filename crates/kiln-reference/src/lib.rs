@@ -2,6 +2,8 @@
 //! formula for formula, to measure compiled shaders against. It follows WGSL semantics where
 //! they matter and spells out the ones that are easy to get wrong.
 
+#![warn(missing_docs, unreachable_pub)]
+
 /// `saturate` as WGSL defines it for finite values: clamp to [0, 1]. For NaN the result is
 /// explicitly NaN here (GPUs differ: some return 0, some NaN), so that a NaN reaching `saturate`
 /// in the reference is visible in comparisons rather than silently hidden.

@@ -9,6 +9,8 @@
 //! variants, the checks a manifest read from disk gets, and the closed-set macro the submodules
 //! (`reflection`, `keywords`, `state`) share.
 
+#![warn(missing_docs, unreachable_pub)]
+
 /// A closed set of names the manifest writes: an enum, serialised as its name (one list gives
 /// both), so that a value outside the set is refused when a manifest is read, and every use is an
 /// exhaustive `match`.
@@ -71,6 +73,16 @@ pub use reflection::{
     StorageAccess, TexelFormat, UniformBlock, ViewDimension,
 };
 pub use state::*;
+
+/// The closest name within two edits, ignoring case, for "did you mean" help.
+pub fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Option<String> {
+    candidates
+        .map(|c| (strsim::damerau_levenshtein(&c.to_lowercase(), &name.to_lowercase()), c))
+        .filter(|&(distance, _)| distance <= 2)
+        .min()
+        .map(|(_, c)| c.to_string())
+}
+
 
 use serde::{Deserialize, Serialize};
 use std::path::Path;
@@ -529,6 +541,23 @@ pub struct StageInterface {
     pub workgroup_memory: u32,
 }
 
+closed_set! {
+    /// An optional GPU feature a module may need, by wgpu's name for it: a manifest naming any
+    /// other is refused when read, and the run time maps each to wgpu's flag in one `match`.
+    GpuFeature {
+        /// 16-bit floats in shaders (`#pragma require native16bit`).
+        ShaderF16 = "shader-f16",
+        /// 64-bit integers in shaders (`#pragma require int64`).
+        ShaderInt64 = "shader-int64",
+        /// Barycentric coordinates in fragment shaders (`#pragma require barycentrics`).
+        ShaderBarycentrics = "shader-barycentrics",
+        /// Subgroup (wave) operations (`#pragma require wavebasic` and the other wave names).
+        Subgroup = "subgroup",
+        /// Immediate data, which carries an ubershader's keywords.
+        Immediates = "immediates",
+    }
+}
+
 fn is_zero(n: &u32) -> bool {
     *n == 0
 }
@@ -539,11 +568,10 @@ fn is_zero(n: &u32) -> bool {
 pub struct ModuleManifest {
     /// Index into the pass's `interfaces`.
     pub interface: usize,
-    /// The optional GPU features the module was validated with (wgpu's names: `shader-f16`,
-    /// `shader-int64`), from its variant's `#pragma target` and `#pragma require`; a device
-    /// must have them to load it.
+    /// The optional GPU features the module was validated with, from its variant's
+    /// `#pragma target` and `#pragma require`; a device must have them to load it.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub features: Vec<String>,
+    pub features: Vec<GpuFeature>,
     /// Its WGSL, if that back end was written.
     pub wgsl: Option<ModuleFile>,
     /// Its SPIR-V, if that back end was written.
@@ -579,7 +607,7 @@ impl ModuleManifest {
     /// A module with these files (one per back end, `None` where not written).
     pub fn with_files(
         interface: usize,
-        features: Vec<String>,
+        features: Vec<GpuFeature>,
         mut files: PerBackend<Option<ModuleFile>>,
     ) -> ModuleManifest {
         let mut take = |backend| files[backend].take();

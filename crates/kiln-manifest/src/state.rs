@@ -214,3 +214,62 @@ pub struct PropertyReference {
     /// The shader's default for it.
     pub default: serde_json::Value,
 }
+
+/// Names Unity's `[Enum(Type)]` drawers know, with their values: what a `[_Property]` in render
+/// state holds.
+pub const UNITY_ENUMS: &[(&str, &[(&str, f64)])] = &[
+    (
+        "UnityEngine.Rendering.BlendMode",
+        &[
+            ("Zero", 0.0),
+            ("One", 1.0),
+            ("DstColor", 2.0),
+            ("SrcColor", 3.0),
+            ("OneMinusDstColor", 4.0),
+            ("SrcAlpha", 5.0),
+            ("OneMinusSrcColor", 6.0),
+            ("DstAlpha", 7.0),
+            ("OneMinusDstAlpha", 8.0),
+            ("SrcAlphaSaturate", 9.0),
+            ("OneMinusSrcAlpha", 10.0),
+        ],
+    ),
+    ("UnityEngine.Rendering.CullMode", &[("Off", 0.0), ("Front", 1.0), ("Back", 2.0)]),
+    (
+        "UnityEngine.Rendering.CompareFunction",
+        &[
+            ("Disabled", 0.0),
+            ("Never", 1.0),
+            ("Less", 2.0),
+            ("Equal", 3.0),
+            ("LessEqual", 4.0),
+            ("Greater", 5.0),
+            ("NotEqual", 6.0),
+            ("GreaterEqual", 7.0),
+            ("Always", 8.0),
+        ],
+    ),
+    (
+        "UnityEngine.Rendering.BlendOp",
+        &[("Add", 0.0), ("Subtract", 1.0), ("ReverseSubtract", 2.0), ("Min", 3.0), ("Max", 4.0)],
+    ),
+    (
+        "UnityEngine.Rendering.StencilOp",
+        &[
+            ("Keep", 0.0),
+            ("Zero", 1.0),
+            ("Replace", 2.0),
+            ("IncrementSaturate", 3.0),
+            ("DecrementSaturate", 4.0),
+            ("Invert", 5.0),
+            ("IncrementWrap", 6.0),
+            ("DecrementWrap", 7.0),
+        ],
+    ),
+];
+
+/// The name `value` has in one of [`UNITY_ENUMS`] (`"UnityEngine.Rendering.BlendMode"`).
+pub fn unity_enum_name(ty: &str, value: f64) -> Option<&'static str> {
+    let (_, pairs) = UNITY_ENUMS.iter().find(|(t, _)| *t == ty)?;
+    pairs.iter().find(|(_, v)| *v == value.round()).map(|(name, _)| *name)
+}

@@ -1,5 +1,5 @@
 //! What the manifest says of a stage module's interface: vertex attributes and colour targets,
-//! resources, and uniform and storage block layouts (filled in by `crate::reflect` from naga).
+//! resources, and uniform and storage block layouts (filled in by the compiler's `reflect` stage from naga).
 
 use serde::{Deserialize, Serialize};
 

@@ -8,7 +8,7 @@ use super::pipelines::{
     Modules, PassFacts, PipelineRequest, Resolved, Runtime, Targets, hash_overrides, request_key,
 };
 use super::{RuntimeError, VariantId};
-use crate::manifest::MaterialManifest;
+use kiln_manifest::MaterialManifest;
 use std::hash::Hash;
 use std::sync::Arc;
 
@@ -104,7 +104,7 @@ impl Runtime {
         let pipeline = self.ubershader_pipeline(request, &resolved)?;
         if self.made().pending.insert(key) {
             let (runtime, owned) = (Arc::clone(self), OwnedRequest::new(request));
-            rayon::spawn(move || {
+            in_background(Box::new(move || {
                 let overrides: Vec<(&str, f64)> =
                     owned.overrides.iter().map(|(k, v)| (k.as_str(), *v)).collect();
                 let request = PipelineRequest {
@@ -120,7 +120,7 @@ impl Runtime {
                 if created.is_err() {
                     made.failed.insert(key);
                 }
-            });
+            }));
         }
         Ok(Drawable::Fallback { pipeline, immediates })
     }
@@ -179,5 +179,46 @@ impl Runtime {
             }))
         });
         layout.clone()
+    }
+}
+
+/// A pipeline to create off the render thread.
+type Job = Box<dyn FnOnce() + Send>;
+
+/// The workers [`Runtime::drawable`] hands pipelines to, started at the first fallback draw and
+/// shared by every runtime in the process (a few threads, as many as cores up to four: creating
+/// pipelines is the driver's work, and more threads only contend for it).
+static WORKERS: std::sync::OnceLock<Option<std::sync::mpsc::Sender<Job>>> = std::sync::OnceLock::new();
+
+/// Runs `job` on a worker, or here, at once, where no thread can start (a browser's main thread):
+/// the draw then waits, as it would without an ubershader, but nothing is lost.
+fn in_background(job: Job) {
+    let workers = WORKERS.get_or_init(|| {
+        let (sender, receiver) = std::sync::mpsc::channel::<Job>();
+        let receiver = Arc::new(std::sync::Mutex::new(receiver));
+        let count = std::thread::available_parallelism().map_or(1, std::num::NonZero::get).min(4);
+        let started = (0..count)
+            .filter(|i| {
+                let receiver = Arc::clone(&receiver);
+                std::thread::Builder::new()
+                    .name(format!("kiln pipelines {i}"))
+                    .spawn(move || {
+                        // The lock is held while waiting for a job, never while running one.
+                        while let Some(job) = receiver.lock().ok().and_then(|r| r.recv().ok()) {
+                            job();
+                        }
+                    })
+                    .is_ok()
+            })
+            .count();
+        (started > 0).then_some(sender)
+    });
+    match workers {
+        Some(sender) => {
+            if let Err(std::sync::mpsc::SendError(job)) = sender.send(job) {
+                job();
+            }
+        }
+        None => job(),
     }
 }

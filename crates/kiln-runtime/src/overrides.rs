@@ -3,7 +3,7 @@
 //! what each stage module declares.
 
 use super::RuntimeError;
-use crate::manifest::{KeywordSetManifest, PassManifest, StageView};
+use kiln_manifest::{KeywordSetManifest, PassManifest, StageView};
 
 /// Each stage's constants (in the order the stages were given), by the key a pipeline sets them
 /// by, sorted.
@@ -36,7 +36,7 @@ pub(super) fn stage_constants(
                 pass,
                 name: name.to_string(),
                 keyword: request.pass.is_dynamic(name),
-                suggestion: crate::diagnostics::closest(name, names),
+                suggestion: kiln_manifest::closest(name, names),
             });
         };
         if !constant.accepts(value) {

@@ -96,9 +96,25 @@ impl Runtime {
             std::fs::create_dir_all(dir)?;
         }
         let file = wrapped(&data, header);
-        crate::store::write_atomically(path, &file)?;
+        write_atomically(path, &file)?;
         Ok(Some(file.len() as u64))
     }
+}
+
+/// Writes `bytes` under a temporary name beside `path`, made durable, then renamed over it: a
+/// reader sees the old file or the new one. (The compiler's store has its own, with staging for
+/// streamed files; a game needs only this.)
+fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
+    let mut temporary = path.as_os_str().to_owned();
+    temporary.push(format!(".{}.tmp", std::process::id()));
+    let temporary = std::path::PathBuf::from(temporary);
+    let written = std::fs::write(&temporary, bytes)
+        .and_then(|()| std::fs::File::open(&temporary)?.sync_all())
+        .and_then(|()| std::fs::rename(&temporary, path));
+    if written.is_err() {
+        let _ = std::fs::remove_file(&temporary);
+    }
+    written
 }
 
 /// The first line of every pipeline cache file kiln writes.

@@ -71,7 +71,7 @@ impl Runtime {
             return Err(RuntimeError::UnknownKernel {
                 shader: shader.to_string(),
                 kernel: request.kernel.to_string(),
-                suggestion: crate::diagnostics::closest(
+                suggestion: kiln_manifest::closest(
                     request.kernel,
                     pass.kernels.iter().map(String::as_str),
                 ),
@@ -106,6 +106,7 @@ impl Runtime {
         let pipeline = match found {
             Some(pipeline) => pipeline,
             None => {
+                self.check_features(&stage.module.features).map_err(layout_error)?;
                 let module = self.shader_module(shader, &stage).map_err(layout_error)?;
                 let label = format!("{shader} kernel {} [{}]", request.kernel, variant.keywords.join(" "));
                 let started = std::time::Instant::now();

@@ -3,7 +3,7 @@
 //! writes no struct of its own for material data.
 
 use super::{Library, RuntimeError};
-use crate::manifest::{MaterialManifest, Member};
+use kiln_manifest::{MaterialManifest, Member};
 
 impl Library {
     /// The bytes of the uniform block bound as `block` (its variable's name, `UnityPerMaterial`)

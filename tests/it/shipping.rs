@@ -1,0 +1,53 @@
+//! What a game ships: the example renderer's normal dependency tree, as cargo itself resolves it,
+//! holds the run time and not the compiler.
+
+use crate::support::root;
+use std::collections::BTreeMap;
+use std::process::Command;
+
+/// Every package in `package`'s normal (not build, not dev) dependency tree, with its features.
+fn normal_tree(package: &str) -> BTreeMap<String, Vec<String>> {
+    let output = Command::new(env!("CARGO"))
+        .current_dir(root())
+        .args(["tree", "--locked", "--offline", "-p", package, "-e", "normal", "--prefix", "none"])
+        .args(["--format", "{p}|{f}"])
+        .output()
+        .expect("cargo runs");
+    assert!(output.status.success(), "cargo tree: {}", String::from_utf8_lossy(&output.stderr));
+    let mut packages = BTreeMap::new();
+    for line in String::from_utf8(output.stdout).expect("UTF-8").lines() {
+        let (package, features) = line.trim_end_matches(" (*)").split_once('|').expect("{p}|{f}");
+        let name = package.split(' ').next().expect("a name").to_string();
+        let features = features.split(',').filter(|f| !f.is_empty()).map(str::to_string);
+        let known: &mut Vec<String> = packages.entry(name).or_default();
+        known.extend(features);
+        known.sort();
+        known.dedup();
+    }
+    packages
+}
+
+#[test]
+fn the_example_renderer_ships_the_run_time_and_no_compiler() {
+    let packages = normal_tree("kiln-renderer");
+    for must in ["kiln-runtime", "kiln-manifest", "wgpu"] {
+        assert!(packages.contains_key(must), "{must} is missing from {:?}", packages.keys());
+    }
+    // The compiler, its HTTP client and TLS, its parsers, file walker, thread pool, command line
+    // and language server.
+    let forbidden = [
+        "kiln", "ureq", "rustls", "ring", "sha2", "pest", "toml", "toml_edit", "walkdir", "rayon", "glslang",
+        "clap", "notify", "lsp-server",
+    ];
+    let shipped: Vec<&str> = forbidden.iter().copied().filter(|name| packages.contains_key(*name)).collect();
+    assert!(shipped.is_empty(), "a game would ship {shipped:?}");
+    // naga is wgpu's: no front end but the WGSL one wgpu enables for itself.
+    let naga = packages.get("naga").expect("wgpu brings naga");
+    let front_ends: Vec<&String> = naga.iter().filter(|f| f.ends_with("-in")).collect();
+    assert_eq!(front_ends, ["wgsl-in"], "naga's features in the renderer: {naga:?}");
+    // And the run time's own dependencies are few: wgpu's tree and a handful beside it.
+    let runtime = normal_tree("kiln-runtime");
+    let wgpu = normal_tree("wgpu");
+    let own: Vec<&String> = runtime.keys().filter(|name| !wgpu.contains_key(*name)).collect();
+    assert!(own.len() <= 12, "kiln-runtime adds {} crates to wgpu's: {own:?}", own.len());
+}
