@@ -113,7 +113,7 @@ impl Build {
         self
     }
 
-    /// Also build the variants a usage log names (as `kiln::runtime::UsageLog` writes them, one
+    /// Also build the variants a usage log names (as `kiln_runtime::UsageLog` writes them, one
     /// JSON object a line): what a scene asked for at run time that no material uses.
     pub fn variant_log(mut self, file: impl Into<PathBuf>) -> Build {
         self.variant_logs.push(file.into());

@@ -32,7 +32,7 @@ pub struct ProjectConfig {
     pub global_keywords: Option<Vec<toml::Spanned<String>>>,
     /// Warnings count as errors.
     pub strict: bool,
-    /// Variant usage logs (JSON Lines, as `kiln::runtime::UsageLog` writes them): the variants
+    /// Variant usage logs (JSON Lines, as `kiln_runtime::UsageLog` writes them): the variants
     /// they name are built besides those the materials use.
     pub variant_logs: Vec<PathBuf>,
     /// A module cache shared between builds and machines (docs/scaling.md).

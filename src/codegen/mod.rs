@@ -79,7 +79,7 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
     out.push_str("];\n");
     let _ = writeln!(
         out,
-        "\n/// The build's manifest and materials, for `kiln::runtime::Library::embedded`.\n\
+        "\n/// The build's manifest and materials, for `kiln_runtime::Library::embedded`.\n\
          pub static MANIFEST_JSON: &str = include_str!({});\npub static MATERIALS_JSON: &str = include_str!({});",
         include(crate::manifest::FILE_NAME),
         include(crate::manifest::MATERIALS_FILE)

@@ -3,8 +3,8 @@
 
 use crate::shaderlab::ast::{AttributeKind, Property};
 
-pub use crate::manifest::{KeywordDrawer, unity_enum_name};
 use crate::manifest::UNITY_ENUMS;
+pub use crate::manifest::{KeywordDrawer, unity_enum_name};
 
 /// The drawer of a property, if it sets keywords.
 pub fn keyword_drawer(property: &Property) -> Option<KeywordDrawer> {

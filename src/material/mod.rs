@@ -225,12 +225,15 @@ pub fn load_material(
 /// as a build resolved them (`materials.json`) and parses none. Any diagnostic refuses it,
 /// warnings too, rendered as a build renders them: `name:line:col`.
 pub fn resolve_for_manifest(manifest: &Manifest, name: &str, text: &str) -> Result<MaterialManifest, String> {
-    let shaders = ShaderEntries::new(manifest.shaders.iter().filter_map(ShaderEntry::from_manifest).collect());
+    let shaders =
+        ShaderEntries::new(manifest.shaders.iter().filter_map(ShaderEntry::from_manifest).collect());
     let mut store = SourceStore::new();
     let file = store.add(name, text.to_string());
     let (material, problems) = load_material(&store, file, &shaders);
     match material {
-        Some(material) if problems.is_empty() => Ok(material.to_manifest(&shaders.entry(material.shader).name)),
+        Some(material) if problems.is_empty() => {
+            Ok(material.to_manifest(&shaders.entry(material.shader).name))
+        }
         _ => Err(crate::diagnostics::render_plain(&store, &problems)),
     }
 }

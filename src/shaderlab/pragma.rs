@@ -14,12 +14,12 @@ pub use crate::manifest::{KeywordKind, KeywordScope, KeywordStage};
 
 /// The suffixes of stage-scoped keyword pragmas (`multi_compile_vertex`), with their stages.
 const STAGE_SUFFIXES: [(&str, KeywordStage); 6] = [
-        ("_vertex", KeywordStage::Vertex),
-        ("_fragment", KeywordStage::Fragment),
-        ("_geometry", KeywordStage::Geometry),
-        ("_hull", KeywordStage::Hull),
-        ("_domain", KeywordStage::Domain),
-        ("_raytracing", KeywordStage::RayTracing),
+    ("_vertex", KeywordStage::Vertex),
+    ("_fragment", KeywordStage::Fragment),
+    ("_geometry", KeywordStage::Geometry),
+    ("_hull", KeywordStage::Hull),
+    ("_domain", KeywordStage::Domain),
+    ("_raytracing", KeywordStage::RayTracing),
 ];
 
 /// One choice of a keyword set: a keyword, or `None` for the all-off choice (`_`).

@@ -31,7 +31,7 @@ const HARNESS: &str = r#"
 {generated_module}
 
 fn device() -> (wgpu::Device, wgpu::Queue) {
-    let adapter = kiln::runtime::adapter(wgpu::Backends::all()).expect("an adapter (lavapipe in CI)");
+    let adapter = kiln_runtime::adapter(wgpu::Backends::all()).expect("an adapter (lavapipe in CI)");
     pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default())).expect("a device")
 }
 
@@ -111,11 +111,11 @@ fn no_hitches(device: &wgpu::Device) -> Result<(), Box<dyn std::error::Error>> {
 #[allow(unused, dead_code)]
 fn ubershader(
     device: &wgpu::Device,
-    material: &kiln::manifest::MaterialManifest,
-    targets: &kiln::runtime::Targets,
+    material: &kiln_runtime::manifest::MaterialManifest,
+    targets: &kiln_runtime::Targets,
     mut render_pass: wgpu::RenderPass<'_>,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let library = || kiln::runtime::Library::embedded(shaders::MANIFEST_JSON, shaders::MATERIALS_JSON, &shaders::PACKS);
+    let library = || kiln_runtime::Library::embedded(shaders::MANIFEST_JSON, shaders::MATERIALS_JSON, &shaders::PACKS);
     {ubershader}
     Ok(())
 }
@@ -176,8 +176,7 @@ fn a_renderer_written_from_the_docs_builds_and_draws() {
     let krate = dir.path().join("my-renderer");
     // Dependencies as the page gives them, kiln's path pointing at this checkout; the harness
     // adds pollster to wait for the adapter.
-    let dependencies =
-        toml[0].replace("path = \"../kiln\"", &format!("path = {:?}", root().display().to_string()));
+    let dependencies = toml[0].replace("path = \"../kiln", &format!("path = \"{}", root().display()));
     let manifest = format!(
         "[package]\nname = \"my-renderer\"\nversion = \"0.1.0\"\nedition = \"2024\"\npublish = false\n\n{}\n\n\
          [dependencies.pollster]\nversion = \"0.4\"\n\n[workspace]\n",

@@ -11,7 +11,8 @@ use std::path::Path;
 /// The build in `output` with every module needing `feature`.
 fn needing(output: &Path, feature: GpuFeature) -> Library {
     let mut manifest: serde_json::Value =
-        serde_json::from_slice(&std::fs::read(output.join("manifest.json")).expect("manifest")).expect("JSON");
+        serde_json::from_slice(&std::fs::read(output.join("manifest.json")).expect("manifest"))
+            .expect("JSON");
     let shaders = manifest["shaders"].as_array_mut().expect("shaders");
     let passes = shaders.iter_mut().flat_map(|shader| shader["passes"].as_array_mut().expect("passes"));
     let mut modules = 0;
@@ -31,7 +32,8 @@ fn needing(output: &Path, feature: GpuFeature) -> Library {
             (format!("modules/{}", entry.file_name().to_string_lossy()), bytes)
         })
         .collect();
-    let packs: Vec<(&str, &'static [u8])> = packs.iter().map(|(path, bytes)| (path.as_str(), *bytes)).collect();
+    let packs: Vec<(&str, &'static [u8])> =
+        packs.iter().map(|(path, bytes)| (path.as_str(), *bytes)).collect();
     Library::embedded(&manifest.to_string(), &materials, &packs).expect("the edited build reads")
 }
 

@@ -63,7 +63,12 @@ fn compiled_outputs_change_only_with_a_new_compiler_revision() {
         ]);
         assert!(run.status.success(), "{fixture}: {}", String::from_utf8_lossy(&run.stderr));
         let manifest = kiln::manifest::Manifest::read(&output).expect("a manifest");
-        written.extend(manifest.files().iter().filter_map(|file| Some(file.path.file_name().split_once('.')?.1.to_string())));
+        written.extend(
+            manifest
+                .files()
+                .iter()
+                .filter_map(|file| Some(file.path.file_name().split_once('.')?.1.to_string())),
+        );
     }
     assert_eq!(written.len(), kiln::manifest::Backend::ALL.len(), "back ends pinned: {written:?}");
     let (compiler, objects) = fingerprint(&cache);

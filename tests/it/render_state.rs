@@ -20,15 +20,12 @@ fn pass(commands: &[&str]) -> PassManifest {
         .map(|c| Command {
             command: store.slice(c.span).trim().to_string(),
             state: c.kind.to_manifest(),
-            properties: vec![PropertyReference {
-                name: "_ZTest".into(),
-                default: serde_json::json!(4.0),
-            }],
+            properties: vec![PropertyReference { name: "_ZTest".into(), default: serde_json::json!(4.0) }],
         })
         .collect();
     // Through JSON, as the runtime reads a manifest.
-    let render_state = serde_json::from_value(serde_json::to_value(&render_state).expect("serializes"))
-        .expect("reads back");
+    let render_state =
+        serde_json::from_value(serde_json::to_value(&render_state).expect("serializes")).expect("reads back");
     PassManifest {
         subshader: 0,
         index: 0,

@@ -211,9 +211,21 @@ fn every_variant_and_preset_of_the_bundled_project_gets_a_pipeline() {
         let presets: Vec<MaterialManifest> = ["Opaque", "Clip", "Fade", "Transparent"]
             .iter()
             .filter_map(|p| {
-                kiln::material::resolve_for_manifest(library.manifest(), p, &format!("shader = {:?}\npreset = {p:?}\n", shader.name)).ok()
+                kiln::material::resolve_for_manifest(
+                    library.manifest(),
+                    p,
+                    &format!("shader = {:?}\npreset = {p:?}\n", shader.name),
+                )
+                .ok()
             })
-            .chain(kiln::material::resolve_for_manifest(library.manifest(), "default", &format!("shader = {:?}\n", shader.name)).ok())
+            .chain(
+                kiln::material::resolve_for_manifest(
+                    library.manifest(),
+                    "default",
+                    &format!("shader = {:?}\n", shader.name),
+                )
+                .ok(),
+            )
             .collect();
         assert!(!presets.is_empty(), "{}", shader.name);
         for pass in &shader.passes {
@@ -283,8 +295,12 @@ fn a_material_file_read_at_run_time_resolves_as_the_build_resolved_it() {
             library.material(name).expect("built")
         );
     }
-    let tinted =
-        kiln::material::resolve_for_manifest(library.manifest(), "t", "shader = \"Test/Blend\"\n[properties]\n_Tint = 1\n").expect("resolves");
+    let tinted = kiln::material::resolve_for_manifest(
+        library.manifest(),
+        "t",
+        "shader = \"Test/Blend\"\n[properties]\n_Tint = 1\n",
+    )
+    .expect("resolves");
     assert_eq!(tinted.keywords, ["_TINT"]);
     let named = library.material("Named").expect("built");
     // A misspelt name is answered with the built material it is close to.
@@ -295,11 +311,18 @@ fn a_material_file_read_at_run_time_resolves_as_the_build_resolved_it() {
         (Some(5.0), Some(0.0), 3000)
     );
     // Refused as a build refuses it, at the line and column in the text.
-    let wrong = kiln::material::resolve_for_manifest(library.manifest(), "w.mat", "shader = \"Test/Blend\"\nkeywords = [\"_NOPE\"]\n");
+    let wrong = kiln::material::resolve_for_manifest(
+        library.manifest(),
+        "w.mat",
+        "shader = \"Test/Blend\"\nkeywords = [\"_NOPE\"]\n",
+    );
     let message = wrong.expect_err("refused").to_string();
     assert!(message.contains("K0507") && message.contains("w.mat:2:13"), "{message}");
-    let wrong =
-        kiln::material::resolve_for_manifest(library.manifest(), "v.mat", "shader = \"Test/Blend\"\n[properties]\n_ZWrite = \"Sideways\"\n");
+    let wrong = kiln::material::resolve_for_manifest(
+        library.manifest(),
+        "v.mat",
+        "shader = \"Test/Blend\"\n[properties]\n_ZWrite = \"Sideways\"\n",
+    );
     let message = wrong.expect_err("refused").to_string();
     assert!(message.contains("v.mat:3:11") && message.contains("one of `Off` or `On`"), "{message}");
     // The generated module embeds the same build.

@@ -36,8 +36,20 @@ fn the_example_renderer_ships_the_run_time_and_no_compiler() {
     // The compiler, its HTTP client and TLS, its parsers, file walker, thread pool, command line
     // and language server.
     let forbidden = [
-        "kiln", "ureq", "rustls", "ring", "sha2", "pest", "toml", "toml_edit", "walkdir", "rayon", "glslang",
-        "clap", "notify", "lsp-server",
+        "kiln",
+        "ureq",
+        "rustls",
+        "ring",
+        "sha2",
+        "pest",
+        "toml",
+        "toml_edit",
+        "walkdir",
+        "rayon",
+        "glslang",
+        "clap",
+        "notify",
+        "lsp-server",
     ];
     let shipped: Vec<&str> = forbidden.iter().copied().filter(|name| packages.contains_key(*name)).collect();
     assert!(shipped.is_empty(), "a game would ship {shipped:?}");

@@ -49,7 +49,11 @@ fn the_ubershader_is_built_and_reflected_beside_the_variants() {
         panic!("the ubershader has both stages")
     };
     for stage in [&vertex, &fragment] {
-        assert_eq!(stage.module.features, [kiln::manifest::GpuFeature::Immediates], "a device needs wgpu's IMMEDIATES");
+        assert_eq!(
+            stage.module.features,
+            [kiln::manifest::GpuFeature::Immediates],
+            "a device needs wgpu's IMMEDIATES"
+        );
         // `_DIM` is read from the immediate data, not an `override`: one pipeline serves both.
         assert!(stage.interface.overrides.is_empty(), "{:?}", stage.interface.overrides);
         assert!(stage.module.spirv.is_some(), "no override: SPIR-V is written");

@@ -83,7 +83,6 @@ pub fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Opt
         .map(|(_, c)| c.to_string())
 }
 
-
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 

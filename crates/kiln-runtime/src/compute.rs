@@ -71,10 +71,7 @@ impl Runtime {
             return Err(RuntimeError::UnknownKernel {
                 shader: shader.to_string(),
                 kernel: request.kernel.to_string(),
-                suggestion: kiln_manifest::closest(
-                    request.kernel,
-                    pass.kernels.iter().map(String::as_str),
-                ),
+                suggestion: kiln_manifest::closest(request.kernel, pass.kernels.iter().map(String::as_str)),
             });
         };
         let module = variant.kernels.get(index).copied().flatten();

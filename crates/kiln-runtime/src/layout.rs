@@ -1,11 +1,11 @@
 //! wgpu layouts from reflection: bind group and pipeline layouts from a pass's layout entries,
 //! vertex buffer layouts from a vertex stage's inputs.
 
+use kiln_manifest::Resource;
 use kiln_manifest::{
     AttributeFormat, BindGroup, LayoutEntry, SampleType, ShaderStage, StorageAccess, TexelFormat,
     ViewDimension,
 };
-use kiln_manifest::Resource;
 
 /// A layout wgpu has no form for.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]

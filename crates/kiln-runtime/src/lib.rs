@@ -21,12 +21,12 @@ mod trace;
 mod ubershader;
 mod uniforms;
 
-/// The schema the run time reads (`manifest.json`, `materials.json`), for a game's own use.
-pub use kiln_manifest as manifest;
-pub use kiln_manifest::{FRAME_GROUP, OBJECT_GROUP};
 pub use adapter::{AdapterError, adapter, gl_adapter};
 pub use compute::{Kernel, KernelRequest};
 pub use driver_cache::CacheFile;
+/// The schema the run time reads (`manifest.json`, `materials.json`), for a game's own use.
+pub use kiln_manifest as manifest;
+pub use kiln_manifest::{FRAME_GROUP, OBJECT_GROUP};
 pub use layout::{LayoutError, PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
 pub use material::{MATERIAL_GROUP, MaterialBindGroup, MaterialTextures};
 pub use pipelines::{Creation, PipelineRequest, Reload, Runtime, Targets, UsageLog, wgpu_feature};
@@ -494,5 +494,4 @@ impl Library {
         let pack = self.packs.get(pass.packs.get(file.pack)?.as_str())?;
         pack.get(file.offset as usize..(file.offset + file.size) as usize)
     }
-
 }

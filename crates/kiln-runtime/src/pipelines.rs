@@ -489,7 +489,8 @@ impl Runtime {
             return Ok(pipeline.clone());
         }
         let stages = [Some(&vertex), fragment.as_ref()];
-        self.check_features(stages.iter().flatten().flat_map(|stage| &stage.module.features)).map_err(layout_error)?;
+        self.check_features(stages.iter().flatten().flat_map(|stage| &stage.module.features))
+            .map_err(layout_error)?;
         let module = |stage: &StageView| {
             let module = self.shader_module(shader, stage).map_err(layout_error)?;
             Ok::<_, RuntimeError>((module, stage.interface.entry_point.clone()))
@@ -648,10 +649,15 @@ impl Runtime {
 
     /// Refuses modules that need a GPU feature the device was not created with, before the
     /// driver sees them (wgpu would fail the pipeline, or a driver take it and draw wrongly).
-    pub(super) fn check_features<'a>(&self, needed: impl IntoIterator<Item = &'a GpuFeature>) -> Result<(), String> {
+    pub(super) fn check_features<'a>(
+        &self,
+        needed: impl IntoIterator<Item = &'a GpuFeature>,
+    ) -> Result<(), String> {
         let device = self.device.features();
         match needed.into_iter().find(|&&feature| !device.contains(wgpu_feature(feature))) {
-            Some(feature) => Err(format!("the variant needs `{feature}`, which the device was not created with")),
+            Some(feature) => {
+                Err(format!("the variant needs `{feature}`, which the device was not created with"))
+            }
             None => Ok(()),
         }
     }

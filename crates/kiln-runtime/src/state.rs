@@ -4,11 +4,11 @@
 //! The manifest holds each command parsed (and as written, for messages). `[_Property]` values
 //! are numbers in Unity's enums (`UnityEngine.Rendering.BlendMode` and its siblings).
 
+use kiln_manifest::unity_enum_name;
 use kiln_manifest::{
     BlendFactor, BlendOperation, CompareFunction, CullMode, PassManifest, StateCommand, StencilField,
     StencilOperation, StencilSetting, StencilValue, Value,
 };
-use kiln_manifest::unity_enum_name;
 
 /// Colour targets wgpu allows a pipeline.
 pub const MAX_TARGETS: usize = 8;

@@ -15,9 +15,9 @@
 
 use kiln::build::VariantSelection;
 use kiln::project::{BuildMode, build_project};
-use kiln_runtime::Runtime;
 use kiln::source::SourceStore;
 use kiln_renderer::{Image, Scene, device, render_frames};
+use kiln_runtime::Runtime;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 

@@ -232,7 +232,8 @@ impl Scene {
     /// The bundled scene, `scene.toml`, as `build.rs` wrote it.
     pub fn bundled() -> Scene {
         // build.rs wrote it from a file it parsed, with this crate's own types.
-        Scene::parse(include_str!(concat!(env!("OUT_DIR"), "/scene.json"))).expect("build.rs writes a scene that parses")
+        Scene::parse(include_str!(concat!(env!("OUT_DIR"), "/scene.json")))
+            .expect("build.rs writes a scene that parses")
     }
 }
 

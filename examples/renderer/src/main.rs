@@ -18,11 +18,11 @@
 //! worker creates it. Run each in its own process, so that neither finds the other's pipelines in
 //! the driver's memory.
 
-use kiln_runtime::{Reload, Runtime};
 use kiln_renderer::{
     Geometry, Scene, Target, compare, device, difference, reference, reference_image, reference_with, render,
     render_with,
 };
+use kiln_runtime::{Reload, Runtime};
 use std::path::{Path, PathBuf};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

@@ -23,7 +23,7 @@ pub struct ProjectArgs {
     /// Write here instead of the project's `output` folder (`check` reads its cache only).
     #[arg(long)]
     pub output: Option<PathBuf>,
-    /// Also build the variants a usage log names (JSON Lines, as `kiln::runtime::UsageLog`
+    /// Also build the variants a usage log names (JSON Lines, as `kiln_runtime::UsageLog`
     /// writes them). Repeatable.
     #[arg(long = "variants-from", value_name = "FILE")]
     pub variants_from: Vec<PathBuf>,
@@ -166,7 +166,7 @@ pub enum Command {
     Cache(CacheCommand),
     /// Build, then rebuild on every change to a file the build read (or a new file where it
     /// looks), printing diagnostics and a summary line per build. A failed build leaves its
-    /// diagnostics in the output folder for a running program (`kiln::runtime`) to report.
+    /// diagnostics in the output folder for a running program (`kiln_runtime`) to report.
     Watch {
         #[command(flatten)]
         project: ProjectArgs,
