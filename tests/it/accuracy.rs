@@ -91,9 +91,12 @@ fn the_f16_form_keeps_three_digits_on_every_hard_case() {
     assert_within(rows, "stable f16", HALF_MAX_RELATIVE);
 }
 
+/// The hard cases are data, pinned: a report compares with an earlier one only if its cases are
+/// the same numbers, so a change to the generator (its seeds, its order, a library's random
+/// stream) shows here as a changed digest, to be pinned on purpose (`UPDATE_EXPECT=1`).
 #[test]
-fn hard_cases_are_generated_the_same_way_every_time() {
-    let (a, b) = (hard_cases(TEST_SAMPLES), hard_cases(TEST_SAMPLES));
+fn hard_cases_are_the_pinned_ones() {
+    let a = hard_cases(TEST_SAMPLES);
     assert_eq!(a.len(), kiln::accuracy::HARD_CASE_SETS);
     assert!(a.iter().all(|set| set.cases.len() == TEST_SAMPLES));
     // A set made alone is the same set, at any sample count.
@@ -102,11 +105,16 @@ fn hard_cases_are_generated_the_same_way_every_time() {
         kiln::accuracy::hard_case_set(11, 10_000).lights.map(|(_, counts)| counts.len()),
         Some(10_000)
     );
-    for (x, y) in a.iter().zip(&b) {
-        assert_eq!(x.name, y.name);
-        assert_eq!(x.cases, y.cases);
+    let digests: String = a
+        .iter()
+        .map(|set| {
+            format!("{} {}\n", set.name, &blake3::hash(format!("{:?}", set.cases).as_bytes()).to_hex()[..16])
+        })
+        .collect();
+    expect_test::expect_file!["../golden/accuracy/hard_cases.txt"].assert_eq(&digests);
+    for set in &a {
         // Inputs are exactly representable in f32, so rounding them is not counted as error.
-        for case in &x.cases {
+        for case in &set.cases {
             assert!(case.surface.normal.iter().all(|&v| f64::from(v as f32) == v));
         }
     }
@@ -180,7 +188,10 @@ fn kiln_accuracy_writes_its_pictures_and_says_what_it_cannot() {
     let refused = crate::support::kiln(&["accuracy", "--samples", "1"]);
     assert_eq!(refused.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&refused.stderr).contains("--samples"));
-    if crate::support::gpu("kiln accuracy's pictures").is_none() {
+    let test = "kiln_accuracy_writes_its_pictures_and_says_what_it_cannot";
+    if !crate::support::full_tier(test, "runs every hard case on the adapter and draws two pictures")
+        || crate::support::gpu("kiln accuracy's pictures").is_none()
+    {
         return;
     }
     let dir = tempfile::tempdir().expect("temp dir");

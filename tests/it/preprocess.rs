@@ -42,6 +42,7 @@ fn every_fixture_variant_preprocesses_to_golden_wgsl_that_naga_accepts() {
             let blocks = program_blocks(&shader, sub, &pass.programs);
             let (program, diagnostics) = load_pass(&mut includes, &mut store, &blocks);
             assert!(diagnostics.is_empty(), "{}", render_plain(&store, &diagnostics));
+            let mut base: Option<String> = None;
             for keywords in combinations(&program.pragmas.variant_sets()) {
                 let refs: Vec<&str> = keywords.iter().map(String::as_str).collect();
                 let out = preprocess(&includes, &store, &program.program, &refs, Stage::Fragment);
@@ -49,22 +50,36 @@ fn every_fixture_variant_preprocesses_to_golden_wgsl_that_naga_accepts() {
                 if let Err(errors) = kiln::compile::check(&out, &store) {
                     panic!("{keywords:?}: {}", render_plain(&store, &errors));
                 }
-                let shown = if keywords.is_empty() { "none".to_string() } else { keywords.join("+") };
                 let stem = path.file_stem().and_then(|s| s.to_str()).expect("stem");
-                let golden = root().join(format!("tests/golden/preprocess/{stem}/{index}.{shown}.wgsl"));
-                let flags = if keywords.is_empty() {
-                    String::new()
-                } else {
-                    format!(" --keywords {}", keywords.join(","))
-                };
-                let header = format!("// kiln preprocess {} --pass {index}{flags}\n", path.display());
                 let map = out.source_map.describe_lines(&store, &out.text);
-                let map: String = map.lines().map(|l| format!("// {l}\n")).collect();
-                let actual = format!(
-                    "{header}{}\n// ---- source map: output lines <- original lines ----\n{map}",
-                    out.text
-                );
-                expect_file![golden].assert_eq(&actual);
+                if keywords.is_empty() {
+                    // The pass's variant without keywords, whole, with its source map.
+                    let header = format!("// kiln preprocess {} --pass {index}\n", path.display());
+                    let commented: String = map.lines().map(|l| format!("// {l}\n")).collect();
+                    let actual = format!(
+                        "{header}{}\n// ---- source map: output lines <- original lines ----\n{commented}",
+                        out.text
+                    );
+                    expect_file![root().join(format!("tests/golden/preprocess/{stem}/{index}.none.wgsl"))]
+                        .assert_eq(&actual);
+                    base = Some(annotated(&out.text, &map));
+                } else {
+                    // Every other variant as what its keywords change: a diff of lines, each with
+                    // the original line it came from, so a golden shows only what a keyword does.
+                    let base = base.as_deref().expect("the variant without keywords comes first");
+                    let header = format!(
+                        "kiln preprocess {} --pass {index} --keywords {}, against {index}.none.wgsl\n",
+                        path.display(),
+                        keywords.join(",")
+                    );
+                    let diff = similar::TextDiff::from_lines(base, &annotated(&out.text, &map))
+                        .unified_diff()
+                        .context_radius(1)
+                        .to_string();
+                    let golden =
+                        format!("tests/golden/preprocess/{stem}/{index}.{}.diff", keywords.join("+"));
+                    expect_file![root().join(golden)].assert_eq(&format!("{header}{diff}"));
+                }
                 checked += 1;
             }
         }
@@ -594,4 +609,30 @@ fn a_shallow_chain_past_the_token_cap_says_tokens_not_depth() {
     let said = preprocess_files(&[("main.wgsl", &text)], &[]);
     assert!(said.contains("error[K0313]") && said.contains("more than 1048576 tokens"), "{said}");
     assert!(!said.contains("levels deep"), "{said}");
+}
+
+/// A stage text's lines, each followed by the original line the source map gives it
+/// (`text  // <- file:line`): two variants' texts then differ only where their keywords do, and
+/// a line moved by an earlier insertion is not a change.
+fn annotated(text: &str, map: &str) -> String {
+    let mut origin: Vec<String> = Vec::new();
+    for entry in map.lines() {
+        let Some((outputs, source)) = entry.split_once(" <- ") else { continue };
+        let (file, lines) = source.rsplit_once(':').unwrap_or((source, ""));
+        let range = |text: &str| {
+            let (first, last) = text.split_once('-').unwrap_or((text, text));
+            (first.parse::<usize>().unwrap_or(0), last.parse::<usize>().unwrap_or(0))
+        };
+        let ((out_first, out_last), (from, _)) = (range(outputs), range(lines));
+        for (n, out) in (out_first.max(1)..=out_last).enumerate() {
+            if origin.len() < out {
+                origin.resize(out, String::new());
+            }
+            origin[out - 1] = format!("{file}:{}", from + n);
+        }
+    }
+    text.lines()
+        .enumerate()
+        .map(|(i, line)| format!("{line}  // <- {}\n", origin.get(i).map_or("", String::as_str)))
+        .collect()
 }

@@ -96,19 +96,25 @@ fn device_or_skip(
     }
 }
 
-/// Whether to run a test that compiles a crate depending on kiln with cargo (a renderer built
-/// from the docs with wgpu, a build script's crate): on 2 cores their first run compiles kiln
-/// and wgpu once more, about 7 minutes. `KILN_CRATE_TESTS=1` (set by CI, implied by
-/// `KILN_REQUIRE_TOOLS=1`) runs them; otherwise they skip with the counted line.
-pub fn crate_tests(test: &str) -> bool {
-    let set = |name| std::env::var(name).as_deref() == Ok("1");
-    let run = set("KILN_CRATE_TESTS") || set("KILN_REQUIRE_TOOLS");
+/// The full tier: `KILN_TESTS=full` (set by `.ci/run`) runs every test CI runs; without it,
+/// `cargo test` is the fast tier, which leaves out the few tests whose cost is size, not
+/// coverage (the public corpora whole, the accuracy pictures, crates compiled on kiln), each
+/// with a counted line saying how to run it.
+pub fn full_tier(test: &str, cost: &str) -> bool {
+    let run = std::env::var("KILN_TESTS").as_deref() == Ok("full");
     if !run {
-        skipped(&format!(
-            "{test}: compiles a crate on kiln (minutes on 2 cores); KILN_CRATE_TESTS=1 runs it"
-        ));
+        skipped(&format!("{test}: {cost}; in the full tier, KILN_TESTS=full runs it"));
     }
     run
+}
+
+/// Whether to run a test that compiles a crate depending on kiln with cargo (a renderer built
+/// from the docs with wgpu, a build script's crate): on 2 cores their first run compiles kiln
+/// and wgpu once more, about 7 minutes. The full tier runs them, and so does
+/// `KILN_CRATE_TESTS=1` alone.
+pub fn crate_tests(test: &str) -> bool {
+    std::env::var("KILN_CRATE_TESTS").as_deref() == Ok("1")
+        || full_tier(test, "compiles a crate on kiln (minutes on 2 cores)")
 }
 
 /// A one-level 2D texture of `size`.

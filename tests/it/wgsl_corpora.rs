@@ -477,6 +477,10 @@ fn naga_s_wgsl_tests_build_through_kiln_as_naga_judges_them() {
 
 #[test]
 fn tint_s_wgsl_tests_build_through_kiln_as_naga_judges_them() {
+    let test = "tint_s_wgsl_tests_build_through_kiln_as_naga_judges_them";
+    if !crate::support::full_tier(test, "builds 1,500 files, minutes in a debug build") {
+        return;
+    }
     check_corpus(&TINT, "tint_s_wgsl_tests_build_through_kiln_as_naga_judges_them", 1500);
 }
 
@@ -528,5 +532,9 @@ fn naga_s_wgsl_tests_come_back_from_kiln_preprocess_token_for_token() {
 
 #[test]
 fn tint_s_wgsl_tests_come_back_from_kiln_preprocess_token_for_token() {
+    let test = "tint_s_wgsl_tests_come_back_from_kiln_preprocess_token_for_token";
+    if !crate::support::full_tier(test, "preprocesses every file, about a minute in a debug build") {
+        return;
+    }
     come_back_token_for_token(&TINT);
 }
