@@ -6,7 +6,9 @@ use crate::support::{build_without_errors, gpu, kiln, root};
 use kiln::accuracy::gpu::Gpu;
 use kiln::build::VariantSelection;
 use kiln::manifest::MaterialManifest;
-use kiln::runtime::{Drawable, Library, PipelineRequest, Reload, Runtime, RuntimeError, Targets, UsageLog};
+use kiln::runtime::{
+    Drawable, Library, ModuleSource, PipelineRequest, Reload, Runtime, RuntimeError, Targets, UsageLog,
+};
 use kiln::source::SourceStore;
 use std::path::Path;
 use wgpu::util::DeviceExt;
@@ -183,6 +185,21 @@ fn presets_blend_and_write_depth_as_their_properties_say() {
             );
         }
         assert_eq!(depth, expected_depth, "{name}: depth");
+    }
+    // On Vulkan the modules are handed to wgpu as SPIR-V; as WGSL they draw the same pixels.
+    assert_eq!(runtime.module_source(), ModuleSource::for_device(&gpu.device));
+    let as_wgsl =
+        Runtime::open(&gpu.device, output.path()).expect("opens").with_module_source(ModuleSource::Wgsl);
+    let as_spirv =
+        Runtime::open(&gpu.device, output.path()).expect("opens").with_module_source(ModuleSource::Spirv);
+    for (name, _, _) in cases {
+        let material = runtime.library().material(name).expect("built material").clone();
+        let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
+        assert_eq!(
+            draw(&as_wgsl, &gpu, &material, &keywords).expect("draws"),
+            draw(&as_spirv, &gpu, &material, &keywords).expect("draws"),
+            "{name}: WGSL and SPIR-V modules draw alike"
+        );
     }
     // A pipeline is created once per distinct (variant, state, targets): asking again reuses it.
     let created = runtime.pipelines_created();
@@ -733,18 +750,34 @@ fn a_module_changed_since_the_build_never_reaches_the_driver() {
     let output = dir.path().join("out");
     built(&root().join("fixtures/runtime"), &output);
     let manifest = kiln::manifest::Manifest::read(&output).expect("manifest");
-    for file in manifest.files().into_iter().filter(|f| f.path.as_str().ends_with(".wgsl.pack")) {
-        let path = output.join(&file.path);
-        let mut bytes = std::fs::read(&path).expect("pack");
-        let module = file.offset as usize..(file.offset + file.size) as usize;
-        let letter = module.clone().rev().find(|&at| bytes[at].is_ascii_alphabetic()).expect("a letter");
-        bytes[letter] ^= 0x20;
-        std::fs::write(&path, bytes).expect("write");
-    }
-    let runtime = Runtime::open(&gpu.device, &output).expect("opens");
+    // A letter's case in each module's text, then a bit of each module's last SPIR-V word.
+    let damage = |pack_suffix: &str| {
+        for file in manifest.files().into_iter().filter(|f| f.path.as_str().ends_with(pack_suffix)) {
+            let path = output.join(&file.path);
+            let mut bytes = std::fs::read(&path).expect("pack");
+            let module = file.offset as usize..(file.offset + file.size) as usize;
+            let at = if pack_suffix == ".wgsl.pack" {
+                module.clone().rev().find(|&at| bytes[at].is_ascii_alphabetic()).expect("a letter")
+            } else {
+                module.end - 1
+            };
+            bytes[at] ^= if pack_suffix == ".wgsl.pack" { 0x20 } else { 0x01 };
+            std::fs::write(&path, bytes).expect("write");
+        }
+    };
+    damage(".wgsl.pack");
+    // Its modules have no overrides: a runtime handing the device SPIR-V never reads the WGSL.
+    let runtime = Runtime::open(&gpu.device, &output).expect("opens").with_module_source(ModuleSource::Spirv);
     let material = runtime.library().material(PRESETS[0]).expect("built").clone();
     let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
-    let refused = draw(&runtime, &gpu, &material, &keywords).expect_err("a changed module was drawn");
-    assert!(refused.to_string().contains("not what the manifest names"), "{refused}");
-    assert_eq!(runtime.pipelines_created(), 0);
+    draw(&runtime, &gpu, &material, &keywords).expect("the SPIR-V is intact");
+    damage(".spv.pack");
+    for source in [ModuleSource::Spirv, ModuleSource::Wgsl] {
+        let runtime = Runtime::open(&gpu.device, &output).expect("opens").with_module_source(source);
+        let material = runtime.library().material(PRESETS[0]).expect("built").clone();
+        let keywords: Vec<&str> = material.keywords.iter().map(String::as_str).collect();
+        let refused = draw(&runtime, &gpu, &material, &keywords).expect_err("a changed module was drawn");
+        assert!(refused.to_string().contains("not what the manifest names"), "{source:?}: {refused}");
+        assert_eq!(runtime.pipelines_created(), 0);
+    }
 }

@@ -53,10 +53,18 @@ fn the_example_renderer_ships_the_run_time_and_no_compiler() {
     ];
     let shipped: Vec<&str> = forbidden.iter().copied().filter(|name| packages.contains_key(*name)).collect();
     assert!(shipped.is_empty(), "a game would ship {shipped:?}");
-    // naga is wgpu's: no front end but the WGSL one wgpu enables for itself.
+    // naga is wgpu's: no front end but those wgpu's own features turn on (WGSL, and SPIR-V,
+    // which the run time hands wgpu on Vulkan).
     let naga = packages.get("naga").expect("wgpu brings naga");
-    let front_ends: Vec<&String> = naga.iter().filter(|f| f.ends_with("-in")).collect();
-    assert_eq!(front_ends, ["wgsl-in"], "naga's features in the renderer: {naga:?}");
+    let wgpu = &packages["wgpu"];
+    let front_ends: Vec<&str> = naga.iter().map(String::as_str).filter(|f| f.ends_with("-in")).collect();
+    let wgpu_s: Vec<&str> = [("glsl", "glsl-in"), ("spirv", "spv-in"), ("wgsl", "wgsl-in")]
+        .into_iter()
+        .filter(|(feature, _)| wgpu.iter().any(|f| f == feature))
+        .map(|(_, front_end)| front_end)
+        .collect();
+    assert_eq!(front_ends, wgpu_s, "naga's features in the renderer: {naga:?}; wgpu's: {wgpu:?}");
+    assert!(!front_ends.contains(&"glsl-in"), "{front_ends:?}");
     // And the run time's own dependencies are few: wgpu's tree and a handful beside it.
     let runtime = normal_tree("kiln-runtime");
     let wgpu = normal_tree("wgpu");

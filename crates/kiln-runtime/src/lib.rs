@@ -29,7 +29,9 @@ pub use kiln_manifest as manifest;
 pub use kiln_manifest::{FRAME_GROUP, OBJECT_GROUP};
 pub use layout::{LayoutError, PassLayout, VertexBuffer, VertexLayout, bind_group_layout_entry};
 pub use material::{MATERIAL_GROUP, MaterialBindGroup, MaterialTextures};
-pub use pipelines::{Creation, PipelineRequest, Reload, Runtime, Targets, UsageLog, wgpu_feature};
+pub use pipelines::{
+    Creation, ModuleSource, PipelineRequest, Reload, Runtime, Targets, UsageLog, wgpu_feature,
+};
 pub use state::{
     MAX_TARGETS, PassState, RenderState, StateError, TargetState, resolve as resolve_render_state,
 };

@@ -6,7 +6,9 @@ use super::layout::{PassLayout, VertexLayout};
 use super::overrides::{ConstantRequest, stage_constants};
 use super::trace::{PipelineTrace, TRACE_VERSION, TraceEntry, TracedPipeline};
 use super::{Library, PassId, RuntimeError, VariantId};
-use kiln_manifest::{AttributeFormat, ERRORS_FILE, FILE_NAME, GpuFeature, MaterialManifest, StageView};
+use kiln_manifest::{
+    AttributeFormat, ERRORS_FILE, FILE_NAME, GpuFeature, MaterialManifest, ModuleFile, StageView,
+};
 use std::collections::{HashMap, HashSet};
 use std::hash::{Hash, Hasher};
 use std::io::Write as _;
@@ -185,6 +187,8 @@ pub struct Runtime {
     /// Held while an ubershader's pipeline is made: warm-up threads asking for one state's
     /// make it once.
     pub(super) making_ubershader: Mutex<()>,
+    /// Which form of its modules the device is handed.
+    module_source: ModuleSource,
 }
 
 /// A pipeline created after warm-up: what a trace should have had.
@@ -214,7 +218,20 @@ impl Runtime {
             wgpu_cache: None,
             cache_file: None,
             making_ubershader: Mutex::new(()),
+            module_source: ModuleSource::for_device(device),
         }
+    }
+
+    /// The form of its modules this runtime hands the device ([`ModuleSource::for_device`]
+    /// unless [`Runtime::with_module_source`] chose).
+    pub fn module_source(&self) -> ModuleSource {
+        self.module_source
+    }
+
+    /// This runtime, handing the device its modules in `source`'s form.
+    pub fn with_module_source(mut self, source: ModuleSource) -> Runtime {
+        self.module_source = source;
+        self
     }
 
     /// A runtime over the build in an output folder, which [`Runtime::reload`] watches.
@@ -662,7 +679,9 @@ impl Runtime {
         }
     }
 
-    /// A stage's WGSL module, created once per module (by its hash) and kept across pipelines.
+    /// A stage's module, created once per module file (by its hash) and kept across pipelines:
+    /// its SPIR-V where [`Runtime::module_source`] says so and the module has no `override`s
+    /// (wgpu reads SPIR-V in about a third of WGSL's time, docs/performance.md), else its WGSL.
     /// Its bytes are checked against the manifest's hash before the driver sees them, once, on
     /// first use: whatever [`Library::open`] read, a changed module never becomes a pipeline.
     pub(super) fn shader_module(
@@ -670,20 +689,75 @@ impl Runtime {
         shader: &str,
         stage: &StageView,
     ) -> Result<wgpu::ShaderModule, String> {
+        let spirv = (self.module_source == ModuleSource::Spirv && stage.interface.overrides.is_empty())
+            .then_some(stage.module.spirv.as_ref())
+            .flatten();
+        if let Some(file) = spirv {
+            if let Some(module) = self.made().modules.get(&file.hash) {
+                return Ok(module.clone());
+            }
+            let bytes = self.checked_bytes(stage, file)?;
+            if bytes.len() % 4 != 0 {
+                return Err("its SPIR-V is not whole words: build again".into());
+            }
+            let words = bytes.chunks_exact(4).map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]]));
+            let source = wgpu::ShaderSource::SpirV(words.collect::<Vec<u32>>().into());
+            // SPIR-V that wgpu's reader refuses (none the tests build) falls back to the WGSL;
+            // bytes that fail their hash above never do.
+            if let Ok(module) = validated(&self.device, |device| create_module(device, shader, stage, source))
+            {
+                return Ok(self.made().modules.entry(file.hash.clone()).or_insert(module).clone());
+            }
+        }
         let file = stage.module.wgsl.as_ref().ok_or("the build has no WGSL for it")?;
         if let Some(module) = self.made().modules.get(&file.hash) {
             return Ok(module.clone());
         }
+        let text = std::str::from_utf8(self.checked_bytes(stage, file)?).map_err(|e| e.to_string())?;
+        let module = create_module(&self.device, shader, stage, wgpu::ShaderSource::Wgsl(text.into()));
+        Ok(self.made().modules.entry(file.hash.clone()).or_insert(module).clone())
+    }
+
+    /// A module file's bytes, once they are what the manifest names.
+    fn checked_bytes<'a>(&'a self, stage: &StageView, file: &ModuleFile) -> Result<&'a [u8], String> {
         let bytes = self.library.bytes(stage.pass, file).ok_or("its module is missing from its pack")?;
         if blake3::hash(bytes).to_hex()[..32] != file.hash {
             return Err("its module's bytes are not what the manifest names (the build was changed since): build again".into());
         }
-        let text = std::str::from_utf8(bytes).map_err(|e| e.to_string())?;
-        let module = self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some(&format!("{shader} {}", stage.interface.entry_point)),
-            source: wgpu::ShaderSource::Wgsl(text.into()),
-        });
-        Ok(self.made().modules.entry(file.hash.clone()).or_insert(module).clone())
+        Ok(bytes)
+    }
+}
+
+/// A module labelled with its shader and entry point.
+fn create_module(
+    device: &wgpu::Device,
+    shader: &str,
+    stage: &StageView,
+    source: wgpu::ShaderSource,
+) -> wgpu::ShaderModule {
+    let label = format!("{shader} {}", stage.interface.entry_point);
+    device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(&label), source })
+}
+
+/// Which form of a stage module the run time hands wgpu: both are in a build that writes both
+/// back ends (the default), and both go through naga inside wgpu before a driver sees them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ModuleSource {
+    /// The WGSL: every back end, the web included.
+    Wgsl,
+    /// The SPIR-V, for modules without `override`s (naga's SPIR-V reader takes their values
+    /// as specialisation constants, which the run time does not set), the WGSL for the rest.
+    Spirv,
+}
+
+impl ModuleSource {
+    /// What a device is handed by default: SPIR-V on Vulkan, the back end it is written for,
+    /// WGSL elsewhere.
+    pub fn for_device(device: &wgpu::Device) -> ModuleSource {
+        match device.adapter_info().backend {
+            wgpu::Backend::Vulkan => ModuleSource::Spirv,
+            _ => ModuleSource::Wgsl,
+        }
     }
 }
 
