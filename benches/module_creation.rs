@@ -6,7 +6,7 @@
 //!
 //! `cargo bench --bench module_creation -- [PROJECT] [ROUNDS]` (default: fixtures/project, 9).
 
-use kiln::build::VariantSelection;
+use kiln::orchestrate::VariantSelection;
 use kiln::project::{BuildMode, build_project};
 use kiln::runtime::Library;
 use kiln::source::SourceStore;
@@ -28,7 +28,8 @@ fn main() {
         unused_shaders: VariantSelection::All { limit: 4096 },
         ..BuildMode::default()
     };
-    let (result, _) = build_project(&mut store, std::slice::from_ref(&project), &mode, &|_, _| {}).expect("project");
+    let (result, _) =
+        build_project(&mut store, std::slice::from_ref(&project), &mode, &|_, _| {}).expect("project");
     assert!(!kiln::diagnostics::has_errors(&result.diagnostics), "the project builds");
     let library = Library::open(output.path()).expect("the build opens");
     let mut modules: Vec<(String, Vec<u32>)> = Vec::new();

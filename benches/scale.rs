@@ -12,7 +12,7 @@
 //! same kernel texts. Both sides allocate with mimalloc, as the CLI does. Results and how to read
 //! them: docs/performance.md.
 
-use kiln::build::ParseScope;
+use kiln::orchestrate::ParseScope;
 use kiln::preprocess::Stage;
 use kiln::project::{BuildMode, build_project};
 use kiln::source::SourceStore;
@@ -61,7 +61,7 @@ fn kiln_build(
     output: &Path,
     write: bool,
     parse: Option<ParseScope>,
-) -> (kiln::build::BuildSummary, Duration) {
+) -> (kiln::orchestrate::BuildSummary, Duration) {
     let started = Instant::now();
     let mut store = SourceStore::new();
     let mode = BuildMode { write, output: Some(output.to_path_buf()), parse, ..BuildMode::default() };
@@ -350,7 +350,7 @@ fn main() {
         assert_eq!(cold.modules, modules, "kiln compiles the texts naga was given");
         assert_eq!(cold.shared, 0, "each shader's stage texts are its own");
         reset_peak();
-        let noops: Vec<(kiln::build::BuildSummary, Duration)> =
+        let noops: Vec<(kiln::orchestrate::BuildSummary, Duration)> =
             (0..3).map(|_| kiln_build(&project, &output, true, None)).collect();
         let noop_memory = peak_mib();
         let manifest_bytes = std::fs::metadata(output.join("manifest.json")).expect("manifest").len();

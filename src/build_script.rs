@@ -4,9 +4,9 @@
 //!
 //! [`Build::run`] is the one place in the library that prints: to stdout, for cargo.
 
-use crate::build::BuildSummary;
 use crate::diagnostics::{self, Diagnostic, Severity, render_plain};
 use crate::manifest::{FILE_NAME, Manifest};
+use crate::orchestrate::BuildSummary;
 use crate::project::{BuildMode, ProjectError, build_project};
 use crate::source::SourceStore;
 use crate::source::relative_to;

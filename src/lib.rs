@@ -37,8 +37,6 @@
 
 #[doc(hidden)]
 pub mod accuracy;
-#[doc(hidden)]
-pub mod build;
 mod build_script;
 #[doc(hidden)]
 pub mod catalog;
@@ -56,6 +54,8 @@ pub mod listing;
 #[doc(hidden)]
 #[cfg(feature = "lsp")]
 pub mod lsp;
+#[doc(hidden)]
+pub mod orchestrate;
 pub use kiln_manifest as manifest;
 #[doc(hidden)]
 pub mod material;

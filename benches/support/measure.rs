@@ -1,8 +1,8 @@
 //! What the benchmarks that set kiln beside other tools share: medians and ratio ranges over
 //! interleaved rounds, and the stage texts a build compiles (what a tool alone is handed).
 
-use kiln::build::stage_texts;
 use kiln::catalog::catalog;
+use kiln::orchestrate::stage_texts;
 use kiln::preprocess::{Includes, Stage};
 use kiln::project::{load_files, open_workspace};
 use kiln::source::SourceStore;

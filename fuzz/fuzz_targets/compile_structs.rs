@@ -7,7 +7,7 @@
 #![no_main]
 
 use kiln::catalog::CatalogInput;
-use kiln::build::BuildOptions;
+use kiln::orchestrate::BuildOptions;
 use kiln::preprocess::{IncludeConfig, Includes};
 use kiln::source::SourceStore;
 use libfuzzer_sys::fuzz_target;
@@ -119,7 +119,7 @@ fuzz_target!(|data: &[u8]| {
     };
     let (catalog, _) = kiln::catalog::catalog(&mut store, &mut includes, &input);
     let options = BuildOptions::one_off(".".into(), "/nonexistent/kiln-fuzz".into(), false);
-    let result = kiln::build::build(&store, &includes, &catalog, &options, &|_, _| {});
+    let result = kiln::orchestrate::build(&store, &includes, &catalog, &options, &|_, _| {});
     if let Some(found) = result.diagnostics.iter().find(|d| d.code == "K0416" || d.code == "K0409") {
         panic!("{}\n{text}", kiln::diagnostics::render_plain(&store, std::slice::from_ref(found)));
     }

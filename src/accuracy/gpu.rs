@@ -8,8 +8,8 @@ use super::{
     Case, CaseSet, Formulation, HARD_CASE_SETS, Row, TEST_SAMPLES, Timing, hard_case_set, reference,
     reference_lights, stats,
 };
-use crate::build::{BuildOptions, build};
 use crate::catalog::{CatalogInput, ListedVariant, catalog};
+use crate::orchestrate::{BuildOptions, build};
 use crate::preprocess::{IncludeConfig, Includes};
 use crate::source::{SourceStore, Span};
 use rayon::prelude::*;

@@ -18,7 +18,7 @@
 //! - `panics.rs`: a panic while compiling one module caught as a value (K0416).
 //! - `spirv.rs`: corrections to naga's SPIR-V where it breaks a Vulkan rule (`SampleMask`).
 //!
-//! What to compile, and where modules are kept, is the build layer's (`crate::build`,
+//! What to compile, and where modules are kept, is the build layer's (`crate::orchestrate`,
 //! `crate::store`).
 
 pub mod bind;

@@ -5,11 +5,11 @@ use super::ProjectError;
 use super::workspace::{
     Workspace, include_config, load_files, load_variant_logs, open_workspace, unknown_group_names,
 };
-use crate::build::{BuildOptions, BuildResult, Cancel, ParseScope, Part, VariantSelection, build};
 use crate::catalog::{Catalog, CatalogInput, catalog};
 use crate::compile::glslang::Glslang;
 use crate::diagnostics::{self, Diagnostic};
 use crate::manifest::Backend;
+use crate::orchestrate::{BuildOptions, BuildResult, Cancel, ParseScope, Part, VariantSelection, build};
 use crate::preprocess::Includes;
 use crate::source::{SourceStore, Span, Spanned};
 use crate::store::remote::{Credentials, RemoteConfig, RemoteMode, UrlSource, check_url, credentials_for};
@@ -123,7 +123,7 @@ pub fn build_part(
     let _lock = mode.write.then(|| crate::store::OutputLock::acquire(&options.output));
     if diagnostics.is_empty()
         && !matches!(options.part, Part::Shard(_))
-        && let Some(result) = crate::build::unchanged(store, &options)
+        && let Some(result) = crate::orchestrate::unchanged(store, &options)
     {
         return Ok((result, diagnostics));
     }
@@ -151,7 +151,7 @@ pub struct Checked {
     /// The manifest a build would write (`None` when a stage failed).
     pub manifest: Option<crate::manifest::Manifest>,
     /// What the check compiled and what it took from caches.
-    pub summary: crate::build::BuildSummary,
+    pub summary: crate::orchestrate::BuildSummary,
     /// Everything `kiln check` reports.
     pub diagnostics: Vec<Diagnostic>,
 }
@@ -357,8 +357,8 @@ pub fn merge_shards(
     mode: &BuildMode,
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
     let records = || {
-        let (records, inputs) = crate::build::shard::check_shards(shards)?;
-        Ok::<_, ProjectError>(crate::build::Merge {
+        let (records, inputs) = crate::orchestrate::shard::check_shards(shards)?;
+        Ok::<_, ProjectError>(crate::orchestrate::Merge {
             shards: shards.iter().cloned().zip(records).collect(),
             inputs,
         })
@@ -384,7 +384,7 @@ pub fn merge_shards(
     let Given { workspace, mut diagnostics, options, .. } = given;
     // As a build holds its output folder: another build or merge into it waits.
     let _lock = crate::store::OutputLock::acquire(&options.output);
-    let result = crate::build::merge(store, &options, &diagnostics, &merge, read);
+    let result = crate::orchestrate::merge(store, &options, &diagnostics, &merge, read);
     // The shards' parts are many small strings: freeing them would hold up the answer for a
     // tenth of a second at 100,000 variants, which a process about to exit need not wait for.
     std::thread::spawn(move || drop(merge));

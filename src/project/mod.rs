@@ -3,14 +3,14 @@
 //! `jobs` builds, checks, merges, watches and lists, `variant` preprocesses and reflects one
 //! variant, `materials` writes material files. Files are read here and through
 //! [`SourceStore`](crate::source::SourceStore) only (stages get file ids, never paths); the build's outputs are written by `crate::store` and
-//! `crate::build`.
+//! `crate::orchestrate`.
 
 mod jobs;
 mod materials;
 mod variant;
 mod workspace;
 
-pub use crate::build::{Cancel, Part};
+pub use crate::orchestrate::{Cancel, Part};
 pub use jobs::{
     BuildMode, Checked, build_part, build_project, check_project, list_project, merge_shards, watch_build,
 };
@@ -60,5 +60,5 @@ pub enum ProjectError {
     #[error("`{}` is not a .shader or .compute file: give the shader that holds the pass", .0.display())]
     NotAShader(PathBuf),
     #[error("cannot merge: {0}")]
-    Shards(#[from] crate::build::shard::ShardError),
+    Shards(#[from] crate::orchestrate::shard::ShardError),
 }

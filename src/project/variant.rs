@@ -4,11 +4,11 @@
 use super::ProjectError;
 use super::materials::config_folder_above;
 use super::workspace::{SHADER_EXTENSIONS, bind_group_names, include_config};
-use crate::build::{BuildOptions, ParseScope, build};
 use crate::catalog::{Catalog, CatalogInput, CatalogProgram, catalog};
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{Variant, select_variant};
 use crate::manifest::StageView;
+use crate::orchestrate::{BuildOptions, ParseScope, build};
 use crate::preprocess::{Includes, Preprocessed, Stage, preprocess_with};
 use crate::reflect::UniformBlock;
 use crate::shaderlab::ast::ProgramLanguage;

@@ -4,9 +4,9 @@
 
 use crate::support::{fixture_files, kiln, root, verified_manifest};
 use expect_test::expect_file;
-use kiln::build::{BuildResult, VariantSelection};
 use kiln::diagnostics::{Diagnostic, has_errors, render_plain};
 use kiln::manifest::Manifest;
+use kiln::orchestrate::{BuildResult, VariantSelection};
 use kiln::project::{BuildMode, build_project};
 use kiln::source::SourceStore;
 use naga::valid::{Capabilities, ValidationFlags};

@@ -260,7 +260,7 @@ proptest::proptest! {
             }
             let shard = tempfile::tempdir().expect("temp dir");
             std::fs::write(shard.path().join("shard.json"), text).expect("write");
-            if let Ok(record) = kiln::build::shard::ShardRecord::read(shard.path()) {
+            if let Ok(record) = kiln::orchestrate::shard::ShardRecord::read(shard.path()) {
                 for pass in &record.passes {
                     let entry = kiln::store::pass_index_path(&pass.key);
                     proptest::prop_assert!(inside(&shard.path().join(entry), shard.path()), "{}", pass.key.as_str());

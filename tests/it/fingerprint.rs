@@ -85,7 +85,7 @@ fn compiled_outputs_change_only_with_a_new_compiler_revision() {
             changed.is_empty(),
             "{} cache objects hold other bytes than `{compiler}` put under the same keys ({changed:?}): \
              a shared cache filled before this change would serve them stale. Raise COMPILER_REVISION \
-             (src/build/mod.rs), then pin the new outputs: UPDATE_EXPECT=1 cargo test --test it fingerprint",
+             (src/orchestrate/mod.rs), then pin the new outputs: UPDATE_EXPECT=1 cargo test --test it fingerprint",
             changed.len()
         );
     }

@@ -4,8 +4,8 @@
 //! WGSL twin's on the GPU (lavapipe in CI).
 
 use crate::support::{build_without_errors, gpu, kiln, root, tool, verified_manifest};
-use kiln::build::VariantSelection;
 use kiln::manifest::{Manifest, PassManifest};
+use kiln::orchestrate::VariantSelection;
 use kiln::project::{BuildMode, build_project};
 use kiln::runtime::{Drawable, PipelineRequest, Runtime};
 use kiln::source::SourceStore;

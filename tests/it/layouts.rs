@@ -10,8 +10,8 @@
 //! scalar back through kiln's WGSL.
 
 use crate::support::{gpu, tool};
-use kiln::build::VariantSelection;
 use kiln::manifest::Manifest;
+use kiln::orchestrate::VariantSelection;
 use kiln::project::{BuildMode, build_project};
 use kiln::source::SourceStore;
 use std::collections::BTreeMap;

@@ -4,7 +4,7 @@
 //! with canonical ids where naga's SPIR-V declares types in another order.
 
 use crate::support::{root, tool};
-use kiln::build::{BuildSummary, ParseScope, VariantSelection};
+use kiln::orchestrate::{BuildSummary, ParseScope, VariantSelection};
 use kiln::project::{BuildMode, build_project};
 use kiln::source::SourceStore;
 use std::collections::HashMap;

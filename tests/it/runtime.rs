@@ -4,8 +4,8 @@
 
 use crate::support::{build_without_errors, gpu, kiln, root};
 use kiln::accuracy::gpu::Gpu;
-use kiln::build::VariantSelection;
 use kiln::manifest::MaterialManifest;
+use kiln::orchestrate::VariantSelection;
 use kiln::runtime::{
     Drawable, Library, ModuleSource, PipelineRequest, Reload, Runtime, RuntimeError, Targets, UsageLog,
 };

@@ -115,7 +115,7 @@ fn a_deleted_include_is_reported_not_skipped_by_the_no_op_check() {
     std::fs::remove_file(project.join("Tint.wgsl")).expect("delete an include");
     let mut store = kiln::source::SourceStore::new();
     let mode = kiln::project::BuildMode {
-        unused_shaders: kiln::build::VariantSelection::Used,
+        unused_shaders: kiln::orchestrate::VariantSelection::Used,
         ..kiln::project::BuildMode::default()
     };
     let (result, mut diagnostics) =

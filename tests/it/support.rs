@@ -1,7 +1,7 @@
 //! Shared helpers: paths into the repository, loading fixtures, running the `kiln` binary.
 
-use kiln::build::VariantSelection;
 use kiln::diagnostics::Diagnostic;
+use kiln::orchestrate::VariantSelection;
 use kiln::project::{BuildMode, build_project};
 use kiln::source::{FileId, SourceStore};
 use std::path::{Path, PathBuf};
@@ -207,7 +207,7 @@ pub fn synthetic_project(dir: &Path, materials: usize) {
 }
 
 /// Builds a project that must build without a diagnostic, into `output` or its own output folder.
-pub fn build_clean(project: &Path, output: Option<&Path>) -> kiln::build::BuildSummary {
+pub fn build_clean(project: &Path, output: Option<&Path>) -> kiln::orchestrate::BuildSummary {
     let (summary, diagnostics) = build_without_errors(project, output, VariantSelection::Used);
     assert!(diagnostics.is_empty(), "{diagnostics}");
     summary
@@ -218,7 +218,7 @@ pub fn build_without_errors(
     project: &Path,
     output: Option<&Path>,
     unused_shaders: VariantSelection,
-) -> (kiln::build::BuildSummary, String) {
+) -> (kiln::orchestrate::BuildSummary, String) {
     let mut store = SourceStore::new();
     let mode = BuildMode { output: output.map(Path::to_path_buf), unused_shaders, ..BuildMode::default() };
     let (result, mut diagnostics) =

@@ -6,7 +6,7 @@
 
 use crate::reach::build_with;
 use crate::support::{root, synthetic_project, tree};
-use kiln::build::{BuildSummary, ParseScope, VariantSelection};
+use kiln::orchestrate::{BuildSummary, ParseScope, VariantSelection};
 use std::fmt::Write as _;
 use std::path::Path;
 

@@ -48,7 +48,7 @@ fn every_real_unity_shader_lists_without_an_error() {
 /// named diagnostic at a pass, none a panic.
 #[test]
 fn unity_s_built_in_vertex_and_fragment_passes_build_with_their_own_cg_includes() {
-    use kiln::build::VariantSelection;
+    use kiln::orchestrate::VariantSelection;
     use kiln::project::{BuildMode, build_project};
     use kiln::source::SourceStore;
     use std::collections::{BTreeMap, BTreeSet};

@@ -8,7 +8,7 @@
 //! from `kiln preprocess` token for token.
 
 use crate::support::{kiln, root, tool};
-use kiln::build::{ParseScope, VariantSelection};
+use kiln::orchestrate::{ParseScope, VariantSelection};
 use kiln::project::{BuildMode, build_project};
 use kiln::source::SourceStore;
 use naga::valid::{Capabilities, ValidationFlags, Validator};

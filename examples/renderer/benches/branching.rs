@@ -13,7 +13,7 @@
 //!
 //! `cargo bench -p kiln-renderer --bench branching [-- FRAMES WIDTH HEIGHT]`
 
-use kiln::build::VariantSelection;
+use kiln::orchestrate::VariantSelection;
 use kiln::project::{BuildMode, build_project};
 use kiln::source::SourceStore;
 use kiln_renderer::{Image, Scene, device, render_frames};

@@ -86,8 +86,8 @@ impl ProjectArgs {
             remote_cache: self.remote_cache,
             backends: self.backends,
             parse: match (self.parse_whole, self.parse_alone) {
-                (true, _) => Some(kiln::build::ParseScope::Whole),
-                (false, true) => Some(kiln::build::ParseScope::Reachable),
+                (true, _) => Some(kiln::orchestrate::ParseScope::Whole),
+                (false, true) => Some(kiln::orchestrate::ParseScope::Reachable),
                 (false, false) => None,
             },
             remote_cache_mode: self.remote_cache_mode.map(|mode| match mode {

@@ -3,8 +3,8 @@
 
 use crate::args::{Format, ProjectArgs};
 use crate::output::{exit_code, exit_leaving, host_failure, print_out, report};
-use kiln::build::VariantSelection;
 use kiln::diagnostics;
+use kiln::orchestrate::VariantSelection;
 use kiln::project::{BuildMode, Part};
 use kiln::source::SourceStore;
 use std::io::IsTerminal;
@@ -15,7 +15,7 @@ use std::process::ExitCode;
 pub fn build(project: ProjectArgs, pretty: bool, shard: Option<String>) -> ExitCode {
     let (project, mode) = project.mode();
     let mode = BuildMode { pretty_manifest: pretty, ..mode };
-    let part = match shard.as_deref().map(kiln::build::shard::Shard::parse) {
+    let part = match shard.as_deref().map(kiln::orchestrate::shard::Shard::parse) {
         None => Part::Whole,
         Some(Ok(shard)) => Part::Shard(shard),
         Some(Err(error)) => return host_failure(&error.to_string()),
@@ -101,7 +101,7 @@ fn run(project: PathBuf, mode: BuildMode, format: Format, part: Part) -> ExitCod
 }
 
 /// The closing line of a build (and the note about skipped shaders).
-fn print_summary(s: &kiln::build::BuildSummary, written_to: Option<&std::path::Path>, errors: bool) {
+fn print_summary(s: &kiln::orchestrate::BuildSummary, written_to: Option<&std::path::Path>, errors: bool) {
     let write = written_to.is_some();
     let verb = if write { "built" } else { "checked" };
     let counted =
