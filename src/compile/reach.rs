@@ -10,6 +10,9 @@
 //! know; a name a local variable shadows counts as a use of the global (members, attribute names
 //! and names being declared are not uses). A text the scan cannot split (an unclosed body, a name
 //! declared twice, a byte that was not UTF-8) is not cut at all: naga reports it whole.
+//!
+//! Long because a scanner is: the token loop, the declaration forms and the name closure share
+//! one token stream and its tables, and `together` reads the scan's declarations as they are.
 
 use crate::preprocess::SourceMap;
 use std::collections::HashMap;

@@ -48,7 +48,9 @@ fn the_example_project_builds_with_a_golden_manifest() {
     assert!(diagnostics.is_empty(), "{}", render_plain(&store, &diagnostics));
     assert_eq!((result.summary.shaders, result.summary.passes, result.summary.variants), (3, 3, 10));
     let text = std::fs::read_to_string(output.path().join("manifest.json")).expect("manifest");
-    expect_file![root().join("tests/golden/build/manifest.json")].assert_eq(&text);
+    // Pinned in a form to review: what fits a line is on one.
+    let value: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    expect_file![root().join("tests/golden/build/manifest.json")].assert_eq(&(reviewable(&value, 0) + "\n"));
 
     // By default the same manifest is written compact, on one line.
     let compact = tempfile::tempdir().expect("temp dir");
@@ -65,6 +67,32 @@ fn the_example_project_builds_with_a_golden_manifest() {
 
     // Every module named in the manifest is in its pack with its size and hash.
     verified_manifest(output.path());
+}
+
+/// JSON indented as `--pretty-manifest` writes it, but with every value that fits in 100
+/// columns on one line: the same content in half the lines.
+fn reviewable(value: &serde_json::Value, depth: usize) -> String {
+    let one_line = serde_json::to_string(value).expect("JSON");
+    let indent = "  ".repeat(depth + 1);
+    let close = "  ".repeat(depth);
+    match value {
+        _ if one_line.len() + indent.len() <= 100 => one_line,
+        serde_json::Value::Object(map) => {
+            let fields: Vec<String> = map
+                .iter()
+                .map(|(key, v)| {
+                    format!("{indent}{}: {}", serde_json::Value::from(key.as_str()), reviewable(v, depth + 1))
+                })
+                .collect();
+            format!("{{\n{}\n{close}}}", fields.join(",\n"))
+        }
+        serde_json::Value::Array(items) => {
+            let items: Vec<String> =
+                items.iter().map(|v| format!("{indent}{}", reviewable(v, depth + 1))).collect();
+            format!("[\n{}\n{close}]", items.join(",\n"))
+        }
+        _ => one_line,
+    }
 }
 
 /// A compact manifest is written a shader at a time while the passes finish, in whatever order

@@ -1,6 +1,11 @@
 //! The pipeline cache: each pipeline created once, keyed by what makes it (its modules' bytes,
 //! the pass layout, the resolved render state, the targets, the vertex layout); reloading a
 //! build from its output folder; usage capture.
+//!
+//! Long because `Runtime` is one lock over one table of what it made (layouts, modules,
+//! pipelines by key), and every way to make a pipeline (a request, a warm-up, a reload) reads and
+//! fills that table; the pieces with their own data (layouts, render state, overrides, traces,
+//! kernels, the ubershader, the driver's cache) are modules of their own beside it.
 
 use super::layout::{PassLayout, VertexLayout};
 use super::overrides::{ConstantRequest, stage_constants};
