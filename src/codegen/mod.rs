@@ -40,7 +40,8 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
         "\n/// The bind groups kiln gives every pass's resources, by how often they change: bind the\n\
          /// per-frame buffers at `FRAME_GROUP`, a material at `MATERIAL_GROUP`, per-draw ones at\n\
          /// `OBJECT_GROUP`.\n\
-         pub const FRAME_GROUP: u32 = {};\npub const MATERIAL_GROUP: u32 = {};\npub const OBJECT_GROUP: u32 = {};",
+         #[allow(dead_code)]\npub const FRAME_GROUP: u32 = {};\n#[allow(dead_code)]\npub const MATERIAL_GROUP: u32 = {};\n\
+         #[allow(dead_code)]\npub const OBJECT_GROUP: u32 = {};",
         crate::manifest::FRAME_GROUP,
         crate::manifest::MATERIAL_GROUP,
         crate::manifest::OBJECT_GROUP
@@ -80,13 +81,14 @@ pub fn generate(manifest: &Manifest, packs_folder: &str) -> Result<String, Vec<N
     let _ = writeln!(
         out,
         "\n/// The build's manifest and materials, for `kiln_runtime::Library::embedded`.\n\
-         pub static MANIFEST_JSON: &str = include_str!({});\npub static MATERIALS_JSON: &str = include_str!({});",
+         #[allow(dead_code)]\npub static MANIFEST_JSON: &str = include_str!({});\n\
+         #[allow(dead_code)]\npub static MATERIALS_JSON: &str = include_str!({});",
         include(crate::manifest::FILE_NAME),
         include(crate::manifest::MATERIALS_FILE)
     );
     let _ = writeln!(out, "\n/// Every pack by its path in the manifest.");
     let count: usize = packs.values().map(BTreeMap::len).sum();
-    let _ = writeln!(out, "pub static PACKS: [(&str, &[u8]); {count}] = [");
+    let _ = writeln!(out, "#[allow(dead_code)]\npub static PACKS: [(&str, &[u8]); {count}] = [");
     for (backend, numbered) in embedded(&packs) {
         let (_, _, _, bytes) = embedding(backend);
         for (n, path) in numbered.keys().enumerate() {
@@ -228,7 +230,8 @@ fn shader_module(
     let mut blocks = String::new();
     layout::uniform_structs(&mut blocks, shader, &mut scope, place);
     if !blocks.is_empty() {
-        let _ = writeln!(out, "    pub use {}::*;", shared.blocks(blocks));
+        // A re-export a renderer may not use yet: no warning in its crate for it.
+        let _ = writeln!(out, "    #[allow(unused_imports)]\n    pub use {}::*;", shared.blocks(blocks));
     }
     clashes.extend(scope.clashes);
     out.push_str("}\n");

@@ -717,3 +717,25 @@ fn a_bind_group_name_no_file_declares_warns_with_the_closest_resource() {
     let (rendered, _) = check("fixtures/bind_groups");
     assert!(!rendered.contains("K0012"), "{rendered}");
 }
+
+/// A renderer that includes the generated module and uses none of it yet (the first hour) gets
+/// no warning from it: not rustc's under its default lints, nor clippy's.
+#[test]
+fn the_generated_module_compiles_without_a_warning_where_nothing_uses_it() {
+    let out = tempfile::tempdir().expect("temp dir");
+    for fixture in ["fixtures/project", "fixtures/compute", "fixtures/dynamic"] {
+        let built = out.path().join(fixture.replace('/', "-"));
+        kiln::Build::new(fixture).out_dir(&built).execute().expect("builds");
+        let module = std::fs::read_to_string(built.join("kiln_shaders.rs")).expect("generated");
+        let krate = built.join("crate");
+        crate::support::generated_module_crate(
+            &krate,
+            &module,
+            (&built.join("kiln"), "kiln"),
+            "mod shaders;\n",
+        );
+        let clippy = crate::support::cargo_scratch(&krate, &["clippy", "--quiet", "--", "-D", "warnings"]);
+        let stderr = String::from_utf8_lossy(&clippy.stderr);
+        assert!(clippy.status.success() && !stderr.contains("warning"), "{fixture}:\n{stderr}");
+    }
+}

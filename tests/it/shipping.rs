@@ -71,3 +71,32 @@ fn the_example_renderer_ships_the_run_time_and_no_compiler() {
     let own: Vec<&String> = runtime.keys().filter(|name| !wgpu.contains_key(*name)).collect();
     assert!(own.len() <= 12, "kiln-runtime adds {} crates to wgpu's: {own:?}", own.len());
 }
+
+/// The README's first command, `cargo run --release -- build fixtures/project`, compiles the CLI
+/// and what it needs: no wgpu and no renderer (the example renderer, a default workspace member,
+/// once turned on the compiler's `wgpu` feature for every build). Read from the units cargo
+/// itself plans for the binary that command runs (`cargo build --bin kiln --unit-graph`, which
+/// builds nothing; `cargo run` plans the same units, but its `--unit-graph` stops on an assertion).
+#[test]
+fn the_readme_s_first_command_compiles_no_wgpu() {
+    let output = Command::new(env!("CARGO"))
+        .current_dir(root())
+        .env("RUSTC_BOOTSTRAP", "1")
+        .args(["build", "--release", "--bin", "kiln", "--locked", "--offline"])
+        .args(["--unit-graph", "-Z", "unstable-options"])
+        .output()
+        .expect("cargo runs");
+    assert!(output.status.success(), "cargo: {}", String::from_utf8_lossy(&output.stderr));
+    let graph: serde_json::Value = serde_json::from_slice(&output.stdout).expect("the unit graph is JSON");
+    let packages: std::collections::BTreeSet<String> = graph["units"]
+        .as_array()
+        .expect("units")
+        .iter()
+        .filter_map(|unit| unit["pkg_id"].as_str())
+        .map(|id| id.rsplit(['#', '/']).next().unwrap_or(id).split('@').next().unwrap_or(id).to_string())
+        .collect();
+    assert!(packages.contains("kiln") && packages.contains("naga"), "{packages:?}");
+    for absent in ["wgpu", "wgpu-core", "wgpu-hal", "kiln-runtime", "kiln-renderer"] {
+        assert!(!packages.contains(absent), "the README's first command compiles {absent}");
+    }
+}
