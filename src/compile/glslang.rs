@@ -15,6 +15,10 @@ use std::time::{Duration, Instant};
 const GLSLANG_HLSL_GAPS: &[&str] = &[
     // naga zero-initialises an array `x` as `(float[4])0`, a cast of a scalar to an array.
     "array constructor needs one argument per array element",
+    // A module-scope `var<private>` array with a value is a `static` initialised by naga's
+    // array-constructor helper; glslang's linker calls that recursion. It cannot be: WGSL
+    // forbids recursion and naga's validator refuses it, so no module naga wrote recurses.
+    "Recursion detected",
 ];
 
 /// How long glslang may take over one module: its HLSL front end has been seen to run for

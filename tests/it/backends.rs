@@ -8,6 +8,7 @@ use kiln::diagnostics::render_plain;
 use kiln::manifest::{Backend, Manifest};
 use kiln::project::{BuildMode, build_project};
 use kiln::source::SourceStore;
+use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
@@ -175,6 +176,46 @@ fn glslang_refusing_what_naga_wrote_is_a_diagnostic_at_the_entry_point() {
     let shown: String =
         shown.lines().filter(|l| !l.starts_with("checked ")).map(|l| format!("{l}\n")).collect();
     expect_file![root().join("tests/golden/backends/glslang.stderr")].assert_eq(&shown);
+}
+
+/// A module-scope array value (a full-screen triangle, as iced's blit and egui's texture copy
+/// draw it) is HLSL glslang's linker calls recursive: `kiln check --backends hlsl` lets that
+/// gap through, as `kiln build` writes the module, and says nothing of it.
+#[test]
+fn glslang_s_recursion_on_a_module_scope_array_value_is_let_through() {
+    if !tool("glslangValidator", "glslang-tools", "glslang_s_recursion_on_a_module_scope_array_value") {
+        return;
+    }
+    let project = root().join("fixtures/hlsl_recursion_gap");
+    let run = Command::new(env!("CARGO_BIN_EXE_kiln"))
+        .args(["check", project.to_str().expect("path"), "--backends", "hlsl"])
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("kiln runs");
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(run.status.success() && !stderr.contains("K0423"), "{stderr}");
+    // glslang itself, on the HLSL naga writes, still says so: the gap is glslang's, not gone.
+    let output = tempfile::tempdir().expect("temp dir");
+    let built = Command::new(env!("CARGO_BIN_EXE_kiln"))
+        .args(["build", project.to_str().expect("path"), "--backends", "wgsl,hlsl", "--output"])
+        .arg(output.path())
+        .output()
+        .expect("kiln runs");
+    assert!(built.status.success(), "{}", String::from_utf8_lossy(&built.stderr));
+    let manifest = kiln::manifest::Manifest::read(output.path()).expect("manifest");
+    let (text, _, entry) = modules(&manifest, output.path(), Backend::Hlsl)
+        .into_iter()
+        .find(|(_, stage, _)| stage == "vertex")
+        .expect("the vertex module");
+    let mut child = Command::new("glslangValidator")
+        .args(["--stdin", "-S", "vert", "-D", "-V", "-e", &entry, "-o", "/dev/null"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .expect("glslang runs");
+    child.stdin.take().expect("stdin").write_all(text.as_bytes()).expect("fed");
+    let said = String::from_utf8_lossy(&child.wait_with_output().expect("glslang ends").stdout).to_string();
+    assert!(said.contains("Recursion detected"), "{said}");
 }
 
 /// Whether process `pid` is gone (or a zombie nobody has reaped yet: it runs no more).
