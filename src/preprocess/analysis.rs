@@ -168,5 +168,6 @@ fn condition_names(condition: &Condition, file: crate::source::FileId) -> Vec<(&
             })
             .collect(),
         Condition::Missing { .. } => Vec::new(),
+        Condition::Trailing { condition, .. } => condition_names(condition, file),
     }
 }

@@ -383,14 +383,23 @@ impl<'a> Runner<'a> {
         match condition {
             Condition::Defined { name, .. } => self.macros.contains_key(name.as_str()),
             Condition::NotDefined { name, .. } => !self.macros.contains_key(name.as_str()),
-            Condition::Missing { directive, span } => {
+            Condition::Missing { directive, span, expected } => {
                 let error = PreprocessError::MalformedDirective {
                     span: *span,
                     directive: directive.to_string(),
-                    expected: "an expression",
+                    expected,
                 };
                 self.report(error, inclusion);
                 false
+            }
+            Condition::Trailing { condition, directive, span } => {
+                let error = PreprocessError::MalformedDirective {
+                    span: *span,
+                    directive: directive.to_string(),
+                    expected: "the end of the line (put remarks in a `//` comment)",
+                };
+                self.report(error, inclusion);
+                self.condition(condition, file, inclusion)
             }
             Condition::Expr { text, start } => {
                 let mut expander = Expander::for_condition(&self.macros, &mut self.hides);

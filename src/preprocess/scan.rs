@@ -123,9 +123,18 @@ pub(crate) enum Condition {
         name: String,
         span: Span,
     },
-    /// `#if` or `#elif` with nothing after it: an error only if the run evaluates it (C does not
-    /// evaluate an `#elif` after a taken group, DR 412).
+    /// `#if` or `#elif` with nothing after it, or `#elifdef` without a name: an error only if
+    /// the run evaluates it (C does not evaluate an `#elif` after a taken group, DR 412, nor an
+    /// `#elifdef`'s name).
     Missing {
+        directive: &'static str,
+        span: Span,
+        expected: &'static str,
+    },
+    /// An `#elifdef` or `#elifndef` with more after its name: an error where the run evaluates
+    /// it, skipped unread after a taken group, as C skips it.
+    Trailing {
+        condition: Box<Condition>,
         directive: &'static str,
         span: Span,
     },
@@ -426,20 +435,37 @@ impl Scanner<'_> {
                 }
             }
             "ifdef" | "ifndef" | "elifdef" | "elifndef" => {
-                let condition = match self.macro_name(&mut cursor, name, whole) {
-                    Some((macro_name, span)) => {
-                        self.expect_end(&mut cursor, name);
-                        if name.ends_with("ndef") {
-                            Condition::NotDefined { name: macro_name, span }
-                        } else {
-                            Condition::Defined { name: macro_name, span }
+                let branch = name.starts_with("el");
+                cursor.skip_space();
+                let condition = if branch && cursor.rest().trim().is_empty() {
+                    let directive = if name == "elifdef" { "elifdef" } else { "elifndef" };
+                    Condition::Missing { directive, span: whole, expected: "a macro name" }
+                } else {
+                    match self.macro_name(&mut cursor, name, whole) {
+                        Some((macro_name, span)) => {
+                            let condition = if name.ends_with("ndef") {
+                                Condition::NotDefined { name: macro_name, span }
+                            } else {
+                                Condition::Defined { name: macro_name, span }
+                            };
+                            match self.rest_span(&cursor) {
+                                Some(span) if branch => Condition::Trailing {
+                                    condition: Box::new(condition),
+                                    directive: if name == "elifdef" { "elifdef" } else { "elifndef" },
+                                    span,
+                                },
+                                _ => {
+                                    self.expect_end(&mut cursor, name);
+                                    condition
+                                }
+                            }
                         }
+                        // Keep the structure balanced so that the matching `#endif` is not reported too.
+                        None => Condition::Expr { text: "0".into(), start: 0 },
                     }
-                    // Keep the structure balanced so that the matching `#endif` is not reported too.
-                    None => Condition::Expr { text: "0".into(), start: 0 },
                 };
                 self.defer(found);
-                if name.starts_with("el") {
+                if branch {
                     self.branch(name, name_span, BranchKind::Elif(condition));
                     return true;
                 }
@@ -448,7 +474,8 @@ impl Scanner<'_> {
             "if" | "elif" => {
                 let rest_start = cursor.base + cursor.at;
                 let condition = if cursor.rest().trim().is_empty() {
-                    Condition::Missing { directive: if name == "if" { "if" } else { "elif" }, span: whole }
+                    let directive = if name == "if" { "if" } else { "elif" };
+                    Condition::Missing { directive, span: whole, expected: "an expression" }
                 } else {
                     Condition::Expr { text: cursor.rest().to_string(), start: rest_start as u32 }
                 };

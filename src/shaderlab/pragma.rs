@@ -485,13 +485,15 @@ fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<Pragma
                 } else if after_colon {
                     keywords.push(arg);
                 } else {
-                    if !REQUIREMENTS.contains(&arg.value.as_str()) {
+                    // Unity reads requirement names in any case (its manual writes `tessHW`).
+                    let name = arg.value.to_ascii_lowercase();
+                    if !REQUIREMENTS.contains(&name.as_str()) {
                         errors.push(PragmaError::UnknownRequirement {
                             span: arg.span,
                             found: arg.value.clone(),
                         });
                     }
-                    features.push(arg);
+                    features.push(Spanned { value: name, span: arg.span });
                 }
             }
             if features.is_empty() {

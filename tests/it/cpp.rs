@@ -532,3 +532,39 @@ fn a_pasted_number_is_not_glued_to_the_next_token() {
         }
     }
 }
+
+/// `#elifdef` and `#elifndef` (C23) after a taken group are skipped unread, as C skips them: no
+/// name, or more after it, is an error only where the directive is evaluated. There gcc refuses a
+/// missing name, and warns of more after it, which kiln refuses as it refuses it after `#ifdef`.
+#[test]
+fn an_elifdef_is_checked_only_where_it_is_evaluated() {
+    let cpp = tool("cpp", "cpp", "an_elifdef_is_checked_only_where_it_is_evaluated");
+    // (text, kiln refuses it, gcc refuses it)
+    let cases = [
+        ("#if 0\n#elifdef\n#endif\n", true, true),
+        ("#if 0\n#elifndef\n#endif\n", true, true),
+        ("#if 1\nx\n#elifdef\n#endif\n", false, false),
+        ("#if 1\nx\n#elifdef FOO junk\n#endif\n", false, false),
+        ("#if 1\nx\n#elifndef FOO junk\n#endif\n", false, false),
+        ("#if 0\n#elifdef FOO junk\n#endif\n", true, false),
+    ];
+    for (text, kiln_refuses, gcc_refuses) in cases {
+        let (_, errors, _) = kiln_run(text, &[]);
+        assert_eq!(errors.contains("error[K0312]"), kiln_refuses, "{text}: {errors}");
+        if cpp {
+            let dir = tempfile::tempdir().expect("temp dir");
+            std::fs::write(dir.path().join("input.c"), text).expect("write");
+            let run = Command::new("cpp")
+                .args(["-std=c2x", "-P", "-undef", "-nostdinc", "input.c"])
+                .current_dir(dir.path())
+                .output()
+                .expect("cpp runs");
+            assert_eq!(
+                !run.status.success(),
+                gcc_refuses,
+                "{text}: {}",
+                String::from_utf8_lossy(&run.stderr)
+            );
+        }
+    }
+}
