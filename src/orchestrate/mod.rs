@@ -514,6 +514,13 @@ fn build_passes(
             // Every shard has the catalogue; the first writes its part for the merge.
             let catalogue = (shard.index == 0).then(|| catalogue(read));
             let parts = shard::ShardParts { catalogue, materials, passes };
+            // The catalogue's part keeps the project's counts, for the merge to say; a shard's
+            // own summary counts what it built.
+            let mut summary = summary;
+            summary.shaders =
+                mine.iter().map(|w| w.shader_index).collect::<std::collections::BTreeSet<_>>().len();
+            summary.passes = mine.len();
+            summary.variants = total;
             shard::finish(options, *shard, inputs, parts, summary, diagnostics)
         }
         Part::Whole => {

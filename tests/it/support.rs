@@ -266,6 +266,15 @@ pub fn compiled(summary: &str) -> usize {
     summary[..at].rsplit('(').next().expect("count").parse().expect("number")
 }
 
+/// The shaders, passes and variants a build's summary line says it built (`built 3 shaders,
+/// 3 passes, 10 variants: ...`).
+pub fn built_counts(summary: &str) -> [usize; 3] {
+    let counts = summary.split(':').next().expect("a summary line");
+    let numbers: Vec<usize> =
+        counts.split(|c: char| !c.is_ascii_digit()).filter_map(|n| n.parse().ok()).collect();
+    numbers.try_into().unwrap_or_else(|numbers| panic!("three counts in {summary:?}, not {numbers:?}"))
+}
+
 /// Whether a command other tests compare with is installed (`spirv-val`, gcc's `cpp`); without it
 /// the test is skipped with the reason printed, unless `KILN_REQUIRE_TOOLS=1` (set by CI) makes
 /// its absence a failure.
