@@ -483,9 +483,15 @@ fn keywords(
                 None => enabled.push((name.clone(), span(keyword.span()))),
             }
         }
+        // The list that omits a keyword is what disagrees where the property's value is not in
+        // the file (its preset's or its default).
+        let list = match (explicit.first(), explicit.last()) {
+            (Some(first), Some(last)) => span(first.span().start..last.span().end),
+            _ => shader_span,
+        };
         for (keyword, (property, value, on)) in &decided {
             if *on && !explicit.iter().any(|k| k.get_ref() == keyword) {
-                let at = value_spans.get(property).copied().unwrap_or(shader_span);
+                let at = value_spans.get(property).copied().unwrap_or(list);
                 errors.push(MaterialError::KeywordDisagrees {
                     span: at,
                     keyword: keyword.clone(),
