@@ -103,7 +103,8 @@ impl Sources {
     pub(super) fn new(options: &BuildOptions) -> Sources {
         let shared = options.cache_dir.clone().map(|dir| Arc::new(SharedCache { dir }));
         let remote = options.remote_cache.clone().filter(|r| r.mode != RemoteMode::Off);
-        let remote = remote.map(|config| Arc::new(Remote(RemoteCache::new(config))));
+        let remote =
+            remote.map(|config| Arc::new(Remote { cache: RemoteCache::new(config), keep: shared.clone() }));
         let mut fronts: Vec<Arc<dyn FrontSource>> = vec![Arc::new(OutputCache)];
         let mut modules: Vec<Arc<dyn ModuleSource>> = vec![Arc::new(OutputCache)];
         if let Some(shared) = shared {
@@ -123,8 +124,8 @@ impl Sources {
     /// configured, and the bytes it received and sent.
     pub(super) fn finish(&self) -> (Option<Diagnostic>, [u64; 2]) {
         let Some(remote) = &self.remote else { return (None, [0, 0]) };
-        remote.0.finish();
-        (remote.0.warning(), remote.0.bytes())
+        remote.cache.finish();
+        (remote.cache.warning(), remote.cache.bytes())
     }
 
     /// The first front a source has: `None` where naga must parse the job's text.
@@ -204,28 +205,43 @@ impl ModuleSource for SharedCache {
     }
 }
 
-/// The team's cache on an HTTP server (`remote_cache`).
-struct Remote(RemoteCache);
+/// The team's cache on an HTTP server (`remote_cache`), and the shared cache on this machine,
+/// where the build has one, which keeps what the server gave: a clean build after it fetches
+/// nothing again.
+struct Remote {
+    cache: RemoteCache,
+    keep: Option<Arc<SharedCache>>,
+}
 
 impl FrontSource for Remote {
     fn front(&self, pass: &PassSources, job: &Job) -> Option<Front> {
-        let fronts = pass.remote_fronts.get_or_init(|| self.0.read_layouts(pass.pass_key));
+        let fronts = pass.remote_fronts.get_or_init(|| {
+            let fetched = self.cache.read_layouts(pass.pass_key);
+            if let Some(keep) = self.keep.as_ref().filter(|_| !fetched.is_empty()) {
+                FrontSource::publish(&**keep, pass.pass_key, &fetched);
+            }
+            fetched
+        });
         fronts.get(&job.front_key()).map(|declared| Ok((declared.clone(), None)))
     }
 
     fn publish(&self, pass_key: &str, declared: &BTreeMap<String, Vec<Declared>>) {
-        self.0.publish_layouts(pass_key, declared);
+        self.cache.publish_layouts(pass_key, declared);
     }
 }
 
 impl ModuleSource for Remote {
     fn module(&self, _pass: &PassSources, ask: &mut ModuleAsk) -> Option<Result<Built, Diagnostic>> {
-        let (modules, reflection) = self.0.fetch_object(ask.key, super::compiler_id())?;
-        Some(Ok(Built::Fetched(Arc::new(Compiled { modules, reflection }))))
+        let (modules, reflection) = self.cache.fetch_object(ask.key, super::compiler_id())?;
+        let compiled = Compiled { modules, reflection };
+        if let Some(keep) = &self.keep {
+            ModuleSource::publish(&**keep, ask.key, &compiled);
+        }
+        Some(Ok(Built::Fetched(Arc::new(compiled))))
     }
 
     fn publish(&self, key: &str, compiled: &Compiled) {
-        self.0.publish_object(key, super::compiler_id(), &compiled.modules, &compiled.reflection);
+        self.cache.publish_object(key, super::compiler_id(), &compiled.modules, &compiled.reflection);
     }
 }
 

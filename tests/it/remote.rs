@@ -261,6 +261,13 @@ fn a_second_machine_compiles_nothing_that_the_first_published_and_ships_the_same
     );
     assert_eq!(shipped(&m.b.0), shipped(&m.a.0), "byte-identical outputs");
     assert_eq!(shipped(&m.a.0), clean_build(m._dir.path()), "and what a build without caches ships");
+    // The second machine kept what it fetched in its own cache: a clean build there, into a
+    // new output folder, fetches nothing and compiles nothing.
+    let gets = server.requests("GET");
+    let again = succeeded(build(&m._dir.path().join("b-out-again"), &m.b.1, &server.url(), &[]));
+    assert_eq!(compiled(&again), 0, "{again}");
+    assert_eq!(server.requests("GET"), gets, "a clean build asked the server again:\n{again}");
+    assert_eq!(shipped(&m._dir.path().join("b-out-again")), shipped(&m.a.0));
 }
 
 #[test]
