@@ -105,11 +105,7 @@ pub fn serve(connection: &Connection, options: &ServerOptions) -> Result<(), Lsp
         let request = Request::new(RequestId::from(0), "client/registerCapability".into(), registration);
         connection.sender.send(Message::Request(request)).map_err(|_| LspError::Disconnected)?;
     }
-    let user_cache = std::env::var_os("XDG_CACHE_HOME")
-        .map(PathBuf::from)
-        .or_else(|| std::env::var_os("HOME").map(|home| PathBuf::from(home).join(".cache")))
-        .unwrap_or_else(std::env::temp_dir)
-        .join("kiln");
+    let user_cache = crate::project::user_cache_dir();
     let caches = Caches {
         modules: options.cache_dir.clone(),
         fallback_modules: user_cache.join("lsp-modules"),

@@ -403,7 +403,16 @@ pub fn watch_build(
     paths: &[PathBuf],
     mode: &BuildMode,
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
-    let (result, diagnostics) = build_project(store, paths, mode, &|_, _| {})?;
+    // The output folder keeps each pass's last build only; where no shared cache is set, one of
+    // the user's keeps every module built, so that an edit undone compiles nothing.
+    let mode = BuildMode {
+        fallback_cache_dir: mode
+            .fallback_cache_dir
+            .clone()
+            .or_else(|| Some(user_cache_dir().join("watch-modules"))),
+        ..mode.clone()
+    };
+    let (result, diagnostics) = build_project(store, paths, &mode, &|_, _| {})?;
     let errors_file = result.output.join(crate::manifest::ERRORS_FILE);
     let all: Vec<Diagnostic> = diagnostics.iter().chain(&result.diagnostics).cloned().collect();
     let written = if diagnostics::has_errors(&all) {
@@ -418,6 +427,16 @@ pub fn watch_build(
     };
     written.map_err(|source| ProjectError::Write { path: errors_file, source })?;
     Ok((result, diagnostics))
+}
+
+/// kiln's folder in the user's cache (`$XDG_CACHE_HOME/kiln`, else `~/.cache/kiln`), for the
+/// caches of the long-running jobs (`kiln watch`, `kiln lsp`) where the project names none.
+pub fn user_cache_dir() -> PathBuf {
+    std::env::var_os("XDG_CACHE_HOME")
+        .map(PathBuf::from)
+        .or_else(|| std::env::var_os("HOME").map(|home| PathBuf::from(home).join(".cache")))
+        .unwrap_or_else(std::env::temp_dir)
+        .join("kiln")
 }
 
 /// Global keywords given by a caller become a source of their own, a keyword a line, so that

@@ -55,6 +55,7 @@ fn no_colour_when_not_a_terminal() {
 fn watch_rebuilds_on_an_edit_and_reports_a_broken_one() {
     use std::io::BufRead as _;
     let project = tempfile::tempdir().expect("temp dir");
+    let user_cache = tempfile::tempdir().expect("temp dir");
     for name in ["kiln.toml", "Blend.shader", "materials/Opaque.mat"] {
         let to = project.path().join(name);
         std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
@@ -63,6 +64,7 @@ fn watch_rebuilds_on_an_edit_and_reports_a_broken_one() {
     let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_kiln"))
         .args(["watch", project.path().to_str().expect("utf-8")])
         .env("NO_COLOR", "1")
+        .env("XDG_CACHE_HOME", user_cache.path())
         .stderr(std::process::Stdio::piped())
         .spawn()
         .expect("kiln watch runs");
@@ -88,6 +90,14 @@ fn watch_rebuilds_on_an_edit_and_reports_a_broken_one() {
     assert!(first.contains("built 1 shader, 1 pass, 1 variant: 2 stage modules"), "{first}");
     let shader = project.path().join("Blend.shader");
     let text = std::fs::read_to_string(&shader).expect("shader");
+    // An edit, then the edit undone: the undone one compiles nothing (the user's cache kept it).
+    std::fs::write(&shader, text.replace("vec4<f32>(1.0, 0.5, 0.0, 0.5)", "vec4<f32>(0.5, 0.5, 0.0, 0.5)"))
+        .expect("edit");
+    let edited = next_build();
+    assert!(edited.contains("(1 compiled"), "{edited}");
+    std::fs::write(&shader, &text).expect("undo");
+    let undone = next_build();
+    assert!(undone.contains("(0 compiled, 2 reused"), "{undone}");
     std::fs::write(&shader, text.replace("return color;", "return colour;")).expect("edit");
     let broken = next_build();
     let output = project.path().join("build/kiln");
