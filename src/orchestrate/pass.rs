@@ -304,8 +304,8 @@ fn declared_by_text(jobs: &[Job], fronts: &[Front]) -> BTreeMap<String, Vec<Decl
         .collect()
 }
 
-/// One layout for a pass from the resources of all its modules, or the reasons there is none
-/// (reported).
+/// One layout for a pass from the resources of the modules naga parsed (a variant it could not
+/// parse is reported and left out), or the clashes that leave it none (reported).
 fn lay_out(
     members: &[Job],
     fronts: &[Front],
@@ -322,10 +322,9 @@ fn lay_out(
                 declared.push(d);
                 owners.push(j);
             }
-            Err(error) => {
-                diagnostics.push(error.clone());
-                failed = true;
-            }
+            // A variant naga cannot parse is reported and left out: the pass's other variants
+            // still lay out and compile, so a check (the language server's) says what they hold.
+            Err(error) => diagnostics.push(error.clone()),
         }
     }
     let (layout, clashes) = bind::layout(&declared, groups);

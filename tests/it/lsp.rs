@@ -81,6 +81,18 @@ fn an_error_typed_in_an_include_is_shown_there_with_its_variants_and_the_include
         .assert_eq(&format!("{shown}\n"));
     // The disk still has the saved text: a check never writes.
     assert_eq!(std::fs::read_to_string(project.join("shaders/LitPass.wgsl")).expect("LitPass"), saved);
+    // The passes' other variants still compile: a uniform member's layout is still there, with
+    // a variant of each pass that has `_Cutoff` broken (Unlit's too).
+    let (unlit_uri, unlit) = open_saved(&mut client, &project, "shaders/UnlitPass.wgsl");
+    let unlit_broken = unlit.replace("discard;\n", "discard;\n        let oops: f32 = undefined_thing;\n");
+    assert_ne!(unlit_broken, unlit);
+    client.change(&unlit_uri, 2, &unlit_broken);
+    assert_eq!(errors(&client.diagnostics(&unlit_uri, Some(2))).len(), 1);
+    let (line, column) = find(&broken, "_Cutoff) {");
+    let hover = client.request("textDocument/hover", at(&pass_uri, line, column + 1));
+    let member = hover["contents"]["value"].as_str().unwrap_or_default();
+    assert!(member.contains("offset 32, size 4, alignment 4"), "hover with a variant broken: {hover}");
+    client.change(&unlit_uri, 3, &unlit);
 
     client.change(&pass_uri, 3, &saved);
     assert_eq!(errors(&client.diagnostics(&pass_uri, Some(3))), Vec::<&Value>::new());
