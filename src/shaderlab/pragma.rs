@@ -154,7 +154,7 @@ pub const REQUIREMENTS: [&str; 30] = [
 ];
 
 /// Unity's shorthand pragmas and the keyword sets kiln expands them to (docs/keywords.md).
-const SHORTHANDS: [(&str, &[&str]); 10] = [
+const SHORTHANDS: [(&str, &[&str]); 11] = [
     ("multi_compile_instancing", &["_ INSTANCING_ON"]),
     ("multi_compile_fog", &["_ FOG_LINEAR FOG_EXP FOG_EXP2"]),
     ("multi_compile_particles", &["_ SOFTPARTICLES_ON"]),
@@ -171,6 +171,18 @@ const SHORTHANDS: [(&str, &[&str]); 10] = [
             "_ LIGHTMAP_SHADOW_MIXING",
             "_ LIGHTPROBE_SH",
             "_ VERTEXLIGHT_ON",
+        ],
+    ),
+    (
+        "multi_compile_fwdbasealpha",
+        &[
+            "DIRECTIONAL",
+            "_ LIGHTMAP_ON",
+            "_ DIRLIGHTMAP_COMBINED",
+            "_ DYNAMICLIGHTMAP_ON",
+            "_ LIGHTMAP_SHADOW_MIXING",
+            "_ VERTEXLIGHT_ON",
+            "_ LIGHTPROBE_SH",
         ],
     ),
     ("multi_compile_fwdadd", &["POINT DIRECTIONAL SPOT POINT_COOKIE DIRECTIONAL_COOKIE"]),

@@ -120,3 +120,28 @@ fn logged_variants_name_their_log() {
     assert!(line("_TINT").ends_with(" (listed in usage.jsonl)"), "{stdout}");
     assert!(!stdout.contains("always included"), "{stdout}");
 }
+
+/// Unity's `multi_compile_fwdbasealpha` (its manual's table) expands as Unity says: `DIRECTIONAL`
+/// always, each of six keywords on or off.
+#[test]
+fn multi_compile_fwdbasealpha_expands_to_unity_s_keywords() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let shader = dir.path().join("F.shader");
+    std::fs::write(
+        &shader,
+        "Shader \"Test/FwdBaseAlpha\" { SubShader { Pass {\nCGPROGRAM\n#pragma vertex vert\n#pragma fragment frag\n\
+         #pragma multi_compile_fwdbasealpha\nfloat4 vert(float4 v : POSITION) : SV_POSITION { return v; }\n\
+         float4 frag() : SV_Target { return 1; }\nENDCG\n} } }\n",
+    )
+    .expect("write");
+    let run = kiln(&["list", shader.to_str().expect("UTF-8")]);
+    let (stdout, stderr) = (String::from_utf8_lossy(&run.stdout), String::from_utf8_lossy(&run.stderr));
+    assert!(!stderr.contains("K0208"), "a known shorthand: {stderr}");
+    for set in ["DIRECTIONAL  (", "_ LIGHTMAP_ON", "_ DIRLIGHTMAP_COMBINED", "_ DYNAMICLIGHTMAP_ON"]
+        .into_iter()
+        .chain(["_ LIGHTMAP_SHADOW_MIXING", "_ VERTEXLIGHT_ON", "_ LIGHTPROBE_SH"])
+    {
+        assert!(stdout.contains(set), "{set} in:\n{stdout}");
+    }
+    assert!(stdout.contains("of 64 possible"), "{stdout}");
+}
