@@ -12,6 +12,10 @@
 //! never checked, a buffer typed in since) waits for the check to come. An edit to the project
 //! a check is reading cancels that check: it starts no further pass, its result is dropped, and
 //! the project is checked again with the edit.
+//!
+//! Long because `Server` is the protocol's state machine: its documents, projects and the one
+//! running check, and a short arm per request and notification over them. What each answer
+//! computes lives beside it (`navigate`, `complete`, `publish`, `variants`).
 
 mod analysis;
 mod complete;
