@@ -183,7 +183,8 @@ fn a_renderer_written_from_the_docs_builds_and_draws() {
         dependencies.trim_end()
     );
     write(&krate.join("Cargo.toml"), &manifest);
-    write(&krate.join("build.rs"), build_rs);
+    let (readme_build_rs, readme_main) = readme_functions();
+    write(&krate.join("build.rs"), &format!("{build_rs}{readme_build_rs}"));
     // The example project's shaders and materials, where the build script looks.
     for (from, to) in [("fixtures/project/shaders", "shaders"), ("fixtures/project/materials", "materials")] {
         for entry in std::fs::read_dir(root().join(from)).expect("fixtures") {
@@ -201,7 +202,7 @@ fn a_renderer_written_from_the_docs_builds_and_draws() {
         .replace("{render_pass}", render_pass)
         .replace("{no_hitches}", no_hitches)
         .replace("{ubershader}", ubershader);
-    main.push_str(&readme_functions());
+    main.push_str(&readme_main);
     write(&krate.join("src/main.rs"), &main);
     let mut arguments = vec!["run", "--quiet", "--", first_project.to_str().expect("UTF-8")];
     arguments.extend(pixels.iter().map(|(material, _)| material.as_str()));
@@ -272,20 +273,23 @@ fn first_shader_project(dir: &Path) -> (std::path::PathBuf, String, Vec<(String,
     (project, draw, pixels)
 }
 
-/// The README's Rust blocks, compiled (not run) in the same crate: its build script as a nested
-/// `fn main`, the generated module's use and the run time's, each in a function of its own with
+/// The README's Rust blocks, compiled (not run) in the same crate, each in a function of its own: its build script's `fn main` for the
+/// crate's build.rs, and the generated module's use and the run time's for its main.rs, with
 /// what the README assumes (`device`, `format`, `depth_format`) as parameters.
-fn readme_functions() -> String {
+fn readme_functions() -> (String, String) {
     let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
     let blocks = code_blocks(&readme, "rust");
     let [build_script, generated_module, runtime] = &blocks[..] else {
         panic!("the README's Rust blocks changed: {} of them", blocks.len());
     };
-    format!(
-        "\n#[allow(dead_code, unused)]\nfn readme_build_script() {{\n{build_script}}}\n\n\
-         #[allow(dead_code, unused)]\nfn readme_generated_module() -> Result<(), Box<dyn std::error::Error>> {{\n{generated_module}    Ok(())\n}}\n\n\
+    // The build script's block goes where the compiler is a dependency: the crate's build.rs.
+    let for_build_rs =
+        format!("\n#[allow(dead_code, unused)]\nfn readme_build_script() {{\n{build_script}}}\n");
+    let for_main = format!(
+        "\n#[allow(dead_code, unused)]\nfn readme_generated_module() -> Result<(), Box<dyn std::error::Error>> {{\n{generated_module}    Ok(())\n}}\n\n\
          #[allow(dead_code, unused)]\nfn readme_runtime(device: wgpu::Device, format: wgpu::TextureFormat, depth_format: wgpu::TextureFormat) -> Result<(), Box<dyn std::error::Error>> {{\n{runtime}    Ok(())\n}}\n"
-    )
+    );
+    (for_build_rs, for_main)
 }
 
 fn write(path: &Path, text: &str) {
