@@ -273,9 +273,10 @@ fn first_shader_project(dir: &Path) -> (std::path::PathBuf, String, Vec<(String,
     (project, draw, pixels)
 }
 
-/// The README's Rust blocks, compiled (not run) in the same crate, each in a function of its own: its build script's `fn main` for the
-/// crate's build.rs, and the generated module's use and the run time's for its main.rs, with
-/// what the README assumes (`device`, `format`, `depth_format`) as parameters.
+/// The README's Rust blocks, compiled (not run) in the same crate, each in a function of its
+/// own: its build script's `fn main` for the crate's build.rs, and the generated module's use
+/// and the run time's for its main.rs, with what the README assumes (`device`, `format`,
+/// `depth_format`) as parameters.
 fn readme_functions() -> (String, String) {
     let readme = std::fs::read_to_string(root().join("README.md")).expect("README.md");
     let blocks = code_blocks(&readme, "rust");
