@@ -417,6 +417,9 @@ fn a_server_nothing_listens_on_is_one_warning() {
 }
 
 /// nginx (Debian's package) with WebDAV `PUT`, on a loopback port with a temporary root.
+/// The password of the CI's user in the test's nginx (docs/scaling.md's `limit_except`).
+const NGINX_PASSWORD: &str = "s3cret-of-ci";
+
 struct Nginx {
     child: std::process::Child,
     port: u16,
@@ -429,15 +432,26 @@ impl Nginx {
         let port = TcpListener::bind("127.0.0.1:0").expect("port").local_addr().expect("address").port();
         let root = dir.path().join("root");
         std::fs::create_dir_all(root.join("kiln")).expect("mkdir");
-        // One process, as whoever runs the test: no worker to drop privileges to.
+        // docs/scaling.md's server block as the page gives it, on a loopback port, its root and
+        // password file here; one process, as whoever runs the test: no worker to drop
+        // privileges to.
+        let page =
+            std::fs::read_to_string(crate::support::root().join("docs/scaling.md")).expect("scaling.md");
+        let block =
+            page.split("```nginx\n").nth(1).and_then(|b| b.split("```").next()).expect("an nginx block");
+        let server = block
+            .replace("listen 8080;", &format!("listen 127.0.0.1:{port};"))
+            .replace("root /srv/kiln-cache;", &format!("root {};", root.display()))
+            .replace("/etc/nginx/kiln.htpasswd", &dir.path().join("kiln.htpasswd").display().to_string());
+        assert!(server.contains(&format!(":{port};")) && !server.contains("root /srv"), "{server}");
+        std::fs::write(dir.path().join("kiln.htpasswd"), format!("ci:{{PLAIN}}{NGINX_PASSWORD}\n"))
+            .expect("htpasswd");
         let config = format!(
             "daemon off;\nmaster_process off;\npid {dir}/nginx.pid;\nerror_log {dir}/error.log;\n\
              events {{}}\nhttp {{\n  access_log off;\n  client_body_temp_path {dir}/body;\n  proxy_temp_path {dir}/proxy;\n\
              fastcgi_temp_path {dir}/fastcgi;\n  uwsgi_temp_path {dir}/uwsgi;\n  scgi_temp_path {dir}/scgi;\n\
-             server {{\n    listen 127.0.0.1:{port};\n    root {root};\n    location / {{\n      dav_methods PUT;\n\
-             create_full_put_path on;\n      client_max_body_size 0;\n    }}\n  }}\n}}\n",
+             {server}}}\n",
             dir = dir.path().display(),
-            root = root.display(),
         );
         let conf = dir.path().join("nginx.conf");
         std::fs::write(&conf, config).expect("config");
@@ -478,7 +492,9 @@ fn machines_share_modules_through_nginx_with_webdav() {
     let nginx = Nginx::start();
     let url = format!("http://127.0.0.1:{}/kiln", nginx.port);
     let m = machines();
-    let first = succeeded(build(&m.a.0, &m.a.1, &url, &[]));
+    // As the page sets it up: writes with the CI's password, reads with none.
+    let ci = [("KILN_REMOTE_CACHE_USER", "ci"), ("KILN_REMOTE_CACHE_PASSWORD", NGINX_PASSWORD)];
+    let first = succeeded(build(&m.a.0, &m.a.1, &url, &ci));
     assert!(compiled(&first) > 10 && !first.contains("warning"), "{first}");
     let second = succeeded(build(&m.b.0, &m.b.1, &url, &[]));
     assert_eq!(compiled(&second), 0, "{second}");
