@@ -20,10 +20,14 @@ pub fn build_with(
     unused_shaders: VariantSelection,
 ) -> (BuildSummary, Vec<String>) {
     let mut store = SourceStore::new();
+    // One thread: with more, two passes sharing a text may both parse it before either has
+    // finished (the other passes' source is "what they made lately"), and the counts the goldens
+    // pin would move with the machine's load. The bytes written never do.
     let mode = BuildMode {
         output: Some(output.to_path_buf()),
         unused_shaders,
         parse: Some(parse),
+        threads: Some(1),
         ..BuildMode::default()
     };
     let (result, mut diagnostics) =
