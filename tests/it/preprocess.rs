@@ -12,6 +12,7 @@ use kiln::project::{VariantRequest, include_config, preprocess_variant};
 use kiln::shaderlab::parse_shader;
 use kiln::shaderlab::pragma::KeywordSet;
 use kiln::source::SourceStore;
+use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 /// Every combination of one option per set, as keyword lists.
@@ -51,10 +52,10 @@ fn every_fixture_variant_preprocesses_to_golden_wgsl_that_naga_accepts() {
                     panic!("{keywords:?}: {}", render_plain(&store, &errors));
                 }
                 let stem = path.file_stem().and_then(|s| s.to_str()).expect("stem");
-                let map = out.source_map.describe_lines(&store, &out.text);
                 if keywords.is_empty() {
                     // The pass's variant without keywords, whole, with its source map.
                     let header = format!("// kiln preprocess {} --pass {index}\n", path.display());
+                    let map = out.source_map.describe_lines(&store, &out.text);
                     let commented: String = map.lines().map(|l| format!("// {l}\n")).collect();
                     let actual = format!(
                         "{header}{}\n// ---- source map: output lines <- original lines ----\n{commented}",
@@ -62,7 +63,7 @@ fn every_fixture_variant_preprocesses_to_golden_wgsl_that_naga_accepts() {
                     );
                     expect_file![root().join(format!("tests/golden/preprocess/{stem}/{index}.none.wgsl"))]
                         .assert_eq(&actual);
-                    base = Some(annotated(&out.text, &map));
+                    base = Some(annotated(&out.text, &out.source_map, &store));
                 } else {
                     // Every other variant as what its keywords change: a diff of lines, each with
                     // the original line it came from, so a golden shows only what a keyword does.
@@ -72,10 +73,11 @@ fn every_fixture_variant_preprocesses_to_golden_wgsl_that_naga_accepts() {
                         path.display(),
                         keywords.join(",")
                     );
-                    let diff = similar::TextDiff::from_lines(base, &annotated(&out.text, &map))
-                        .unified_diff()
-                        .context_radius(1)
-                        .to_string();
+                    let diff =
+                        similar::TextDiff::from_lines(base, &annotated(&out.text, &out.source_map, &store))
+                            .unified_diff()
+                            .context_radius(1)
+                            .to_string();
                     let golden =
                         format!("tests/golden/preprocess/{stem}/{index}.{}.diff", keywords.join("+"));
                     expect_file![root().join(golden)].assert_eq(&format!("{header}{diff}"));
@@ -614,25 +616,16 @@ fn a_shallow_chain_past_the_token_cap_says_tokens_not_depth() {
 /// A stage text's lines, each followed by the original line the source map gives it
 /// (`text  // <- file:line`): two variants' texts then differ only where their keywords do, and
 /// a line moved by an earlier insertion is not a change.
-fn annotated(text: &str, map: &str) -> String {
-    let mut origin: Vec<String> = Vec::new();
-    for entry in map.lines() {
-        let Some((outputs, source)) = entry.split_once(" <- ") else { continue };
-        let (file, lines) = source.rsplit_once(':').unwrap_or((source, ""));
-        let range = |text: &str| {
-            let (first, last) = text.split_once('-').unwrap_or((text, text));
-            (first.parse::<usize>().unwrap_or(0), last.parse::<usize>().unwrap_or(0))
-        };
-        let ((out_first, out_last), (from, _)) = (range(outputs), range(lines));
-        for (n, out) in (out_first.max(1)..=out_last).enumerate() {
-            if origin.len() < out {
-                origin.resize(out, String::new());
-            }
-            origin[out - 1] = format!("{file}:{}", from + n);
-        }
+fn annotated(text: &str, map: &kiln::preprocess::SourceMap, store: &SourceStore) -> String {
+    let mut offset = 0;
+    let mut lines = String::new();
+    for line in text.split_inclusive('\n') {
+        let origin = map.locate(offset).map_or(String::new(), |origin| {
+            let at = store.line_col(origin.span.file, origin.span.start as usize);
+            format!("{}:{}", store.name(origin.span.file), at.line)
+        });
+        let _ = writeln!(lines, "{}  // <- {origin}", line.trim_end_matches('\n'));
+        offset += line.len();
     }
-    text.lines()
-        .enumerate()
-        .map(|(i, line)| format!("{line}  // <- {}\n", origin.get(i).map_or("", String::as_str)))
-        .collect()
+    lines
 }
