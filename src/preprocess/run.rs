@@ -9,7 +9,7 @@ use super::macros::{
     glues, splice_len, unspliced,
 };
 use super::pass::{KeywordMacros, UBERSHADER_DATA};
-use super::scan::{BranchKind, Condition, Item, Target};
+use super::scan::{BranchKind, Condition, END_OF_LINE, Item, Target};
 use super::source_map::{ROOT, SourceMap};
 use super::{Preprocessed, Stage};
 use crate::diagnostics::Diagnostic;
@@ -396,7 +396,7 @@ impl<'a> Runner<'a> {
                 let error = PreprocessError::MalformedDirective {
                     span: *span,
                     directive: directive.to_string(),
-                    expected: "the end of the line (put remarks in a `//` comment)",
+                    expected: END_OF_LINE,
                 };
                 self.report(error, inclusion);
                 self.condition(condition, file, inclusion)

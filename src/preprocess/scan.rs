@@ -140,6 +140,9 @@ pub(crate) enum Condition {
     },
 }
 
+/// What a directive with more on its line was expected to end with.
+pub(crate) const END_OF_LINE: &str = "the end of the line (put remarks in a `//` comment)";
+
 /// Where an `#include` points, filled in by include resolution after scanning.
 #[derive(Debug, Clone)]
 pub(crate) enum Target {
@@ -436,34 +439,7 @@ impl Scanner<'_> {
             }
             "ifdef" | "ifndef" | "elifdef" | "elifndef" => {
                 let branch = name.starts_with("el");
-                cursor.skip_space();
-                let condition = if branch && cursor.rest().trim().is_empty() {
-                    let directive = if name == "elifdef" { "elifdef" } else { "elifndef" };
-                    Condition::Missing { directive, span: whole, expected: "a macro name" }
-                } else {
-                    match self.macro_name(&mut cursor, name, whole) {
-                        Some((macro_name, span)) => {
-                            let condition = if name.ends_with("ndef") {
-                                Condition::NotDefined { name: macro_name, span }
-                            } else {
-                                Condition::Defined { name: macro_name, span }
-                            };
-                            match self.rest_span(&cursor) {
-                                Some(span) if branch => Condition::Trailing {
-                                    condition: Box::new(condition),
-                                    directive: if name == "elifdef" { "elifdef" } else { "elifndef" },
-                                    span,
-                                },
-                                _ => {
-                                    self.expect_end(&mut cursor, name);
-                                    condition
-                                }
-                            }
-                        }
-                        // Keep the structure balanced so that the matching `#endif` is not reported too.
-                        None => Condition::Expr { text: "0".into(), start: 0 },
-                    }
-                };
+                let condition = self.defined_condition(&mut cursor, name, whole);
                 self.defer(found);
                 if branch {
                     self.branch(name, name_span, BranchKind::Elif(condition));
@@ -772,8 +748,41 @@ impl Scanner<'_> {
             self.errors.push(PreprocessError::MalformedDirective {
                 span,
                 directive: directive.to_string(),
-                expected: "the end of the line (put remarks in a `//` comment)",
+                expected: END_OF_LINE,
             });
+        }
+    }
+
+    /// The condition of `#ifdef NAME` and its kin. `#ifdef` and `#ifndef` are checked here;
+    /// an `#elifdef` or `#elifndef` without a name, or with more after it, is an error only
+    /// where the run evaluates it ([`Condition::Missing`], [`Condition::Trailing`]).
+    fn defined_condition(&mut self, cursor: &mut Cursor, name: &str, whole: Span) -> Condition {
+        let elif = match name {
+            "elifdef" => Some("elifdef"),
+            "elifndef" => Some("elifndef"),
+            _ => None,
+        };
+        cursor.skip_space();
+        if let Some(directive) = elif.filter(|_| cursor.rest().trim().is_empty()) {
+            return Condition::Missing { directive, span: whole, expected: "a macro name" };
+        }
+        let Some((macro_name, span)) = self.macro_name(cursor, name, whole) else {
+            // Keep the structure balanced so that the matching `#endif` is not reported too.
+            return Condition::Expr { text: "0".into(), start: 0 };
+        };
+        let condition = if name.ends_with("ndef") {
+            Condition::NotDefined { name: macro_name, span }
+        } else {
+            Condition::Defined { name: macro_name, span }
+        };
+        match (elif, self.rest_span(cursor)) {
+            (Some(directive), Some(span)) => {
+                Condition::Trailing { condition: Box::new(condition), directive, span }
+            }
+            _ => {
+                self.expect_end(cursor, name);
+                condition
+            }
         }
     }
 
