@@ -697,30 +697,44 @@ impl Runtime {
         let spirv = (self.module_source == ModuleSource::Spirv && stage.interface.overrides.is_empty())
             .then_some(stage.module.spirv.as_ref())
             .flatten();
-        if let Some(file) = spirv {
-            if let Some(module) = self.made().modules.get(&file.hash) {
-                return Ok(module.clone());
-            }
-            let bytes = self.checked_bytes(stage, file)?;
-            if bytes.len() % 4 != 0 {
-                return Err("its SPIR-V is not whole words: build again".into());
-            }
-            let words = bytes.chunks_exact(4).map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]]));
-            let source = wgpu::ShaderSource::SpirV(words.collect::<Vec<u32>>().into());
-            // SPIR-V that wgpu's reader refuses (none the tests build) falls back to the WGSL;
-            // bytes that fail their hash above never do.
-            if let Ok(module) = validated(&self.device, |device| create_module(device, shader, stage, source))
-            {
-                return Ok(self.made().modules.entry(file.hash.clone()).or_insert(module).clone());
-            }
-        }
-        let file = stage.module.wgsl.as_ref().ok_or("the build has no WGSL for it")?;
-        if let Some(module) = self.made().modules.get(&file.hash) {
+        // The file chosen names the module in `Made::modules`, whatever was made of it.
+        let chosen = spirv.or(stage.module.wgsl.as_ref()).ok_or("the build has no WGSL for it")?;
+        if let Some(module) = self.made().modules.get(&chosen.hash) {
             return Ok(module.clone());
         }
-        let text = std::str::from_utf8(self.checked_bytes(stage, file)?).map_err(|e| e.to_string())?;
-        let module = create_module(&self.device, shader, stage, wgpu::ShaderSource::Wgsl(text.into()));
-        Ok(self.made().modules.entry(file.hash.clone()).or_insert(module).clone())
+        // SPIR-V that wgpu's reader refuses (none the tests build) falls back to the WGSL, once:
+        // the WGSL's module is kept under the SPIR-V's name. Bytes that fail their hash never do.
+        let from_spirv = match spirv {
+            Some(file) => self.spirv_module(shader, stage, file)?,
+            None => None,
+        };
+        let module = match from_spirv {
+            Some(module) => module,
+            None => {
+                let file = stage.module.wgsl.as_ref().ok_or("the build has no WGSL for it")?;
+                let text =
+                    std::str::from_utf8(self.checked_bytes(stage, file)?).map_err(|e| e.to_string())?;
+                create_module(&self.device, shader, stage, wgpu::ShaderSource::Wgsl(text.into()))
+            }
+        };
+        Ok(self.made().modules.entry(chosen.hash.clone()).or_insert(module).clone())
+    }
+
+    /// A stage's module from its SPIR-V, once its bytes are the manifest's; `None` where wgpu's
+    /// reader refuses them.
+    fn spirv_module(
+        &self,
+        shader: &str,
+        stage: &StageView,
+        file: &ModuleFile,
+    ) -> Result<Option<wgpu::ShaderModule>, String> {
+        let bytes = self.checked_bytes(stage, file)?;
+        if bytes.len() % 4 != 0 {
+            return Err("its SPIR-V is not whole words: build again".into());
+        }
+        let words = bytes.chunks_exact(4).map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]]));
+        let source = wgpu::ShaderSource::SpirV(words.collect::<Vec<u32>>().into());
+        Ok(validated(&self.device, |device| create_module(device, shader, stage, source)).ok())
     }
 
     /// A module file's bytes, once they are what the manifest names.
