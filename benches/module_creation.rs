@@ -39,9 +39,8 @@ fn main() {
             continue;
         }
         let text = library.bytes(stage.pass, wgsl).expect("WGSL bytes");
-        let words = library.bytes(stage.pass, spirv).expect("SPIR-V bytes");
-        let words: Vec<u32> =
-            words.chunks_exact(4).map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]])).collect();
+        let words =
+            wgpu::util::make_spirv_raw(library.bytes(stage.pass, spirv).expect("SPIR-V bytes")).into_owned();
         modules.push((String::from_utf8(text.to_vec()).expect("UTF-8"), words));
     }
     assert!(!modules.is_empty(), "no module without overrides in {}", project.display());
