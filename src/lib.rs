@@ -64,6 +64,8 @@ pub mod preprocess;
 pub mod project;
 #[doc(hidden)]
 pub use kiln_reference as reference;
+#[cfg(feature = "preview")]
+pub mod preview;
 #[doc(hidden)]
 pub mod reflect;
 #[cfg(feature = "wgpu")]

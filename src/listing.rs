@@ -363,5 +363,8 @@ pub fn render_materials(listing: &Listing) -> String {
             let _ = writeln!(out, "  render state: {}", state.join(", "));
         }
     }
+    if !listing.materials.is_empty() {
+        let _ = writeln!(out, "draw one on a sphere: kiln preview MATERIAL (docs/preview.md)");
+    }
     out
 }

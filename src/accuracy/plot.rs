@@ -187,12 +187,9 @@ mod tests {
         // The PNG: twice the SVG's 800 x 520, a white page with the blue points and front on it.
         let png =
             picture_for(std::path::Path::new("speed.PNG"), "test adapter", &points).expect("rasterises");
-        let decoder = ::png::Decoder::new(std::io::Cursor::new(png));
-        let mut reader = decoder.read_info().expect("a PNG");
-        let mut pixels = vec![0; reader.output_buffer_size()];
-        let frame = reader.next_frame(&mut pixels).expect("decodes");
-        assert_eq!((frame.width, frame.height), (1600, 1040));
-        let rgba = &pixels[..frame.buffer_size()];
+        let picture = crate::preview::Picture::from_png(&png).expect("a PNG");
+        assert_eq!((picture.width, picture.height), (1600, 1040));
+        let rgba = &picture.rgba;
         let blue = rgba.chunks(4).filter(|p| p[2] > 200 && p[0] < 60 && p[1] < 60).count();
         let white = rgba.chunks(4).filter(|p| p[..3] == [255, 255, 255]).count();
         assert!(blue > 500 && white > rgba.len() / 4 / 2, "blue {blue}, white {white}");

@@ -429,6 +429,24 @@ pub fn watch_build(
     Ok((result, diagnostics))
 }
 
+/// `kiln preview`'s build of a project: [`build_project`] as `kiln build` runs it, into a folder
+/// of the user's cache kept per project (`preview/` and a hash of the project's path), so that
+/// the project's own output is left as it was and a second preview rebuilds only what changed.
+/// Modules go to the cache `kiln watch` keeps, where the project names none.
+pub fn preview_build(
+    store: &mut SourceStore,
+    project: &std::path::Path,
+) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
+    let root = std::fs::canonicalize(project).unwrap_or_else(|_| project.to_path_buf());
+    let key = blake3::hash(root.as_os_str().as_encoded_bytes()).to_hex();
+    let mode = BuildMode {
+        output: Some(user_cache_dir().join("preview").join(&key[..16])),
+        fallback_cache_dir: Some(user_cache_dir().join("watch-modules")),
+        ..BuildMode::default()
+    };
+    build_project(store, &[project.to_path_buf()], &mode, &|_, _| {})
+}
+
 /// kiln's folder in the user's cache (`$XDG_CACHE_HOME/kiln`, else `~/.cache/kiln`), for the
 /// caches of the long-running jobs (`kiln watch`, `kiln lsp`) where the project names none.
 pub fn user_cache_dir() -> PathBuf {

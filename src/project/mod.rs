@@ -12,8 +12,8 @@ mod workspace;
 
 pub use crate::orchestrate::{Cancel, Part};
 pub use jobs::{
-    BuildMode, Checked, build_part, build_project, check_project, list_project, merge_shards, user_cache_dir,
-    watch_build,
+    BuildMode, Checked, build_part, build_project, check_project, list_project, merge_shards, preview_build,
+    user_cache_dir, watch_build,
 };
 pub use materials::{apply_preset, config_folder_above, new_material, project_of};
 pub use variant::{VariantRequest, preprocess_variant, reflect_variant};

@@ -30,6 +30,7 @@ mod lsp_edits;
 mod materials;
 mod parse;
 mod preprocess;
+mod preview;
 mod reach;
 mod remote;
 mod render_state;

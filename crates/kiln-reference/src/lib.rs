@@ -4,6 +4,9 @@
 
 #![warn(missing_docs, unreachable_pub)]
 
+pub mod camera;
+pub mod geometry;
+
 /// `saturate` as WGSL defines it for finite values: clamp to [0, 1]. For NaN the result is
 /// explicitly NaN here (GPUs differ: some return 0, some NaN), so that a NaN reaching `saturate`
 /// in the reference is visible in comparisons rather than silently hidden.

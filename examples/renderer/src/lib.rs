@@ -58,18 +58,7 @@ impl Image {
     }
 }
 
-type Mat4 = [[f64; 4]; 4];
-
-fn mat_mul(a: &Mat4, b: &Mat4) -> Mat4 {
-    // Column-major, as WGSL: m[column][row].
-    let mut out = [[0.0; 4]; 4];
-    for c in 0..4 {
-        for row in 0..4 {
-            out[c][row] = (0..4).map(|k| a[k][row] * b[c][k]).sum();
-        }
-    }
-    out
-}
+use r::camera::{Basis, Mat4};
 
 /// The camera's basis and projection, shared by the GPU and the reference.
 struct View {
@@ -87,9 +76,7 @@ const FAR: f64 = 100.0;
 impl View {
     fn new(scene: &Scene) -> View {
         let eye = scene.camera.position;
-        let forward = r::normalize(r::sub(scene.camera.target, eye));
-        let right = r::normalize(r::cross(forward, [0.0, 1.0, 0.0]));
-        let up = r::cross(right, forward);
+        let Basis { forward, right, up } = Basis::looking_at(eye, scene.camera.target);
         View {
             eye,
             forward,
@@ -102,19 +89,11 @@ impl View {
 
     /// Right-handed view and a [0, 1]-depth perspective projection, as wgpu expects.
     fn view_projection(&self) -> Mat4 {
-        let (s, u, f, e) = (self.right, self.up, self.forward, self.eye);
-        let view = [
-            [s[0], u[0], -f[0], 0.0],
-            [s[1], u[1], -f[1], 0.0],
-            [s[2], u[2], -f[2], 0.0],
-            [-r::dot(s, e), -r::dot(u, e), r::dot(f, e), 1.0],
-        ];
-        let y = 1.0 / self.tan_half_fov;
-        let x = y / self.aspect;
-        let z = FAR / (NEAR - FAR);
-        let projection =
-            [[x, 0.0, 0.0, 0.0], [0.0, y, 0.0, 0.0], [0.0, 0.0, z, -1.0], [0.0, 0.0, z * NEAR, 0.0]];
-        mat_mul(&projection, &view)
+        let basis = Basis { forward: self.forward, right: self.right, up: self.up };
+        r::camera::mat_mul(
+            &r::camera::perspective(self.tan_half_fov, self.aspect, NEAR, FAR),
+            &r::camera::view(self.eye, &basis),
+        )
     }
 
     /// The ray through the centre of pixel (x, y).
@@ -152,35 +131,13 @@ fn draw_order(scene: &Scene) -> Vec<usize> {
     opaque.into_iter().chain(blended).collect()
 }
 
-/// A UV sphere's vertex: its position on the unit sphere (also its normal), at `v` (0 to 1, pole to
-/// pole) and `u` (0 to 1, around).
-fn sphere_point(v: f64, u: f64) -> r::Vec3 {
-    let (theta, phi) = (v * std::f64::consts::PI, u * std::f64::consts::TAU);
-    [theta.sin() * phi.cos(), theta.cos(), -theta.sin() * phi.sin()]
-}
-
 /// A UV sphere of radius 1: interleaved position, normal, uv.
 fn sphere_mesh(rings: u32, segments: u32) -> (Vec<f32>, Vec<u32>) {
-    let mut vertices = Vec::new();
-    for ring in 0..=rings {
-        let v = f64::from(ring) / f64::from(rings);
-        for segment in 0..=segments {
-            let u = f64::from(segment) / f64::from(segments);
-            let n = sphere_point(v, u);
-            vertices.extend(to_f32(n));
-            vertices.extend(to_f32(n));
-            vertices.extend([u as f32, v as f32]);
-        }
-    }
-    let mut indices = Vec::new();
-    for ring in 0..rings {
-        for segment in 0..segments {
-            let a = ring * (segments + 1) + segment;
-            let b = a + segments + 1;
-            indices.extend([a, b, a + 1, a + 1, b, b + 1]);
-        }
-    }
-    (vertices, indices)
+    let (vertices, indices) = r::geometry::uv_sphere(rings, segments);
+    let interleaved = vertices
+        .iter()
+        .flat_map(|v| to_f32(v.position).into_iter().chain(to_f32(v.normal)).chain(to_f32(v.uv)));
+    (interleaved.collect(), indices)
 }
 
 /// A device on an adapter that runs WebGPU in full (with `shader-f16` and timestamp queries
@@ -434,20 +391,11 @@ pub fn render_frames(
         // sampler from `textures`.
         let material_group =
             runtime.material_bind_group(&material, lit_pass, &textures).map_err(|e| e.to_string())?;
-        let (p, s) = (object.position, object.radius);
+        let (object_to_world, world_to_object) =
+            r::camera::object_to_world(object.position, [object.radius; 3]);
         let draw = lit::PerDraw {
-            unity_ObjectToWorld: mat_f32(&[
-                [s, 0.0, 0.0, 0.0],
-                [0.0, s, 0.0, 0.0],
-                [0.0, 0.0, s, 0.0],
-                [p[0], p[1], p[2], 1.0],
-            ]),
-            unity_WorldToObject: mat_f32(&[
-                [1.0 / s, 0.0, 0.0, 0.0],
-                [0.0, 1.0 / s, 0.0, 0.0],
-                [0.0, 0.0, 1.0 / s, 0.0],
-                [-p[0] / s, -p[1] / s, -p[2] / s, 1.0],
-            ]),
+            unity_ObjectToWorld: mat_f32(&object_to_world),
+            unity_WorldToObject: mat_f32(&world_to_object),
         };
         let draw_buffer = uniform(bytemuck::bytes_of(&draw));
         let draw_group = runtime
@@ -623,7 +571,7 @@ fn mesh_hit(origin: r::Vec3, ray: r::Vec3, q: r::Vec3) -> Option<(f64, r::Vec3)>
     let (rings, segments) = (SPHERE_RINGS as i64, SPHERE_SEGMENTS as i64);
     // The vertex buffer's f32 values; position and normal are the same vector.
     let vertex = |ring: i64, segment: i64| -> r::Vec3 {
-        sphere_point(ring as f64 / rings as f64, segment as f64 / segments as f64)
+        r::geometry::sphere_point(ring as f64 / rings as f64, segment as f64 / segments as f64)
             .map(|v| f64::from(v as f32))
     };
     let theta = q[1].clamp(-1.0, 1.0).acos();

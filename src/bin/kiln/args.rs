@@ -223,6 +223,21 @@ pub enum Command {
     /// Create materials and apply presets to them.
     #[command(subcommand)]
     Material(MaterialCommand),
+    /// Draw a material: its variant on a sphere standing on a plane of it, under four
+    /// directional lights, through the run time on the first GPU (or lavapipe), into a PNG
+    /// (docs/preview.md; needs `--features preview`).
+    Preview {
+        /// The material's name (its file name without `.mat`).
+        material: String,
+        /// The project folder (default: the nearest folder up with a kiln.toml, else this one).
+        project: Option<PathBuf>,
+        /// The PNG to write (default: MATERIAL.png here).
+        #[arg(long, value_name = "FILE.png")]
+        out: Option<PathBuf>,
+        /// The picture's side in pixels.
+        #[arg(long, default_value_t = 256, value_parser = clap::value_parser!(u32).range(16..=4096))]
+        size: u32,
+    },
 }
 
 #[derive(Subcommand)]

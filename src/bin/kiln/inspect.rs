@@ -143,3 +143,74 @@ pub fn lsp(cache_dir: Option<PathBuf>) -> ExitCode {
         Err(error) => host_failure(&error.to_string()),
     }
 }
+
+/// `kiln preview` in a kiln built without it.
+#[cfg(not(feature = "preview"))]
+pub fn preview(_material: String, _project: Option<PathBuf>, _out: Option<PathBuf>, _size: u32) -> ExitCode {
+    host_failure(
+        "this kiln was built without the `preview` feature, which `kiln preview` needs (it adds wgpu): cargo install --path . --features preview (or cargo run --release --features preview -- preview MATERIAL)",
+    )
+}
+
+/// `kiln preview`: the project built into the user's cache, the material drawn, the PNG written.
+#[cfg(feature = "preview")]
+pub fn preview(material: String, project: Option<PathBuf>, out: Option<PathBuf>, size: u32) -> ExitCode {
+    let project = project.unwrap_or_else(kiln::project::default_project);
+    // The default file is named after the material, here: a name that is one plain component.
+    let plain = std::path::Path::new(&material).components().count() == 1
+        && matches!(
+            std::path::Path::new(&material).components().next(),
+            Some(std::path::Component::Normal(_))
+        );
+    let out = match out {
+        Some(out) => out,
+        None if plain => PathBuf::from(format!("{material}.png")),
+        None => {
+            return host_failure("the material's name is not a file name: say where to write it with --out");
+        }
+    };
+    let mut store = SourceStore::new();
+    let (result, mut problems) = match kiln::project::preview_build(&mut store, &project) {
+        Ok(built) => built,
+        Err(error) => return host_failure(&error.to_string()),
+    };
+    problems.extend(result.diagnostics);
+    report(&store, &problems);
+    if diagnostics::has_errors(&problems) {
+        return ExitCode::from(1);
+    }
+    let drawn = kiln::runtime::Library::open(&result.output)
+        .map_err(kiln::preview::PreviewError::from)
+        .and_then(|library| kiln::preview::draw(library, &material, size));
+    let preview = match drawn {
+        Ok(preview) => preview,
+        Err(error) => {
+            report(&SourceStore::new(), &[kiln::diagnostics::Diagnostic::host_failure(error.to_string())]);
+            return ExitCode::from(1);
+        }
+    };
+    for note in &preview.notes {
+        eprintln!("note: {}", kiln::diagnostics::shown_text(note, false));
+    }
+    let written = preview
+        .picture
+        .png()
+        .map_err(|e| e.to_string())
+        .and_then(|bytes| kiln::store::write_atomically(&out, &bytes).map_err(|e| e.to_string()));
+    if let Err(error) = written {
+        return host_failure(&format!("cannot write `{}`: {error}", out.display()));
+    }
+    let keywords = match preview.keywords.is_empty() {
+        true => "no keywords".to_string(),
+        false => preview.keywords.join(" "),
+    };
+    eprintln!(
+        "drew {} ({}, pass {}, {keywords}) on {} into {}",
+        kiln::diagnostics::shown_text(&material, false),
+        kiln::diagnostics::shown_text(&preview.shader, false),
+        preview.pass,
+        preview.adapter,
+        out.display()
+    );
+    ExitCode::SUCCESS
+}

@@ -2,7 +2,7 @@
 //! Exit codes: 0 success, 1 diagnostics with errors, 2 the run could not be made (K0007).
 //!
 //! One file per command group: `build.rs` (build, check, merge, watch), `inspect.rs` (list,
-//! preprocess, reflect, accuracy, lsp), `cache.rs`, `material.rs`; `output.rs` renders.
+//! preprocess, reflect, accuracy, lsp, preview), `cache.rs`, `material.rs`; `output.rs` renders.
 
 mod args;
 mod build;
@@ -38,5 +38,6 @@ fn main() -> ExitCode {
         Command::Watch { project } => build::watch(project),
         Command::Cache(command) => cache::run(command),
         Command::Material(command) => material::run(command),
+        Command::Preview { material, project, out, size } => inspect::preview(material, project, out, size),
     }
 }
