@@ -238,7 +238,7 @@ pub enum PragmaError {
     KeywordInTwoSets { span: Span, first: Span, keyword: String },
     DynamicAndVariantKeyword { span: Span, first: Span, keyword: String, kinds: [&'static str; 2] },
     UnknownRequirement { span: Span, found: String },
-    UnknownKeywordPragma { span: Span, found: String },
+    UnknownKeywordPragma { span: Span, found: String, suggestion: Option<String> },
     ConflictingEntryPoint { span: Span, first: Span, stage: &'static str },
     MisspeltPragma { span: Span, found: String, suggestion: String },
     FragmentWithoutVertex { span: Span },
@@ -298,13 +298,18 @@ impl From<PragmaError> for Diagnostic {
                     .at(span, "not a requirement kiln knows")
                     .help(format!("use one of {}", one_of(&REQUIREMENTS)))
             }
-            UnknownKeywordPragma { span, found } => {
-                Diagnostic::warning("K0208", format!("unknown keyword pragma `{found}`: it declares nothing"))
-                    .at(span, "not a keyword pragma")
-                    .help(
+            UnknownKeywordPragma { span, found, suggestion } => {
+                let diagnostic =
+                    Diagnostic::warning("K0208", format!("unknown keyword pragma `{found}`: it declares nothing"))
+                        .at(span, "not a keyword pragma");
+                match suggestion {
+                    Some(suggestion) => diagnostic.help(format!("did you mean `#pragma {suggestion}`?")),
+                    None => diagnostic.help(
                         "write `multi_compile`, `shader_feature` or `dynamic_branch`, optionally followed by \
-                         `_local` and then `_vertex` or `_fragment`",
-                    )
+                         `_local` and then `_vertex` or `_fragment`, or one of Unity's shorthands \
+                         (docs/keywords.md)",
+                    ),
+                }
             }
             MisspeltPragma { span, found, suggestion } => {
                 Diagnostic::warning("K0211", format!("unknown pragma `{found}`: it does nothing"))
@@ -547,6 +552,7 @@ fn apply(pragmas: &mut ProgramPragmas, line: PragmaLine, errors: &mut Vec<Pragma
                 errors.push(PragmaError::UnknownKeywordPragma {
                     span: line.name.span,
                     found: name.to_string(),
+                    suggestion: meant_keyword_pragma(name),
                 });
             } else {
                 if let Some(suggestion) = misspelt(name) {
@@ -590,6 +596,29 @@ const UNITY_PRAGMAS: [&str; 20] = [
 /// The pragma `name` is likely a misspelling of: one kiln reads (or Unity knows) within two
 /// edits, for a name of four letters or more that is none of them.
 fn misspelt(name: &str) -> Option<String> {
+    let known = known_pragmas();
+    if name.len() < 4 || known.iter().any(|k| k == name) {
+        return None;
+    }
+    crate::diagnostics::closest(name, known.iter().map(String::as_str))
+}
+
+/// The keyword pragma or shorthand nearest a name that starts like one but is none: Unity's
+/// shorthands are long (`multi_compile_fwdbase_fullshadows` for `multi_compile_fwdadd_fullshadows`),
+/// so the distance allowed grows with the name, a sixth of its length.
+fn meant_keyword_pragma(name: &str) -> Option<String> {
+    let prefixes = ["multi_compile", "shader_feature", "dynamic_branch"];
+    known_pragmas()
+        .into_iter()
+        .filter(|k| prefixes.iter().any(|p| k.starts_with(p)))
+        .map(|k| (strsim::damerau_levenshtein(&k, name), k))
+        .filter(|(distance, _)| *distance <= (name.len() / 6).max(2))
+        .min()
+        .map(|(_, k)| k)
+}
+
+/// Every pragma name kiln reads or knows from Unity.
+fn known_pragmas() -> Vec<String> {
     let mut known: Vec<String> = [
         "vertex",
         "fragment",
@@ -613,10 +642,7 @@ fn misspelt(name: &str) -> Option<String> {
             }
         }
     }
-    if name.len() < 4 || known.iter().any(|k| k == name) {
-        return None;
-    }
-    crate::diagnostics::closest(name, known.iter().map(String::as_str))
+    known
 }
 
 /// Splits `shader_feature_local_fragment` into its kind, scope and stage.

@@ -145,3 +145,33 @@ fn multi_compile_fwdbasealpha_expands_to_unity_s_keywords() {
     }
     assert!(stdout.contains("of 64 possible"), "{stdout}");
 }
+
+/// A shorthand Unity's manual does not have (`multi_compile_fwdbase_fullshadows`: the forward
+/// base pass's shadows come from `multi_compile_fwdbase`) declares nothing, and the warning names
+/// the shorthand nearest it; so does a misspelt suffix.
+#[test]
+fn an_unknown_shorthand_is_a_warning_that_names_the_nearest_one() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let shader = dir.path().join("F.shader");
+    for (pragma, meant) in [
+        ("multi_compile_fwdbase_fullshadows", "multi_compile_fwdadd_fullshadows"),
+        ("shader_feature_locall", "shader_feature_local"),
+        ("multi_compile_fogg", "multi_compile_fog"),
+    ] {
+        std::fs::write(
+            &shader,
+            format!(
+                "Shader \"Test/Shorthand\" {{ SubShader {{ Pass {{\nCGPROGRAM\n#pragma vertex vert\n\
+                 #pragma fragment frag\n#pragma {pragma}\nfloat4 vert(float4 v : POSITION) : SV_POSITION {{ return v; }}\n\
+                 float4 frag() : SV_Target {{ return 1; }}\nENDCG\n}} }} }}\n"
+            ),
+        )
+        .expect("write");
+        let run = kiln(&["list", shader.to_str().expect("UTF-8")]);
+        let (stdout, stderr) = (String::from_utf8_lossy(&run.stdout), String::from_utf8_lossy(&run.stderr));
+        assert!(stderr.contains(&format!("warning[K0208]: unknown keyword pragma `{pragma}`")), "{stderr}");
+        assert!(stderr.contains(&format!("did you mean `#pragma {meant}`?")), "{stderr}");
+        assert!(stderr.contains("F.shader:5:9"), "at the pragma's name: {stderr}");
+        assert!(!stdout.contains("SHADOWS") && !stdout.contains("FOG_"), "it declares nothing: {stdout}");
+    }
+}
