@@ -8,6 +8,9 @@
 //! preview cannot give a pass (a depth or multisampled texture, a storage texture, an integer
 //! vertex input) is an error naming it, never a guess; members it leaves at zero are named in
 //! [`Preview::notes`]. docs/preview.md lists the names.
+//!
+//! One job, drawing a material, kept in one file: the names filled, the textures, the vertex
+//! bytes and the read-back are each a function below, and none is used elsewhere.
 
 use crate::manifest::{
     AttributeFormat, Member, PassManifest, Resource, SampleType, ShaderManifest, ViewDimension,
