@@ -13,7 +13,8 @@
 //! bytes and the read-back are each a function below, and none is used elsewhere.
 
 use crate::manifest::{
-    AttributeFormat, Member, PassManifest, Resource, SampleType, ShaderManifest, ViewDimension,
+    AttributeFormat, Member, PassManifest, Resource, SampleType, ShaderManifest, VariantManifest,
+    ViewDimension,
 };
 use crate::reference::camera::{Basis, Mat4, mat_mul, object_to_world, perspective, view};
 use crate::reference::{self as r, geometry};
@@ -163,8 +164,8 @@ pub fn draw(library: Library, material: &str, size: u32) -> Result<Preview, Prev
     };
     let size = size.clamp(1, MAX_SIZE);
     let shader = library.shader(&found.shader)?.clone();
-    let (pass, keywords) = drawn_pass(&shader, &found.name)?;
-    let needed = needed_features(&shader.passes[pass], &keywords);
+    let (pass, variant) = drawn_pass(&shader, &found.name)?;
+    let (needed, keywords) = (needed_features(&shader.passes[pass], variant), variant.keywords.clone());
     let backends = wgpu::Backends::from_env().unwrap_or_default();
     let adapter = crate::runtime::adapter(backends).map_err(|e| PreviewError::Device(e.to_string()))?;
     let adapter_name = adapter.get_info().name;
@@ -180,8 +181,11 @@ pub fn draw(library: Library, material: &str, size: u32) -> Result<Preview, Prev
 }
 
 /// The first pass of the shader with a vertex stage, not a shadow or depth pass, whose variants
-/// include the material's; and that variant's keywords.
-fn drawn_pass(shader: &ShaderManifest, material: &str) -> Result<(usize, Vec<String>), PreviewError> {
+/// include the material's; and that variant.
+fn drawn_pass<'s>(
+    shader: &'s ShaderManifest,
+    material: &str,
+) -> Result<(usize, &'s VariantManifest), PreviewError> {
     let mut why = Vec::new();
     for (index, pass) in shader.passes.iter().enumerate() {
         let light_mode = pass.tags.iter().find(|(k, _)| k == "LightMode").map(|(_, v)| v.as_str());
@@ -194,7 +198,7 @@ fn drawn_pass(shader: &ShaderManifest, material: &str) -> Result<(usize, Vec<Str
             continue;
         }
         match pass.variants.iter().find(|v| v.materials.iter().any(|m| m == material)) {
-            Some(variant) if variant.vertex.is_some() => return Ok((index, variant.keywords.clone())),
+            Some(variant) if variant.vertex.is_some() => return Ok((index, variant)),
             Some(_) => why.push(format!("pass {index}'s variant for it failed to build")),
             None => why.push(format!("pass {index} built no variant for it")),
         }
@@ -210,10 +214,10 @@ fn drawn_pass(shader: &ShaderManifest, material: &str) -> Result<(usize, Vec<Str
 }
 
 /// The GPU features the variant's modules were validated with.
-fn needed_features(pass: &PassManifest, keywords: &[String]) -> wgpu::Features {
-    let variant = pass.variants.iter().find(|v| v.keywords == keywords);
-    let modules = variant.map(|v| pass.variant_stages(v)).into_iter().flatten().flatten();
-    modules
+fn needed_features(pass: &PassManifest, variant: &VariantManifest) -> wgpu::Features {
+    pass.variant_stages(variant)
+        .into_iter()
+        .flatten()
         .flat_map(|stage| stage.module.features.iter().copied())
         .fold(wgpu::Features::empty(), |all, feature| all | crate::runtime::wgpu_feature(feature))
 }
@@ -225,33 +229,54 @@ struct Object {
     to_world: (Mat4, Mat4),
 }
 
+/// The camera's matrices, made once for every member that names one.
+struct Frame {
+    eye: [f64; 3],
+    view: Mat4,
+    projection: Mat4,
+    view_projection: Mat4,
+    camera_to_world: Mat4,
+}
+
+impl Frame {
+    fn new() -> Frame {
+        let (eye, target, tan_half_fov) = CAMERA;
+        let basis = Basis::looking_at(eye, target);
+        let view = view(eye, &basis);
+        // The picture is square.
+        let projection = perspective(tan_half_fov, 1.0, NEAR, FAR);
+        let (right, up, back) = (basis.right, basis.up, r::scale(basis.forward, -1.0));
+        Frame {
+            eye,
+            view,
+            projection,
+            view_projection: mat_mul(&projection, &view),
+            camera_to_world: [
+                [right[0], right[1], right[2], 0.0],
+                [up[0], up[1], up[2], 0.0],
+                [back[0], back[1], back[2], 0.0],
+                [eye[0], eye[1], eye[2], 1.0],
+            ],
+        }
+    }
+}
+
 /// The values the preview gives uniform members by name, for one object: matrices column-major,
 /// vectors as four components, arrays as their elements.
-fn scene_value(name: &str, object: &Object, size: u32) -> Option<Vec<Vec<f64>>> {
-    let (eye, target, tan_half_fov) = CAMERA;
-    let basis = Basis::looking_at(eye, target);
-    let view_matrix = view(eye, &basis);
-    // The picture is square.
-    let projection = perspective(tan_half_fov, 1.0, NEAR, FAR);
+fn scene_value(name: &str, frame: &Frame, object: &Object, size: u32) -> Option<Vec<Vec<f64>>> {
     let flat = |m: &Mat4| vec![m.iter().flatten().copied().collect::<Vec<f64>>()];
     let four = |v: [f64; 3], w: f64| vec![vec![v[0], v[1], v[2], w]];
-    let camera_to_world: Mat4 = [
-        [basis.right[0], basis.right[1], basis.right[2], 0.0],
-        [basis.up[0], basis.up[1], basis.up[2], 0.0],
-        [-basis.forward[0], -basis.forward[1], -basis.forward[2], 0.0],
-        [eye[0], eye[1], eye[2], 1.0],
-    ];
     let key = r::normalize(LIGHTS[0].0);
     let side = f64::from(size);
     Some(match name {
-        "unity_MatrixVP" => flat(&mat_mul(&projection, &view_matrix)),
-        "unity_MatrixV" => flat(&view_matrix),
-        "unity_MatrixInvV" | "unity_CameraToWorld" => flat(&camera_to_world),
-        "glstate_matrix_projection" | "unity_MatrixP" | "unity_CameraProjection" => flat(&projection),
+        "unity_MatrixVP" => flat(&frame.view_projection),
+        "unity_MatrixV" => flat(&frame.view),
+        "unity_MatrixInvV" | "unity_CameraToWorld" => flat(&frame.camera_to_world),
+        "glstate_matrix_projection" | "unity_MatrixP" | "unity_CameraProjection" => flat(&frame.projection),
         "unity_ObjectToWorld" => flat(&object.to_world.0),
         "unity_WorldToObject" => flat(&object.to_world.1),
         "unity_WorldTransformParams" => vec![vec![0.0, 0.0, 0.0, 1.0]],
-        "_WorldSpaceCameraPos" => four(eye, 1.0),
+        "_WorldSpaceCameraPos" => four(frame.eye, 1.0),
         "_DirectionalLightCount" => vec![vec![LIGHTS.len() as f64]],
         "_DirectionalLightColors" => LIGHTS.iter().map(|(_, c)| four(*c, 0.0).remove(0)).collect(),
         "_DirectionalLightDirections" => {
@@ -330,15 +355,17 @@ impl MaterialTextures for Textures {
     }
 }
 
-/// The colour of a 1 x 1 texture Unity names by default (`white`, `black`, `grey`, `bump`).
-fn texel(name: &str) -> [u8; 4] {
-    match name {
+/// The colour of a 1 x 1 texture Unity names by default (`white`, `black`, `grey`, `bump`), or
+/// `None` for any other name (a file the preview does not load).
+fn texel(name: &str) -> Option<[u8; 4]> {
+    Some(match name {
+        "white" | "" => [255, 255, 255, 255],
         "black" => [0, 0, 0, 255],
         "gray" | "grey" => [128, 128, 128, 255],
         "bump" => [128, 128, 255, 255],
         "red" => [255, 0, 0, 255],
-        _ => [255, 255, 255, 255],
-    }
+        _ => return None,
+    })
 }
 
 fn textures(
@@ -358,13 +385,13 @@ fn textures(
             return Err(unsupported(format!("`{}` is a depth or multisampled texture", entry.name)));
         }
         let value = values.get(&entry.name).and_then(|v| v.as_str()).unwrap_or("white");
-        let known = ["white", "black", "gray", "grey", "bump", "red", ""];
-        if !known.contains(&value) {
+        let texel = texel(value).unwrap_or_else(|| {
             notes.push(format!(
                 "`{}` names the texture `{value}`, which the preview draws as white (it loads no files)",
                 entry.name
             ));
-        }
+            [255; 4]
+        });
         let (layers, view_dimension, texture_dimension) = match dimension {
             ViewDimension::D1 => (1, wgpu::TextureViewDimension::D1, wgpu::TextureDimension::D1),
             ViewDimension::D2 => (1, wgpu::TextureViewDimension::D2, wgpu::TextureDimension::D2),
@@ -380,7 +407,6 @@ fn textures(
             SampleType::Uint => wgpu::TextureFormat::Rgba8Uint,
             _ => wgpu::TextureFormat::Rgba8Unorm,
         };
-        let texel = texel(value);
         let data: Vec<u8> = (0..layers).flat_map(|_| texel).collect();
         let texture = device.create_texture_with_data(
             queue,
@@ -525,6 +551,7 @@ fn render(
     };
 
     // Each object's bind groups besides the material's, and its buffers.
+    let frame = Frame::new();
     let mut left_zero = std::collections::BTreeSet::new();
     let mut draws = Vec::new();
     for object in &objects {
@@ -558,7 +585,7 @@ fn render(
                             false => runtime.library().material_uniform(material, pass_index, &block.name)?,
                         };
                         for member in &block.members {
-                            match scene_value(&member.name, object, size) {
+                            match scene_value(&member.name, &frame, object, size) {
                                 Some(value) if write_value(&mut bytes, member, &value) => {}
                                 _ if material.values.contains_key(&member.name) => {}
                                 _ => {
