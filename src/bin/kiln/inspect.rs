@@ -157,11 +157,7 @@ pub fn preview(_material: String, _project: Option<PathBuf>, _out: Option<PathBu
 pub fn preview(material: String, project: Option<PathBuf>, out: Option<PathBuf>, size: u32) -> ExitCode {
     let project = project.unwrap_or_else(kiln::project::default_project);
     // The default file is named after the material, here: a name that is one plain component.
-    let plain = std::path::Path::new(&material).components().count() == 1
-        && matches!(
-            std::path::Path::new(&material).components().next(),
-            Some(std::path::Component::Normal(_))
-        );
+    let plain = std::path::Path::new(&material).file_name() == Some(std::ffi::OsStr::new(&material));
     let out = match out {
         Some(out) => out,
         None if plain => PathBuf::from(format!("{material}.png")),
