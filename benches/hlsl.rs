@@ -11,7 +11,7 @@
 //! docs/performance.md ("HLSL").
 
 use kiln::preprocess::Stage;
-use kiln::project::{BuildMode, build_project};
+use kiln::project::{Request, build_project};
 use kiln::source::SourceStore;
 use rayon::prelude::*;
 use std::path::{Path, PathBuf};
@@ -68,7 +68,7 @@ fn generate(dir: &Path, variants: usize) {
 fn kiln_build(project: &Path, output: &Path) -> (usize, Duration) {
     let started = Instant::now();
     let mut store = SourceStore::new();
-    let mode = BuildMode { output: Some(output.to_path_buf()), ..BuildMode::default() };
+    let mode = Request { output: Some(output.to_path_buf()), ..Request::default() };
     let (result, diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
     let mut all = diagnostics;

@@ -6,8 +6,8 @@
 //!
 //! `cargo bench --bench module_creation -- [PROJECT] [ROUNDS]` (default: fixtures/project, 9).
 
-use kiln::orchestrate::VariantSelection;
-use kiln::project::{BuildMode, build_project};
+use kiln::config::VariantSelection;
+use kiln::project::{Request, build_project};
 use kiln::runtime::Library;
 use kiln::source::SourceStore;
 use std::path::PathBuf;
@@ -23,10 +23,10 @@ fn main() {
     let rounds: usize = args.next().and_then(|n| n.parse().ok()).unwrap_or(9);
     let output = tempfile::tempdir().expect("temp dir");
     let mut store = SourceStore::new();
-    let mode = BuildMode {
+    let mode = Request {
         output: Some(output.path().to_path_buf()),
         unused_shaders: VariantSelection::All { limit: 4096 },
-        ..BuildMode::default()
+        ..Request::default()
     };
     let (result, _) =
         build_project(&mut store, std::slice::from_ref(&project), &mode, &|_, _| {}).expect("project");

@@ -12,9 +12,9 @@
 //! same kernel texts. Both sides allocate with mimalloc, as the CLI does. Results and how to read
 //! them: docs/performance.md.
 
-use kiln::orchestrate::ParseScope;
+use kiln::config::ParseScope;
 use kiln::preprocess::Stage;
-use kiln::project::{BuildMode, build_project};
+use kiln::project::{Request, build_project};
 use kiln::source::SourceStore;
 use rayon::prelude::*;
 use std::fmt::Write as _;
@@ -64,7 +64,7 @@ fn kiln_build(
 ) -> (kiln::orchestrate::BuildSummary, Duration) {
     let started = Instant::now();
     let mut store = SourceStore::new();
-    let mode = BuildMode { write, output: Some(output.to_path_buf()), parse, ..BuildMode::default() };
+    let mode = Request { write, output: Some(output.to_path_buf()), parse, ..Request::default() };
     let (result, diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
     let mut all = diagnostics;

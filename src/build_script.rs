@@ -7,7 +7,7 @@
 use crate::diagnostics::{self, Diagnostic, Severity, render_plain};
 use crate::manifest::{FILE_NAME, Manifest};
 use crate::orchestrate::BuildSummary;
-use crate::project::{BuildMode, ProjectError, build_project};
+use crate::project::{ProjectError, Request, build_project};
 use crate::source::SourceStore;
 use crate::source::relative_to;
 use std::path::{Path, PathBuf};
@@ -27,11 +27,10 @@ use std::path::{Path, PathBuf};
 pub struct Build {
     paths: Vec<PathBuf>,
     out_dir: Option<PathBuf>,
-    threads: Option<usize>,
-    global_keywords: Option<Vec<String>>,
-    variant_logs: Vec<PathBuf>,
     prebuilt: Option<PathBuf>,
-    cache_dir: Option<PathBuf>,
+    /// What the methods set, as the command line's flags set it (the output folder is
+    /// `OUT_DIR`'s).
+    request: Request,
 }
 
 /// What a build script gets back.
@@ -75,15 +74,7 @@ impl std::fmt::Debug for BuildError {
 impl Build {
     /// A build of the project folder (its `kiln.toml`, or the defaults).
     pub fn new(project: impl Into<PathBuf>) -> Build {
-        Build {
-            paths: vec![project.into()],
-            out_dir: None,
-            threads: None,
-            global_keywords: None,
-            variant_logs: Vec::new(),
-            prebuilt: None,
-            cache_dir: None,
-        }
+        Build { paths: vec![project.into()], out_dir: None, prebuilt: None, request: Request::default() }
     }
 
     /// Also use the `.mat` files under this folder (a scene's materials, say).
@@ -100,7 +91,7 @@ impl Build {
 
     /// Worker threads (default: all cores).
     pub fn threads(mut self, threads: usize) -> Build {
-        self.threads = Some(threads);
+        self.request.threads = Some(threads);
         self
     }
 
@@ -109,14 +100,14 @@ impl Build {
     /// `global_keywords`. A scene with one directional light, say, gives
     /// `["_SINGLE_DIRECTIONAL_LIGHT"]` and gets no variant with the general light loop.
     pub fn global_keywords<S: Into<String>>(mut self, keywords: impl IntoIterator<Item = S>) -> Build {
-        self.global_keywords = Some(keywords.into_iter().map(Into::into).collect());
+        self.request.global_keywords = Some(keywords.into_iter().map(Into::into).collect());
         self
     }
 
     /// Also build the variants a usage log names (as `kiln_runtime::UsageLog` writes them, one
     /// JSON object a line): what a scene asked for at run time that no material uses.
     pub fn variant_log(mut self, file: impl Into<PathBuf>) -> Build {
-        self.variant_logs.push(file.into());
+        self.request.variant_logs.push(file.into());
         self
     }
 
@@ -131,7 +122,7 @@ impl Build {
     /// A module cache shared with other builds (CI runners, other crates, developers' machines
     /// on a shared folder): modules found there are not compiled (see docs/scaling.md).
     pub fn cache_dir(mut self, folder: impl Into<PathBuf>) -> Build {
-        self.cache_dir = Some(folder.into());
+        self.request.cache_dir = Some(folder.into());
         self
     }
 
@@ -163,15 +154,8 @@ impl Build {
                 .map_err(|source| BuildError::Read { path: prebuilt.clone(), source })?;
         }
         let mut store = SourceStore::new();
-        let mode = BuildMode {
-            output: Some(output.clone()),
-            threads: self.threads,
-            global_keywords: self.global_keywords,
-            variant_logs: self.variant_logs,
-            cache_dir: self.cache_dir,
-            ..BuildMode::default()
-        };
-        let (result, mut problems) = build_project(&mut store, &self.paths, &mode, &|_, _| {})?;
+        let request = Request { output: Some(output.clone()), ..self.request };
+        let (result, mut problems) = build_project(&mut store, &self.paths, &request, &|_, _| {})?;
         problems.extend(result.diagnostics);
         let crate_root = std::env::var_os("CARGO_MANIFEST_DIR").map(PathBuf::from);
         let mut cargo_lines: Vec<String> = match (self.paths.first(), crate_root) {

@@ -9,7 +9,8 @@ use super::{
     reference_lights, stats,
 };
 use crate::catalog::{CatalogInput, ListedVariant, catalog};
-use crate::orchestrate::{BuildOptions, build};
+use crate::config::Settings;
+use crate::orchestrate::{Run, Writes, build};
 use crate::preprocess::{IncludeConfig, Includes};
 use crate::source::{SourceStore, Span};
 use rayon::prelude::*;
@@ -66,11 +67,12 @@ pub fn harness_kernels(keywords: &[&str]) -> Result<Kernels, String> {
         CatalogInput { shaders: vec![file], listed_variants: vec![listed], ..CatalogInput::default() };
     let (catalog, mut problems) = catalog(&mut store, &mut includes, &input);
     let scratch = tempfile_folder()?;
-    let options = BuildOptions {
+    let settings = Settings {
         backends: vec![crate::config::Backend::Wgsl],
-        ..BuildOptions::one_off(scratch.clone(), scratch.clone(), true)
+        ..Settings::one_off(scratch.clone(), scratch.clone())
     };
-    let result = build(&store, &includes, &catalog, &options, &problems, &|_, _| {});
+    let run = Run { writes: Writes::Output, ..Run::default() };
+    let result = build(&store, &includes, &catalog, &settings, &run, &problems, &|_, _| {});
     problems.extend(result.diagnostics);
     let read = || -> Result<Kernels, String> {
         if crate::diagnostics::has_errors(&problems) {

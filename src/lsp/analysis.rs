@@ -5,7 +5,7 @@ use super::variants::Selections;
 use crate::catalog::{Catalog, CatalogPass, CatalogProgram, CatalogShader};
 use crate::diagnostics::Diagnostic;
 use crate::preprocess::LIBRARY_PREFIX;
-use crate::project::{BuildMode, Checked, check_project};
+use crate::project::{Checked, Request, check_project};
 use crate::source::{FileId, Overlay, SourceStore};
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -68,15 +68,14 @@ impl Analysis {
         cancel: crate::project::Cancel,
     ) -> Analysis {
         let mut store = SourceStore::with_overlay(overlay);
-        let mode = BuildMode {
+        let request = Request {
             write: false,
             cache_dir: caches.modules.clone(),
             fallback_cache_dir: Some(caches.fallback_modules.clone()),
             // A check runs on every edit: a slow server must not hold the editor's diagnostics
             // (each check is a new build, with a breaker of its own). The shared folder serves.
             remote_cache_mode: Some(crate::store::remote::RemoteMode::Off),
-            cancel,
-            ..BuildMode::default()
+            ..Request::default()
         };
         let narrow = |catalog: &mut Catalog| {
             let Some(selections) = active_only else { return };
@@ -94,10 +93,11 @@ impl Analysis {
                 }
             }
         };
-        let (checked, error) = match check_project(&mut store, &[root.to_path_buf()], &mode, narrow) {
-            Ok(checked) => (Some(checked), None),
-            Err(error) => (None, Some(error.to_string())),
-        };
+        let (checked, error) =
+            match check_project(&mut store, &[root.to_path_buf()], &request, &cancel, narrow) {
+                Ok(checked) => (Some(checked), None),
+                Err(error) => (None, Some(error.to_string())),
+            };
         let by_path =
             store.ids().filter_map(|id| Some((std::fs::canonicalize(store.path(id)?).ok()?, id))).collect();
         let library = caches.library.clone();

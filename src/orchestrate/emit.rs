@@ -9,8 +9,9 @@ use super::error::BuildLayerError;
 use super::jobs::Job;
 use super::noop::recorded_name;
 use super::plan::{PassWork, pass_key};
-use super::{BuildOptions, BuildResult, BuildSummary};
+use super::{BuildResult, BuildSummary, Writes};
 use crate::catalog::{Catalog, CatalogShader, property_references};
+use crate::config::Settings;
 use crate::diagnostics::{self, Diagnostic};
 use crate::manifest::*;
 use crate::material::{Material, MaterialValue};
@@ -55,21 +56,17 @@ pub struct ShaderHead {
 }
 
 /// The shaders `work`'s passes belong to, in catalogue order, with their passes' keys.
-pub(super) fn shader_heads(
-    store: &SourceStore,
-    options: &BuildOptions,
-    work: &[PassWork],
-) -> Vec<ShaderHead> {
+pub(super) fn shader_heads(store: &SourceStore, settings: &Settings, work: &[PassWork]) -> Vec<ShaderHead> {
     let mut shaders: Vec<(&CatalogShader, ShaderHead)> = Vec::new();
     for pass in work {
-        let key = pass_key(store, options, pass);
+        let key = pass_key(store, settings, pass);
         match shaders.last_mut() {
             Some((shader, head)) if std::ptr::eq(*shader, pass.shader) => head.passes.push(key),
             _ => {
                 let shader = &pass.shader.shader;
                 let head = ShaderManifest {
                     name: shader.name.value.clone(),
-                    file: recorded_name(store, pass.shader.file, options),
+                    file: recorded_name(store, pass.shader.file, &settings.root),
                     render_queue: crate::material::shader_queue(shader),
                     properties: shader.properties.iter().map(property).collect(),
                     passes: Vec::new(),
@@ -82,23 +79,25 @@ pub(super) fn shader_heads(
 }
 
 /// The catalogue's part of a build's output (`shaders`: [`shader_heads`]); `read`: the files read
-/// from disk, by their recorded names ([`super::noop::disk_names`]).
+/// from disk, by their recorded names ([`super::noop::disk_names`]); `given`: the files the
+/// project was given ([`super::Run::given_files`]).
 pub(super) fn catalogue_part(
     store: &SourceStore,
     catalog: &Catalog,
-    options: &BuildOptions,
+    settings: &Settings,
+    given: usize,
     shaders: Vec<ShaderHead>,
     summary: &BuildSummary,
     read: Vec<String>,
 ) -> CataloguePart {
     // Each path once, however many includes looked there.
-    let absent: BTreeSet<String> = store.absent().iter().map(|p| relative_to(p, &options.root)).collect();
+    let absent: BTreeSet<String> = store.absent().iter().map(|p| relative_to(p, &settings.root)).collect();
     CataloguePart {
         shaders,
         materials: listed_materials(catalog).count(),
         counts: [summary.shaders, summary.passes, summary.variants],
         unused: summary.unused.clone(),
-        given: options.given_files,
+        given,
         read,
         absent: absent.into_iter().collect(),
     }
@@ -282,10 +281,23 @@ fn manifest_ends(materials_hash: Option<String>) -> std::io::Result<(String, Str
     Ok((text, end))
 }
 
-/// Writes what a whole build (or a merge) leaves once its passes are built: the manifest, the
-/// materials (each one's compact text, in order), and the record of a clean build (`inputs`: the
-/// inputs key, [`super::noop::inputs_key`]). The manifest is `streamed` where its shaders were
-/// written as the passes finished ([`PassParts`]): then only its end is written here. `alongside`
+/// What a whole build (or a merge) writes beside its packs, and what its record says.
+pub(super) struct Outputs<'a, P> {
+    /// The manifest: its `materials_hash` is set here.
+    pub manifest: &'a mut Manifest<P>,
+    /// The materials, each one's compact text, in order.
+    pub materials: &'a [&'a RawValue],
+    /// The catalogue's part: what the record lists as given and read.
+    pub catalogue: &'a CataloguePart,
+    /// The inputs key ([`super::noop::inputs_key`]).
+    pub inputs: &'a str,
+    /// The manifest's writer where its shaders were written as the passes finished
+    /// ([`PassParts`]): then only its end is written here.
+    pub streamed: Option<std::io::Result<ManifestWriter>>,
+}
+
+/// Writes what a whole build (or a merge) leaves once its passes are built ([`Outputs`]): the
+/// manifest, the materials, and, where `writes` says, the record of a clean build. `alongside`
 /// runs while the two files are written (a merge links the shards' packs then; it returns the
 /// bytes it copied): neither file replaces the old one unless both are written and `alongside`
 /// succeeded.
@@ -294,32 +306,31 @@ fn manifest_ends(materials_hash: Option<String>) -> std::io::Result<(String, Str
 /// (so a reader tells a torn pair); the last build's record is removed before either file is
 /// replaced (so a build stopped between the two renames is no no-op's), and written again, with
 /// both files' hashes, only once both are in place.
-#[allow(clippy::too_many_arguments)]
 pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
-    options: &BuildOptions,
-    inputs: &str,
-    catalogue: &CataloguePart,
-    materials: &[&RawValue],
-    manifest: &mut Manifest<P>,
+    settings: &Settings,
+    writes: Writes,
+    outputs: Outputs<P>,
     mut summary: BuildSummary,
     mut diagnostics: Vec<Diagnostic>,
-    streamed: Option<std::io::Result<ManifestWriter>>,
     alongside: impl FnOnce() -> std::io::Result<u64> + Send,
 ) -> BuildResult {
+    let Outputs { manifest, materials, catalogue, inputs, streamed } = outputs;
+    let output = &settings.output;
     let mut files = Vec::new();
-    let cache = Cache::new(&options.output, true);
-    if options.write && !diagnostics::has_errors(&diagnostics) {
+    let cache = Cache::new(output, true);
+    if writes.output() && !diagnostics::has_errors(&diagnostics) {
         files = (pack_ends(manifest.shaders.iter().flat_map(|s| &s.passes)).into_iter())
             .map(|(path, len)| RecordedFile { path: OutputFile::Pack(path), len, hash: None })
             .collect();
         // The materials, then the manifest that names their hash, while `alongside` runs.
         let (staged, alongside) = rayon::join(
             || {
-                let materials = stage_materials(&options.output.join(MATERIALS_FILE), materials, options)?;
+                let materials =
+                    stage_materials(&output.join(MATERIALS_FILE), materials, settings.pretty_manifest)?;
                 manifest.materials_hash = Some(materials.hash());
                 let manifest = match streamed.transpose()? {
                     Some(streamed) => streamed.finish(materials.hash())?,
-                    None => stage_json(&options.output.join(FILE_NAME), &*manifest, options.pretty_manifest)?,
+                    None => stage_json(&output.join(FILE_NAME), &*manifest, settings.pretty_manifest)?,
                 };
                 Ok((materials, manifest))
             },
@@ -331,15 +342,14 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
                 // Each pack's bytes hashed once in place (a merge links them in `alongside`), so
                 // that a no-op build trusts no pack it has not read back whole.
                 files.par_iter_mut().for_each(|file| {
-                    let digest =
-                        Digest::of_file(&file.path.under(&options.output), file.len.saturating_add(1));
+                    let digest = Digest::of_file(&file.path.under(output), file.len.saturating_add(1));
                     let digest = digest.ok().filter(|digest| digest.len == file.len);
                     file.hash = digest.map(|digest| digest.finish().to_hex()[..32].to_string());
                 });
                 // The packs' names durable before the manifest that names them is; else nothing
                 // is replaced.
-                let packs_durable = crate::store::durable_folder(&options.output.join(PACK_FOLDER))
-                    .map_err(|error| diagnostics.push(write_failure(&options.output, error)))
+                let packs_durable = crate::store::durable_folder(&output.join(PACK_FOLDER))
+                    .map_err(|error| diagnostics.push(write_failure(output, error)))
                     .is_ok();
                 let staged = if packs_durable {
                     vec![(OutputFile::Materials, materials), (OutputFile::Manifest, manifest)]
@@ -353,22 +363,22 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
                             summary.bytes_written += if written { len } else { 0 };
                             files.push(RecordedFile { path: name, len, hash: Some(hash) });
                         }
-                        Err(error) => diagnostics.push(write_failure(&options.output, error)),
+                        Err(error) => diagnostics.push(write_failure(output, error)),
                     }
                 }
             }
             // Nothing replaced: the staged files are dropped.
             (staged, alongside) => {
                 let errors = [staged.err(), alongside.err()].into_iter().flatten();
-                diagnostics.extend(errors.map(|error| write_failure(&options.output, error)));
+                diagnostics.extend(errors.map(|error| write_failure(output, error)));
             }
         }
     }
     diagnostics::dedup(&mut diagnostics);
-    if options.write && !diagnostics::has_errors(&diagnostics) {
+    if writes.output() && !diagnostics::has_errors(&diagnostics) {
         cache.sweep(&files);
     }
-    if options.write && options.record && diagnostics.is_empty() {
+    if writes.record() && diagnostics.is_empty() {
         // Only costs a full build next time if it cannot be written.
         let _ = cache.record_inputs(&Recorded {
             key: inputs.to_string(),
@@ -382,11 +392,11 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
             absent: catalogue.absent.clone(),
         });
     }
-    if options.write && !diagnostics::has_errors(&diagnostics) {
+    if writes.output() && !diagnostics::has_errors(&diagnostics) {
         // The commit point's names (the manifest, the materials, the record) durable.
-        let _ = crate::store::durable_folder(&options.output);
+        let _ = crate::store::durable_folder(output);
     }
-    BuildResult { manifest: None, summary, diagnostics, output: options.output.clone() }
+    BuildResult { manifest: None, summary, diagnostics, output: output.clone() }
 }
 
 /// `materials.json`: the materials' compact texts as they are, or indented as a whole build
@@ -394,9 +404,9 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
 fn stage_materials(
     path: &std::path::Path,
     materials: &[&RawValue],
-    options: &BuildOptions,
+    pretty: bool,
 ) -> std::io::Result<StagedJson> {
-    if options.pretty_manifest {
+    if pretty {
         let materials: Vec<MaterialManifest> = (materials.iter())
             .map(|m| serde_json::from_str(m.get()))
             .collect::<Result<_, _>>()
@@ -482,9 +492,9 @@ pub(super) struct BuiltPass {
 }
 
 impl BuiltPass {
-    pub(super) fn new(part: PassManifest, options: &BuildOptions) -> BuiltPass {
-        let compact = matches!(options.part, super::Part::Shard(_)) || !options.pretty_manifest;
-        let text = (options.write && compact).then(|| json_text(&part));
+    /// `text`: whether its text is made now (a pass written compact).
+    pub(super) fn new(part: PassManifest, text: bool) -> BuiltPass {
+        let text = text.then(|| json_text(&part));
         BuiltPass { part, text }
     }
 

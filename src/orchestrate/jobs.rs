@@ -2,11 +2,11 @@
 //! in parallel, cut for each entry point that asks for it (a compute program's kernels share a
 //! text), and identical texts made one job.
 
-use super::ParseScope;
 use super::plan::PassWork;
 use super::tasks::map_tasks;
 use crate::compile::reach;
 use crate::compile::target::Allowed;
+use crate::config::ParseScope;
 use crate::diagnostics;
 use crate::diagnostics::{Diagnostic, PassId};
 use crate::keywords::KeywordBits;

@@ -7,11 +7,12 @@
 //! (copied where a link cannot be made) while the manifest and the materials are written, so the
 //! output is one build's, byte for byte.
 
-use super::emit::{CataloguePart, finish, manifest, placed_materials};
+use super::emit::{CataloguePart, Outputs, finish, manifest, placed_materials};
 use super::error::BuildLayerError;
 use super::noop::{Inputs, same_inputs};
 use super::shard::{ShardPass, pack_hash};
-use super::{BuildOptions, BuildResult, BuildSummary, Merge};
+use super::{BuildResult, BuildSummary, Merge, Writes};
+use crate::config::Settings;
 use crate::diagnostics::Diagnostic;
 use crate::manifest::{
     BindGroup, ModuleManifest, PackPath, PassFiles, PassManifest, StageInterface, UniformBlock,
@@ -94,17 +95,18 @@ pub(super) fn read_shards(merge: &Merge) -> ShardsRead {
 /// comment).
 pub(super) fn merge(
     store: &mut SourceStore,
-    options: &BuildOptions,
+    settings: &Settings,
+    writes: Writes,
     merge: &Merge,
     read: ShardsRead,
 ) -> BuildResult {
     let mut summary = BuildSummary::default();
     let Some(catalogue) = catalogue(merge) else {
-        return BuildResult::failed(options, summary, vec![BuildLayerError::CatalogueMissing.into()]);
+        return BuildResult::failed(settings, summary, vec![BuildLayerError::CatalogueMissing.into()]);
     };
     let inputs = Inputs { given: catalogue.given, read: &catalogue.read, absent: &catalogue.absent };
-    if !same_inputs(store, options, &inputs, &merge.inputs) {
-        return BuildResult::failed(options, summary, vec![BuildLayerError::ProjectChanged.into()]);
+    if !same_inputs(store, settings, &inputs, &merge.inputs) {
+        return BuildResult::failed(settings, summary, vec![BuildLayerError::ProjectChanged.into()]);
     }
     [summary.shaders, summary.passes, summary.variants] = catalogue.counts;
     summary.unused = catalogue.unused.clone();
@@ -119,15 +121,15 @@ pub(super) fn merge(
         diagnostics.push(BuildLayerError::CatalogueMissing.into());
     }
     let (Some(materials), true) = (materials, diagnostics.is_empty()) else {
-        return BuildResult::failed(options, summary, diagnostics);
+        return BuildResult::failed(settings, summary, diagnostics);
     };
     // Every pass's packs and cache entry, from its shard's folder into the output: linked while
     // the manifest and the materials are written, which replace nothing unless every link is made.
     let links: Vec<(PathBuf, PathBuf)> = (found.iter().zip(&parts))
         .flat_map(|((folder, part), pass)| {
-            let packs = pass.view.packs.iter().map(|pack| (pack.under(folder), pack.under(&options.output)));
+            let packs = pass.view.packs.iter().map(|pack| (pack.under(folder), pack.under(&settings.output)));
             let entry = pass_index_path(&part.key);
-            packs.chain([(folder.join(&entry), options.output.join(&entry))])
+            packs.chain([(folder.join(&entry), settings.output.join(&entry))])
         })
         .collect();
     let link = || {
@@ -137,7 +139,7 @@ pub(super) fn merge(
     summary.modules = found.iter().map(|(_, part)| part.modules).sum();
     summary.reused = summary.modules;
     let heads = catalogue.shaders.clone();
-    if options.pretty_manifest {
+    if settings.pretty_manifest {
         // Indented, the parts cannot be copied as they are: parsed, and written as a build does.
         let parsed: Result<Vec<PassManifest>, BuildLayerError> = (parts.iter().zip(&found))
             .map(|(pass, (folder, _))| {
@@ -148,23 +150,27 @@ pub(super) fn merge(
         match parsed {
             Ok(parsed) => {
                 let mut manifest = manifest(heads, parsed);
-                finish(
-                    options,
-                    &merge.inputs,
+                let outputs = Outputs {
+                    manifest: &mut manifest,
+                    materials: &materials,
                     catalogue,
-                    &materials,
-                    &mut manifest,
-                    summary,
-                    diagnostics,
-                    None,
-                    link,
-                )
+                    inputs: &merge.inputs,
+                    streamed: None,
+                };
+                finish(settings, writes, outputs, summary, diagnostics, link)
             }
-            Err(error) => BuildResult::failed(options, summary, vec![error.into()]),
+            Err(error) => BuildResult::failed(settings, summary, vec![error.into()]),
         }
     } else {
         let mut manifest = manifest(heads, parts);
-        finish(options, &merge.inputs, catalogue, &materials, &mut manifest, summary, diagnostics, None, link)
+        let outputs = Outputs {
+            manifest: &mut manifest,
+            materials: &materials,
+            catalogue,
+            inputs: &merge.inputs,
+            streamed: None,
+        };
+        finish(settings, writes, outputs, summary, diagnostics, link)
     }
 }
 

@@ -26,7 +26,7 @@ pub use noop::unchanged;
 pub use plan::stage_texts;
 
 use crate::catalog::Catalog;
-use crate::config::Backend;
+use crate::config::Settings;
 use crate::diagnostics::Diagnostic;
 use crate::manifest::Manifest;
 use crate::preprocess::Includes;
@@ -67,77 +67,53 @@ pub(crate) fn compiler_id() -> &'static str {
 /// memory is reserved, not used: a thread touches only what it recurses into.
 pub const WORKER_STACK: usize = 256 << 20;
 
-/// The most worker threads a build starts.
-pub const MAX_THREADS: usize = 1024;
-
-/// Which variants of a shader no material uses are compiled.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum VariantSelection {
-    /// None: only what materials (and `always_include`) need. `kiln build`.
-    Used,
-    /// The default variant and each keyword on its own. `kiln check`.
-    DefaultsAndEachKeyword,
-    /// The full product, refused above `limit` variants per pass. `kiln check --all-variants`.
-    All {
-        /// The most variants a pass may have.
-        limit: u128,
-    },
+/// What one build writes: decided by its caller (a check writes nothing) and by what was reported
+/// before it ([`Writes::after`]).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub enum Writes {
+    /// Nothing: a check, or a build after an error.
+    Nothing,
+    /// The output, and no record of its inputs for the next build's no-op check ([`unchanged`]):
+    /// a build after a warning (a no-op build reports nothing), or a one-off build.
+    Output,
+    /// The output and that record.
+    #[default]
+    OutputAndRecord,
 }
 
-/// What naga parses of a stage text.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum ParseScope {
-    /// The declarations its entry point reaches (`compile::reach`), the texts of a pass's
-    /// variants parsed together where they share declarations (`compile::together`): `kiln
-    /// build`. An error in code no entry point reaches is not seen.
-    Together,
-    /// The declarations its entry point reaches, each text parsed alone (`kiln build
-    /// --parse-alone`).
-    Reachable,
-    /// All of it, as preprocessed: `kiln check`, which reports errors anywhere in a variant's
-    /// text.
-    Whole,
+impl Writes {
+    /// Whether the output is written.
+    pub fn output(self) -> bool {
+        self != Writes::Nothing
+    }
+
+    /// Whether the record of the build's inputs is written.
+    fn record(self) -> bool {
+        self == Writes::OutputAndRecord
+    }
+
+    /// What a build asked to write `self` writes after `earlier` findings: nothing after an
+    /// error, no record after any finding.
+    fn after(self, earlier: &[Diagnostic]) -> Writes {
+        match self {
+            _ if crate::diagnostics::has_errors(earlier) => Writes::Nothing,
+            Writes::OutputAndRecord if !earlier.is_empty() => Writes::Output,
+            writes => writes,
+        }
+    }
 }
 
-/// How a build runs and where it writes.
-#[derive(Debug, Clone)]
-pub struct BuildOptions {
-    /// The output folder.
-    pub output: PathBuf,
-    /// The project folder: the manifest's shader paths and the cache's keys are relative to it,
-    /// so that a project builds the same bytes wherever it sits.
-    pub root: PathBuf,
-    /// `false` for `kiln check`: nothing is written.
-    pub write: bool,
-    /// What naga parses of each stage text.
-    pub parse: ParseScope,
-    /// Worker threads (default: all cores).
-    pub threads: Option<usize>,
-    /// The back ends each stage module is written for.
-    pub backends: Vec<Backend>,
-    /// What is built of shaders no material uses.
-    pub unused_shaders: VariantSelection,
-    /// Write `manifest.json` indented (default: compact).
-    pub pretty_manifest: bool,
-    /// Record the inputs for the next build's no-op check ([`unchanged`]) when nothing is
-    /// reported ([`build`]'s `earlier`, and the build's own).
-    pub record: bool,
+/// What one run of a build does, beside its [`Settings`]: what its caller decided.
+#[derive(Debug, Clone, Default)]
+pub struct Run {
+    /// What is written.
+    pub writes: Writes,
     /// The whole build, one shard of it, or a merge of shards.
     pub part: Part,
-    /// A module cache shared with other builds: modules are taken from it before naga runs,
-    /// and every module compiled is published to it.
-    pub cache_dir: Option<PathBuf>,
-    /// The team's cache on an HTTP server: asked after `cache_dir`, and given what the build
-    /// compiled when its mode allows (docs/scaling.md).
-    pub remote_cache: Option<crate::store::remote::RemoteConfig>,
     /// How many files the store held from disk before the catalogue was built (the project
     /// file, shaders, materials, variant logs): the rest were read through includes. A no-op
     /// needs the same files given, not merely the same files read.
     pub given_files: usize,
-    /// The resource names the project adds to the per-frame and per-object bind groups.
-    pub groups: crate::compile::bind::GroupNames,
-    /// Reads back the GLSL and HLSL each module is written in (`kiln check`, where installed).
-    pub glslang: Option<crate::compile::glslang::Glslang>,
     /// Stops a check (a build that writes nothing) before its next pass when set.
     pub cancel: Cancel,
 }
@@ -164,41 +140,6 @@ impl Cancel {
     /// Whether the build was told to stop.
     pub fn is_cancelled(&self) -> bool {
         self.0.as_ref().is_some_and(|flag| flag.load(std::sync::atomic::Ordering::Relaxed))
-    }
-}
-
-impl BuildOptions {
-    /// What a build with these options may do after `earlier` findings: write nothing after an
-    /// error, record no no-op after any finding.
-    fn after(&self, earlier: &[Diagnostic]) -> BuildOptions {
-        BuildOptions {
-            write: self.write && !crate::diagnostics::has_errors(earlier),
-            record: self.record && earlier.is_empty(),
-            ..self.clone()
-        }
-    }
-
-    /// A one-off build of what a caller catalogued itself (a shader to reflect, the accuracy
-    /// harness): one thread, both back ends, nothing recorded for a no-op, no shared cache.
-    pub fn one_off(root: PathBuf, output: PathBuf, write: bool) -> BuildOptions {
-        BuildOptions {
-            output,
-            root,
-            write,
-            parse: ParseScope::Together,
-            threads: Some(1),
-            backends: Backend::DEFAULT.to_vec(),
-            unused_shaders: VariantSelection::Used,
-            pretty_manifest: false,
-            record: false,
-            part: Part::Whole,
-            cache_dir: None,
-            remote_cache: None,
-            given_files: 0,
-            groups: Default::default(),
-            glslang: None,
-            cancel: Cancel::default(),
-        }
     }
 }
 
@@ -299,25 +240,26 @@ pub struct BuildResult {
 }
 
 impl BuildResult {
-    fn failed(options: &BuildOptions, summary: BuildSummary, diagnostics: Vec<Diagnostic>) -> BuildResult {
-        BuildResult { manifest: None, summary, diagnostics, output: options.output.clone() }
+    fn failed(settings: &Settings, summary: BuildSummary, diagnostics: Vec<Diagnostic>) -> BuildResult {
+        BuildResult { manifest: None, summary, diagnostics, output: settings.output.clone() }
     }
 }
 
-/// Builds (or, without `write`, checks) every WGSL pass of the catalogue, or the part of it
-/// `options.part` names. `earlier` is what was reported before it (the project's and the
-/// catalogue's findings): after an error nothing is written, after any finding no no-op is
-/// recorded (a no-op build reports nothing). `progress` is told (variants done, variants in all).
+/// Builds (or, writing nothing, checks) every pass of the catalogue, or the part of it `run.part`
+/// names. `earlier` is what was reported before it (the project's and the catalogue's
+/// findings): after an error nothing is written, after any finding no no-op is recorded
+/// ([`Writes::after`]). `progress` is told (variants done, variants in all).
 pub fn build(
     store: &SourceStore,
     includes: &Includes,
     catalog: &Catalog,
-    options: &BuildOptions,
+    settings: &Settings,
+    run: &Run,
     earlier: &[Diagnostic],
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> BuildResult {
-    let options = &options.after(earlier);
-    timed_in_pool(options, || build_passes(store, includes, catalog, options, progress))
+    let run = &Run { writes: run.writes.after(earlier), ..run.clone() };
+    timed_in_pool(settings, || build_passes(store, includes, catalog, settings, run, progress))
 }
 
 impl Merge {
@@ -334,42 +276,27 @@ impl Merge {
 /// shards read is read here, and all of it must still be what the shards read (K0413).
 pub fn merge(
     store: &mut SourceStore,
-    options: &BuildOptions,
+    settings: &Settings,
+    writes: Writes,
     earlier: &[Diagnostic],
     shards: &Merge,
     read: ShardsRead,
 ) -> BuildResult {
-    let options = &options.after(earlier);
-    timed_in_pool(options, || merge::merge(store, options, shards, read))
-}
-
-/// The worker threads for a build asked for `requested` (`--threads`), else `RAYON_NUM_THREADS`,
-/// else one per core; never more than [`MAX_THREADS`]: far more threads than cores only costs
-/// memory, and a mistyped count, from either place, must not exhaust it.
-pub fn thread_count(requested: Option<usize>) -> usize {
-    let cores = std::thread::available_parallelism().map_or(1, usize::from);
-    threads_for(requested, std::env::var("RAYON_NUM_THREADS").ok().as_deref(), cores)
-}
-
-/// [`thread_count`] from what it reads: the request, `RAYON_NUM_THREADS`'s text, the cores.
-fn threads_for(requested: Option<usize>, environment: Option<&str>, cores: usize) -> usize {
-    let from_environment = environment.and_then(|n| n.trim().parse::<usize>().ok()).filter(|&n| n > 0);
-    requested.filter(|&n| n > 0).or(from_environment).unwrap_or(cores).min(MAX_THREADS)
+    let writes = writes.after(earlier);
+    timed_in_pool(settings, || merge::merge(store, settings, writes, shards, read))
 }
 
 /// Whether rayon's global pool is one [`init_global_pool`] made: with kiln's stacks, and bounded.
 static GLOBAL_POOL_IS_KILNS: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
-/// Makes rayon's global pool as a build's would be ([`thread_count`] workers with
-/// [`WORKER_STACK`] stacks), for a program whose main work is kiln's (the CLI): a build of that
-/// many threads then runs in it rather than in a second pool beside it, so the process never runs
-/// more than [`MAX_THREADS`] workers, whatever `RAYON_NUM_THREADS` says. Does nothing where the
-/// global pool exists already.
-pub fn init_global_pool() {
-    let built = rayon::ThreadPoolBuilder::new()
-        .num_threads(thread_count(None))
-        .stack_size(WORKER_STACK)
-        .build_global();
+/// Makes rayon's global pool as a build's would be (`threads` workers, as
+/// [`config::threads_for`](crate::config::threads_for) counts them, with [`WORKER_STACK`]
+/// stacks), for a program whose main work is kiln's (the CLI): a build of that many threads then
+/// runs in it rather than in a second pool beside it, so the process never runs more than
+/// [`MAX_THREADS`](crate::config::MAX_THREADS) workers, whatever `RAYON_NUM_THREADS` says. Does
+/// nothing where the global pool exists already.
+pub fn init_global_pool(threads: usize) {
+    let built = rayon::ThreadPoolBuilder::new().num_threads(threads).stack_size(WORKER_STACK).build_global();
     if built.is_ok() {
         GLOBAL_POOL_IS_KILNS.store(true, std::sync::atomic::Ordering::Relaxed);
     }
@@ -397,11 +324,11 @@ fn pool(threads: usize) -> Option<std::sync::Arc<rayon::ThreadPool>> {
     Some(pool)
 }
 
-/// Runs `job` on a pool of `options.threads` (all cores by default; the global pool if one cannot
-/// be made), its summary timed.
-fn timed_in_pool(options: &BuildOptions, job: impl FnOnce() -> BuildResult + Send) -> BuildResult {
+/// Runs `job` on a pool of `settings.threads` (the global pool if one cannot be made), its summary
+/// timed.
+fn timed_in_pool(settings: &Settings, job: impl FnOnce() -> BuildResult + Send) -> BuildResult {
     let started = Instant::now();
-    let mut result = match pool(thread_count(options.threads)) {
+    let mut result = match pool(settings.threads) {
         Some(pool) => pool.install(job),
         // On one of the global pool's workers (and their stacks), as `install` would run it.
         None => rayon::scope(|_| job()),
@@ -419,31 +346,32 @@ fn build_passes(
     store: &SourceStore,
     includes: &Includes,
     catalog: &Catalog,
-    options: &BuildOptions,
+    settings: &Settings,
+    run: &Run,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> BuildResult {
     let mut diagnostics = Vec::new();
     let mut summary = BuildSummary::default();
-    let work = plan::plan(catalog, options.unused_shaders, &mut summary, &mut diagnostics);
+    let work = plan::plan(catalog, settings.unused_shaders, &mut summary, &mut diagnostics);
     // A shard decides what it owns before preprocessing anything.
-    let owned: Vec<bool> = match &options.part {
+    let owned: Vec<bool> = match &run.part {
         Part::Shard(shard) => shard.owned(&plan::weights(&work)),
         _ => vec![true; work.len()],
     };
     let mine: Vec<&plan::PassWork> = work.iter().zip(&owned).filter(|(_, o)| **o).map(|(w, _)| w).collect();
     let total = mine.iter().map(|w| w.variants.len()).sum();
-    let session = session::Session::new(options, progress, total);
+    let session = session::Session::new(settings, run, progress, total);
     // Only a whole build and the first shard list the shaders (the manifest, the catalogue's part).
-    let heads = match &options.part {
+    let heads = match &run.part {
         Part::Shard(shard) if shard.index != 0 => Vec::new(),
-        _ => emit::shader_heads(store, options, &work),
+        _ => emit::shader_heads(store, settings, &work),
     };
     // A whole build's compact manifest is written as its passes finish.
-    let manifest_path = options.output.join(crate::manifest::FILE_NAME);
-    let streamed = options.write && !options.pretty_manifest && matches!(options.part, Part::Whole);
+    let manifest_path = settings.output.join(crate::manifest::FILE_NAME);
+    let streamed = run.writes.output() && !settings.pretty_manifest && matches!(run.part, Part::Whole);
     let passes = emit::PassParts::new(mine.len(), streamed.then_some((&heads[..], manifest_path.as_path())));
     // Only a check stops early: a build that writes finishes what it began.
-    let stopped = || !options.write && options.cancel.is_cancelled();
+    let stopped = || !run.writes.output() && run.cancel.is_cancelled();
     // What needs no compiled pass is made while the passes compile: the files read, named once
     // (the inputs key hashes them and the catalogue's part lists them; nothing is read while
     // passes compile, the store is only shared), the inputs key, the materials' texts. Only what
@@ -459,18 +387,18 @@ fn build_passes(
                 while !stopped() {
                     let index = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
                     let Some(work) = mine.get(index) else { return };
-                    let (part, built) = pass::build_pass(work, store, includes, catalog, options, &session);
+                    let (part, built) = pass::build_pass(work, store, includes, catalog, &session);
                     passes.add(index, part, built);
                 }
             });
         },
         || {
-            if !options.write {
+            if !run.writes.output() {
                 return Default::default();
             }
-            let read = noop::disk_names(store, options);
-            let inputs = noop::inputs_key(store, options, &read);
-            let materials = match &options.part {
+            let read = noop::disk_names(store, settings);
+            let inputs = noop::inputs_key(store, settings, &read);
+            let materials = match &run.part {
                 Part::Shard(shard) => shard.materials(catalog, &work, &owned),
                 Part::Whole => emit::material_texts(catalog, |_| true),
             };
@@ -479,7 +407,7 @@ fn build_passes(
     );
     if stopped() {
         // Whoever stopped it drops what it would say: what it found so far is not the project's.
-        return BuildResult::failed(options, summary, diagnostics);
+        return BuildResult::failed(settings, summary, diagnostics);
     }
     let (parts, built, streamed) = passes.into_parts();
     let mut modules = Vec::with_capacity(built.len());
@@ -499,16 +427,23 @@ fn build_passes(
     let (remote_warning, remote_bytes) = session.sources.finish();
     summary.remote_bytes = remote_bytes;
     diagnostics.extend(remote_warning);
-    let catalogue = |read| emit::catalogue_part(store, catalog, options, heads, &summary, read);
-    match &options.part {
+    let catalogue =
+        |read| emit::catalogue_part(store, catalog, settings, run.given_files, heads, &summary, read);
+    match &run.part {
         Part::Shard(shard) => {
             let passes = (mine.par_iter().zip(modules).zip(parts))
                 .map(|((work, modules), part)| {
-                    shard::ShardPass::new(plan::pass_key(store, options, work), modules, part, options)
+                    shard::ShardPass::new(
+                        plan::pass_key(store, settings, work),
+                        modules,
+                        part,
+                        settings,
+                        run.writes,
+                    )
                 })
                 .collect::<std::io::Result<Vec<_>>>()
                 .unwrap_or_else(|error| {
-                    diagnostics.push(emit::write_failure(&options.output, error));
+                    diagnostics.push(emit::write_failure(&settings.output, error));
                     Vec::new()
                 });
             // Every shard has the catalogue; the first writes its part for the merge.
@@ -521,23 +456,20 @@ fn build_passes(
                 mine.iter().map(|w| w.shader_index).collect::<std::collections::BTreeSet<_>>().len();
             summary.passes = mine.len();
             summary.variants = total;
-            shard::finish(options, *shard, inputs, parts, summary, diagnostics)
+            shard::finish(settings, run.writes, *shard, inputs, parts, summary, diagnostics)
         }
         Part::Whole => {
             let materials: Vec<&serde_json::value::RawValue> = materials.iter().map(|(_, m)| &**m).collect();
             let mut catalogue = catalogue(read);
             let mut manifest = emit::manifest(std::mem::take(&mut catalogue.shaders), parts);
-            let mut result = emit::finish(
-                options,
-                &inputs,
-                &catalogue,
-                &materials,
-                &mut manifest,
-                summary,
-                diagnostics,
+            let outputs = emit::Outputs {
+                manifest: &mut manifest,
+                materials: &materials,
+                catalogue: &catalogue,
+                inputs: &inputs,
                 streamed,
-                || Ok(0),
-            );
+            };
+            let mut result = emit::finish(settings, run.writes, outputs, summary, diagnostics, || Ok(0));
             result.manifest = Some(emit::parsed(manifest));
             result
         }
@@ -546,14 +478,17 @@ fn build_passes(
 
 #[cfg(test)]
 mod tests {
+    use super::Writes;
+    use crate::diagnostics::Diagnostic;
+
     #[test]
-    fn threads_come_from_the_request_then_the_environment_then_the_cores_and_are_bounded() {
-        use super::{MAX_THREADS, threads_for};
-        assert_eq!(threads_for(Some(3), Some("7"), 16), 3);
-        assert_eq!(threads_for(None, Some("7"), 16), 7);
-        assert_eq!(threads_for(None, Some("100000"), 16), MAX_THREADS, "RAYON_NUM_THREADS is bounded too");
-        assert_eq!(threads_for(Some(100_000), None, 16), MAX_THREADS);
-        assert_eq!(threads_for(None, Some("lots"), 16), 16);
-        assert_eq!(threads_for(Some(0), Some("0"), 16), 16);
+    fn a_build_writes_nothing_after_an_error_and_records_nothing_after_any_finding() {
+        let (warning, error) = (Diagnostic::warning("K0008", "w"), Diagnostic::error("K0003", "e"));
+        assert_eq!(Writes::OutputAndRecord.after(&[]), Writes::OutputAndRecord);
+        assert_eq!(Writes::OutputAndRecord.after(std::slice::from_ref(&warning)), Writes::Output);
+        assert_eq!(Writes::OutputAndRecord.after(&[warning.clone(), error.clone()]), Writes::Nothing);
+        assert_eq!(Writes::Output.after(&[]), Writes::Output);
+        assert_eq!(Writes::Nothing.after(&[warning]), Writes::Nothing);
+        assert!(!Writes::Output.record() && Writes::OutputAndRecord.record() && !Writes::Nothing.output());
     }
 }

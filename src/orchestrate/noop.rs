@@ -1,7 +1,8 @@
 //! The no-op check: what a build's outcome depends on (its inputs key), and the record of the last
 //! clean build, compared before anything is parsed.
 
-use super::{BuildOptions, BuildResult, BuildSummary, COMPILER_REVISION, NAGA_VERSION};
+use super::{BuildResult, BuildSummary, COMPILER_REVISION, NAGA_VERSION, Writes};
+use crate::config::Settings;
 use crate::manifest::SCHEMA_VERSION;
 use crate::preprocess::LIBRARY_PREFIX;
 use crate::source::{FileId, SourceStore, relative_to};
@@ -11,9 +12,9 @@ use std::time::Instant;
 
 /// A file's name as the build records it: relative to the project folder for files read from
 /// disk, so that nothing recorded depends on where the project sits.
-pub(super) fn recorded_name(store: &SourceStore, file: FileId, options: &BuildOptions) -> String {
+pub(super) fn recorded_name(store: &SourceStore, file: FileId, root: &std::path::Path) -> String {
     match store.path(file) {
-        Some(path) => relative_to(path, &options.root),
+        Some(path) => relative_to(path, root),
         None => store.name(file).to_string(),
     }
 }
@@ -27,16 +28,16 @@ pub(super) fn disk_files(store: &SourceStore) -> impl Iterator<Item = FileId> + 
 /// record no longer passes for a no-op. (A new manifest schema does the same.)
 const OUTPUT_FORMAT: u32 = 3;
 
-/// Everything a build's outcome depends on: the options, the texts given in memory (global
+/// Everything a build's outcome depends on: the settings that change what it writes, the texts given in memory (global
 /// keywords from a build script; the bundled library by its digest), and every file
 /// read from disk (shaders, includes, materials, variant logs, the project file) by its name
 /// relative to the project, in the order read: `read`, as [`disk_names`] gives them (a caller
 /// that has them already need not name 50,000 files twice).
-pub(super) fn inputs_key(store: &SourceStore, options: &BuildOptions, read: &[String]) -> String {
-    key_with_library(store, options, read, crate::shaderlib::digest())
+pub(super) fn inputs_key(store: &SourceStore, settings: &Settings, read: &[String]) -> String {
+    key_with_library(store, settings, read, crate::shaderlib::digest())
 }
 
-fn key_with_library(store: &SourceStore, options: &BuildOptions, read: &[String], library: &str) -> String {
+fn key_with_library(store: &SourceStore, settings: &Settings, read: &[String], library: &str) -> String {
     // Each file hashed on its own (in parallel: a project reads tens of thousands), then their
     // hashes in order.
     let in_memory: Vec<FileId> = (store.ids())
@@ -61,21 +62,21 @@ fn key_with_library(store: &SourceStore, options: &BuildOptions, read: &[String]
     for hash in &hashes {
         hasher.update(hash.as_bytes());
     }
-    let options = format!(
+    let settings = format!(
         "{:?}{:?}{}{} library {library} revision {COMPILER_REVISION} {NAGA_VERSION} output {OUTPUT_FORMAT} manifest {SCHEMA_VERSION}",
-        options.backends,
-        options.unused_shaders,
-        options.pretty_manifest,
+        settings.backends,
+        settings.unused_shaders,
+        settings.pretty_manifest,
         env!("CARGO_PKG_VERSION")
     );
-    hasher.update(options.as_bytes());
+    hasher.update(settings.as_bytes());
     hasher.finalize().to_hex()[..32].to_string()
 }
 
 /// The recorded names ([`recorded_name`]) of the store's files read from disk, in the order read.
-pub(super) fn disk_names(store: &SourceStore, options: &BuildOptions) -> Vec<String> {
+pub(super) fn disk_names(store: &SourceStore, settings: &Settings) -> Vec<String> {
     let files: Vec<FileId> = disk_files(store).collect();
-    files.par_iter().map(|&f| recorded_name(store, f, options)).collect()
+    files.par_iter().map(|&f| recorded_name(store, f, &settings.root)).collect()
 }
 
 /// The no-op check, made before the catalogue is built: `store` holds the files found so far
@@ -83,18 +84,19 @@ pub(super) fn disk_names(store: &SourceStore, options: &BuildOptions) -> Vec<Str
 /// clean build was given, the rest it read (includes, read again here into `store`) are
 /// unchanged, nothing appeared where it looked in vain,
 /// and every file it wrote is in place, nothing needs doing: no parsing, no preprocessing, no
-/// naga, and the manifest is not read.
-pub fn unchanged(store: &mut SourceStore, options: &BuildOptions) -> Option<BuildResult> {
+/// naga, and the manifest is not read. A build that `writes` clears what a build stopped since
+/// left.
+pub fn unchanged(store: &mut SourceStore, settings: &Settings, writes: Writes) -> Option<BuildResult> {
     let started = Instant::now();
-    let cache = Cache::new(&options.output, false);
+    let cache = Cache::new(&settings.output, false);
     let recorded = cache.recorded()?;
     let inputs = Inputs { given: recorded.given, read: &recorded.read, absent: &recorded.absent };
-    if !same_inputs(store, options, &inputs, &recorded.key) || !cache.files_in_place(&recorded) {
+    if !same_inputs(store, settings, &inputs, &recorded.key) || !cache.files_in_place(&recorded) {
         return None;
     }
-    if options.write {
+    if writes.output() {
         // What a build stopped since left (its packs, its temporaries) goes, as after any build.
-        Cache::new(&options.output, true).sweep(&recorded.files);
+        Cache::new(&settings.output, true).sweep(&recorded.files);
     }
     let summary = BuildSummary {
         shaders: recorded.shaders,
@@ -105,7 +107,7 @@ pub fn unchanged(store: &mut SourceStore, options: &BuildOptions) -> Option<Buil
         elapsed: started.elapsed(),
         ..BuildSummary::default()
     };
-    Some(BuildResult { summary, manifest: None, diagnostics: Vec::new(), output: options.output.clone() })
+    Some(BuildResult { summary, manifest: None, diagnostics: Vec::new(), output: settings.output.clone() })
 }
 
 /// What an earlier build read: how many files it was given, every file it read (relative to the
@@ -120,31 +122,26 @@ pub(super) struct Inputs<'a> {
 /// the files found so far (the project file, shaders, materials, variant logs), which must be
 /// exactly the files that build was given; nothing may have appeared where it looked in vain;
 /// and the rest it read (includes) are loaded into `store` here and must hash alike.
-pub(super) fn same_inputs(
-    store: &mut SourceStore,
-    options: &BuildOptions,
-    inputs: &Inputs,
-    key: &str,
-) -> bool {
-    let mut found = disk_names(store, options);
+pub(super) fn same_inputs(store: &mut SourceStore, settings: &Settings, inputs: &Inputs, key: &str) -> bool {
+    let mut found = disk_names(store, settings);
     if found.len() != inputs.given || inputs.read.get(..found.len()) != Some(&found[..]) {
         return false;
     }
-    if inputs.absent.par_iter().any(|path| std::fs::symlink_metadata(options.root.join(path)).is_ok()) {
+    if inputs.absent.par_iter().any(|path| std::fs::symlink_metadata(settings.root.join(path)).is_ok()) {
         return false;
     }
     // The includes are read through the store, as a build reads them, so that what it reports
     // as read (a build script's `rerun-if-changed`) is the same whether it compiled or not.
     for name in &inputs.read[found.len()..] {
-        let path = options.root.join(name);
+        let path = settings.root.join(name);
         let Some(canonical) = store.canonical_file(&path) else { return false };
         if store.load_once(&path, canonical).is_err() {
             return false;
         }
     }
     let includes: Vec<FileId> = disk_files(store).skip(found.len()).collect();
-    found.extend(includes.iter().map(|&f| recorded_name(store, f, options)));
-    inputs_key(store, options, &found) == key
+    found.extend(includes.iter().map(|&f| recorded_name(store, f, &settings.root)));
+    inputs_key(store, settings, &found) == key
 }
 
 #[cfg(test)]
@@ -155,10 +152,10 @@ mod tests {
     fn the_inputs_key_follows_the_bundled_library() {
         let mut store = SourceStore::new();
         store.add("given.shader", "Shader \"A\" {}");
-        let options = BuildOptions::one_off("out".into(), ".".into(), false);
-        let read = disk_names(&store, &options);
-        let key = inputs_key(&store, &options, &read);
-        assert_eq!(key, key_with_library(&store, &options, &read, crate::shaderlib::digest()));
-        assert_ne!(key, key_with_library(&store, &options, &read, "0123456789abcdef"), "an edited library");
+        let settings = Settings::one_off(".".into(), "out".into());
+        let read = disk_names(&store, &settings);
+        let key = inputs_key(&store, &settings, &read);
+        assert_eq!(key, key_with_library(&store, &settings, &read, crate::shaderlib::digest()));
+        assert_ne!(key, key_with_library(&store, &settings, &read, "0123456789abcdef"), "an edited library");
     }
 }

@@ -8,10 +8,11 @@ use super::plan::{PassWork, pass_key};
 use super::session::Session;
 use super::sources::{Front, ModuleAsk, PassSources, parse_together};
 use super::tasks::map_tasks;
-use super::{BuildOptions, COMPILER_REVISION, NAGA_VERSION};
+use super::{COMPILER_REVISION, NAGA_VERSION};
 use crate::catalog::Catalog;
 use crate::compile::Mapper;
 use crate::compile::bind::{self, Declared, PassLayout};
+use crate::config::Settings;
 use crate::diagnostics::Diagnostic;
 use crate::manifest::{Backend, FileRef, PackPath, PerBackend};
 use crate::preprocess::Includes;
@@ -89,22 +90,21 @@ pub(super) fn build_pass(
     store: &SourceStore,
     includes: &Includes,
     catalog: &Catalog,
-    options: &BuildOptions,
     session: &Session,
 ) -> (BuiltPass, PassBuilt) {
-    let (cache, progress) = (&session.cache, &session.progress);
+    let (cache, progress, settings) = (&session.cache, &session.progress, session.settings);
     let mut diagnostics = Vec::new();
     let PassJobs { mut jobs, stages, ubershader, preprocessed } =
-        pass_jobs(store, includes, work, options.parse, &mut diagnostics);
+        pass_jobs(store, includes, work, settings.parse, &mut diagnostics);
     session.preprocessed.fetch_add(preprocessed, Ordering::Relaxed);
     for job in &jobs {
         session.texts.add(&job.text_hash);
     }
-    let key = pass_key(store, options, work);
+    let key = pass_key(store, settings, work);
     let index = cache.pass_index(&key);
     let sources = PassSources {
         store,
-        options,
+        settings,
         session,
         pass_key: &key,
         index: &index,
@@ -124,14 +124,14 @@ pub(super) fn build_pass(
     if fronts.iter().any(|f| matches!(f, Ok((_, Some(_))))) {
         session.sources.publish_fronts(&key, &front);
     }
-    let layout = lay_out(&jobs, &fronts, store, &options.groups, &mut diagnostics);
+    let layout = lay_out(&jobs, &fronts, store, &settings.groups, &mut diagnostics);
     let requests: usize = jobs.iter().map(|j| j.requests).sum();
     let served = AtomicUsize::new(0);
     let mut outcomes: Vec<StageOutcome> =
         map_tasks(jobs.iter_mut().zip(fronts.iter_mut()), |(job, front)| {
             let outcome = match front {
                 Ok((declared, parsed)) => layout.as_ref().map(|layout| {
-                    let key = stage_key(job, declared, layout, options);
+                    let key = stage_key(job, declared, layout, settings);
                     let mut ask = ModuleAsk { job, key: &key, layout, parsed: parsed.take() };
                     let built = session.sources.module(&sources, &mut ask)?;
                     if let Built::Compiled(module) = &built {
@@ -148,7 +148,7 @@ pub(super) fn build_pass(
             progress.advance(work.variants.len(), requests, before, job.requests);
             outcome
         });
-    repack_reused(&mut outcomes, &options.output);
+    repack_reused(&mut outcomes, &settings.output);
     // Packs are named by their modules' hashes, so each module's place is known before a byte
     // is written: the packs are written while the manifest part and the cache entry are made.
     let compiled: Vec<Arc<Compiled>> = outcomes
@@ -162,12 +162,12 @@ pub(super) fn build_pass(
     let ((counts, part, entry), written) = rayon::join(
         || {
             let Gathered { modules, keys, counts } =
-                gather(outcomes, &jobs, files, options, &mut diagnostics);
+                gather(outcomes, &jobs, files, &settings.backends, &mut diagnostics);
             let (part, entry) = rayon::join(
                 || {
                     let ubershader = ubershader.as_deref();
                     let manifest = pass_manifest(store, catalog, work, &jobs, &stages, ubershader, &modules);
-                    BuiltPass::new(manifest, options)
+                    BuiltPass::new(manifest, session.pass_texts)
                 },
                 || {
                     let stage = (keys.iter().zip(&modules))
@@ -191,7 +191,7 @@ pub(super) fn build_pass(
             bytes
         }
         Err(error) => {
-            diagnostics.push(write_failure(&options.output, error));
+            diagnostics.push(write_failure(&settings.output, error));
             0
         }
     };
@@ -272,14 +272,14 @@ fn spirv_gap_warning(gap: &SpirvGap, job: &Job) -> Diagnostic {
 
 /// A stage module's content key: everything its bytes depend on (text, stage, entry point,
 /// target, the slots of the resources it declares, backends, kiln and naga).
-fn stage_key(job: &Job, declared: &[Declared], layout: &PassLayout, options: &BuildOptions) -> String {
+fn stage_key(job: &Job, declared: &[Declared], layout: &PassLayout, settings: &Settings) -> String {
     let slots: Vec<String> = declared
         .iter()
         .filter_map(|d| layout.slots.get(&d.name).map(|(g, b)| format!("{}@{g}/{b}", d.name)))
         .collect();
-    let mut backends: Vec<&str> = options.backends.iter().map(|b| b.name()).collect();
+    let mut backends: Vec<&str> = settings.backends.iter().map(|b| b.name()).collect();
     // A module glslang read back is not one it did not: a check with it compiles anew.
-    backends.extend(options.glslang.as_ref().map(|g| g.version()));
+    backends.extend(settings.glslang.as_ref().map(|g| g.version()));
     hash(
         format!(
             "{}\n{}\n{}\n{}\n{}\n{}\nkiln {} revision {COMPILER_REVISION}\n{NAGA_VERSION}",
@@ -386,7 +386,7 @@ fn gather(
     outcomes: Vec<StageOutcome>,
     jobs: &[Job],
     files: Vec<PerBackend<Option<FileRef>>>,
-    options: &BuildOptions,
+    backends: &[Backend],
     diagnostics: &mut Vec<Diagnostic>,
 ) -> Gathered {
     let mut files = files.into_iter();
@@ -419,7 +419,7 @@ fn gather(
         };
         if let Some((stage, _)) = &stage
             && let Some(gap) = &stage.reflection.spirv_gap
-            && options.backends.contains(&Backend::Spirv)
+            && backends.contains(&Backend::Spirv)
         {
             diagnostics.push(job.in_stage(spirv_gap_warning(gap, job)));
         }

@@ -2,9 +2,10 @@
 //! build with their variants, what each weighs (for shards), and how a pass is known across
 //! builds.
 
+use super::BuildSummary;
 use super::error::BuildLayerError;
-use super::{BuildOptions, BuildSummary, ParseScope, VariantSelection};
 use crate::catalog::{Catalog, CatalogPass, CatalogProgram, CatalogShader};
+use crate::config::{ParseScope, Settings, VariantSelection};
 use crate::diagnostics::Diagnostic;
 use crate::keywords::Variant;
 use crate::preprocess::{Includes, Stage};
@@ -135,8 +136,8 @@ pub(super) fn weights(work: &[PassWork]) -> Vec<u64> {
 }
 
 /// Identifies a pass across builds: its shader file (relative to the project) and place.
-pub(super) fn pass_key(store: &SourceStore, options: &BuildOptions, work: &PassWork) -> PassKey {
-    let file = super::noop::recorded_name(store, work.shader.file, options);
+pub(super) fn pass_key(store: &SourceStore, settings: &Settings, work: &PassWork) -> PassKey {
+    let file = super::noop::recorded_name(store, work.shader.file, &settings.root);
     PassKey::of(&format!("{file}#{}.{}", work.pass.subshader, work.pass.index))
 }
 

@@ -2,16 +2,22 @@
 //! resources other passes made lately (bounded), so that a stage text several passes have is
 //! parsed and compiled once.
 
-use super::BuildOptions;
 use super::pass::Compiled;
 use super::sources::Sources;
+use super::{Part, Run};
 use crate::compile::bind::Declared;
+use crate::config::Settings;
 use crate::store::Cache;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// What the passes of one build (or shard) share: the output's cache, progress, and what other
 /// passes compiled and parsed lately.
 pub(super) struct Session<'a> {
+    /// The build's settings.
+    pub settings: &'a Settings,
+    /// Whether each pass's part of the manifest is made into its text on the pass's own thread:
+    /// where it is written compact ([`super::emit::BuiltPass`]).
+    pub pass_texts: bool,
     pub cache: Cache,
     /// Where fronts and modules are looked for before naga makes them.
     pub sources: Sources,
@@ -35,13 +41,18 @@ const RECENT_SHARDS: usize = 64;
 
 impl<'a> Session<'a> {
     pub(super) fn new(
-        options: &BuildOptions,
+        settings: &'a Settings,
+        run: &Run,
         report: &'a (dyn Fn(usize, usize) + Sync),
         total: usize,
     ) -> Session<'a> {
+        // A shard's parts are kept compact whatever the manifest's form.
+        let compact = matches!(run.part, Part::Shard(_)) || !settings.pretty_manifest;
         Session {
-            cache: Cache::new(&options.output, options.write),
-            sources: Sources::new(options),
+            settings,
+            pass_texts: run.writes.output() && compact,
+            cache: Cache::new(&settings.output, run.writes.output()),
+            sources: Sources::new(settings),
             progress: Progress { report, done: AtomicUsize::new(0), total },
             texts: TextCounts::new(RECENT_SHARDS),
             compiled: Recent::new(SHARED_MODULE_BYTES, RECENT_SHARDS),

@@ -7,8 +7,9 @@
 
 use super::emit::{BuiltPass, CataloguePart, material_texts, write_failure};
 use super::plan::PassWork;
-use super::{BuildOptions, BuildResult, BuildSummary};
+use super::{BuildResult, BuildSummary, Writes};
 use crate::catalog::Catalog;
+use crate::config::Settings;
 use crate::diagnostics::{self, Diagnostic};
 use crate::manifest::{PackPath, PassFiles};
 use crate::store::{PassKey, hash, sealed, unsealed, write_atomically};
@@ -123,14 +124,15 @@ impl ShardPass {
         key: PassKey,
         modules: usize,
         part: BuiltPass,
-        options: &BuildOptions,
+        settings: &Settings,
+        writes: Writes,
     ) -> std::io::Result<ShardPass> {
         let ends = crate::manifest::pack_ends([&part]);
         let hashed = |pack: &PackPath| {
             let end = ends.get(pack).copied().unwrap_or(0);
-            pack_hash(&options.output, pack, end.saturating_add(1)).map(|(hash, _)| hash)
+            pack_hash(&settings.output, pack, end.saturating_add(1)).map(|(hash, _)| hash)
         };
-        let packs = if options.write {
+        let packs = if writes.output() {
             part.packs().iter().map(hashed).collect::<std::io::Result<_>>()?
         } else {
             Vec::new()
@@ -169,7 +171,8 @@ pub(super) struct ShardParts {
 /// What a shard leaves once its passes are built: `shard.json`, with their parts of the manifest
 /// and the inputs key (`inputs`) the merge checks the shards against each other by.
 pub(super) fn finish(
-    options: &BuildOptions,
+    settings: &Settings,
+    writes: Writes,
     shard: Shard,
     inputs: String,
     parts: ShardParts,
@@ -177,25 +180,25 @@ pub(super) fn finish(
     mut diagnostics: Vec<Diagnostic>,
 ) -> BuildResult {
     diagnostics::dedup(&mut diagnostics);
-    if options.write && !diagnostics::has_errors(&diagnostics) {
+    if writes.output() && !diagnostics::has_errors(&diagnostics) {
         let record = ShardRecord {
             kiln_version: env!("CARGO_PKG_VERSION").to_string(),
             inputs,
             shard: shard.index + 1,
             count: shard.count,
-            project: options.root.to_string_lossy().replace('\\', "/"),
+            project: settings.root.to_string_lossy().replace('\\', "/"),
             modules: summary.compiled + summary.reused + summary.shared,
             passes: parts.passes,
             catalogue: parts.catalogue,
             materials: parts.materials,
         };
         let written = sealed(SHARD_FILE, &record)
-            .and_then(|bytes| write_atomically(&options.output.join(SHARD_FILE), &bytes));
+            .and_then(|bytes| write_atomically(&settings.output.join(SHARD_FILE), &bytes));
         if let Err(error) = written {
-            diagnostics.push(write_failure(&options.output, error));
+            diagnostics.push(write_failure(&settings.output, error));
         }
     }
-    BuildResult::failed(options, summary, diagnostics)
+    BuildResult::failed(settings, summary, diagnostics)
 }
 
 /// Why shard outputs cannot be merged (each message names the folders and what differs).

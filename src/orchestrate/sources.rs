@@ -5,10 +5,8 @@
 //!
 //! A new source is a type implementing [`FrontSource`] or [`ModuleSource`] (with `publish`
 //! where it keeps what naga made), holding its own configuration, and its place in
-//! [`Sources::new`], made once per build from its options.
+//! [`Sources::new`], made once per build from its settings.
 
-use super::BuildOptions;
-use super::ParseScope;
 use super::jobs::{Job, WholeText};
 use super::pass::{Built, Compiled};
 use super::session::Session;
@@ -16,6 +14,7 @@ use super::tasks::map_tasks;
 use crate::compile::bind::{self, Declared, PassLayout};
 use crate::compile::stage::{self, StageRequest};
 use crate::compile::{Mapper, hlsl, parse, together};
+use crate::config::{ParseScope, Settings};
 use crate::diagnostics::Diagnostic;
 use crate::shaderlab::ast::ProgramLanguage;
 use crate::source::SourceStore;
@@ -52,7 +51,7 @@ enum ParsedFrom {
 /// cache, and (read once, when first asked) its entry in the shared cache.
 pub(super) struct PassSources<'a> {
     pub store: &'a SourceStore,
-    pub options: &'a BuildOptions,
+    pub settings: &'a Settings,
     pub session: &'a Session<'a>,
     pub pass_key: &'a str,
     pub index: &'a PassIndex,
@@ -89,7 +88,7 @@ pub(super) trait ModuleSource: Send + Sync {
 }
 
 /// The sources a build asks, in order, before naga parses or compiles: made once from its
-/// options, each holding its own configuration (the shared cache its folder).
+/// settings, each holding its own configuration (the shared cache its folder).
 pub(super) struct Sources {
     fronts: Vec<Arc<dyn FrontSource>>,
     modules: Vec<Arc<dyn ModuleSource>>,
@@ -100,9 +99,9 @@ pub(super) struct Sources {
 impl Sources {
     /// The output folder's cache, the shared cache where the build has one, then what the
     /// build's other passes made.
-    pub(super) fn new(options: &BuildOptions) -> Sources {
-        let shared = options.cache_dir.clone().map(|dir| Arc::new(SharedCache { dir }));
-        let remote = options.remote_cache.clone().filter(|r| r.mode != RemoteMode::Off);
+    pub(super) fn new(settings: &Settings) -> Sources {
+        let shared = settings.cache_dir.clone().map(|dir| Arc::new(SharedCache { dir }));
+        let remote = settings.remote_cache.clone().filter(|r| r.mode != RemoteMode::Off);
         let remote =
             remote.map(|config| Arc::new(Remote { cache: RemoteCache::new(config), keep: shared.clone() }));
         let mut fronts: Vec<Arc<dyn FrontSource>> = vec![Arc::new(OutputCache)];
@@ -383,8 +382,8 @@ impl Naga {
             entry_pragma: job.entry_pragma,
             allowed: &job.allowed,
             layout: ask.layout,
-            backends: &pass.options.backends,
-            glslang: pass.options.glslang.as_ref(),
+            backends: &pass.settings.backends,
+            glslang: pass.settings.glslang.as_ref(),
             compacted: parsed.from == ParsedFrom::Together,
         };
         stage::compile(parsed.module, &request, &Mapper { map, store: pass.store })
@@ -397,7 +396,7 @@ impl Naga {
 /// members' modules parses the rest alone: those would be parsed twice.
 pub(super) fn parse_together(pass: &PassSources, jobs: &[Job], asked: &[bool]) -> Vec<Option<naga::Module>> {
     let mut modules: Vec<Option<naga::Module>> = (0..jobs.len()).map(|_| None).collect();
-    if pass.options.parse != ParseScope::Together {
+    if pass.settings.parse != ParseScope::Together {
         return modules;
     }
     // By stage: a compute pass's kernels are entry points of one text, and a variant's kernels

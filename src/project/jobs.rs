@@ -1,18 +1,17 @@
 //! The jobs over a whole project: build (whole, a shard, or a check for an editor), merge,
-//! watch and list, each from options made once ([`BuildMode`] resolved against `kiln.toml`).
+//! watch and list, each from settings resolved once ([`Settings::resolve`]: the caller's
+//! [`Request`], the environment, `kiln.toml`) and the run's own decisions ([`Run`]).
 
 use super::ProjectError;
 use super::workspace::{
     Workspace, include_config, load_files, load_variant_logs, open_workspace, unknown_group_names,
 };
 use crate::catalog::{Catalog, CatalogInput, catalog};
-use crate::compile::glslang::Glslang;
+use crate::config::{Environment, Request, Settings};
 use crate::diagnostics::{self, Diagnostic};
-use crate::manifest::Backend;
-use crate::orchestrate::{BuildOptions, BuildResult, Cancel, ParseScope, Part, VariantSelection, build};
+use crate::orchestrate::{BuildResult, Cancel, Part, Run, Writes, build};
 use crate::preprocess::Includes;
 use crate::source::{SourceStore, Span, Spanned};
-use crate::store::remote::{Credentials, RemoteConfig, RemoteMode, UrlSource, check_url, credentials_for};
 use std::path::PathBuf;
 
 /// `kiln list`: the listing of the projects and files at `paths` (strict projects' warnings
@@ -38,99 +37,39 @@ pub fn list_project(
     Ok((listing, problems))
 }
 
-/// How `kiln build` and `kiln check` run.
-#[derive(Debug, Clone)]
-pub struct BuildMode {
-    /// Write the output (`false` for `kiln check`).
-    pub write: bool,
-    /// Overrides the project's `output` folder.
-    pub output: Option<PathBuf>,
-    /// What is built of shaders no material uses.
-    pub unused_shaders: VariantSelection,
-    /// Worker threads (default: all cores).
-    pub threads: Option<usize>,
-    /// Overrides the projects' `global_keywords` (a build script that knows the scene).
-    pub global_keywords: Option<Vec<String>>,
-    /// Write `manifest.json` indented rather than compact.
-    pub pretty_manifest: bool,
-    /// Variant usage logs whose variants are built too (`--variants-from`), besides the
-    /// project's `variant_logs`.
-    pub variant_logs: Vec<PathBuf>,
-    /// The shared module cache; else `KILN_CACHE_DIR`, else the project's `cache_dir`.
-    pub cache_dir: Option<PathBuf>,
-    /// The shared module cache when none of those names one (the language server's own).
-    pub fallback_cache_dir: Option<PathBuf>,
-    /// The remote cache's URL; else `KILN_REMOTE_CACHE`, else the project's `remote_cache`.
-    pub remote_cache: Option<String>,
-    /// What the build may do with it; else `KILN_REMOTE_CACHE_MODE`, else the project's
-    /// `remote_cache_mode`, else `write`.
-    pub remote_cache_mode: Option<RemoteMode>,
-    /// Back ends written (or checked) besides the project's `backends` (`--backends`).
-    pub backends: Vec<Backend>,
-    /// What naga parses of each stage text; else the declarations each entry point reaches for
-    /// a build, the whole text for a check (`--parse-whole`).
-    pub parse: Option<ParseScope>,
-    /// Set by the caller to stop a check early (the language server, when a newer edit makes
-    /// it moot): no pass starts after it is set, and the result is partial. A build that
-    /// writes is never stopped.
-    pub cancel: Cancel,
-}
-
-impl Default for BuildMode {
-    /// `kiln build` as it runs without options: written, the project's output folder, the
-    /// variants the materials use, every core.
-    fn default() -> BuildMode {
-        BuildMode {
-            write: true,
-            output: None,
-            unused_shaders: VariantSelection::Used,
-            threads: None,
-            global_keywords: None,
-            pretty_manifest: false,
-            variant_logs: Vec::new(),
-            cache_dir: None,
-            fallback_cache_dir: None,
-            remote_cache: None,
-            remote_cache_mode: None,
-            backends: Vec::new(),
-            parse: None,
-            cancel: Cancel::default(),
-        }
-    }
-}
-
 /// Builds (or checks) the projects and files at `paths`. `Err` only when a path does not exist.
 pub fn build_project(
     store: &mut SourceStore,
     paths: &[PathBuf],
-    mode: &BuildMode,
+    request: &Request,
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
-    build_part(store, paths, mode, progress, Part::Whole)
+    build_part(store, paths, request, progress, Part::Whole)
 }
 
 /// [`build_project`] for a part of the work.
 pub fn build_part(
     store: &mut SourceStore,
     paths: &[PathBuf],
-    mode: &BuildMode,
+    request: &Request,
     progress: &(dyn Fn(usize, usize) + Sync),
     part: Part,
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
-    let Given { workspace, mut includes, input, mut diagnostics, options } =
-        load_given(store, paths, mode, part)?;
+    let Given { workspace, mut includes, input, mut diagnostics, settings, given_files } =
+        load_given(store, paths, request)?;
+    let run = Run { writes: writes(request), part, given_files, cancel: Cancel::default() };
     // Held until the build is done: another build into the folder waits.
-    let _lock = mode.write.then(|| crate::store::OutputLock::acquire(&options.output));
+    let _lock = request.write.then(|| crate::store::OutputLock::acquire(&settings.output));
     if diagnostics.is_empty()
-        && !matches!(options.part, Part::Shard(_))
-        && let Some(result) = crate::orchestrate::unchanged(store, &options)
+        && !matches!(run.part, Part::Shard(_))
+        && let Some(result) = crate::orchestrate::unchanged(store, &settings, run.writes)
     {
         return Ok((result, diagnostics));
     }
     let (catalog, found) = catalog(store, &mut includes, &input);
     diagnostics.extend(found);
     diagnostics.extend(unknown_group_names(store, &workspace.group_names));
-    let result = build(store, &includes, &catalog, &options, &diagnostics, progress);
+    let result = build(store, &includes, &catalog, &settings, &run, &diagnostics, progress);
     // At 100,000 variants, freeing the catalogue takes a twentieth of a second nobody waits for.
     std::thread::spawn(move || drop((catalog, includes)));
     if workspace.strict {
@@ -159,20 +98,23 @@ pub struct Checked {
 /// `kiln check` of the project at `paths`, keeping what it found: never the no-op path (the store
 /// may hold texts that are not on disk: [`SourceStore::with_overlay`]), never written. `narrow`
 /// may drop variants from the catalogue before anything is compiled (an editor checking the
-/// variants it shows first).
+/// variants it shows first); `cancel` stops it before its next pass (the result is then
+/// partial, for the caller to drop).
 pub fn check_project(
     store: &mut SourceStore,
     paths: &[PathBuf],
-    mode: &BuildMode,
+    request: &Request,
+    cancel: &Cancel,
     narrow: impl FnOnce(&mut Catalog),
 ) -> Result<Checked, ProjectError> {
-    let mode = BuildMode { write: false, ..mode.clone() };
-    let Given { workspace, mut includes, input, mut diagnostics, options } =
-        load_given(store, paths, &mode, Part::Whole)?;
+    let request = Request { write: false, ..request.clone() };
+    let Given { workspace, mut includes, input, mut diagnostics, settings, given_files } =
+        load_given(store, paths, &request)?;
     let (mut catalog, found) = catalog(store, &mut includes, &input);
     diagnostics.extend(found);
     narrow(&mut catalog);
-    let result = build(store, &includes, &catalog, &options, &diagnostics, &|_, _| {});
+    let run = Run { writes: Writes::Nothing, part: Part::Whole, given_files, cancel: cancel.clone() };
+    let result = build(store, &includes, &catalog, &settings, &run, &diagnostics, &|_, _| {});
     diagnostics.extend(result.diagnostics);
     if workspace.strict {
         diagnostics::promote_warnings(&mut diagnostics);
@@ -187,28 +129,30 @@ pub fn check_project(
     })
 }
 
-/// What a project is given before anything is parsed: its settings, the shaders, materials and
-/// variant logs it names (loaded), and the options of a build of it.
+/// What a project is given before anything is parsed: its files, the shaders, materials and
+/// variant logs it names (loaded), the settings of a build of it, and how many files that was
+/// ([`Run::given_files`]).
 struct Given {
     workspace: Workspace,
     includes: Includes,
     input: CatalogInput,
     diagnostics: Vec<Diagnostic>,
-    options: BuildOptions,
+    settings: Settings,
+    given_files: usize,
 }
 
-/// The project at `paths` loaded, and the options of a build of `part` of it, made once from
-/// `mode` and the project's `kiln.toml`.
-fn load_given(
-    store: &mut SourceStore,
-    paths: &[PathBuf],
-    mode: &BuildMode,
-    part: Part,
-) -> Result<Given, ProjectError> {
+/// What a build `request` asks for writes: the output, and the record of a clean build.
+fn writes(request: &Request) -> Writes {
+    if request.write { Writes::OutputAndRecord } else { Writes::Nothing }
+}
+
+/// The project at `paths` loaded, and the settings of a build of it, resolved once from
+/// `request`, the environment and the project's `kiln.toml`.
+fn load_given(store: &mut SourceStore, paths: &[PathBuf], request: &Request) -> Result<Given, ProjectError> {
     let (workspace, mut diagnostics) = open_workspace(store, paths)?;
     // Not after a broken kiln.toml: its error says why nothing was found.
     if workspace.shaders.is_empty() && !diagnostics::has_errors(&diagnostics) {
-        diagnostics.push(no_shaders(paths, mode.write, workspace.links_refused));
+        diagnostics.push(no_shaders(paths, request.write, workspace.links_refused));
     }
     let includes = Includes::new(workspace.include.clone().unwrap_or_else(|| include_config(paths)));
     let (shaders, found) = load_files(store, &workspace.shaders);
@@ -217,114 +161,22 @@ fn load_given(
     diagnostics.extend(found);
     let mut input = workspace.catalog_input(shaders, materials);
     // A usage log named on the command line and not there is a mistake in the command.
-    if let Some(missing) = mode.variant_logs.iter().find(|path| !path.exists()) {
+    if let Some(missing) = request.variant_logs.iter().find(|path| !path.exists()) {
         return Err(ProjectError::NotFound(missing.clone()));
     }
     load_variant_logs(
         store,
-        workspace.variant_logs.iter().chain(&mode.variant_logs),
+        workspace.variant_logs.iter().chain(&request.variant_logs),
         &mut input,
         &mut diagnostics,
     );
-    if let Some(global) = &mode.global_keywords {
+    if let Some(global) = &request.global_keywords {
         input.global_keywords = Some(given_global_keywords(store, global));
     }
-    let (remote_cache, said) = remote_cache(&workspace, mode).unwrap_or_else(|error| (None, Some(error)));
+    let (settings, said) = Settings::resolve(request, &Environment::of_process(), &workspace.settings);
     diagnostics.extend(said);
-    let options = BuildOptions {
-        output: mode.output.clone().unwrap_or_else(|| workspace.output.clone()),
-        root: workspace.root.clone(),
-        write: mode.write,
-        parse: mode.parse.unwrap_or(if mode.write { ParseScope::Together } else { ParseScope::Whole }),
-        threads: mode.threads,
-        backends: Backend::ALL
-            .iter()
-            .copied()
-            .filter(|b| workspace.backends.contains(b) || mode.backends.contains(b))
-            .collect(),
-        unused_shaders: mode.unused_shaders,
-        pretty_manifest: mode.pretty_manifest,
-        record: true,
-        part,
-        cache_dir: workspace
-            .shared_cache_dir(mode.cache_dir.clone())
-            .or_else(|| mode.fallback_cache_dir.clone()),
-        remote_cache,
-        given_files: store.files_read().count(),
-        groups: workspace.groups.clone(),
-        glslang: None,
-        cancel: mode.cancel.clone(),
-    };
-    // A check reads the GLSL and HLSL it writes back with glslang, where it is installed.
-    let reread = !options.write && options.backends.iter().any(|&b| Glslang::reads(b));
-    let options = BuildOptions { glslang: reread.then(Glslang::find).flatten(), ..options };
-    Ok(Given { workspace, includes, input, diagnostics, options })
-}
-
-/// The remote cache a build uses (docs/scaling.md): the URL given (`--remote-cache`), else
-/// `KILN_REMOTE_CACHE`, else the project's `remote_cache`; its mode given, else
-/// `KILN_REMOTE_CACHE_MODE`, else the project's `remote_cache_mode`, else `write`; each step of
-/// a request limited to `KILN_REMOTE_CACHE_TIMEOUT` seconds (default 10), all of them to
-/// `KILN_REMOTE_CACHE_BUDGET` (default 30); credentials from the environment where
-/// [`credentials_for`] allows them, else a warning (K0621) saying why the build runs without.
-/// A setting kiln cannot use is an error (K0013) where it is written.
-fn remote_cache(
-    workspace: &Workspace,
-    mode: &BuildMode,
-) -> Result<(Option<RemoteConfig>, Option<Diagnostic>), Diagnostic> {
-    let invalid = |what: String, span: Option<crate::source::Span>| {
-        let d = Diagnostic::error("K0013", format!("invalid remote cache setting: {what}"));
-        let d = match span {
-            Some(span) => d.at(span, "set here"),
-            None => d,
-        };
-        d.help("give `http://host:port/prefix` or `https://...`, and a mode of `read`, `write` or `off` (docs/scaling.md)")
-    };
-    let env = |name: &str| std::env::var(name).ok().filter(|v| !v.is_empty());
-    let (url, span) = match (mode.remote_cache.clone(), env("KILN_REMOTE_CACHE"), &workspace.remote_cache) {
-        (Some(url), ..) | (None, Some(url), _) => (url, None),
-        (None, None, Some(url)) => (url.value.clone(), Some(url.span)),
-        (None, None, None) => return Ok((None, None)),
-    };
-    let url = check_url(&url).map_err(|why| invalid(format!("the URL: {why}"), span))?;
-    let chosen = match (mode.remote_cache_mode, env("KILN_REMOTE_CACHE_MODE")) {
-        (Some(chosen), _) => chosen,
-        (None, Some(name)) => RemoteMode::parse(&name)
-            .ok_or_else(|| invalid(format!("KILN_REMOTE_CACHE_MODE is `{}`", name.escape_debug()), None))?,
-        (None, None) => workspace.remote_cache_mode.unwrap_or_default(),
-    };
-    let seconds = |name: &str, default: u64| match env(name) {
-        None => Ok(std::time::Duration::from_secs(default)),
-        Some(seconds) => seconds
-            .parse::<f64>()
-            .ok()
-            .filter(|s| s.is_finite() && *s > 0.0 && *s <= 3600.0)
-            .map(std::time::Duration::from_secs_f64)
-            .ok_or_else(|| invalid(format!("{name} is `{}`, not seconds", seconds.escape_debug()), None)),
-    };
-    let (timeout, budget) =
-        (seconds("KILN_REMOTE_CACHE_TIMEOUT", 10)?, seconds("KILN_REMOTE_CACHE_BUDGET", 30)?);
-    let source = if span.is_some() { UrlSource::Project } else { UrlSource::User };
-    let (credentials, withheld) = match Credentials::from_env() {
-        None => (None, None),
-        Some(credentials) => match credentials_for(&url, source, env("KILN_REMOTE_CACHE_HOST").as_deref()) {
-            Ok(()) => (Some(credentials), None),
-            Err(why) => {
-                let warning = Diagnostic::warning(
-                    "K0621",
-                    "the remote cache gets no credentials: the build uses it without them".to_string(),
-                )
-                .note(format!("the environment holds credentials, and they are not sent: {why}"));
-                let warning = match span {
-                    Some(span) => warning.at(span, "this URL gets no credentials"),
-                    None => warning,
-                };
-                let help = "name the server with `--remote-cache` or `KILN_REMOTE_CACHE` (over `https://`), or pin its host with `KILN_REMOTE_CACHE_HOST`";
-                (None, Some(warning.help(help)))
-            }
-        },
-    };
-    Ok((Some(RemoteConfig { url, mode: chosen, timeout, budget, credentials }), withheld))
+    let given_files = store.files_read().count();
+    Ok(Given { workspace, includes, input, diagnostics, settings, given_files })
 }
 
 /// A project without shaders: a warning for a build, an error for a check, so that CI pointed at
@@ -347,14 +199,14 @@ fn no_shaders(paths: &[PathBuf], build: bool, links_refused: usize) -> Diagnosti
     )
 }
 
-/// `kiln merge`: checks the shard outputs against each other, then writes into `mode.output` the
+/// `kiln merge`: checks the shard outputs against each other, then writes into `request.output` the
 /// bytes one build of the project gives, from their parts (no catalogue, no naga). The project is
 /// `project`, or the one the shards were built from.
 pub fn merge_shards(
     store: &mut SourceStore,
     shards: &[PathBuf],
     project: Option<PathBuf>,
-    mode: &BuildMode,
+    request: &Request,
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
     let records = || {
         let (records, inputs) = crate::orchestrate::shard::check_shards(shards)?;
@@ -368,8 +220,7 @@ pub fn merge_shards(
     let ((merge, read), given) = match project {
         Some(project) => {
             let read_shards = || records().map(|merge| (merge.read_shards(), merge));
-            let (shards, given) =
-                rayon::join(read_shards, || load_given(store, &[project], mode, Part::Whole));
+            let (shards, given) = rayon::join(read_shards, || load_given(store, &[project], request));
             let (read, merge) = shards?;
             ((merge, read), given?)
         }
@@ -377,14 +228,14 @@ pub fn merge_shards(
             let merge = records()?;
             let project = PathBuf::from(&merge.shards[0].1.project);
             let (read, given) =
-                rayon::join(|| merge.read_shards(), || load_given(store, &[project], mode, Part::Whole));
+                rayon::join(|| merge.read_shards(), || load_given(store, &[project], request));
             ((merge, read), given?)
         }
     };
-    let Given { workspace, mut diagnostics, options, .. } = given;
+    let Given { workspace, mut diagnostics, settings, .. } = given;
     // As a build holds its output folder: another build or merge into it waits.
-    let _lock = crate::store::OutputLock::acquire(&options.output);
-    let result = crate::orchestrate::merge(store, &options, &diagnostics, &merge, read);
+    let _lock = crate::store::OutputLock::acquire(&settings.output);
+    let result = crate::orchestrate::merge(store, &settings, writes(request), &diagnostics, &merge, read);
     // The shards' parts are many small strings: freeing them would hold up the answer for a
     // tenth of a second at 100,000 variants, which a process about to exit need not wait for.
     std::thread::spawn(move || drop(merge));
@@ -401,18 +252,18 @@ pub fn merge_shards(
 pub fn watch_build(
     store: &mut SourceStore,
     paths: &[PathBuf],
-    mode: &BuildMode,
+    request: &Request,
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
     // The output folder keeps each pass's last build only; where no shared cache is set, one of
     // the user's keeps every module built, so that an edit undone compiles nothing.
-    let mode = BuildMode {
-        fallback_cache_dir: mode
+    let request = Request {
+        fallback_cache_dir: request
             .fallback_cache_dir
             .clone()
             .or_else(|| Some(user_cache_dir().join("watch-modules"))),
-        ..mode.clone()
+        ..request.clone()
     };
-    let (result, diagnostics) = build_project(store, paths, &mode, &|_, _| {})?;
+    let (result, diagnostics) = build_project(store, paths, &request, &|_, _| {})?;
     let errors_file = result.output.join(crate::manifest::ERRORS_FILE);
     let all: Vec<Diagnostic> = diagnostics.iter().chain(&result.diagnostics).cloned().collect();
     let written = if diagnostics::has_errors(&all) {
@@ -439,12 +290,12 @@ pub fn preview_build(
 ) -> Result<(BuildResult, Vec<Diagnostic>), ProjectError> {
     let root = std::fs::canonicalize(project).unwrap_or_else(|_| project.to_path_buf());
     let key = blake3::hash(root.as_os_str().as_encoded_bytes()).to_hex();
-    let mode = BuildMode {
+    let request = Request {
         output: Some(user_cache_dir().join("preview").join(&key[..16])),
         fallback_cache_dir: Some(user_cache_dir().join("watch-modules")),
-        ..BuildMode::default()
+        ..Request::default()
     };
-    build_project(store, &[project.to_path_buf()], &mode, &|_, _| {})
+    build_project(store, &[project.to_path_buf()], &request, &|_, _| {})
 }
 
 /// kiln's folder in the user's cache (`$XDG_CACHE_HOME/kiln`, else `~/.cache/kiln`), for the

@@ -10,16 +10,17 @@ mod materials;
 mod variant;
 mod workspace;
 
+pub use crate::config::Request;
 pub use crate::orchestrate::{Cancel, Part};
 pub use jobs::{
-    BuildMode, Checked, build_part, build_project, check_project, list_project, merge_shards, preview_build,
+    Checked, build_part, build_project, check_project, list_project, merge_shards, preview_build,
     user_cache_dir, watch_build,
 };
 pub use materials::{apply_preset, config_folder_above, new_material, project_of};
 pub use variant::{VariantRequest, preprocess_variant, reflect_variant};
 pub use workspace::{
     SHADER_EXTENSIONS, Workspace, default_project, find_files, include_config, load_error, load_files,
-    named_cache_dir, open_workspace,
+    open_workspace,
 };
 
 use crate::keywords::VariantError;

@@ -5,10 +5,11 @@ use super::ProjectError;
 use super::materials::config_folder_above;
 use super::workspace::{SHADER_EXTENSIONS, bind_group_names, include_config};
 use crate::catalog::{Catalog, CatalogInput, CatalogProgram, catalog};
+use crate::config::{ParseScope, Settings};
 use crate::diagnostics::{self, Diagnostic};
 use crate::keywords::{Variant, select_variant};
 use crate::manifest::StageView;
-use crate::orchestrate::{BuildOptions, ParseScope, build};
+use crate::orchestrate::{Run, Writes, build};
 use crate::preprocess::{Includes, Preprocessed, Stage, preprocess_with};
 use crate::reflect::UniformBlock;
 use crate::shaderlab::ast::ProgramLanguage;
@@ -151,11 +152,10 @@ pub fn reflect_variant(
         diagnostics.extend(problems);
         diagnostics.extend(bind_group_names(&config.bind_groups, file, &mut groups));
     }
-    let options = BuildOptions {
-        groups,
-        ..BuildOptions::one_off(folder.clone(), folder.join(".kiln-reflect-unused"), false)
-    };
-    let result = build(store, &includes, &catalog, &options, &diagnostics, &|_, _| {});
+    let settings =
+        Settings { groups, ..Settings::one_off(folder.clone(), folder.join(".kiln-reflect-unused")) };
+    let run = Run { writes: Writes::Nothing, ..Run::default() };
+    let result = build(store, &includes, &catalog, &settings, &run, &diagnostics, &|_, _| {});
     diagnostics.extend(result.diagnostics);
     let pass = result.manifest.as_ref().and_then(|m| m.passes().next());
     let json = pass.filter(|_| !diagnostics::has_errors(&diagnostics)).and_then(|p| {

@@ -3,7 +3,7 @@
 
 use super::ProjectError;
 use crate::catalog::CatalogInput;
-use crate::config::ProjectConfig;
+use crate::config::{ProjectConfig, ProjectSettings};
 use crate::diagnostics::Diagnostic;
 use crate::preprocess::IncludeConfig;
 use crate::source::{FileId, LinksOut, LoadError, SourceStore, Span, Spanned};
@@ -25,13 +25,9 @@ pub fn default_project() -> PathBuf {
 /// are shaders (or materials, by their `.mat` extension).
 #[derive(Debug, Default)]
 pub struct Workspace {
-    /// The project folder (the first folder given, or the folder of the first file): what the
-    /// build records about files is relative to it.
-    pub root: PathBuf,
-    /// Where builds write: the first project folder's `output` (default `build/kiln` in it).
-    pub output: PathBuf,
-    /// The back ends stage modules are written for.
-    pub backends: Vec<crate::config::Backend>,
+    /// The project's layer of a build's settings: the project folder, and the first project
+    /// folder's `kiln.toml` (`[`Settings::resolve`](crate::config::Settings::resolve) reads it).
+    pub settings: ProjectSettings,
     /// The shader files found.
     pub shaders: Vec<PathBuf>,
     /// The material files found.
@@ -46,18 +42,9 @@ pub struct Workspace {
     pub strict: bool,
     /// `kiln.toml`'s `variant_logs`, relative to the working folder.
     pub variant_logs: Vec<PathBuf>,
-    /// The first project folder's `cache_dir`.
-    pub cache_dir: Option<PathBuf>,
-    /// The first project folder's `remote_cache`, where its kiln.toml writes it, and
-    /// `remote_cache_mode`.
-    pub remote_cache: Option<Spanned<String>>,
-    /// See [`Workspace::remote_cache`].
-    pub remote_cache_mode: Option<crate::store::remote::RemoteMode>,
     /// The compute shader variants `kiln.toml` lists (`[compute.NAME] variants`).
     pub listed_variants: Vec<crate::catalog::ListedVariant>,
-    /// The names `kiln.toml` adds to the per-frame and per-object bind groups.
-    pub groups: crate::compile::bind::GroupNames,
-    /// The same names, where `kiln.toml` writes them.
+    /// The names `kiln.toml` adds to the bind groups, where it writes them.
     pub group_names: Vec<Spanned<String>>,
     /// Links out of the project the walk did not follow ([`LinksOut`]), for a project that seems
     /// to hold no shader.
@@ -65,12 +52,6 @@ pub struct Workspace {
 }
 
 impl Workspace {
-    /// The shared module cache a command uses: the folder given, else `KILN_CACHE_DIR`, else
-    /// the project's `cache_dir`.
-    pub fn shared_cache_dir(&self, given: Option<PathBuf>) -> Option<PathBuf> {
-        named_cache_dir(given).or_else(|| self.cache_dir.clone())
-    }
-
     /// What the catalogue is built from: the loaded shader and material files, with this
     /// workspace's settings.
     pub fn catalog_input(&self, shaders: Vec<FileId>, materials: Vec<FileId>) -> CatalogInput {
@@ -192,6 +173,8 @@ pub fn open_workspace(
     let mut roots = Vec::new();
     let links_out = LinksOut::from_env();
     let mut include_paths = Vec::new();
+    // The first folder's kiln.toml (or its defaults) and where it is.
+    let mut first_folder: Option<(PathBuf, Option<FileId>, ProjectConfig)> = None;
     // How many files and folders the shaders and the materials were gathered from.
     let (mut shader_sources, mut material_sources) = (0, 0);
     for path in paths {
@@ -218,14 +201,7 @@ pub fn open_workspace(
                     global.iter().map(|k| Spanned::new(k.get_ref().clone(), Span::new(file, k.span())));
                 workspace.global_keywords.get_or_insert_with(Vec::new).extend(spanned);
             }
-            diagnostics.extend(bind_group_names(&config.bind_groups, file, &mut workspace.groups));
-            if workspace.remote_cache.is_none()
-                && let Some(url) = &config.remote_cache
-            {
-                workspace.remote_cache =
-                    Some(Spanned::new(url.get_ref().clone(), Span::new(file, url.span())));
-                workspace.remote_cache_mode = config.remote_cache_mode;
-            }
+            diagnostics.extend(bind_group_names(&config.bind_groups, file, &mut workspace.settings.groups));
             let spanned = config.bind_groups.per_frame.iter().chain(&config.bind_groups.per_object);
             workspace
                 .group_names
@@ -282,16 +258,11 @@ pub fn open_workspace(
         shader_sources += config.shaders.len();
         material_sources += config.materials.len();
         include_paths.extend(include_folders);
-        if workspace.output.as_os_str().is_empty() {
-            workspace.output = crate::source::normalize_lexically(&path.join(&config.output));
-            workspace.backends = config.backends.clone();
+        if first_folder.is_none() {
+            first_folder = Some((path.clone(), config_file, config.clone()));
         }
         workspace.always_include.extend(config.always_include);
         workspace.variant_logs.extend(variant_logs);
-        if workspace.cache_dir.is_none() {
-            workspace.cache_dir =
-                config.cache_dir.as_ref().map(|c| crate::source::normalize_lexically(&path.join(c)));
-        }
         workspace.strict |= config.strict;
         roots.push(path.clone());
     }
@@ -310,13 +281,11 @@ pub fn open_workspace(
             files.retain(|_| keep.next().unwrap_or(true));
         }
     }
-    workspace.root = roots.first().cloned().unwrap_or_default();
-    if workspace.output.as_os_str().is_empty() {
-        let defaults = ProjectConfig::default();
-        let folder = workspace.root.clone();
-        workspace.output = crate::source::normalize_lexically(&folder.join(defaults.output));
-        workspace.backends = defaults.backends;
-    }
+    let root = roots.first().cloned().unwrap_or_default();
+    let (folder, file, config) =
+        first_folder.unwrap_or_else(|| (root.clone(), None, ProjectConfig::default()));
+    let groups = std::mem::take(&mut workspace.settings.groups);
+    workspace.settings = ProjectSettings { root, folder, file, config, groups };
     let mut include = include_config(&roots);
     include.include_paths = include_paths;
     include.links_out = links_out;
@@ -333,12 +302,6 @@ pub fn include_config(paths: &[PathBuf]) -> IncludeConfig {
         .map(|p| if p.as_os_str().is_empty() { PathBuf::from(".") } else { p })
         .collect();
     IncludeConfig::new(roots)
-}
-
-/// The shared module cache named without a project: the folder given, else `KILN_CACHE_DIR`
-/// (a project's `cache_dir` comes after both: [`Workspace::shared_cache_dir`]).
-pub fn named_cache_dir(given: Option<PathBuf>) -> Option<PathBuf> {
-    given.or_else(|| std::env::var_os("KILN_CACHE_DIR").map(PathBuf::from))
 }
 
 /// The files a project's shader folders are searched for: `.shader` files and compute shaders.

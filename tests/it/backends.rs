@@ -6,7 +6,7 @@ use crate::support::{kiln, root, tool, verified_manifest};
 use expect_test::expect_file;
 use kiln::diagnostics::render_plain;
 use kiln::manifest::{Backend, Manifest};
-use kiln::project::{BuildMode, build_project};
+use kiln::project::{Request, build_project};
 use kiln::source::SourceStore;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
@@ -15,11 +15,11 @@ use std::process::{Command, Stdio};
 /// The bundled project built with every back end into `output`.
 fn build_every_backend(output: &Path) -> Manifest {
     let mut store = SourceStore::new();
-    let mode = BuildMode {
+    let mode = Request {
         output: Some(output.to_path_buf()),
         backends: Backend::ALL.to_vec(),
         threads: Some(2),
-        ..BuildMode::default()
+        ..Request::default()
     };
     let (result, mut diagnostics) =
         build_project(&mut store, &[PathBuf::from("fixtures/project")], &mode, &|_, _| {}).expect("exists");
@@ -143,7 +143,7 @@ fn metal_slots_are_numbered_per_kind_in_the_order_of_the_pass_layout() {
 #[test]
 fn writer_failures_are_located_diagnostics_and_nothing_panics() {
     let mut store = SourceStore::new();
-    let mode = BuildMode { write: false, threads: Some(1), ..BuildMode::default() };
+    let mode = Request { write: false, threads: Some(1), ..Request::default() };
     let path = PathBuf::from("fixtures/bad/backends");
     let (result, mut diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
     diagnostics.extend(result.diagnostics);

@@ -4,10 +4,11 @@
 
 use crate::support::{fixture_files, kiln, root, verified_manifest};
 use expect_test::expect_file;
+use kiln::config::VariantSelection;
 use kiln::diagnostics::{Diagnostic, has_errors, render_plain};
 use kiln::manifest::Manifest;
-use kiln::orchestrate::{BuildResult, VariantSelection};
-use kiln::project::{BuildMode, build_project};
+use kiln::orchestrate::BuildResult;
+use kiln::project::{Request, build_project};
 use kiln::source::SourceStore;
 use naga::valid::{Capabilities, ValidationFlags};
 use std::collections::BTreeMap;
@@ -28,8 +29,7 @@ fn build_with(
     pretty_manifest: bool,
 ) -> (BuildResult, Vec<Diagnostic>, SourceStore) {
     let mut store = SourceStore::new();
-    let mode =
-        BuildMode { output: Some(output.to_path_buf()), threads, pretty_manifest, ..BuildMode::default() };
+    let mode = Request { output: Some(output.to_path_buf()), threads, pretty_manifest, ..Request::default() };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from(project)], &mode, &|_, _| {}).expect("project exists");
     (result, diagnostics, store)
@@ -278,11 +278,11 @@ fn build_fixtures(folder: &str, expect_errors: bool, dir: &Path) -> Vec<PathBuf>
     for path in files {
         let mut store = SourceStore::new();
         let output = dir.join(path.file_stem().expect("name"));
-        let mode = BuildMode {
+        let mode = Request {
             output: Some(output.clone()),
             unused_shaders: VariantSelection::All { limit: 4096 },
             threads: Some(1),
-            ..BuildMode::default()
+            ..Request::default()
         };
         let (result, mut diagnostics) =
             build_project(&mut store, std::slice::from_ref(&path), &mode, &|_, _| {}).expect("exists");
@@ -468,7 +468,7 @@ fn a_build_script_error_reads_like_a_compiler_error() {
 #[test]
 fn an_always_included_shader_with_too_many_variants_is_refused_with_the_count() {
     let mut store = SourceStore::new();
-    let mode = BuildMode { write: false, threads: Some(1), ..BuildMode::default() };
+    let mode = Request { write: false, threads: Some(1), ..Request::default() };
     let path = PathBuf::from("fixtures/bad/always_include");
     let (result, mut diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
     diagnostics.extend(result.diagnostics);
@@ -482,8 +482,7 @@ fn an_always_included_shader_with_too_many_variants_is_refused_with_the_count() 
 fn a_variant_log_line_that_names_nothing_is_an_error_at_its_line() {
     let mut store = SourceStore::new();
     let output = tempfile::tempdir().expect("temp dir");
-    let mode =
-        BuildMode { output: Some(output.path().to_path_buf()), threads: Some(1), ..BuildMode::default() };
+    let mode = Request { output: Some(output.path().to_path_buf()), threads: Some(1), ..Request::default() };
     let path = PathBuf::from("fixtures/bad/variant_log");
     let (result, diagnostics) = build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");
     expect_file![root().join("fixtures/bad/variant_log/kiln.stderr")]
@@ -537,8 +536,7 @@ fn progress_counts_what_the_closing_line_counts() {
         let mut seen = seen.lock().expect("lock");
         *seen = (seen.0.max(done), seen.1.max(total));
     };
-    let mode =
-        BuildMode { output: Some(output.path().to_path_buf()), threads: Some(2), ..BuildMode::default() };
+    let mode = Request { output: Some(output.path().to_path_buf()), threads: Some(2), ..Request::default() };
     let mut store = SourceStore::new();
     let (result, _) =
         build_project(&mut store, &[PathBuf::from("fixtures/project")], &mode, &progress).expect("project");
@@ -692,7 +690,7 @@ fn kiln_toml_names_the_resources_bound_per_frame_and_per_object() {
     let mut store = SourceStore::new();
     let path = PathBuf::from("fixtures/bad/bind_groups");
     let (_, diagnostics) =
-        build_project(&mut store, &[path], &BuildMode { write: false, ..BuildMode::default() }, &|_, _| {})
+        build_project(&mut store, &[path], &Request { write: false, ..Request::default() }, &|_, _| {})
             .expect("exists");
     assert!(has_errors(&diagnostics));
     expect_file![root().join("fixtures/bad/bind_groups/kiln.stderr")]
@@ -705,7 +703,7 @@ fn kiln_toml_names_the_resources_bound_per_frame_and_per_object() {
 fn a_bind_group_name_no_file_declares_warns_with_the_closest_resource() {
     let check = |path: &str| {
         let mut store = SourceStore::new();
-        let mode = BuildMode { write: false, ..BuildMode::default() };
+        let mode = Request { write: false, ..Request::default() };
         let (result, mut diagnostics) =
             build_project(&mut store, &[PathBuf::from(path)], &mode, &|_, _| {}).expect("exists");
         diagnostics.extend(result.diagnostics);

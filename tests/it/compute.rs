@@ -197,7 +197,7 @@ fn every_kernel_variant_computes_what_the_cpu_computes() {
 #[test]
 fn mistakes_in_kernels_and_listed_variants_are_reported_where_they_are_written() {
     let mut store = kiln::source::SourceStore::new();
-    let mode = kiln::project::BuildMode { write: false, threads: Some(1), ..Default::default() };
+    let mode = kiln::config::Request { write: false, threads: Some(1), ..Default::default() };
     let path = std::path::PathBuf::from("fixtures/bad/compute");
     let (result, mut diagnostics) =
         kiln::project::build_project(&mut store, &[path], &mode, &|_, _| {}).expect("exists");

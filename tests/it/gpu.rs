@@ -3,7 +3,7 @@
 //! passes, unless `KILN_REQUIRE_GPU=1` (set by CI) makes that a failure.
 
 use kiln::manifest::{Manifest, PassManifest, ShaderStage, StageView};
-use kiln::project::{BuildMode, build_project};
+use kiln::project::{Request, build_project};
 use kiln::reflect::Resource;
 use kiln::source::SourceStore;
 use std::path::{Path, PathBuf};
@@ -157,7 +157,7 @@ fn every_variant_makes_a_render_pipeline() {
     };
     let output = tempfile::tempdir().expect("temp dir");
     let mut store = SourceStore::new();
-    let mode = BuildMode { output: Some(output.path().to_path_buf()), ..BuildMode::default() };
+    let mode = Request { output: Some(output.path().to_path_buf()), ..Request::default() };
     let (result, diagnostics) =
         build_project(&mut store, &[PathBuf::from("fixtures/project")], &mode, &|_, _| {})
             .expect("project exists");

@@ -4,9 +4,9 @@
 //! WGSL twin's on the GPU (lavapipe in CI).
 
 use crate::support::{build_without_errors, gpu, kiln, root, tool, verified_manifest};
+use kiln::config::VariantSelection;
 use kiln::manifest::{Manifest, PassManifest};
-use kiln::orchestrate::VariantSelection;
-use kiln::project::{BuildMode, build_project};
+use kiln::project::{Request, build_project};
 use kiln::runtime::{Drawable, PipelineRequest, Runtime};
 use kiln::source::SourceStore;
 use std::fmt::Write as _;
@@ -205,10 +205,10 @@ fn constant_buffers_keep_hlsl_s_packing_or_are_refused_at_the_member() {
         std::fs::write(&shader, case_shader(index, &members)).expect("write");
         let output = project.join("out");
         let mut store = SourceStore::new();
-        let mode = BuildMode {
+        let mode = Request {
             output: Some(output.clone()),
             unused_shaders: VariantSelection::All { limit: 16 },
-            ..BuildMode::default()
+            ..Request::default()
         };
         let (result, mut diagnostics) =
             build_project(&mut store, std::slice::from_ref(&shader), &mode, &|_, _| {}).expect("builds");
@@ -377,10 +377,10 @@ fn hlsl_modules_come_from_the_output_s_cache_and_the_shared_cache() {
     let (cache, first, second) = (dir.path().join("cache"), dir.path().join("a"), dir.path().join("b"));
     let build = |output: &Path| {
         let mut store = SourceStore::new();
-        let mode = BuildMode {
+        let mode = Request {
             output: Some(output.to_path_buf()),
             cache_dir: Some(cache.clone()),
-            ..BuildMode::default()
+            ..Request::default()
         };
         let project = root().join("fixtures/hlsl");
         let (result, diagnostics) = build_project(&mut store, &[project], &mode, &|_, _| {}).expect("builds");

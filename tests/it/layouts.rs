@@ -10,9 +10,9 @@
 //! scalar back through kiln's WGSL.
 
 use crate::support::{gpu, tool};
+use kiln::config::VariantSelection;
 use kiln::manifest::Manifest;
-use kiln::orchestrate::VariantSelection;
-use kiln::project::{BuildMode, build_project};
+use kiln::project::{Request, build_project};
 use kiln::source::SourceStore;
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -819,10 +819,10 @@ fn build(dir: &Path, cases: &[&Case]) -> (Option<Manifest>, Vec<kiln::diagnostic
     write_project(&dir.join("project"), cases);
     let mut store = SourceStore::new();
     let output = dir.join("out");
-    let mode = BuildMode {
+    let mode = Request {
         output: Some(output.clone()),
         unused_shaders: VariantSelection::All { limit: 16 },
-        ..BuildMode::default()
+        ..Request::default()
     };
     let (result, mut diagnostics) =
         build_project(&mut store, &[dir.join("project")], &mode, &|_, _| {}).expect("project");
@@ -1226,11 +1226,11 @@ fn wgpu_s_gl_back_end_reads_every_scalar_where_the_spec_puts_it() {
 /// The sample's cases kiln refuses for GLSL because GLSL would lay their block out elsewhere.
 fn refused_for_gl(dir: &Path, sample: &[&Case]) -> Vec<String> {
     let mut store = SourceStore::new();
-    let mode = BuildMode {
+    let mode = Request {
         write: false,
         backends: vec![kiln::manifest::Backend::Glsl],
         unused_shaders: VariantSelection::All { limit: 16 },
-        ..BuildMode::default()
+        ..Request::default()
     };
     let (result, mut diagnostics) =
         build_project(&mut store, &[dir.join("project")], &mode, &|_, _| {}).expect("project");

@@ -4,9 +4,9 @@
 
 use crate::support::{fixture_files, kiln, root};
 use expect_test::expect_file;
+use kiln::config::ParseScope;
 use kiln::diagnostics::{Diagnostic, has_errors, render_plain};
 use kiln::listing::program_blocks;
-use kiln::orchestrate::ParseScope;
 use kiln::preprocess::{IncludeConfig, Includes, Stage, load_pass, preprocess};
 use kiln::project::{VariantRequest, include_config, preprocess_variant};
 use kiln::shaderlab::parse_shader;

@@ -14,7 +14,7 @@ const DOCS_PICTURE: &str = "docs/images/preview-LitOpaque.png";
 fn drawn(project: &Path, material: &str, size: u32, test: &str) -> Option<preview::Preview> {
     support::gpu(test)?;
     let output = tempfile::tempdir().expect("temp dir");
-    support::build_without_errors(project, Some(output.path()), kiln::orchestrate::VariantSelection::Used);
+    support::build_without_errors(project, Some(output.path()), kiln::config::VariantSelection::Used);
     let library = kiln::runtime::Library::open(output.path()).expect("the build opens");
     Some(preview::draw(library, material, size).expect("the preview draws"))
 }

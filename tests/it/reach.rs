@@ -4,8 +4,9 @@
 //! with canonical ids where naga's SPIR-V declares types in another order.
 
 use crate::support::{root, tool};
-use kiln::orchestrate::{BuildSummary, ParseScope, VariantSelection};
-use kiln::project::{BuildMode, build_project};
+use kiln::config::{ParseScope, VariantSelection};
+use kiln::orchestrate::BuildSummary;
+use kiln::project::{Request, build_project};
 use kiln::source::SourceStore;
 use std::collections::HashMap;
 use std::fmt::Write as _;
@@ -23,12 +24,12 @@ pub fn build_with(
     // One thread: with more, two passes sharing a text may both parse it before either has
     // finished (the other passes' source is "what they made lately"), and the counts the goldens
     // pin would move with the machine's load. The bytes written never do.
-    let mode = BuildMode {
+    let mode = Request {
         output: Some(output.to_path_buf()),
         unused_shaders,
         parse: Some(parse),
         threads: Some(1),
-        ..BuildMode::default()
+        ..Request::default()
     };
     let (result, mut diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");

@@ -7,7 +7,7 @@
 use crate::support::{compiled, root, shipped};
 use expect_test::expect_file;
 use kiln::diagnostics::{has_errors, render_plain};
-use kiln::project::{BuildMode, build_project};
+use kiln::project::{Request, build_project};
 use kiln::source::SourceStore;
 use std::collections::BTreeMap;
 use std::io::{BufRead, BufReader, Read, Write};
@@ -377,7 +377,7 @@ fn a_token_is_sent_and_written_nowhere() {
 }
 
 /// A project's build through the library, with `mode`; its diagnostics rendered.
-fn diagnostics_of(project: &str, mode: &BuildMode) -> (bool, String) {
+fn diagnostics_of(project: &str, mode: &Request) -> (bool, String) {
     let mut store = SourceStore::new();
     let (result, mut diagnostics) =
         build_project(&mut store, &[root().join(project)], mode, &|_, _| {}).expect("exists");
@@ -389,7 +389,7 @@ fn diagnostics_of(project: &str, mode: &BuildMode) -> (bool, String) {
 #[test]
 fn settings_kiln_cannot_use_are_errors_where_they_are_written() {
     let out = tempfile::tempdir().expect("temp dir");
-    let mode = BuildMode { output: Some(out.path().to_path_buf()), ..BuildMode::default() };
+    let mode = Request { output: Some(out.path().to_path_buf()), ..Request::default() };
     let (failed, shown) = diagnostics_of("fixtures/bad/remote_cache", &mode);
     assert!(failed);
     expect_file![root().join("fixtures/bad/remote_cache/kiln.stderr")].assert_eq(&shown);
@@ -406,10 +406,10 @@ fn settings_kiln_cannot_use_are_errors_where_they_are_written() {
 fn a_server_nothing_listens_on_is_one_warning() {
     let out = tempfile::tempdir().expect("temp dir");
     // Port 9 (discard): nothing listens there on a test machine.
-    let mode = BuildMode {
+    let mode = Request {
         output: Some(out.path().to_path_buf()),
         remote_cache: Some("http://127.0.0.1:9/kiln".to_string()),
-        ..BuildMode::default()
+        ..Request::default()
     };
     let (failed, shown) = diagnostics_of("fixtures/ubershader", &mode);
     assert!(!failed, "{shown}");

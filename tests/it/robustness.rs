@@ -243,5 +243,5 @@ fn a_thread_count_past_the_bound_runs_no_more_workers_than_the_bound() {
     }
     assert!(child.wait().expect("ends").success());
     // The workers, the main thread, the remote cache's uploaders and a few readers.
-    assert!(most > 0 && most <= kiln::orchestrate::MAX_THREADS + 32, "{most} threads");
+    assert!(most > 0 && most <= kiln::config::MAX_THREADS + 32, "{most} threads");
 }

@@ -4,8 +4,8 @@
 
 use crate::support::{build_without_errors, gpu, kiln, root};
 use kiln::accuracy::gpu::Gpu;
+use kiln::config::VariantSelection;
 use kiln::manifest::MaterialManifest;
-use kiln::orchestrate::VariantSelection;
 use kiln::runtime::{
     Drawable, Library, ModuleSource, PipelineRequest, Reload, Runtime, RuntimeError, Targets, UsageLog,
 };
@@ -400,8 +400,7 @@ fn a_running_program_swaps_in_a_rebuilt_shader_and_keeps_the_last_good_one_on_er
         std::fs::copy(root().join("fixtures/runtime").join(name), to).expect("copy");
     }
     let output = project.path().join("out");
-    let mode =
-        kiln::project::BuildMode { output: Some(output.clone()), ..kiln::project::BuildMode::default() };
+    let mode = kiln::config::Request { output: Some(output.clone()), ..kiln::config::Request::default() };
     let rebuild = || {
         let mut store = SourceStore::new();
         kiln::project::watch_build(&mut store, &[project.path().to_path_buf()], &mode).expect("builds");

@@ -25,7 +25,7 @@ fn default_output(project: &Path) -> std::path::PathBuf {
     let mut store = kiln::source::SourceStore::new();
     let (workspace, _) =
         kiln::project::open_workspace(&mut store, &[project.to_path_buf()]).expect("project");
-    workspace.output
+    workspace.settings.output()
 }
 
 #[test]
@@ -114,9 +114,9 @@ fn a_deleted_include_is_reported_not_skipped_by_the_no_op_check() {
     build_clean(&project, None);
     std::fs::remove_file(project.join("Tint.wgsl")).expect("delete an include");
     let mut store = kiln::source::SourceStore::new();
-    let mode = kiln::project::BuildMode {
-        unused_shaders: kiln::orchestrate::VariantSelection::Used,
-        ..kiln::project::BuildMode::default()
+    let mode = kiln::config::Request {
+        unused_shaders: kiln::config::VariantSelection::Used,
+        ..kiln::config::Request::default()
     };
     let (result, mut diagnostics) =
         kiln::project::build_project(&mut store, std::slice::from_ref(&project), &mode, &|_, _| {})

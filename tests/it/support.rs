@@ -1,8 +1,8 @@
 //! Shared helpers: paths into the repository, loading fixtures, running the `kiln` binary.
 
+use kiln::config::VariantSelection;
 use kiln::diagnostics::Diagnostic;
-use kiln::orchestrate::VariantSelection;
-use kiln::project::{BuildMode, build_project};
+use kiln::project::{Request, build_project};
 use kiln::source::{FileId, SourceStore};
 use std::path::{Path, PathBuf};
 use std::process::Output;
@@ -220,7 +220,7 @@ pub fn build_without_errors(
     unused_shaders: VariantSelection,
 ) -> (kiln::orchestrate::BuildSummary, String) {
     let mut store = SourceStore::new();
-    let mode = BuildMode { output: output.map(Path::to_path_buf), unused_shaders, ..BuildMode::default() };
+    let mode = Request { output: output.map(Path::to_path_buf), unused_shaders, ..Request::default() };
     let (result, mut diagnostics) =
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
     diagnostics.extend(result.diagnostics);

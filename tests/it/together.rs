@@ -6,7 +6,8 @@
 
 use crate::reach::build_with;
 use crate::support::{root, synthetic_project, tree};
-use kiln::orchestrate::{BuildSummary, ParseScope, VariantSelection};
+use kiln::config::{ParseScope, VariantSelection};
+use kiln::orchestrate::BuildSummary;
 use std::fmt::Write as _;
 use std::path::Path;
 

@@ -5,8 +5,8 @@
 
 use crate::runtime::{draw_with, targets};
 use crate::support::{build_without_errors, gpu, root};
+use kiln::config::VariantSelection;
 use kiln::manifest::MaterialManifest;
-use kiln::orchestrate::VariantSelection;
 use kiln::runtime::{Drawable, PipelineRequest, Runtime};
 use std::sync::Arc;
 use std::time::{Duration, Instant};

@@ -48,8 +48,8 @@ fn every_real_unity_shader_lists_without_an_error() {
 /// named diagnostic at a pass, none a panic.
 #[test]
 fn unity_s_built_in_vertex_and_fragment_passes_build_with_their_own_cg_includes() {
-    use kiln::orchestrate::VariantSelection;
-    use kiln::project::{BuildMode, build_project};
+    use kiln::config::VariantSelection;
+    use kiln::project::{Request, build_project};
     use kiln::source::SourceStore;
     use std::collections::{BTreeMap, BTreeSet};
     let project = root().join("tests/corpus/unity/Unity-Built-in-Shaders");
@@ -87,10 +87,10 @@ fn unity_s_built_in_vertex_and_fragment_passes_build_with_their_own_cg_includes(
         }
     }
     let mut store = SourceStore::new();
-    let mode = BuildMode {
+    let mode = Request {
         write: false,
         unused_shaders: VariantSelection::DefaultsAndEachKeyword,
-        ..BuildMode::default()
+        ..Request::default()
     };
     let (result, mut diagnostics) =
         build_project(&mut store, &[project], &mode, &|_, _| {}).expect("project");

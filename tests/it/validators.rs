@@ -4,8 +4,8 @@
 //! hundreds of variants, each built with every variant its shaders declare.
 
 use crate::support::{build_without_errors, root, synthetic_project, tool};
+use kiln::config::VariantSelection;
 use kiln::manifest::{GpuFeature, Manifest};
-use kiln::orchestrate::VariantSelection;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 

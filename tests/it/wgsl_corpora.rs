@@ -8,8 +8,8 @@
 //! from `kiln preprocess` token for token.
 
 use crate::support::{kiln, root, tool};
-use kiln::orchestrate::{ParseScope, VariantSelection};
-use kiln::project::{BuildMode, build_project};
+use kiln::config::{ParseScope, VariantSelection};
+use kiln::project::{Request, build_project};
 use kiln::source::SourceStore;
 use naga::valid::{Capabilities, ValidationFlags, Validator};
 use std::collections::BTreeMap;
@@ -246,7 +246,7 @@ fn judge(corpus: &Corpus, spirv_tools: bool) -> Report {
     };
     std::fs::write(project.join("kiln.toml"), kiln_toml(&mut names.values().flatten())).expect("kiln.toml");
     let mut store = SourceStore::new();
-    let mode = BuildMode { unused_shaders: VariantSelection::All { limit: 16 }, ..BuildMode::default() };
+    let mode = Request { unused_shaders: VariantSelection::All { limit: 16 }, ..Request::default() };
     let (result, mut diagnostics) =
         build_project(&mut store, std::slice::from_ref(&project), &mode, &|_, _| {}).expect("project");
     diagnostics.extend(result.diagnostics);
@@ -385,11 +385,11 @@ fn other_backends(
     let mut counts = BTreeMap::new();
     for backend in [Backend::Msl, Backend::Hlsl, Backend::Glsl] {
         let mut store = SourceStore::new();
-        let mode = BuildMode {
+        let mode = Request {
             write: false,
             backends: vec![backend],
             unused_shaders: VariantSelection::All { limit: 16 },
-            ..BuildMode::default()
+            ..Request::default()
         };
         let (result, mut diagnostics) =
             build_project(&mut store, &[accepted.to_path_buf()], &mode, &|_, _| {}).expect("project");

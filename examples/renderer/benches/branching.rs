@@ -13,8 +13,8 @@
 //!
 //! `cargo bench -p kiln-renderer --bench branching [-- FRAMES WIDTH HEIGHT]`
 
-use kiln::orchestrate::VariantSelection;
-use kiln::project::{BuildMode, build_project};
+use kiln::config::VariantSelection;
+use kiln::project::{Request, build_project};
 use kiln::source::SourceStore;
 use kiln_renderer::{Image, Scene, device, render_frames};
 use kiln_runtime::Runtime;
@@ -139,10 +139,10 @@ fn build(project: &Path, output: &Path) -> Built {
     for _ in 0..5 {
         let _ = std::fs::remove_dir_all(output);
         let mut store = SourceStore::new();
-        let mode = BuildMode {
+        let mode = Request {
             output: Some(output.to_path_buf()),
             unused_shaders: VariantSelection::Used,
-            ..BuildMode::default()
+            ..Request::default()
         };
         let (result, diagnostics) =
             build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");

@@ -75,10 +75,10 @@ pub enum RemoteCacheMode {
 }
 
 impl ProjectArgs {
-    /// The project folder and the build mode these arguments give, the rest `BuildMode`'s
+    /// The project folder and the request these arguments give, the rest `Request`'s
     /// defaults: made here only.
-    pub fn mode(self) -> (PathBuf, kiln::project::BuildMode) {
-        let mode = kiln::project::BuildMode {
+    pub fn mode(self) -> (PathBuf, kiln::config::Request) {
+        let mode = kiln::config::Request {
             output: self.output,
             threads: self.threads.map(usize::from),
             variant_logs: self.variants_from,
@@ -86,8 +86,8 @@ impl ProjectArgs {
             remote_cache: self.remote_cache,
             backends: self.backends,
             parse: match (self.parse_whole, self.parse_alone) {
-                (true, _) => Some(kiln::orchestrate::ParseScope::Whole),
-                (false, true) => Some(kiln::orchestrate::ParseScope::Reachable),
+                (true, _) => Some(kiln::config::ParseScope::Whole),
+                (false, true) => Some(kiln::config::ParseScope::Reachable),
                 (false, false) => None,
             },
             remote_cache_mode: self.remote_cache_mode.map(|mode| match mode {
@@ -95,7 +95,7 @@ impl ProjectArgs {
                 RemoteCacheMode::Write => kiln::store::remote::RemoteMode::Write,
                 RemoteCacheMode::Off => kiln::store::remote::RemoteMode::Off,
             }),
-            ..kiln::project::BuildMode::default()
+            ..kiln::config::Request::default()
         };
         (self.project.unwrap_or_else(kiln::project::default_project), mode)
     }

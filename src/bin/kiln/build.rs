@@ -3,9 +3,9 @@
 
 use crate::args::{Format, ProjectArgs};
 use crate::output::{exit_code, exit_leaving, host_failure, print_out, report};
+use kiln::config::VariantSelection;
 use kiln::diagnostics;
-use kiln::orchestrate::VariantSelection;
-use kiln::project::{BuildMode, Part};
+use kiln::project::{Part, Request};
 use kiln::source::SourceStore;
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -14,7 +14,7 @@ use std::process::ExitCode;
 /// `kiln build`.
 pub fn build(project: ProjectArgs, pretty: bool, shard: Option<String>) -> ExitCode {
     let (project, mode) = project.mode();
-    let mode = BuildMode { pretty_manifest: pretty, ..mode };
+    let mode = Request { pretty_manifest: pretty, ..mode };
     let part = match shard.as_deref().map(kiln::orchestrate::shard::Shard::parse) {
         None => Part::Whole,
         Some(Ok(shard)) => Part::Shard(shard),
@@ -31,12 +31,12 @@ pub fn check(project: ProjectArgs, format: Format, all_variants: bool) -> ExitCo
         VariantSelection::DefaultsAndEachKeyword
     };
     let (project, mode) = project.mode();
-    run(project, BuildMode { write: false, unused_shaders, ..mode }, format, Part::Whole)
+    run(project, Request { write: false, unused_shaders, ..mode }, format, Part::Whole)
 }
 
 /// `kiln merge`.
 pub fn merge(output: PathBuf, shards: Vec<PathBuf>, project: Option<PathBuf>, pretty: bool) -> ExitCode {
-    let mode = BuildMode { output: Some(output), pretty_manifest: pretty, ..BuildMode::default() };
+    let mode = Request { output: Some(output), pretty_manifest: pretty, ..Request::default() };
     let mut store = SourceStore::new();
     match kiln::project::merge_shards(&mut store, &shards, project, &mode) {
         Ok((result, mut problems)) => {
@@ -61,7 +61,7 @@ pub fn watch(project: ProjectArgs) -> ExitCode {
 /// `kiln check --all-variants` refuses passes with more variants than this.
 const ALL_VARIANTS_LIMIT: u128 = 4096;
 
-fn run(project: PathBuf, mode: BuildMode, format: Format, part: Part) -> ExitCode {
+fn run(project: PathBuf, mode: Request, format: Format, part: Part) -> ExitCode {
     let mut store = SourceStore::new();
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = indicatif::ProgressBar::new(0);
@@ -148,7 +148,7 @@ fn print_summary(s: &kiln::orchestrate::BuildSummary, written_to: Option<&std::p
 
 /// `kiln watch`: builds, then rebuilds whenever a file changes in the project folder or in a
 /// folder the build read from (include paths, shared libraries), except the output folder.
-fn watch_loop(project: PathBuf, mode: &BuildMode) -> ExitCode {
+fn watch_loop(project: PathBuf, mode: &Request) -> ExitCode {
     use notify::Watcher as _;
     let (sender, events) = std::sync::mpsc::channel();
     let mut watcher = match notify::recommended_watcher(sender) {

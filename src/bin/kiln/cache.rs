@@ -16,7 +16,7 @@ pub fn run(command: CacheCommand) -> ExitCode {
     };
     // A cache named by the flag or the environment needs no project: none is opened (opening
     // one finds its files, and without a kiln.toml that is every file under this folder).
-    let dir = match kiln::project::named_cache_dir(given) {
+    let dir = match given.or(kiln::config::Environment::of_process().cache_dir) {
         Some(dir) => dir,
         None => match project_cache_dir(&project) {
             Ok(dir) => dir,
@@ -65,7 +65,7 @@ fn project_cache_dir(project: &Path) -> Result<PathBuf, ExitCode> {
     if diagnostics::has_errors(&problems) {
         return Err(ExitCode::from(1));
     }
-    workspace.shared_cache_dir(None).ok_or_else(|| {
+    workspace.settings.shared_cache_dir(None, &kiln::config::Environment::of_process()).ok_or_else(|| {
         host_failure(&format!(
             "no cache folder: give --cache-dir, set KILN_CACHE_DIR, or set `cache_dir` in {}",
             project.join(kiln::config::FILE_NAME).display()

@@ -3,8 +3,8 @@
 
 use crate::args::{Format, StageArg};
 use crate::output::{exit_code, host_failure, print_out, report};
+use kiln::config::ParseScope;
 use kiln::diagnostics;
-use kiln::orchestrate::ParseScope;
 use kiln::preprocess::Stage;
 use kiln::project::VariantRequest;
 use kiln::source::SourceStore;

@@ -21,7 +21,10 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 fn main() -> ExitCode {
     // Rayon's global pool would take `RAYON_NUM_THREADS` as it is, and 2 MiB stacks: it gets a
     // build pool's bound and stacks, and builds run in it.
-    kiln::orchestrate::init_global_pool();
+    kiln::orchestrate::init_global_pool(kiln::config::threads_for(
+        None,
+        &kiln::config::Environment::of_process(),
+    ));
     match Cli::parse().command {
         Command::List { paths, format, materials } => inspect::list(paths, format, materials),
         Command::Preprocess { shader, pass, keywords, stage, reachable } => {
