@@ -81,6 +81,29 @@ fn every_source_file_says_its_role() {
     }
 }
 
+/// Settings are resolved once (`config::Settings::resolve`, from `config::Environment`): the
+/// layers that build read no environment variable of their own, or a setting could differ
+/// between the passes of one build and bypass the precedence rule. Debug builds' fault
+/// injections (`cfg!(debug_assertions) && std::env::var(...)`) are the one exception.
+#[test]
+fn the_build_reads_its_settings_from_settings_not_from_the_environment() {
+    let mut readers = Vec::new();
+    for layer in ["orchestrate", "compile", "preprocess", "reflect", "catalog.rs", "keywords", "shaderlab"] {
+        let path = root().join("src").join(layer);
+        let files = if path.is_dir() { files_under(&path, "rs") } else { vec![path] };
+        for file in files {
+            let text = std::fs::read_to_string(&file).expect("source is UTF-8");
+            for (number, line) in text.lines().enumerate() {
+                let reads = line.contains("env::var") || line.contains("Environment::of_process");
+                if reads && !line.contains("cfg!(debug_assertions)") {
+                    readers.push(format!("{}:{}: {}", file.display(), number + 1, line.trim()));
+                }
+            }
+        }
+    }
+    assert!(readers.is_empty(), "read through `config::Settings` instead:\n{}", readers.join("\n"));
+}
+
 #[test]
 fn every_diagnostic_code_is_documented_and_shown() {
     let codes = diagnostic_codes();
