@@ -15,7 +15,7 @@ use super::{BuildResult, BuildSummary, Merge, Writes};
 use crate::config::Settings;
 use crate::diagnostics::Diagnostic;
 use crate::manifest::{
-    BindGroup, ModuleManifest, PackPath, PassFiles, PassManifest, StageInterface, UniformBlock,
+    BindGroup, Manifest, ModuleManifest, PackPath, PassFiles, PassManifest, StageInterface, UniformBlock,
     modules_in_range,
 };
 use crate::source::SourceStore;
@@ -150,28 +150,27 @@ pub(super) fn merge(
         match parsed {
             Ok(parsed) => {
                 let mut manifest = manifest(heads, parsed);
-                let outputs = Outputs {
-                    manifest: &mut manifest,
-                    materials: &materials,
-                    catalogue,
-                    inputs: &merge.inputs,
-                    streamed: None,
-                };
+                let outputs = merged(&mut manifest, &materials, catalogue, &merge.inputs);
                 finish(settings, writes, outputs, summary, diagnostics, link)
             }
             Err(error) => BuildResult::failed(settings, summary, vec![error.into()]),
         }
     } else {
         let mut manifest = manifest(heads, parts);
-        let outputs = Outputs {
-            manifest: &mut manifest,
-            materials: &materials,
-            catalogue,
-            inputs: &merge.inputs,
-            streamed: None,
-        };
+        let outputs = merged(&mut manifest, &materials, catalogue, &merge.inputs);
         finish(settings, writes, outputs, summary, diagnostics, link)
     }
+}
+
+/// What a merge writes beside the packs: a manifest of either form (its parts parsed, or as the
+/// shards wrote them), whose shaders no pass streamed.
+fn merged<'a, P>(
+    manifest: &'a mut Manifest<P>,
+    materials: &'a [&'a RawValue],
+    catalogue: &'a CataloguePart,
+    inputs: &'a str,
+) -> Outputs<'a, P> {
+    Outputs { manifest, materials, catalogue, inputs, streamed: None }
 }
 
 /// A shard's pass: its JSON text, written into the manifest as it is, and what the merge reads of
