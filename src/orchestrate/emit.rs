@@ -1,29 +1,27 @@
 //! What a build leaves: the manifest (its passes' parts in catalogue order), the materials, and
 //! the record of a clean build for the next no-op check; JSON streamed and written atomically.
 //!
-//! Long because the manifest's parts are made here from the catalogue and the compiled passes
-//! (`pass_manifest`, the materials), then staged and committed in one order that keeps the
-//! output folder whole.
+//! Long because the manifest's parts that need the whole catalogue are made here (the shaders'
+//! heads, the materials), then staged and committed in one order that keeps the output folder
+//! whole; a pass's own part is made in `part`.
 
 use super::error::BuildLayerError;
-use super::jobs::Job;
 use super::noop::recorded_name;
 use super::plan::{PassWork, pass_key};
 use super::{BuildResult, BuildSummary, Writes};
-use crate::catalog::{Catalog, CatalogShader, property_references};
+use crate::catalog::{Catalog, CatalogShader};
 use crate::config::Settings;
 use crate::diagnostics::{self, Diagnostic};
 use crate::manifest::*;
 use crate::material::{Material, MaterialValue};
 use crate::reflect::{Resource, UniformBlock};
 use crate::shaderlab::ast::Property;
-use crate::shaderlab::pragma::KeywordKind;
 use crate::source::{SourceStore, relative_to};
-use crate::store::{Cache, CachedStage, Digest, Hashed, OutputFile, PassKey, Recorded, RecordedFile};
+use crate::store::{Cache, Digest, Hashed, OutputFile, PassKey, Recorded, RecordedFile};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use serde_json::value::RawValue;
-use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::collections::{BTreeSet, HashMap};
 
 /// What the manifest takes from the catalogue besides the passes' parts, so that a merge needs
 /// no catalogue: each built shader (its passes left out, its properties' places not yet known)
@@ -542,195 +540,6 @@ pub(super) fn parsed(manifest: Manifest<BuiltPass>) -> Manifest {
         })
         .collect();
     Manifest { schema_version, kiln_version, shaders, materials_hash }
-}
-
-/// A pass's part of the manifest: each module once, each distinct interface, uniform block and
-/// pack once, and its variants as module indices.
-pub(super) fn pass_manifest<'a>(
-    store: &SourceStore,
-    catalog: &Catalog,
-    work: &PassWork,
-    jobs: &[Job],
-    stages: &[Vec<Option<usize>>],
-    ubershader: Option<&[Option<usize>]>,
-    built: &'a [Option<CachedStage>],
-) -> PassManifest {
-    let shader = &work.shader.shader;
-    let compute = !work.program.pragmas.kernels.is_empty();
-    // Sized for every job once: grown a push at a time, they cost a pass's end more than the
-    // rest of it (compute 1,000, 200 jobs a pass).
-    type Map<K> = HashMap<K, usize, foldhash::fast::FixedState>;
-    let mut entries: BTreeMap<(u32, u32), LayoutEntry> = BTreeMap::new();
-    let mut uniform_blocks: Vec<UniformBlock> = Vec::new();
-    let mut packs: Vec<PackPath> = Vec::new();
-    let mut pack_of: Map<&PackPath> = Map::default();
-    let mut interfaces: Vec<StageInterface> = Vec::with_capacity(jobs.len());
-    let mut interface_of: Map<StageInterface> = Map::with_capacity_and_hasher(jobs.len(), Default::default());
-    let mut modules: Vec<ModuleManifest> = Vec::with_capacity(jobs.len());
-    // A module is its interface, its files' hashes and the features it was validated with.
-    type ModuleIdentity<'a> = (usize, PerBackend<Option<&'a str>>, Vec<GpuFeature>);
-    let mut module_of: Map<ModuleIdentity> = Map::with_capacity_and_hasher(jobs.len(), Default::default());
-    // For each job, its module (`None` when it failed).
-    let mut module_of_job: Vec<Option<usize>> = Vec::with_capacity(jobs.len());
-    for (job, stage) in jobs.iter().zip(built) {
-        let Some(stage) = stage else {
-            module_of_job.push(None);
-            continue;
-        };
-        let reflection = &stage.reflection;
-        let name = job.stage.shader_stage();
-        for b in &reflection.bindings {
-            let entry = entries.entry((b.group, b.binding)).or_insert_with(|| LayoutEntry {
-                binding: b.binding,
-                name: b.name.clone(),
-                visibility: Vec::new(),
-                resource: b.resource.clone(),
-            });
-            if !entry.visibility.contains(&name) {
-                entry.visibility.push(name);
-            }
-        }
-        let mut blocks: Vec<usize> = reflection
-            .uniform_blocks
-            .iter()
-            .map(|block| {
-                uniform_blocks.iter().position(|b| b == block).unwrap_or_else(|| {
-                    uniform_blocks.push(block.clone());
-                    uniform_blocks.len() - 1
-                })
-            })
-            .collect();
-        blocks.sort_by(|&a, &b| uniform_blocks[a].name.cmp(&uniform_blocks[b].name));
-        let interface = StageInterface {
-            stage: name,
-            entry_point: reflection.entry_point.clone(),
-            inputs: reflection.inputs.clone(),
-            outputs: reflection.outputs.clone(),
-            bindings: reflection.bindings.iter().map(|b| [b.group, b.binding]).collect(),
-            uniform_blocks: blocks,
-            overrides: reflection.overrides.clone(),
-            workgroup_size: reflection.workgroup_size,
-            workgroup_size_overrides: reflection.workgroup_size_overrides.clone(),
-            workgroup_memory: reflection.workgroup_memory,
-        };
-        let interface = *interface_of.entry(interface).or_insert_with_key(|interface| {
-            interfaces.push(interface.clone());
-            interfaces.len() - 1
-        });
-        let mut file = |file: &'a Option<FileRef>| {
-            file.as_ref().map(|f| {
-                let pack = *pack_of.entry(&f.path).or_insert_with(|| {
-                    packs.push(f.path.clone());
-                    packs.len() - 1
-                });
-                ModuleFile { pack, offset: f.offset, size: f.size, hash: f.hash.clone() }
-            })
-        };
-        // Texts that differ only where compaction removes code give the same module.
-        let hashes = PerBackend::from_fn(|backend| stage.files[backend].as_ref().map(|f| f.hash.as_str()));
-        let module =
-            *module_of.entry((interface, hashes, job.allowed.features())).or_insert_with_key(|key| {
-                let files = PerBackend::from_fn(|backend| file(&stage.files[backend]));
-                modules.push(ModuleManifest::with_files(interface, key.2.clone(), files));
-                modules.len() - 1
-            });
-        module_of_job.push(Some(module));
-    }
-    // A variant's modules, from its jobs: a compute pass's entries are its kernels, a render
-    // pass's its two stages.
-    let variant_modules = |jobs: &[Option<usize>]| {
-        let module = |job: Option<&Option<usize>>| job.copied().flatten().and_then(|j| module_of_job[j]);
-        let (vertex, fragment, kernels) = if compute {
-            (None, None, (0..jobs.len()).map(|k| module(jobs.get(k))).collect())
-        } else {
-            (module(jobs.first()), module(jobs.get(1)), Vec::new())
-        };
-        VariantManifest {
-            key: String::new(),
-            keywords: Vec::new(),
-            materials: Vec::new(),
-            vertex,
-            fragment,
-            kernels,
-        }
-    };
-    let variants = work
-        .variants
-        .iter()
-        .zip(stages)
-        .map(|(variant, jobs)| VariantManifest {
-            key: variant.bits.key(),
-            keywords: work.program.keywords.keywords(&variant.bits).map(str::to_string).collect(),
-            materials: variant.materials.iter().map(|&m| catalog.materials[m].name.clone()).collect(),
-            ..variant_modules(jobs)
-        })
-        .collect();
-    let ubershader = ubershader.map(|jobs| Ubershader {
-        keywords: work.program.pragmas.ubershader_keywords().into_iter().map(str::to_string).collect(),
-        modules: variant_modules(jobs),
-    });
-    let mut groups: BTreeMap<u32, Vec<LayoutEntry>> = BTreeMap::new();
-    for ((group, _), mut entry) in entries {
-        entry.visibility.sort();
-        groups.entry(group).or_default().push(entry);
-    }
-    let render_state = work
-        .shader
-        .shader
-        .subshaders
-        .get(work.pass.subshader)
-        .map(|sub| &sub.state.render_state)
-        .into_iter()
-        .flatten()
-        .chain(work.shader.pass_ast(work.pass).map(|p| &p.state.render_state).into_iter().flatten())
-        .map(|command| {
-            let text = store.slice(command.span).trim().to_string();
-            let properties = property_references(&text)
-                .into_iter()
-                .map(|name| PropertyReference {
-                    default: shader
-                        .property(name)
-                        .map_or(serde_json::Value::Null, |p| MaterialValue::from(&p.default.value).to_json()),
-                    name: name.to_string(),
-                })
-                .collect();
-            RenderState { command: text, state: command.kind.to_manifest(), properties }
-        })
-        .collect();
-    PassManifest {
-        subshader: work.pass.subshader,
-        index: work.pass.index,
-        name: work.pass.name.clone(),
-        tags: work.pass.tags.clone(),
-        render_state,
-        // The variant sets, then the `dynamic_branch` ones (which make no variants).
-        keyword_sets: work
-            .program
-            .keywords
-            .sets()
-            .iter()
-            .chain(work.program.pragmas.keyword_sets.iter().filter(|s| s.kind == KeywordKind::DynamicBranch))
-            .map(|set| KeywordSetManifest {
-                kind: set.kind,
-                scope: set.scope,
-                stage: set.stage,
-                keywords: set
-                    .options
-                    .iter()
-                    .map(|o| o.keyword.clone().unwrap_or_else(|| "_".into()))
-                    .collect(),
-            })
-            .collect(),
-        keywords: work.program.keywords.names().to_vec(),
-        kernels: work.program.pragmas.kernels.iter().map(|k| k.value.clone()).collect(),
-        layout: groups.into_iter().map(|(group, entries)| BindGroup { group, entries }).collect(),
-        uniform_blocks,
-        packs,
-        interfaces,
-        modules,
-        variants,
-        ubershader,
-    }
 }
 
 /// The materials `materials.json` lists, in its order: every resolved material of a shader in

@@ -12,6 +12,7 @@ mod error;
 mod jobs;
 mod merge;
 mod noop;
+mod part;
 mod pass;
 mod plan;
 mod session;

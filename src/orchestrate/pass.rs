@@ -2,8 +2,9 @@
 //! each step in parallel over the pass's jobs; then its packs, its entry in the output's cache
 //! and its part of the manifest. Its texts and modules are dropped when it returns.
 
-use super::emit::{BuiltPass, pass_manifest, write_failure};
+use super::emit::{BuiltPass, write_failure};
 use super::jobs::{Job, PassJobs, pass_jobs};
+use super::part::{CompiledPass, pass_manifest};
 use super::plan::{PassWork, pass_key};
 use super::session::Session;
 use super::sources::{Front, ModuleAsk, PassSources, parse_together};
@@ -165,8 +166,13 @@ pub(super) fn build_pass(
                 gather(outcomes, &jobs, files, &settings.backends, &mut diagnostics);
             let (part, entry) = rayon::join(
                 || {
-                    let ubershader = ubershader.as_deref();
-                    let manifest = pass_manifest(store, catalog, work, &jobs, &stages, ubershader, &modules);
+                    let compiled = CompiledPass {
+                        jobs: &jobs,
+                        built: &modules,
+                        variants: &stages,
+                        ubershader: ubershader.as_deref(),
+                    };
+                    let manifest = pass_manifest(store, catalog, work, &compiled);
                     BuiltPass::new(manifest, session.pass_texts)
                 },
                 || {
