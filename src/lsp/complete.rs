@@ -1,8 +1,8 @@
 //! Completion (keywords, property names, pragma names, include paths) and document symbols
-//! (Shader, Properties, SubShader, Pass; a WGSL file's functions and structs).
+//! (Shader, Properties, SubShader, Pass; a WGSL or HLSL file's functions and structs).
 
 use super::analysis::Analysis;
-use super::text::{line_before, range_of, wgsl_declarations};
+use super::text::{Declared, declarations, line_before, range_of};
 use crate::source::FileId;
 use lsp_types as lsp;
 use std::collections::BTreeSet;
@@ -103,7 +103,7 @@ pub(super) fn complete(
     if conditional {
         let mut items = keywords(None);
         if let Some(checked) = &analysis.checked {
-            let macros: BTreeSet<&str> = checked.includes.defines().map(|(name, ..)| name).collect();
+            let macros: BTreeSet<&str> = checked.includes.defines().map(|define| define.name).collect();
             items.extend(macros.into_iter().map(|m| item(m, lsp::CompletionItemKind::CONSTANT, "macro")));
         }
         return items;
@@ -127,7 +127,8 @@ fn include_names(analysis: &Analysis, path: &Path, typed: &str) -> Vec<String> {
         for entry in entries.flatten() {
             let name = entry.file_name().to_string_lossy().into_owned();
             let is_dir = entry.file_type().is_ok_and(|t| t.is_dir());
-            let included = [".wgsl", ".hlsl", ".inc", ".h"].iter().any(|e| name.ends_with(e));
+            let included =
+                [".wgsl", ".hlsl", ".hlsli", ".cginc", ".inc", ".h"].iter().any(|e| name.ends_with(e));
             if is_dir || included {
                 names.insert(format!("{sub}{name}{}", if is_dir { "/" } else { "" }));
             }
@@ -137,7 +138,7 @@ fn include_names(analysis: &Analysis, path: &Path, typed: &str) -> Vec<String> {
     names.into_iter().collect()
 }
 
-/// The outline of a file: a shader's structure, or a WGSL file's functions and structs.
+/// The outline of a file: a shader's structure, or a WGSL or HLSL file's functions and structs.
 #[allow(deprecated)] // `DocumentSymbol::deprecated` must be written, though the protocol deprecates it.
 pub(super) fn symbols(analysis: &Analysis, file: FileId) -> Vec<lsp::DocumentSymbol> {
     let text = analysis.store.text(file);
@@ -156,11 +157,15 @@ pub(super) fn symbols(analysis: &Analysis, file: FileId) -> Vec<lsp::DocumentSym
     };
     let shader = analysis.checked.as_ref().and_then(|c| c.catalog.shaders.iter().find(|s| s.file == file));
     let Some(shader) = shader else {
-        return wgsl_declarations(text)
-            .filter(|(kind, _)| matches!(*kind, "fn" | "struct"))
-            .map(|(kind, range)| {
-                let k = if kind == "fn" { lsp::SymbolKind::FUNCTION } else { lsp::SymbolKind::STRUCT };
-                symbol(text[range.clone()].to_string(), k, range, Vec::new())
+        return declarations(analysis.store.name(file), text)
+            .into_iter()
+            .filter_map(|(declared, _, range)| {
+                let kind = match declared {
+                    Declared::Function => lsp::SymbolKind::FUNCTION,
+                    Declared::Type => lsp::SymbolKind::STRUCT,
+                    Declared::Value => return None,
+                };
+                Some(symbol(text[range.clone()].to_string(), kind, range, Vec::new()))
             })
             .collect();
     };

@@ -1,5 +1,5 @@
-//! `kiln lsp`: a language server (LSP over stdio) for `.shader`, `.compute`, `.wgsl` includes,
-//! `.mat` files and `kiln.toml` (docs/editor.md).
+//! `kiln lsp`: a language server (LSP over stdio) for `.shader`, `.compute`, `.wgsl`, `.hlsl` and
+//! `.cginc` includes, `.mat` files and `kiln.toml` (docs/editor.md).
 //!
 //! Built on rust-analyzer's `lsp-server` (the protocol's framing and channels, synchronous, no
 //! async runtime: a check is CPU work that rayon already spreads over the cores) and `lsp-types`.
@@ -97,7 +97,7 @@ pub fn serve(connection: &Connection, options: &ServerOptions) -> Result<(), Lsp
     // client can watch them for the server.
     let watches = params.capabilities.workspace.as_ref().and_then(|w| w.did_change_watched_files.as_ref());
     if watches.and_then(|w| w.dynamic_registration).unwrap_or(false) {
-        let watchers: Vec<Value> = ["**/*.{shader,compute,wgsl,mat}", "**/kiln.toml"]
+        let watchers: Vec<Value> = ["**/*.{shader,compute,wgsl,hlsl,hlsli,cginc,mat}", "**/kiln.toml"]
             .iter()
             .map(|glob| json!({ "globPattern": glob }))
             .collect();
@@ -687,7 +687,7 @@ impl Server<'_> {
         let analysis = &self.projects.get(&root).ok_or_else(|| bad("not checked"))?.analysis;
         let found =
             analysis.passes().find(|&(at, ..)| variants::pass_name(analysis, at).as_ref() == Some(&name));
-        let (_, _, _, program) = found.ok_or_else(|| bad("no such pass with a WGSL program"))?;
+        let (_, _, _, program) = found.ok_or_else(|| bad("no such pass with a program kiln compiles"))?;
         let selections = self.selections.entry(root.clone()).or_default();
         let keywords = if command == COMMANDS[0] {
             let next = selections.active(&name, program).map_or(0, |(i, _)| (i + 1) % program.variants.len());

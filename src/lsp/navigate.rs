@@ -1,10 +1,11 @@
 //! What is at a place in a file (an include, a keyword, a macro, a property, a uniform member, a
-//! WGSL declaration), and from it hover text and go-to-definition.
+//! WGSL or HLSL declaration), and from it hover text and go-to-definition.
 
 use super::analysis::Analysis;
-use super::text::{wgsl_declarations, word_at};
+use super::text::{Language, declarations, word_at};
 use super::variants::{Selections, expansion_at};
 use crate::manifest::{Member, UniformBlock};
+use crate::preprocess::MacroDefinition;
 use crate::shaderlab::pragma::KeywordSet;
 use crate::source::{FileId, Span};
 use std::fmt::Write as _;
@@ -16,12 +17,12 @@ pub(super) enum Found<'a> {
     /// A keyword some pass declares (its first declaration).
     Keyword { name: &'a str, set: &'a KeywordSet },
     /// A macro, by its `#define`.
-    Macro { name: &'a str, define: Span, value: &'a str },
+    Macro(MacroDefinition<'a>),
     /// A property of a shader (`shader`, `property`: catalogue positions).
     Property { shader: usize, property: usize },
     /// A member of a uniform block a built pass reflects.
     Member { block: &'a UniformBlock, member: &'a Member },
-    /// Any other name: a WGSL declaration, looked up by name.
+    /// Any other name: a WGSL or HLSL declaration, looked up by name.
     Name(&'a str),
 }
 
@@ -47,11 +48,9 @@ pub(super) fn find(analysis: &Analysis, file: FileId, offset: usize) -> Option<F
     if is_material {
         return None;
     }
-    let defines: Vec<_> = checked.includes.defines().filter(|(name, ..)| *name == word).collect();
-    if let Some(&(name, define, value)) =
-        defines.iter().find(|(_, span, _)| span.file == file).or(defines.first())
-    {
-        return Some(Found::Macro { name, define, value });
+    let defines: Vec<_> = checked.includes.defines().filter(|define| define.name == word).collect();
+    if let Some(&define) = defines.iter().find(|define| define.span.file == file).or(defines.first()) {
+        return Some(Found::Macro(define));
     }
     if analysis.store.name(file).ends_with(".shader") {
         let shader = checked.catalog.shaders.iter().position(|s| s.file == file);
@@ -142,12 +141,14 @@ pub(super) fn hover(
             }
             let _ = write!(out, "\nin {with} of the project's {all} variants");
         }
-        Found::Macro { name, define, value } => {
-            let _ = write!(out, "```c\n#define {name} {value}\n```\ndefined at {}", place(*define));
+        Found::Macro(define) => {
+            let _ = write!(out, "```c\n{}\n```\ndefined at {}", define.directive(), place(define.span));
             if let Some((pass, text)) =
                 at.and_then(|(file, offset)| expansion_at(analysis, selections, file, offset))
             {
-                let _ = write!(out, "\n\nexpands here, in {pass}, to:\n```wgsl\n{text}\n```");
+                let (file, offset) = at.unwrap_or((define.span.file, define.span.start as usize));
+                let language = Language::at(store.name(file), store.text(file), offset).fence();
+                let _ = write!(out, "\n\nexpands here, in {pass}, to:\n```{language}\n{text}\n```");
             }
         }
         Found::Property { shader, property } => {
@@ -182,13 +183,14 @@ pub(super) fn hover(
             }
         }
         Found::Name(name) => {
-            let (file, range) = declaration(analysis, name, None)?;
+            let (file, language, range) = declaration(analysis, name, None)?;
             let text = store.text(file);
             let line_start = text[..range.start].rfind('\n').map_or(0, |at| at + 1);
             let line_end = text[range.start..].find('\n').map_or(text.len(), |at| range.start + at);
             let _ = write!(
                 out,
-                "```wgsl\n{}\n```\n{}",
+                "```{}\n{}\n```\n{}",
+                language.fence(),
                 text[line_start..line_end].trim(),
                 place(Span::new(file, range))
             );
@@ -210,24 +212,27 @@ pub(super) fn definition(analysis: &Analysis, found: &Found, from: FileId) -> Op
                 set.span.start as usize + at..set.span.start as usize + at + name.len(),
             ))
         }
-        Found::Macro { define, .. } => Some(*define),
+        Found::Macro(define) => Some(define.span),
         Found::Property { shader, property } => {
             Some(checked.catalog.shaders.get(*shader)?.shader.properties.get(*property)?.name.span)
         }
-        Found::Member { member, .. } => declaration_in_structs(analysis, &member.name),
+        // HLSL's constant-buffer members are declared as globals are.
+        Found::Member { member, .. } => declaration_in_structs(analysis, &member.name).or_else(|| {
+            declaration(analysis, &member.name, None).map(|(file, _, range)| Span::new(file, range))
+        }),
         Found::Name(name) => {
-            declaration(analysis, name, Some(from)).map(|(file, range)| Span::new(file, range))
+            declaration(analysis, name, Some(from)).map(|(file, _, range)| Span::new(file, range))
         }
     }
 }
 
 /// The module-scope declaration of `name`: in `first` if it has one, else in the project's other
-/// files and includes.
+/// files and includes; with the language it is written in.
 fn declaration(
     analysis: &Analysis,
     name: &str,
     first: Option<FileId>,
-) -> Option<(FileId, std::ops::Range<usize>)> {
+) -> Option<(FileId, Language, std::ops::Range<usize>)> {
     let checked = analysis.checked.as_ref()?;
     let mut files = checked.includes.files();
     if let Some(first) = first {
@@ -236,9 +241,10 @@ fn declaration(
     }
     files.into_iter().find_map(|file| {
         let text = analysis.store.text(file);
-        wgsl_declarations(text)
-            .find(|(_, range)| &text[range.clone()] == name)
-            .map(|(_, range)| (file, range))
+        declarations(analysis.store.name(file), text)
+            .into_iter()
+            .find(|(_, _, range)| &text[range.clone()] == name)
+            .map(|(_, language, range)| (file, language, range))
     })
 }
 

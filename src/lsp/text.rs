@@ -78,13 +78,86 @@ pub(super) fn line_before(text: &str, offset: usize) -> &str {
     &text[start..offset]
 }
 
+/// What a module-scope declaration declares.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Declared {
+    /// A function.
+    Function,
+    /// A type: a struct, an alias, an HLSL constant buffer.
+    Type,
+    /// A variable, a constant, a resource.
+    Value,
+}
+
+/// The shading language a declaration or a place is written in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Language {
+    Wgsl,
+    Hlsl,
+}
+
+impl Language {
+    /// The language of a file from its name, for files that hold one program language.
+    fn of_file(name: &str) -> Option<Language> {
+        let extension = name.rsplit_once('.').map_or("", |(_, e)| e);
+        match extension.to_ascii_lowercase().as_str() {
+            "wgsl" => Some(Language::Wgsl),
+            "hlsl" | "hlsli" | "cginc" | "cg" | "fx" | "fxh" | "compute" => Some(Language::Hlsl),
+            _ => None,
+        }
+    }
+
+    /// The language at byte `offset` of the file named `name`: a `.shader` file's HLSL and Cg
+    /// blocks are HLSL, the rest of it WGSL.
+    pub(super) fn at(name: &str, text: &str, offset: usize) -> Language {
+        Language::of_file(name).unwrap_or_else(|| {
+            let inside = hlsl_blocks(text).any(|block| block.contains(&offset));
+            if inside { Language::Hlsl } else { Language::Wgsl }
+        })
+    }
+
+    /// The name a Markdown code fence gives it.
+    pub(super) fn fence(self) -> &'static str {
+        match self {
+            Language::Wgsl => "wgsl",
+            Language::Hlsl => "hlsl",
+        }
+    }
+}
+
+/// A declaration found by a scan: what it declares, its language and the byte range of its name.
+pub(super) type Declaration = (Declared, Language, std::ops::Range<usize>);
+
+/// The module-scope declarations of the file named `name`: WGSL's or HLSL's as its extension says;
+/// in a `.shader` file WGSL's and those of its HLSL and Cg blocks; in a file of another name
+/// (`.inc`, `.h`) both, each name once. Plain scans, so they work on unsaved text that does not
+/// parse.
+pub(super) fn declarations(name: &str, text: &str) -> Vec<Declaration> {
+    let wgsl = || wgsl_declarations(text).map(|(kind, range)| (kind, Language::Wgsl, range));
+    let mut found: Vec<Declaration> = match Language::of_file(name) {
+        Some(Language::Wgsl) => wgsl().collect(),
+        Some(Language::Hlsl) => hlsl_declarations(text, 0..text.len()),
+        None if name.ends_with(".shader") => {
+            wgsl().chain(hlsl_blocks(text).flat_map(|block| hlsl_declarations(text, block))).collect()
+        }
+        None => wgsl().chain(hlsl_declarations(text, 0..text.len())).collect(),
+    };
+    found.sort_by_key(|(_, _, range)| range.start);
+    found.dedup_by(|a, b| a.2 == b.2);
+    found
+}
+
 /// Where `name` is declared at module scope in WGSL `text` (`fn`, `struct`, `var`, `const`,
-/// `override`, `alias`): the byte range of the name. A plain scan, so it works on unsaved text
-/// that does not parse.
-pub(super) fn wgsl_declarations(
-    text: &str,
-) -> impl Iterator<Item = (&'static str, std::ops::Range<usize>)> + '_ {
-    const KINDS: [&str; 6] = ["fn", "struct", "var", "const", "override", "alias"];
+/// `override`, `alias`): the byte range of the name.
+fn wgsl_declarations(text: &str) -> impl Iterator<Item = (Declared, std::ops::Range<usize>)> + '_ {
+    const KINDS: [(&str, Declared); 6] = [
+        ("fn", Declared::Function),
+        ("struct", Declared::Type),
+        ("var", Declared::Value),
+        ("const", Declared::Value),
+        ("override", Declared::Value),
+        ("alias", Declared::Type),
+    ];
     let mut at = 0;
     std::iter::from_fn(move || {
         while at < text.len() {
@@ -92,13 +165,15 @@ pub(super) fn wgsl_declarations(
             let end = text[start..].find(|c: char| !is_name_char(c)).map_or(text.len(), |e| start + e);
             at = end;
             let preceded = start == 0 || !text[..start].ends_with(is_name_char);
-            let Some(kind) = KINDS.iter().find(|k| **k == &text[start..end]).filter(|_| preceded) else {
+            let Some(&(word, kind)) =
+                KINDS.iter().find(|(k, _)| *k == &text[start..end]).filter(|_| preceded)
+            else {
                 continue;
             };
             let mut rest = end;
             // `var<uniform>` and `var<storage, read>`: the name follows the template list.
             let after = text[rest..].trim_start();
-            if *kind == "var" && after.starts_with('<') {
+            if word == "var" && after.starts_with('<') {
                 rest = text.len() - after.len();
                 rest += text[rest..].find('>').map_or(0, |e| e + 1);
             }
@@ -108,11 +183,236 @@ pub(super) fn wgsl_declarations(
                 text[name_start..].find(|c: char| !is_name_char(c)).map_or(text.len(), |e| name_start + e);
             if name_end > name_start && !text[name_start..].starts_with(|c: char| c.is_ascii_digit()) {
                 at = name_end;
-                return Some((*kind, name_start..name_end));
+                return Some((kind, name_start..name_end));
             }
         }
         None
     })
+}
+
+/// The byte ranges of a `.shader` file's HLSL and Cg blocks (`HLSLPROGRAM` to `ENDHLSL`,
+/// `CGINCLUDE` to `ENDCG`, ...), inside their markers.
+fn hlsl_blocks(text: &str) -> impl Iterator<Item = std::ops::Range<usize>> + '_ {
+    const BLOCKS: [(&str, &str); 4] = [
+        ("HLSLPROGRAM", "ENDHLSL"),
+        ("HLSLINCLUDE", "ENDHLSL"),
+        ("CGPROGRAM", "ENDCG"),
+        ("CGINCLUDE", "ENDCG"),
+    ];
+    let mut at = 0;
+    std::iter::from_fn(move || {
+        let (start, end) = BLOCKS
+            .iter()
+            .filter_map(|(open, close)| {
+                let start = at + word_position(&text[at..], open)? + open.len();
+                Some((start, close))
+            })
+            .min_by_key(|(start, _)| *start)?;
+        let end = word_position(&text[start..], end).map_or(text.len(), |e| start + e);
+        at = end;
+        Some(start..end)
+    })
+}
+
+/// Where `word` first stands as a word of its own in `text`.
+fn word_position(text: &str, word: &str) -> Option<usize> {
+    let mut from = 0;
+    while let Some(at) = text[from..].find(word).map(|at| from + at) {
+        let end = at + word.len();
+        let before = !text[..at].ends_with(is_name_char);
+        let after = !text[end..].starts_with(is_name_char);
+        if before && after {
+            return Some(at);
+        }
+        from = end;
+    }
+    None
+}
+
+/// A token of an HLSL text, for the declaration scan: a name, or one other character.
+enum Token {
+    Name,
+    Mark(u8),
+}
+
+/// The tokens of `range` of `text`, without comments, strings, numbers and preprocessor lines.
+fn hlsl_tokens(text: &str, range: std::ops::Range<usize>) -> Vec<(Token, std::ops::Range<usize>)> {
+    let bytes = text.as_bytes();
+    let mut tokens = Vec::new();
+    let mut at = range.start;
+    let mut line_start = true;
+    while at < range.end {
+        let c = bytes[at];
+        let rest = &text[at..range.end];
+        let skip_to = move |end: Option<usize>| end.map_or(range.end, |e| at + e);
+        if c == b'\n' {
+            line_start = true;
+            at += 1;
+            continue;
+        }
+        if c.is_ascii_whitespace() {
+            at += 1;
+            continue;
+        }
+        if rest.starts_with("//") {
+            at = skip_to(rest.find('\n'));
+        } else if rest.starts_with("/*") {
+            at = skip_to(rest.find("*/").map(|e| e + 2));
+        } else if c == b'#' && line_start {
+            // A directive runs to the end of its line and its continuations.
+            let mut end = at;
+            loop {
+                let line_end = text[end..range.end].find('\n').map_or(range.end, |e| end + e);
+                end = line_end;
+                if line_end >= range.end || !text[..line_end].trim_end_matches('\r').ends_with('\\') {
+                    break;
+                }
+                end += 1;
+            }
+            at = end;
+        } else if c == b'"' {
+            at = skip_to(rest[1..].find('"').map(|e| e + 2));
+        } else if c.is_ascii_alphabetic() || c == b'_' {
+            let end = skip_to(rest.find(|c: char| !is_name_char(c)));
+            tokens.push((Token::Name, at..end));
+            at = end;
+        } else if c.is_ascii_digit() {
+            at = skip_to(rest.find(|c: char| !is_name_char(c) && c != '.'));
+        } else {
+            tokens.push((Token::Mark(c), at..at + 1));
+            at += rest.chars().next().map_or(1, char::len_utf8);
+        }
+        line_start = false;
+    }
+    tokens
+}
+
+/// The module-scope declarations in `range` of HLSL `text`: functions, structs, constant buffers
+/// and what they hold, globals, and the declarations Unity's macros make (`TEXTURE2D(_BaseMap)`,
+/// `CBUFFER_START(UnityPerMaterial)`, `UNITY_DEFINE_INSTANCED_PROP(float4, _BaseColor)`).
+fn hlsl_declarations(text: &str, range: std::ops::Range<usize>) -> Vec<Declaration> {
+    let tokens = hlsl_tokens(text, range);
+    let name = |i: usize| matches!(tokens.get(i), Some((Token::Name, _))).then(|| &text[tokens[i].1.clone()]);
+    let is_macro = |word: &str| word.len() > 1 && !word.bytes().any(|b| b.is_ascii_lowercase());
+    let is_buffer = |word: &str| matches!(word, "cbuffer" | "tbuffer");
+    // The index of the token that closes the group opened at `open`.
+    let closing = |open: usize, up: u8, down: u8| {
+        let mut depth = 0usize;
+        for (i, (token, _)) in tokens.iter().enumerate().skip(open) {
+            match token {
+                Token::Mark(c) if *c == up => depth += 1,
+                Token::Mark(c) if *c == down => {
+                    depth -= 1;
+                    if depth == 0 {
+                        return i;
+                    }
+                }
+                _ => {}
+            }
+        }
+        tokens.len()
+    };
+    let mut found = Vec::new();
+    let mut found_at = |kind, i: usize| found.push((kind, Language::Hlsl, tokens[i].1.clone()));
+    // The names of the statement being read, by token index.
+    let mut names: Vec<usize> = Vec::new();
+    // Braces whose insides are not module scope (function and struct bodies).
+    let mut bodies = 0usize;
+    // Whether the statement's declaration has been found, so the rest of it is passed over.
+    let mut done = false;
+    let mut i = 0;
+    while i < tokens.len() {
+        let here = i;
+        i += 1;
+        match tokens[here].0 {
+            Token::Mark(b'{') if bodies > 0 => bodies += 1,
+            Token::Mark(b'}') if bodies > 0 => {
+                bodies -= 1;
+                if bodies == 0 {
+                    (names, done) = (Vec::new(), false);
+                }
+            }
+            _ if bodies > 0 => {}
+            Token::Name => {
+                // A bare macro (`CBUFFER_END`) ends the statement it seemed to start.
+                if names.last().and_then(|&n| name(n)).is_some_and(is_macro) {
+                    names.clear();
+                }
+                names.push(here);
+            }
+            _ if done => {
+                if matches!(tokens[here].0, Token::Mark(b';')) {
+                    (names, done) = (Vec::new(), false);
+                } else if matches!(tokens[here].0, Token::Mark(b'{')) {
+                    bodies = 1;
+                }
+            }
+            Token::Mark(b'(') => {
+                let close = closing(here, b'(', b')');
+                match names.as_slice() {
+                    [.., last] if name(*last).is_some_and(is_macro) => {
+                        // A macro that declares: its last name is what it declares.
+                        let word = name(*last).unwrap_or_default();
+                        let declared = (here..close).rev().find(|&t| name(t).is_some());
+                        let kind = if word.contains("BUFFER_START") {
+                            Some(Declared::Type)
+                        } else {
+                            ["TEX", "SAMPLER", "PROP", "DECLARE"]
+                                .iter()
+                                .any(|part| word.contains(part))
+                                .then_some(Declared::Value)
+                        };
+                        if let (Some(kind), Some(declared)) = (kind, declared) {
+                            found_at(kind, declared);
+                        }
+                        names.clear();
+                    }
+                    [.., _, last] => {
+                        found_at(Declared::Function, *last);
+                        done = true;
+                    }
+                    _ => done = true,
+                }
+                i = close + 1;
+            }
+            Token::Mark(b'<') if !names.is_empty() => i = closing(here, b'<', b'>') + 1,
+            Token::Mark(b'[') if names.is_empty() => i = closing(here, b'[', b']') + 1,
+            Token::Mark(b'{') => {
+                let first = names.first().and_then(|&n| name(n));
+                match (first, names.get(1)) {
+                    (Some("struct"), Some(&n)) => {
+                        found_at(Declared::Type, n);
+                        bodies = 1;
+                    }
+                    // What a constant buffer holds is module scope.
+                    (Some(word), Some(&n)) if is_buffer(word) => found_at(Declared::Type, n),
+                    _ => bodies = 1,
+                }
+                names.clear();
+            }
+            // `cbuffer Name : register(b0) {`: what follows the name up to the brace says where
+            // it is bound.
+            Token::Mark(b':')
+                if names.len() == 2 && names.first().and_then(|&n| name(n)).is_some_and(is_buffer) =>
+            {
+                let next = (here..tokens.len()).find(|&t| matches!(tokens[t].0, Token::Mark(b'{' | b';')));
+                i = next.unwrap_or(tokens.len());
+            }
+            Token::Mark(b';' | b'=' | b':' | b'[' | b',') => {
+                let typedef = names.first().and_then(|&n| name(n)) == Some("typedef");
+                if let [.., _, last] = names.as_slice() {
+                    found_at(if typedef { Declared::Type } else { Declared::Value }, *last);
+                }
+                if matches!(tokens[here].0, Token::Mark(b';')) {
+                    names.clear();
+                } else {
+                    done = true;
+                }
+            }
+            Token::Mark(_) => names.clear(),
+        }
+    }
+    found
 }
 
 #[cfg(test)]
@@ -134,7 +434,78 @@ mod tests {
         let text = "var<uniform> _Light: L;\nfn shade(x: f32) {}\nstruct S { a: f32 }";
         assert_eq!(word_at(text, 15).map(|w| w.0), Some("_Light"));
         assert_eq!(word_at("\u{1F600}ab", 5).map(|w| w.0), Some("ab"));
-        let found: Vec<(&str, &str)> = wgsl_declarations(text).map(|(k, r)| (k, &text[r])).collect();
-        assert_eq!(found, [("var", "_Light"), ("fn", "shade"), ("struct", "S")]);
+        let found: Vec<_> = declarations("a.wgsl", text).into_iter().map(|(k, _, r)| (k, &text[r])).collect();
+        use Declared::*;
+        assert_eq!(found, [(Value, "_Light"), (Function, "shade"), (Type, "S")]);
+    }
+
+    fn found<'a>(name: &str, text: &'a str) -> Vec<(Declared, Language, &'a str)> {
+        declarations(name, text).into_iter().map(|(k, l, r)| (k, l, &text[r])).collect()
+    }
+
+    #[test]
+    fn hlsl_declarations_are_those_at_module_scope_and_those_unity_s_macros_make() {
+        let text = r#"// float commented(float x);
+#define SQUARE(x) ((x) * (x))
+#include "Common.hlsl"
+CBUFFER_START(UnityPerMaterial)
+    float4 _BaseColor;
+CBUFFER_END
+TEXTURE2D(_BaseMap);
+SAMPLER(sampler_BaseMap);
+UNITY_INSTANCING_BUFFER_START(PerInstance)
+    UNITY_DEFINE_INSTANCED_PROP(float, _Cutoff)
+UNITY_INSTANCING_BUFFER_END(PerInstance)
+cbuffer UnityPerDraw : register(b0) { float4x4 unity_ObjectToWorld; };
+Texture2D<float4> _Noise;
+static const float PI = 3.14159, TAU = 6.28;
+typedef float4 real4;
+struct Varyings { float4 positionCS : SV_POSITION; float2 uv : TEXCOORD0; };
+float Square(float v);
+Varyings Vertex(float3 p : POSITION) { Varyings o; float local = 1.0; return o; }
+float4 Fragment(Varyings i) : SV_TARGET { if (i.uv.x > 0) { return 0; } return 1; }
+[numthreads(8, 8, 1)] void Kernel(uint3 id : SV_DispatchThreadID) {}
+"#;
+        use Declared::*;
+        let hlsl = |kind, name| (kind, Language::Hlsl, name);
+        assert_eq!(
+            found("Pass.hlsl", text),
+            [
+                hlsl(Type, "UnityPerMaterial"),
+                hlsl(Value, "_BaseColor"),
+                hlsl(Value, "_BaseMap"),
+                hlsl(Value, "sampler_BaseMap"),
+                hlsl(Type, "PerInstance"),
+                hlsl(Value, "_Cutoff"),
+                hlsl(Type, "UnityPerDraw"),
+                hlsl(Value, "unity_ObjectToWorld"),
+                hlsl(Value, "_Noise"),
+                hlsl(Value, "PI"),
+                hlsl(Type, "real4"),
+                hlsl(Type, "Varyings"),
+                hlsl(Function, "Square"),
+                hlsl(Function, "Vertex"),
+                hlsl(Function, "Fragment"),
+                hlsl(Function, "Kernel"),
+            ]
+        );
+        // The same text in a `.cginc`; in a `.wgsl` file only WGSL's keywords are read.
+        assert_eq!(found("UnityCG.cginc", text).len(), 16);
+        assert!(found("Pass.wgsl", text).iter().all(|(_, language, _)| *language == Language::Wgsl));
+    }
+
+    #[test]
+    fn a_shader_file_s_hlsl_is_read_inside_its_blocks_only() {
+        let text = "Shader \"S\" {\n SubShader { Pass {\n HLSLPROGRAM\n float4 Frag() : SV_TARGET { return 1; }\n \
+                    ENDHLSL\n } Pass { WGSLPROGRAM\n fn frag() -> vec4f { return vec4f(1.0); }\n ENDWGSL\n } } }";
+        use Declared::*;
+        assert_eq!(
+            found("S.shader", text),
+            [(Function, Language::Hlsl, "Frag"), (Function, Language::Wgsl, "frag")]
+        );
+        let frag = text.find("return 1").expect("in the block");
+        assert_eq!(Language::at("S.shader", text, frag), Language::Hlsl);
+        assert_eq!(Language::at("S.shader", text, text.find("vec4f").expect("WGSL")), Language::Wgsl);
+        assert_eq!(Language::at("Lit.hlsl", "", 0).fence(), "hlsl");
     }
 }

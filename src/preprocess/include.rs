@@ -65,6 +65,33 @@ pub struct Includes {
     looked_up: HashMap<PathBuf, Option<PathBuf>>,
 }
 
+/// A `#define` as its unit has it.
+#[derive(Debug, Clone, Copy)]
+pub struct MacroDefinition<'a> {
+    /// The macro's name.
+    pub name: &'a str,
+    /// The directive.
+    pub span: Span,
+    /// A function-like macro's parameters (`None`: object-like).
+    pub params: Option<&'a [String]>,
+    /// Whether its last parameter is `...`.
+    pub variadic: bool,
+    /// Its replacement text.
+    pub value: &'a str,
+}
+
+impl MacroDefinition<'_> {
+    /// The directive as written, spaced one way: `#define NAME(a, b) value`.
+    pub fn directive(&self) -> String {
+        let params = self.params.map(|params| {
+            let dots = self.variadic.then_some("...");
+            let list: Vec<&str> = params.iter().map(String::as_str).chain(dots).collect();
+            format!("({})", list.join(", "))
+        });
+        format!("#define {}{} {}", self.name, params.unwrap_or_default(), self.value)
+    }
+}
+
 /// A program block scanned where it is ([`ScannedBlock::scan`]): scanning needs nothing loaded, so
 /// a catalogue scans every shader's blocks in parallel and loads the programs, which resolves
 /// their includes, one after another.
@@ -140,10 +167,16 @@ impl Includes {
         })
     }
 
-    /// Every `#define` of every unit scanned: its name, its directive and its replacement text.
-    pub fn defines(&self) -> impl Iterator<Item = (&str, Span, &str)> {
+    /// Every `#define` of every unit scanned.
+    pub fn defines(&self) -> impl Iterator<Item = MacroDefinition<'_>> {
         self.units.iter().flat_map(|unit| &unit.items).filter_map(|item| match item {
-            Item::Define { name, span, value, .. } => Some((name.as_str(), *span, value.as_str())),
+            Item::Define { name, span, params, variadic, value, .. } => Some(MacroDefinition {
+                name,
+                span: *span,
+                params: params.as_deref(),
+                variadic: *variadic,
+                value,
+            }),
             _ => None,
         })
     }

@@ -17,7 +17,7 @@ mod scan;
 mod source_map;
 
 pub use error::PreprocessError;
-pub use include::{IncludeConfig, Includes, LIBRARY_PREFIX, Program, ScannedBlock};
+pub use include::{IncludeConfig, Includes, LIBRARY_PREFIX, MacroDefinition, Program, ScannedBlock};
 pub(crate) use macros::{Kind, Token, lex};
 pub use pass::{
     DynamicKeyword, KeywordMacros, MAX_UBERSHADER_KEYWORDS, PassProgram, UBERSHADER_DATA, finish_pass,

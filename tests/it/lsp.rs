@@ -2,7 +2,7 @@
 //! messages as an editor sends them, on a copy of the bundled example project.
 
 use crate::lsp_client::{Client, uri};
-use crate::support::{example_project_copy, root};
+use crate::support::{example_project_copy, fixture_copy, root};
 use serde_json::{Value, json};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -508,7 +508,10 @@ fn files_changed_behind_the_editor_are_checked_again() {
     let mut client = Client::start_with(dir.path(), capabilities);
     let registration = client.notification("client/registerCapability");
     let watchers = &registration["registrations"][0]["registerOptions"]["watchers"];
-    assert!(watchers.to_string().contains("**/*.{shader,compute,wgsl,mat}"), "{registration}");
+    assert!(
+        watchers.to_string().contains("**/*.{shader,compute,wgsl,hlsl,hlsli,cginc,mat}"),
+        "{registration}"
+    );
     let (lit_uri, _) = open_saved(&mut client, &project, "shaders/LitPass.wgsl");
     client.diagnostics(&lit_uri, Some(1));
     let unlit = project.join("shaders/UnlitPass.wgsl");
@@ -620,16 +623,7 @@ fn an_edit_cancels_the_check_it_makes_moot_and_requests_are_answered_meanwhile()
 #[test]
 fn an_error_typed_into_an_hlsl_include_is_shown_at_its_line_with_its_variants() {
     let dir = tempfile::tempdir().expect("tempdir");
-    let project = dir.path().join("hlsl");
-    for entry in walkdir::WalkDir::new(root().join("fixtures/hlsl")) {
-        let entry = entry.expect("entry");
-        let relative = entry.path().strip_prefix(root().join("fixtures/hlsl")).expect("inside");
-        if entry.file_type().is_dir() {
-            std::fs::create_dir_all(project.join(relative)).expect("mkdir");
-        } else {
-            std::fs::copy(entry.path(), project.join(relative)).expect("copy");
-        }
-    }
+    let project = fixture_copy(dir.path(), "hlsl");
     let mut client = Client::start(dir.path());
     let (pass_uri, saved) = open_saved(&mut client, &project, "shaders/UnlitPass.hlsl");
     assert_eq!(errors(&client.diagnostics(&pass_uri, Some(1))), Vec::<&Value>::new());
@@ -668,6 +662,79 @@ fn an_error_typed_into_an_hlsl_include_is_shown_at_its_line_with_its_variants() 
         client.request("textDocument/documentSymbol", json!({ "textDocument": { "uri": pass_uri } }));
         let lines = inactive_lines(&client.latest_diagnostics(&pass_uri));
         assert_eq!(lines.contains(&clip), greyed, "{keywords}: {lines:?}");
+    }
+    client.shutdown();
+}
+
+#[test]
+fn hover_definition_symbols_and_completion_read_hlsl() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let project = fixture_copy(dir.path(), "hlsl_lit");
+    let mut client = Client::start(dir.path());
+    let (pass_uri, pass_text) = open_saved(&mut client, &project, "shaders/LitPass.hlsl");
+    assert_eq!(errors(&client.diagnostics(&pass_uri, Some(1))), Vec::<&Value>::new());
+    let hover = |client: &mut Client, (line, column): (u32, u32)| -> String {
+        let result = client.request("textDocument/hover", at(&pass_uri, line, column + 1));
+        result["contents"]["value"].as_str().unwrap_or_default().to_string()
+    };
+    let definition = |client: &mut Client, (line, column): (u32, u32)| -> (PathBuf, String, u64) {
+        let found = client.request("textDocument/definition", at(&pass_uri, line, column + 1));
+        let path = url_path(found["uri"].as_str().unwrap_or_else(|| panic!("a location: {found}")));
+        let text = std::fs::read_to_string(&path).expect("the definition's file");
+        (path, text, found["range"]["start"]["line"].as_u64().expect("line"))
+    };
+    let line_of = |text: &str, line: u64| text.lines().nth(line as usize).unwrap_or_default().to_string();
+
+    // A function of kiln's HLSL library: its declaration, fenced as HLSL, and the file it is in.
+    let function = hover(&mut client, find(&pass_text, "TransformObjectToWorld(input"));
+    assert!(
+        function
+            .starts_with("```hlsl\nfloat3 TransformObjectToWorld(float3 positionOS) {\n```\nCommon.hlsl:"),
+        "{function}"
+    );
+    let (path, text, line) = definition(&mut client, find(&pass_text, "TransformObjectToWorld(input"));
+    assert!(path.ends_with("Common.hlsl"), "{}", path.display());
+    assert_eq!(text, std::fs::read_to_string(root().join("shaderlib/Common.hlsl")).expect("library"));
+    assert!(line_of(&text, line).contains("float3 TransformObjectToWorld("), "{}", line_of(&text, line));
+
+    // The pass's own declarations: a struct, and a function used before the cursor's file ends.
+    let (_, _, line) = definition(&mut client, find(&pass_text, "Varyings LitPassVertex"));
+    assert_eq!(line, u64::from(find(&pass_text, "struct Varyings").0));
+
+    // A constant-buffer member declared through Unity's macro: the manifest's layout on hover, the
+    // macro's line as its definition.
+    let member = hover(&mut client, find(&pass_text, "_Cutoff));"));
+    assert!(member.contains("in `UnityPerMaterial`") && member.contains("offset 32, size 4"), "{member}");
+    let (_, _, line) = definition(&mut client, find(&pass_text, "_Cutoff));"));
+    assert_eq!(line, u64::from(find(&pass_text, "UNITY_DEFINE_INSTANCED_PROP(float, _Cutoff)").0));
+
+    // A macro: its `#define`, and what the active variant expands it to, fenced as HLSL.
+    let expansion = hover(&mut client, find(&pass_text, "SAMPLE_TEXTURE2D(_BaseMap"));
+    assert!(expansion.contains("#define SAMPLE_TEXTURE2D(texture, state, uv)"), "{expansion}");
+    assert!(expansion.contains("to:\n```hlsl\n"), "{expansion}");
+
+    // The outline of an HLSL include: its structs and functions.
+    let symbols =
+        client.request("textDocument/documentSymbol", json!({ "textDocument": { "uri": pass_uri } }));
+    let names: Vec<&str> =
+        symbols.as_array().expect("symbols").iter().map(|s| s["name"].as_str().expect("name")).collect();
+    assert_eq!(names, ["UnityPerMaterial", "Attributes", "Varyings", "LitPassVertex", "LitPassFragment"]);
+
+    // Completion: the library's HLSL files after `#include "`, keywords and macros after `#if`.
+    let edited = pass_text.replace("#include \"Common.hlsl\"\n", "#include \"\n#if defined(\n#endif\n");
+    client.change(&pass_uri, 2, &edited);
+    let labels = |result: Value| -> Vec<String> {
+        let items = result.as_array().cloned().unwrap_or_default();
+        items.iter().map(|i| i["label"].as_str().expect("label").to_string()).collect()
+    };
+    let (line, _) = find(&edited, "#include \"\n");
+    let includes = labels(client.request("textDocument/completion", at(&pass_uri, line, 10)));
+    for name in ["Common.hlsl", "Lighting.hlsl", "LitPass.hlsl"] {
+        assert!(includes.iter().any(|i| i == name), "{name}: {includes:?}");
+    }
+    let conditions = labels(client.request("textDocument/completion", at(&pass_uri, line + 1, 12)));
+    for name in ["_CLIPPING", "_PREMULTIPLY_ALPHA", "CUSTOM_LIT_PASS_INCLUDED"] {
+        assert!(conditions.iter().any(|c| c == name), "{name}: {conditions:?}");
     }
     client.shutdown();
 }

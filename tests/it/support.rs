@@ -345,9 +345,15 @@ pub fn test_generated_module(out: &Path, lib: &str) -> PathBuf {
 
 /// A copy of the bundled example project (without build output) in `dir/project`.
 pub fn example_project_copy(dir: &Path) -> PathBuf {
-    let project = dir.join("project");
-    for entry in walkdir::WalkDir::new(root().join("fixtures/project")).into_iter().filter_map(Result::ok) {
-        let relative = entry.path().strip_prefix(root().join("fixtures/project")).expect("inside");
+    fixture_copy(dir, "project")
+}
+
+/// A copy of `fixtures/<name>` (its build output left out) in `dir/<name>`.
+pub fn fixture_copy(dir: &Path, name: &str) -> PathBuf {
+    let project = dir.join(name);
+    let fixture = root().join("fixtures").join(name);
+    for entry in walkdir::WalkDir::new(&fixture).into_iter().filter_map(Result::ok) {
+        let relative = entry.path().strip_prefix(&fixture).expect("inside");
         if entry.file_type().is_file() && !relative.starts_with("build") {
             let to = project.join(relative);
             std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
