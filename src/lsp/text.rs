@@ -508,4 +508,19 @@ float4 Fragment(Varyings i) : SV_TARGET { if (i.uv.x > 0) { return 0; } return 1
         assert_eq!(Language::at("S.shader", text, text.find("vec4f").expect("WGSL")), Language::Wgsl);
         assert_eq!(Language::at("Lit.hlsl", "", 0).fence(), "hlsl");
     }
+
+    proptest::proptest! {
+        /// Any text, half-typed or hostile: the scans end, and every range found is a name of it.
+        #[test]
+        fn declarations_of_any_text_are_names_in_it(
+            text in "([a-zA-Z_]{1,6}|[ \n\t{}()<>\\[\\];:=,#\\\\\"/*]|é|\u{1F600}|HLSLPROGRAM|ENDHLSL|cbuffer|struct){0,80}",
+            name in "(a\\.shader|a\\.hlsl|a\\.wgsl|a\\.inc)",
+        ) {
+            for (_, _, range) in declarations(&name, &text) {
+                let found = &text[range];
+                proptest::prop_assert!(!found.is_empty() && found.chars().all(is_name_char), "{found:?}");
+            }
+            let _ = Language::at(&name, &text, text.len() / 2);
+        }
+    }
 }
