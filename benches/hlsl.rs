@@ -1,14 +1,15 @@
 //! kiln's HLSL route against glslang alone, on the same variants, in one run: `cargo bench
-//! --bench hlsl` (sizes: `-- 64,256`). For each size it writes a project of one HLSL shader (the
-//! fixture's unlit pass with lighting terms behind eight `shader_feature_fragment` keywords) and
-//! materials choosing distinct combinations, then measures, in interleaved rounds: kiln's cold
-//! build; glslang alone in process on the very stage texts kiln compiles (its HLSL front end to
-//! SPIR-V, on every core, as kiln runs it); the same followed by naga's SPIR-V reader (kiln's
-//! front end, without binding, validation or any back end); the tools alone making the same
-//! outputs (that, with naga's validation and its WGSL and SPIR-V writers); Khronos'
-//! `glslangValidator`, one
-//! process per stage text, where it is installed; and a no-op rebuild. Results:
-//! docs/performance.md ("HLSL").
+//! --bench hlsl` (sizes and shapes: `-- 64,256 lit`). For each size and shape it writes a project
+//! of one HLSL shader (the fixture's unlit pass, or the tutorial's lit pass with kiln's HLSL
+//! library, each with eight `shader_feature_fragment` terms) and materials choosing distinct
+//! combinations, then measures, in interleaved rounds: kiln's cold build; glslang alone in
+//! process on each distinct preprocessed stage text, whole, as one would hand it to glslang (its
+//! HLSL front end to SPIR-V, on every core, as kiln runs it; kiln cuts each text to what its entry
+//! point reaches first); the same followed by naga's SPIR-V reader (kiln's front end, without
+//! binding, validation or any back end); the tools alone making the same outputs (that, with
+//! naga's validation and its WGSL and SPIR-V writers); Khronos' `glslangValidator`, one process
+//! per stage text, where it is installed; and a no-op rebuild. Results: docs/performance.md
+//! ("HLSL").
 
 use kiln::preprocess::Stage;
 use kiln::project::{Request, build_project};
@@ -26,15 +27,29 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 const KEYWORDS: usize = 8;
 
-/// A project of `variants` materials of one HLSL shader, each a distinct keyword combination.
-fn generate(dir: &Path, variants: usize) {
-    let fixture = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures/hlsl/shaders");
+/// The shader a bench project builds: the fixture's unlit pass alone, or the tutorial's lit pass
+/// with kiln's HLSL library (Common, Surface, Light, BRDF, Lighting) in every stage text.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Shape {
+    Unlit,
+    Lit,
+}
+
+/// A project of `variants` materials of one HLSL shader of `shape`, each a distinct keyword
+/// combination of eight fragment terms.
+fn generate(dir: &Path, variants: usize, shape: Shape) {
+    let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures");
+    let (folder, pass_file, shader_file, name, result) = match shape {
+        Shape::Unlit => ("hlsl", "UnlitPass.hlsl", "Unlit.shader", "HLSL/Unlit", "base.rgb"),
+        Shape::Lit => ("hlsl_lit", "LitPass.hlsl", "Lit.shader", "Custom RP/Lit", "color"),
+    };
+    let fixture = fixtures.join(folder).join("shaders");
     std::fs::create_dir_all(dir.join("materials")).expect("mkdir");
-    let pass = std::fs::read_to_string(fixture.join("UnlitPass.hlsl")).expect("UnlitPass.hlsl");
+    let pass = std::fs::read_to_string(fixture.join(pass_file)).expect("the pass");
     let terms: String = (0..KEYWORDS)
         .map(|k| {
             format!(
-                "#if defined(_F{k})\n    base.rgb = lerp(base.rgb, pow(saturate(base.gbr * {s} + {o}), {p}) * exp2(-base.rgb), {t});\n#endif\n",
+                "#if defined(_F{k})\n    {result} = lerp({result}, pow(saturate({result}.gbr * {s} + {o}), {p}) * exp2(-{result}), {t});\n#endif\n",
                 s = 1.0 + k as f32 * 0.25,
                 o = 0.1 * k as f32,
                 p = 1.5 + k as f32 * 0.125,
@@ -42,18 +57,23 @@ fn generate(dir: &Path, variants: usize) {
             )
         })
         .collect();
-    let pass = pass.replace("    return base;\n", &format!("{terms}    return base;\n"));
+    let returned = match shape {
+        Shape::Unlit => "    return base;\n",
+        Shape::Lit => "    return float4(color, surface.alpha);\n",
+    };
+    assert!(pass.contains(returned), "the pass returns as the bench expects");
+    let pass = pass.replace(returned, &format!("{terms}{returned}"));
     std::fs::write(dir.join("BenchPass.hlsl"), pass).expect("write");
     let pragmas: String =
         (0..KEYWORDS).map(|k| format!("            #pragma shader_feature_fragment _ _F{k}\n")).collect();
-    let shader = std::fs::read_to_string(fixture.join("Unlit.shader"))
-        .expect("Unlit.shader")
-        .replace("Shader \"HLSL/Unlit\"", "Shader \"Bench/Hlsl\"")
+    let shader = std::fs::read_to_string(fixture.join(shader_file))
+        .expect("the shader")
+        .replace(&format!("Shader \"{name}\""), "Shader \"Bench/Hlsl\"")
         .replace(
             "#pragma shader_feature _CLIPPING\n",
             &format!("#pragma shader_feature _CLIPPING\n{pragmas}"),
         )
-        .replace("#include \"UnlitPass.hlsl\"", "#include \"BenchPass.hlsl\"");
+        .replace(&format!("#include \"{pass_file}\""), "#include \"BenchPass.hlsl\"");
     std::fs::write(dir.join("Bench.shader"), shader).expect("write");
     std::fs::write(dir.join("kiln.toml"), "global_keywords = []\n").expect("write");
     for m in 0..variants {
@@ -160,11 +180,20 @@ fn main() {
         .unwrap_or_else(|| vec![64, 256]);
     let rounds: usize =
         std::env::var("KILN_SCALE_ROUNDS").ok().and_then(|n| n.parse().ok()).unwrap_or(5).max(1);
+    // `unlit` or `lit` after the sizes picks one shape; both by default.
+    let args: Vec<String> = std::env::args().collect();
+    let shapes: Vec<Shape> = [(Shape::Unlit, "unlit"), (Shape::Lit, "lit")]
+        .into_iter()
+        .filter(|(_, name)| {
+            !args.iter().any(|a| a == "unlit" || a == "lit") || args.iter().any(|a| a == name)
+        })
+        .map(|(shape, _)| shape)
+        .collect();
     println!("threads: {}, rounds: {rounds}", rayon::current_num_threads());
-    for size in sizes {
+    for (shape, size) in shapes.iter().flat_map(|&shape| sizes.iter().map(move |&size| (shape, size))) {
         let dir = tempfile::tempdir().expect("temp dir");
         let project = dir.path().join("project");
-        generate(&project, size);
+        generate(&project, size, shape);
         let texts = whole_texts(&project);
         let (mut kiln, mut alone, mut front, mut processes, mut noop) =
             (vec![], vec![], vec![], vec![], vec![]);
@@ -197,13 +226,18 @@ fn main() {
             }
             noop.push(kiln_build(&project, &output).1);
         }
-        assert_eq!(compiled, texts.len(), "kiln compiles each distinct text once");
+        // Whole texts that differ only where no entry point reaches (a fragment keyword in the
+        // vertex stage's text) are one module once cut.
+        assert!(compiled <= texts.len(), "kiln compiles each distinct text at most once");
         let ratio = |a: &[Duration], b: &[Duration]| {
             spread(a.iter().zip(b).map(|(a, b)| a.as_secs_f64() / b.as_secs_f64()).collect())
         };
         let per = |d: Duration| d.as_secs_f64() * 1000.0 / texts.len() as f64;
         let (k, g, f) = (median(kiln.clone()), median(alone.clone()), median(front.clone()));
-        println!("{size} materials: {} distinct stage texts (kiln compiled {compiled})", texts.len());
+        println!(
+            "{shape:?}, {size} materials: {} distinct stage texts (kiln compiled {compiled})",
+            texts.len()
+        );
         println!(
             "  kiln build          {:>8.1} ms  ({:.2} ms a stage module)",
             k.as_secs_f64() * 1000.0,

@@ -99,6 +99,11 @@ fn parse_unguarded(
     })?;
     name_resources(&mut module);
     check_layouts(&module, text, mapper)?;
+    // naga's SPIR-V reader gives every function an expression for every global, used or not: the
+    // globals the entry point uses are those left once unused expressions are gone, so that a
+    // pass's bindings are numbered over the resources its stages use (and a text cut to what the
+    // entry point reaches binds as its whole text does).
+    naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
     Ok(module)
 }
 

@@ -9,6 +9,8 @@
 //!   methods, with the source map kept.
 //! - `hlsl.rs`: HLSL and Cg programs through glslang's HLSL front end to SPIR-V, read back by
 //!   naga; their constant buffers' packing kept, or refused at the member.
+//! - `hlsl_reach.rs`: an HLSL text cut to what its entry point reaches, before glslang parses it
+//!   (WGSL's is `reach.rs`).
 //! - `stage.rs`: one stage module from parsed text to WGSL, SPIR-V and reflection.
 //! - `wgsl.rs`: WGSL out, repaired where naga's writer misspells a construct, so that it loads again.
 //! - `gaps.rs`: what naga's SPIR-V writer cannot write (a module with it ships as WGSL only).
@@ -26,6 +28,7 @@ mod cg;
 mod gaps;
 pub mod glslang;
 pub(crate) mod hlsl;
+pub mod hlsl_reach;
 mod layout;
 mod messages;
 mod panics;
@@ -42,6 +45,22 @@ use crate::preprocess::{Preprocessed, SourceMap};
 use crate::shaderlab::ast::ProgramLanguage;
 use crate::source::SourceStore;
 use naga::valid::{Capabilities, ModuleInfo, ValidationFlags, Validator};
+
+/// `text` cut to the declarations `entry` reaches, as its language's scan finds them
+/// ([`reach::cut`], [`hlsl_reach::cut`]), with its map cut alike; `None` where nothing would be
+/// left out, the scan cannot tell, or kiln does not compile the language.
+pub fn cut(
+    language: ProgramLanguage,
+    text: &str,
+    map: &SourceMap,
+    entry: &str,
+) -> Option<(String, SourceMap)> {
+    match language {
+        ProgramLanguage::Wgsl => reach::cut(text, map, entry),
+        ProgramLanguage::Hlsl | ProgramLanguage::Cg => hlsl_reach::cut(text, map, entry),
+        ProgramLanguage::Glsl => None,
+    }
+}
 
 /// A parsed and validated module.
 pub struct Checked {

@@ -86,10 +86,22 @@ pub(super) struct WholeText {
 /// A preprocessed stage text cut to what each of `entries` reaches (a compute program's kernels
 /// share one text), where `scope` asks it and the cut leaves something out: for each, the text,
 /// its map, the whole, and the cut's scan.
-fn cuts(text: String, map: SourceMap, entries: &[&str], scope: ParseScope) -> Vec<Cut> {
-    let cuts = match scope {
-        ParseScope::Together | ParseScope::Reachable => reach::cuts_scanned(&text, &map, entries),
-        ParseScope::Whole => entries.iter().map(|_| None).collect(),
+fn cuts(
+    language: ProgramLanguage,
+    text: String,
+    map: SourceMap,
+    entries: &[&str],
+    scope: ParseScope,
+) -> Vec<Cut> {
+    let cuts: Vec<Option<(String, SourceMap, Option<reach::CutScan>)>> = match (scope, language) {
+        (ParseScope::Whole, _) => entries.iter().map(|_| None).collect(),
+        (_, ProgramLanguage::Wgsl) => (reach::cuts_scanned(&text, &map, entries).into_iter())
+            .map(|cut| cut.map(|(t, m, scan)| (t, m, Some(scan))))
+            .collect(),
+        // glslang parses one text for each entry point; texts are not parsed together.
+        (_, language) => (entries.iter())
+            .map(|entry| crate::compile::cut(language, &text, &map, entry).map(|(t, m)| (t, m, None)))
+            .collect(),
     };
     let mut whole = (text, map);
     let last = entries.len().saturating_sub(1);
@@ -99,9 +111,9 @@ fn cuts(text: String, map: SourceMap, entries: &[&str], scope: ParseScope) -> Ve
         let Some((mut cut, cut_map, scan)) = cut else { return (text, map, None, None) };
         // For the test of a miss: debug builds spoil the cut of the entry point this names.
         if cfg!(debug_assertions) && std::env::var("KILN_INJECT_CUT_MISS").is_ok_and(|name| name == *entry) {
-            cut.push_str("fn (\n");
+            cut.push_str(if language == ProgramLanguage::Wgsl { "fn (\n" } else { "float4 (\n" });
         }
-        (cut, cut_map, Some(Box::new(WholeText { text, map })), Some(scan))
+        (cut, cut_map, Some(Box::new(WholeText { text, map })), scan)
     });
     given.collect()
 }
@@ -237,12 +249,9 @@ pub(super) fn pass_jobs<'a>(
             false => program.keyword_macros(&keywords),
         };
         let out = preprocess_with(includes, store, source, &macros, r.stage);
-        // A cut reads WGSL's declarations; glslang reads the other languages' texts whole.
-        let wgsl = program.language == ProgramLanguage::Wgsl;
-        let scope =
-            if !wgsl || diagnostics::has_errors(&out.diagnostics) { ParseScope::Whole } else { scope };
+        let scope = if diagnostics::has_errors(&out.diagnostics) { ParseScope::Whole } else { scope };
         let entries: Vec<&str> = asking.iter().map(|&i| requests[i].entry.value.as_str()).collect();
-        let cuts = cuts(out.text, out.source_map, &entries, scope);
+        let cuts = cuts(program.language, out.text, out.source_map, &entries, scope);
         let cuts: Vec<_> = cuts.into_iter().map(|cut| (text_hash(program.language, &cut.0), cut)).collect();
         (out.diagnostics, cuts)
     });

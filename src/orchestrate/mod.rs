@@ -48,9 +48,10 @@ const GLSLANG_VERSION: &str = "glslang 0.9";
 /// modules WGSL only, compute kernels; 4: WGSL repaired where naga misspells it, modules naga's
 /// SPIR-V writer cannot write shipped WGSL only; 5: storage texture access reflected as WGSL's
 /// modes; 6: MSL, HLSL and GLSL back ends; 7: HLSL and Cg programs; 8: glslang's "recursion" on a
-/// module-scope array value let through), so that a cache an earlier kiln of the
+/// module-scope array value let through; 9: HLSL and Cg texts cut to what the entry point reaches,
+/// an HLSL pass's bindings numbered over the resources its stages use), so that a cache an earlier kiln of the
 /// same version filled is not taken for current.
-const COMPILER_REVISION: u32 = 8;
+const COMPILER_REVISION: u32 = 9;
 
 /// What compiled a module, as the shared cache records it beside each object: kiln's version and
 /// revision, naga's and glslang's. Made once: every object fetched or published names it.

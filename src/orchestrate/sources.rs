@@ -267,9 +267,25 @@ impl ModuleSource for OtherPasses {
 }
 
 impl WholeText {
-    /// naga's parse of the whole text, its errors placed through its own map.
-    fn parse(&self, store: &SourceStore) -> Result<Parsed, Diagnostic> {
-        Ok(Parsed { module: parse(&self.text, &Mapper { map: &self.map, store })?, from: ParsedFrom::Whole })
+    /// The parse of the whole text (naga's, or glslang's and naga's), its errors placed through
+    /// its own map.
+    fn parse(&self, job: &Job, store: &SourceStore) -> Result<Parsed, Diagnostic> {
+        Ok(Parsed { module: parse_text(job, &self.text, &self.map, store)?, from: ParsedFrom::Whole })
+    }
+}
+
+/// A text of `job`'s parsed in its language: by naga's WGSL front end, or by glslang's HLSL one
+/// and naga's SPIR-V reader.
+fn parse_text(
+    job: &Job,
+    text: &str,
+    map: &crate::preprocess::SourceMap,
+    store: &SourceStore,
+) -> Result<naga::Module, Diagnostic> {
+    let mapper = Mapper { map, store };
+    match job.language {
+        ProgramLanguage::Wgsl => parse(text, &mapper),
+        language => hlsl::parse(text, language, job.stage, (job.entry, job.entry_pragma), &mapper),
     }
 }
 
@@ -296,18 +312,13 @@ impl Naga {
     /// the cut.
     fn parse_job(&self, pass: &PassSources, job: &Job) -> Result<Parsed, Diagnostic> {
         pass.session.parses.fetch_add(1, Ordering::Relaxed);
-        let mapper = Mapper { map: &job.map, store: pass.store };
-        let parsed = match job.language {
-            ProgramLanguage::Wgsl => parse(&job.text, &mapper),
-            language => hlsl::parse(&job.text, language, job.stage, (job.entry, job.entry_pragma), &mapper),
-        };
-        match parsed {
+        match parse_text(job, &job.text, &job.map, pass.store) {
             Ok(module) => Ok(Parsed { module, from: ParsedFrom::Text }),
             Err(error) => match &job.whole {
                 None => Err(error),
                 Some(whole) => {
                     pass.session.parses.fetch_add(1, Ordering::Relaxed);
-                    let parsed = whole.parse(pass.store)?;
+                    let parsed = whole.parse(job, pass.store)?;
                     pass.session.uncut.fetch_add(1, Ordering::Relaxed);
                     Ok(parsed)
                 }
@@ -354,7 +365,7 @@ impl Naga {
         match (self.compile_parsed(pass, ask, parsed), &ask.job.whole) {
             (Err(_), Some(whole)) if from_cut => {
                 pass.session.parses.fetch_add(1, Ordering::Relaxed);
-                let output = self.compile_parsed(pass, ask, whole.parse(pass.store)?)?;
+                let output = self.compile_parsed(pass, ask, whole.parse(ask.job, pass.store)?)?;
                 pass.session.uncut.fetch_add(1, Ordering::Relaxed);
                 Ok(output)
             }

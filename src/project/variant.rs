@@ -3,7 +3,7 @@
 
 use super::ProjectError;
 use super::materials::config_folder_above;
-use super::workspace::{SHADER_EXTENSIONS, bind_group_names, include_config};
+use super::workspace::{SHADER_EXTENSIONS, bind_group_names, include_config, inside_the_project};
 use crate::catalog::{Catalog, CatalogInput, CatalogProgram, catalog};
 use crate::config::{ParseScope, Settings};
 use crate::diagnostics::{self, Diagnostic};
@@ -12,7 +12,6 @@ use crate::manifest::StageView;
 use crate::orchestrate::{Run, Writes, build};
 use crate::preprocess::{Includes, Preprocessed, Stage, preprocess_with};
 use crate::reflect::UniformBlock;
-use crate::shaderlab::ast::ProgramLanguage;
 use crate::source::SourceStore;
 use std::path::{Path, PathBuf};
 
@@ -27,8 +26,9 @@ pub struct VariantRequest {
     pub keywords: Vec<String>,
     /// Which stage to preprocess.
     pub stage: Stage,
-    /// The project whose `kiln.toml` settings apply (`[bind_groups]`, as `kiln build` uses them);
-    /// default: the nearest folder above the shader with a `kiln.toml`, if any.
+    /// The project whose `kiln.toml` settings apply (`include_paths` and `[bind_groups]`, as
+    /// `kiln build` uses them); default: the nearest folder above the shader with a `kiln.toml`,
+    /// if any.
     pub project: Option<PathBuf>,
 }
 
@@ -36,6 +36,8 @@ pub struct VariantRequest {
 struct Requested {
     catalog: Catalog,
     includes: Includes,
+    /// The project's bind-group names (`[bind_groups]`).
+    groups: crate::compile::bind::GroupNames,
     /// Index of the pass in `catalog.shaders[0].passes`.
     pass: usize,
     variant: Variant,
@@ -59,9 +61,26 @@ fn requested_variant(
         return Err(ProjectError::NotAShader(request.shader.clone()));
     }
     let file = store.load(&request.shader)?;
-    let mut includes = Includes::new(include_config(std::slice::from_ref(&request.shader)));
-    let input = CatalogInput { shaders: vec![file], ..CatalogInput::default() };
     let mut diagnostics = crate::diagnostics::text_warnings(store, file);
+    // Includes and bindings as the project's build has them. Only its `kiln.toml` is read: the
+    // project's files are not walked for one shader.
+    let mut roots = vec![request.shader.clone()];
+    let mut include_paths = Vec::new();
+    let mut groups = Default::default();
+    let project = request.project.clone().or_else(|| config_folder_above(&request.shader));
+    if let Some(project) = project.filter(|p| p.join(crate::config::FILE_NAME).is_file()) {
+        let config_file = store.load(&project.join(crate::config::FILE_NAME))?;
+        let (config, problems) = crate::config::parse_config(store, config_file);
+        diagnostics.extend(problems);
+        diagnostics.extend(bind_group_names(&config.bind_groups, config_file, &mut groups));
+        include_paths =
+            inside_the_project(store, &project, Some(config_file), &config.include_paths, &mut diagnostics);
+        roots.push(project);
+    }
+    let mut include = include_config(&roots);
+    include.include_paths = include_paths;
+    let mut includes = Includes::new(include);
+    let input = CatalogInput { shaders: vec![file], ..CatalogInput::default() };
     let (catalog, found) = catalog(store, &mut includes, &input);
     diagnostics.extend(found);
     let Some(shader) = catalog.shaders.first() else { return Ok((None, diagnostics)) };
@@ -85,7 +104,7 @@ fn requested_variant(
     if diagnostics::has_errors(&diagnostics) {
         return Ok((None, diagnostics));
     }
-    Ok((Some(Requested { catalog, includes, pass, variant }), diagnostics))
+    Ok((Some(Requested { catalog, includes, groups, pass, variant }), diagnostics))
 }
 
 /// Preprocesses one variant of one pass for one stage (a `_fragment` keyword is not defined in
@@ -114,10 +133,9 @@ pub fn preprocess_variant(
         Stage::Fragment => pragmas.fragment.as_ref(),
         Stage::Compute => pragmas.kernels.first(),
     };
-    // A cut reads WGSL's declarations: other languages' texts are glslang's whole.
-    let wgsl = program.language == ProgramLanguage::Wgsl;
-    if let (true, true, ParseScope::Reachable, Some(entry)) = (ok, wgsl, scope, entry)
-        && let Some((text, map)) = crate::compile::reach::cut(&output.text, &output.source_map, &entry.value)
+    if let (true, ParseScope::Reachable, Some(entry)) = (ok, scope, entry)
+        && let Some((text, map)) =
+            crate::compile::cut(program.language, &output.text, &output.source_map, &entry.value)
     {
         (output.text, output.source_map) = (text, map);
     }
@@ -131,7 +149,7 @@ pub fn reflect_variant(
     request: &VariantRequest,
 ) -> Result<(Option<serde_json::Value>, Vec<Diagnostic>), ProjectError> {
     let (requested, mut diagnostics) = requested_variant(store, request)?;
-    let Some(Requested { mut catalog, includes, pass: index, variant }) = requested else {
+    let Some(Requested { mut catalog, includes, groups, pass: index, variant }) = requested else {
         return Ok((None, diagnostics));
     };
     // Only the requested variant is built.
@@ -141,17 +159,6 @@ pub fn reflect_variant(
         }
     }
     let folder = request.shader.parent().map(Path::to_path_buf).unwrap_or_default();
-    // Bindings as the project's build gives them: its `[bind_groups]` move resources between
-    // groups. Only its `kiln.toml` is read: the project's files are not walked for one shader.
-    let mut groups = Default::default();
-    let project = request.project.clone().or_else(|| config_folder_above(&request.shader));
-    let config = project.map(|p| p.join(crate::config::FILE_NAME)).filter(|c| c.is_file());
-    if let Some(config) = config {
-        let file = store.load(&config)?;
-        let (config, problems) = crate::config::parse_config(store, file);
-        diagnostics.extend(problems);
-        diagnostics.extend(bind_group_names(&config.bind_groups, file, &mut groups));
-    }
     let settings =
         Settings { groups, ..Settings::one_off(folder.clone(), folder.join(".kiln-reflect-unused")) };
     let run = Run { writes: Writes::Nothing, ..Run::default() };

@@ -162,6 +162,32 @@ fn outside_the_project(store: &SourceStore, file: FileId, folder: &Path) -> Diag
         .help("move or link the files into the project, or give the folder to kiln as a path of its own")
 }
 
+/// The folders of `folders` (as `kiln.toml` in `project` names them) that are inside the project;
+/// each other one is an error at its line of the file. Every path the file names is confined so,
+/// as includes are: a project (one cloned from anywhere) must not make `kiln check` read and quote
+/// other files.
+pub(super) fn inside_the_project(
+    store: &SourceStore,
+    project: &Path,
+    config_file: Option<FileId>,
+    folders: &[PathBuf],
+    diagnostics: &mut Vec<Diagnostic>,
+) -> Vec<PathBuf> {
+    let root = std::fs::canonicalize(project).unwrap_or_else(|_| project.to_path_buf());
+    let mut inside = Vec::new();
+    for folder in folders {
+        let joined = crate::source::normalize_lexically(&project.join(folder));
+        let resolved = std::fs::canonicalize(&joined)
+            .unwrap_or_else(|_| crate::source::normalize_lexically(&root.join(folder)));
+        if resolved.starts_with(&root) {
+            inside.push(joined);
+        } else if let Some(file) = config_file {
+            diagnostics.push(outside_the_project(store, file, folder));
+        }
+    }
+    inside
+}
+
 /// Gathers the shaders, materials and include settings of `paths` (see [`Workspace`]); a
 /// malformed `kiln.toml` is a diagnostic, its defaults used instead.
 pub fn open_workspace(
@@ -226,23 +252,8 @@ pub fn open_workspace(
         } else {
             ProjectConfig::default()
         };
-        // Every path the file names is confined to the project folder, as includes are: a
-        // project (one cloned from anywhere) must not make `kiln check` read and quote other files.
-        let root = std::fs::canonicalize(path).unwrap_or_else(|_| path.clone());
-        let mut under = |folders: &[PathBuf]| -> Vec<PathBuf> {
-            let mut inside = Vec::new();
-            for folder in folders {
-                let joined = crate::source::normalize_lexically(&path.join(folder));
-                let resolved = std::fs::canonicalize(&joined)
-                    .unwrap_or_else(|_| crate::source::normalize_lexically(&root.join(folder)));
-                if resolved.starts_with(&root) {
-                    inside.push(joined);
-                } else if let Some(file) = config_file {
-                    diagnostics.push(outside_the_project(store, file, folder));
-                }
-            }
-            inside
-        };
+        let mut under =
+            |folders: &[PathBuf]| inside_the_project(store, path, config_file, folders, &mut diagnostics);
         let (shader_folders, material_folders) = (under(&config.shaders), under(&config.materials));
         let (include_folders, variant_logs) = (under(&config.include_paths), under(&config.variant_logs));
         for (found, files) in [

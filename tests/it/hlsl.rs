@@ -73,6 +73,29 @@ fn kiln_preprocess_and_reflect_work_on_an_hlsl_variant() {
     assert!(!text.contains("#include") && !text.contains("#if"), "{text}");
 }
 
+/// A Unity shader inside its project: `kiln preprocess` and `kiln reflect` read the project's
+/// `kiln.toml` (its `include_paths` give `UnityCG.cginc`), and `--reachable` prints the text a
+/// build hands glslang, a small part of the whole.
+#[test]
+fn kiln_preprocess_and_reflect_take_a_unity_shader_s_includes_from_its_project() {
+    let shader = "tests/corpus/unity/Unity-Built-in-Shaders/DefaultResourcesExtra/Unlit/Unlit-Normal.shader";
+    let printed = |extra: &[&str]| {
+        let run = kiln(&[&["preprocess", shader, "--stage", "vertex"], extra].concat());
+        assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+        String::from_utf8(run.stdout).expect("UTF-8")
+    };
+    let (whole, cut) = (printed(&[]), printed(&["--reachable"]));
+    assert!(whole.contains("UnityObjectToClipPos"), "UnityCG.cginc is spliced in");
+    let lines = |text: &str| text.lines().filter(|l| !l.trim().is_empty()).count();
+    assert!(cut.contains("v2f vert") && cut.contains("UnityObjectToClipPos"), "{cut}");
+    assert!(lines(&cut) * 3 < lines(&whole), "cut {} of {} lines", lines(&cut), lines(&whole));
+    let reflected = kiln(&["reflect", shader]);
+    assert!(reflected.status.success(), "{}", String::from_utf8_lossy(&reflected.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&reflected.stdout).expect("JSON");
+    let layout = json["layout"].to_string();
+    assert!(layout.contains("\"_MainTex\"") && layout.contains("UnityPerDraw"), "{layout}");
+}
+
 // ---------------------------------------------------------------------------------------------
 // HLSL's constant buffer packing, from its rules: a scalar or vector never straddles a 16-byte
 // register; arrays and matrices start on a register; an array's elements (and a matrix's

@@ -341,9 +341,29 @@ fn project_with_unused(body: &str) -> tempfile::TempDir {
     dir
 }
 
+/// The same in HLSL, which glslang parses.
+fn hlsl_project_with_unused() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let shader = "Shader \"Cut\" { SubShader { Pass {\nHLSLPROGRAM\n#pragma vertex vs\n#pragma fragment fs\n\
+                  float unused() { return 1.0; }\n\
+                  float4 vs(uint i : SV_VertexID) : SV_POSITION { return float4((float)i, 0.0, 0.0, 1.0); }\n\
+                  float4 fs() : SV_TARGET { return float4(1.0, 1.0, 1.0, 1.0); }\n\
+                  ENDHLSL\n} } }\n";
+    std::fs::write(dir.path().join("Cut.shader"), shader).expect("shader");
+    std::fs::write(dir.path().join("kiln.toml"), "always_include = [\"Cut\"]\n").expect("kiln.toml");
+    dir
+}
+
 #[test]
 fn a_cut_naga_refuses_is_built_whole_and_counted() {
-    let project = project_with_unused("return 1.0;");
+    for project in [project_with_unused("return 1.0;"), hlsl_project_with_unused()] {
+        a_cut_refused_is_built_whole(&project);
+    }
+}
+
+/// A build whose cut of `fs` is spoiled (`KILN_INJECT_CUT_MISS`): its module is the whole text's,
+/// and the miss is said.
+fn a_cut_refused_is_built_whole(project: &tempfile::TempDir) {
     let out = tempfile::tempdir().expect("temp dir");
     let run = |inject: Option<&str>, output: &Path| {
         let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_kiln"));
@@ -398,4 +418,66 @@ fn an_error_no_entry_point_reaches_fails_kiln_check_and_not_kiln_build() {
         .output()
         .expect("kiln");
     assert_eq!(whole.status.code(), Some(1), "`--parse-whole` reports it as check does");
+}
+
+/// The HLSL fixtures and Unity's built-in unlit and UI shaders (with their own `CGIncludes`), each built from its whole stage texts and from the texts cut to what each entry
+/// point reaches (`compile::hlsl_reach`): glslang refuses no cut text, and every module shipped is
+/// the whole text's.
+#[test]
+fn hlsl_and_cg_cut_texts_ship_the_modules_their_whole_texts_give() {
+    let test = "reach::hlsl_and_cg_cut_texts_ship_the_modules_their_whole_texts_give";
+    if !tool("spirv-dis", "spirv-tools", test) {
+        return;
+    }
+    let dir = tempfile::tempdir().expect("temp dir");
+    // Unity's shaders that build whole (no surface shader, no pass glslang or naga refuses).
+    let unity = dir.path().join("unity");
+    let corpus = root().join("tests/corpus/unity/Unity-Built-in-Shaders");
+    let copied = [
+        "CGIncludes",
+        "DefaultResourcesExtra/Unlit",
+        "DefaultResourcesExtra/UI/UI-CompositeOverdraw.shader",
+        "DefaultResourcesExtra/UI/UI-Default.shader",
+        "DefaultResourcesExtra/UI/UI-DefaultFont.shader",
+        "DefaultResourcesExtra/UI/UI-Overdraw.shader",
+        "DefaultResourcesExtra/UI/UI-Unlit-Detail.shader",
+        "DefaultResourcesExtra/UI/UI-Unlit-Text.shader",
+        "DefaultResourcesExtra/UI/UI-Unlit-TextDetail.shader",
+        "DefaultResourcesExtra/UI/UI-Unlit-Transparent.shader",
+    ];
+    for folder in copied {
+        for entry in walkdir::WalkDir::new(corpus.join(folder)).into_iter().map(|e| e.expect("entry")) {
+            let relative = entry.path().strip_prefix(&corpus).expect("inside");
+            if entry.file_type().is_file() {
+                std::fs::create_dir_all(unity.join(relative).parent().expect("folder")).expect("mkdir");
+                std::fs::copy(entry.path(), unity.join(relative)).expect("copy");
+            }
+        }
+    }
+    std::fs::write(
+        unity.join("kiln.toml"),
+        "shaders = [\"DefaultResourcesExtra\"]\ninclude_paths = [\"CGIncludes\"]\nglobal_keywords = []\n",
+    )
+    .expect("kiln.toml");
+    let mut table = String::new();
+    let projects = ["hlsl", "hlsl_lit", "compute_hlsl"].map(|f| root().join("fixtures").join(f));
+    for project in projects.iter().chain([&unity]) {
+        let name = project.file_name().expect("name").to_string_lossy().into_owned();
+        let (whole, cut) = (dir.path().join(format!("{name}-whole")), dir.path().join(format!("{name}-cut")));
+        let (whole_summary, errors) = build_with(project, &whole, ParseScope::Whole, EVERY_KEYWORD);
+        assert!(errors.is_empty(), "{name}: {errors:#?}");
+        let (summary, errors) = build_with(project, &cut, ParseScope::Reachable, EVERY_KEYWORD);
+        assert!(errors.is_empty(), "{name}: {errors:#?}");
+        assert_eq!(summary.uncut, 0, "{name}: glslang refused a cut its whole text passes");
+        let comparison = compare(&whole, &cut, &dir.path().join(format!("{name}-spirv")));
+        assert!(comparison.failures.is_empty(), "{name}: {:#?}", comparison.failures);
+        let _ = writeln!(
+            table,
+            "{name}: {}; {} distinct stage texts whole, {} cut",
+            comparison.line(),
+            whole_summary.modules,
+            summary.modules
+        );
+    }
+    expect_test::expect_file![root().join("tests/golden/reach/hlsl.txt")].assert_eq(&table);
 }
