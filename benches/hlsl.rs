@@ -1,7 +1,8 @@
 //! kiln's HLSL route against glslang alone, on the same variants, in one run: `cargo bench
-//! --bench hlsl` (sizes and shapes: `-- 64,256 lit`). For each size and shape it writes a project
-//! of one HLSL shader (the fixture's unlit pass, or the tutorial's lit pass with kiln's HLSL
-//! library, each with eight `shader_feature_fragment` terms) and materials choosing distinct
+//! --bench hlsl` (sizes and shapes: `-- 64,256 lit unity`). For each size and shape it writes a project
+//! of one HLSL shader (the fixture's unlit pass, the tutorial's lit pass with kiln's HLSL
+//! library, or Unity's built-in `Unlit/Texture` in Cg with `UnityCG.cginc`, each with eight
+//! `shader_feature_fragment` terms) and materials choosing distinct
 //! combinations, then measures, in interleaved rounds: kiln's cold build; glslang alone in
 //! process on each distinct preprocessed stage text, whole, as one would hand it to glslang (its
 //! HLSL front end to SPIR-V, on every core, as kiln runs it; kiln cuts each text to what its entry
@@ -27,26 +28,20 @@ static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
 
 const KEYWORDS: usize = 8;
 
-/// The shader a bench project builds: the fixture's unlit pass alone, or the tutorial's lit pass
-/// with kiln's HLSL library (Common, Surface, Light, BRDF, Lighting) in every stage text.
+/// The shader a bench project builds: the fixture's unlit pass alone, the tutorial's lit pass
+/// with kiln's HLSL library (Common, Surface, Light, BRDF, Lighting) in every stage text, or
+/// Unity's built-in `Unlit/Texture` in Cg with Unity's own `UnityCG.cginc` (MIT, the corpus kiln's
+/// tests use).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Shape {
     Unlit,
     Lit,
+    Unity,
 }
 
-/// A project of `variants` materials of one HLSL shader of `shape`, each a distinct keyword
-/// combination of eight fragment terms.
-fn generate(dir: &Path, variants: usize, shape: Shape) {
-    let fixtures = Path::new(env!("CARGO_MANIFEST_DIR")).join("fixtures");
-    let (folder, pass_file, shader_file, name, result) = match shape {
-        Shape::Unlit => ("hlsl", "UnlitPass.hlsl", "Unlit.shader", "HLSL/Unlit", "base.rgb"),
-        Shape::Lit => ("hlsl_lit", "LitPass.hlsl", "Lit.shader", "Custom RP/Lit", "color"),
-    };
-    let fixture = fixtures.join(folder).join("shaders");
-    std::fs::create_dir_all(dir.join("materials")).expect("mkdir");
-    let pass = std::fs::read_to_string(fixture.join(pass_file)).expect("the pass");
-    let terms: String = (0..KEYWORDS)
+/// Eight terms on `result`, each behind its keyword `_F0`..`_F7`.
+fn terms(result: &str) -> String {
+    (0..KEYWORDS)
         .map(|k| {
             format!(
                 "#if defined(_F{k})\n    {result} = lerp({result}, pow(saturate({result}.gbr * {s} + {o}), {p}) * exp2(-{result}), {t});\n#endif\n",
@@ -56,26 +51,61 @@ fn generate(dir: &Path, variants: usize, shape: Shape) {
                 t = 0.5 / (k + 1) as f32
             )
         })
-        .collect();
-    let returned = match shape {
-        Shape::Unlit => "    return base;\n",
-        Shape::Lit => "    return float4(color, surface.alpha);\n",
-    };
-    assert!(pass.contains(returned), "the pass returns as the bench expects");
-    let pass = pass.replace(returned, &format!("{terms}{returned}"));
-    std::fs::write(dir.join("BenchPass.hlsl"), pass).expect("write");
+        .collect()
+}
+
+/// `text` with `what` inserted before `before`, which it must hold.
+fn inserted(text: &str, before: &str, what: &str) -> String {
+    assert!(text.contains(before), "the shader has `{before}` where the bench expects it");
+    text.replacen(before, &format!("{what}{before}"), 1)
+}
+
+/// A project of `variants` materials of one HLSL shader of `shape`, each a distinct keyword
+/// combination of eight fragment terms.
+fn generate(dir: &Path, variants: usize, shape: Shape) {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    std::fs::create_dir_all(dir.join("materials")).expect("mkdir");
     let pragmas: String =
         (0..KEYWORDS).map(|k| format!("            #pragma shader_feature_fragment _ _F{k}\n")).collect();
-    let shader = std::fs::read_to_string(fixture.join(shader_file))
-        .expect("the shader")
-        .replace(&format!("Shader \"{name}\""), "Shader \"Bench/Hlsl\"")
-        .replace(
-            "#pragma shader_feature _CLIPPING\n",
-            &format!("#pragma shader_feature _CLIPPING\n{pragmas}"),
-        )
-        .replace(&format!("#include \"{pass_file}\""), "#include \"BenchPass.hlsl\"");
+    let read = |path: PathBuf| std::fs::read_to_string(path).expect("the fixture");
+    let (shader, config) = match shape {
+        Shape::Unlit | Shape::Lit => {
+            let (folder, pass_file, shader_file, name, result, returned) = match shape {
+                Shape::Unlit => {
+                    ("hlsl", "UnlitPass.hlsl", "Unlit.shader", "HLSL/Unlit", "base.rgb", "    return base;\n")
+                }
+                _ => (
+                    "hlsl_lit",
+                    "LitPass.hlsl",
+                    "Lit.shader",
+                    "Custom RP/Lit",
+                    "color",
+                    "    return float4(color, surface.alpha);\n",
+                ),
+            };
+            let fixture = root.join("fixtures").join(folder).join("shaders");
+            let pass = inserted(&read(fixture.join(pass_file)), returned, &terms(result));
+            std::fs::write(dir.join("BenchPass.hlsl"), pass).expect("write");
+            let shader = read(fixture.join(shader_file))
+                .replace(&format!("Shader \"{name}\""), "Shader \"Bench/Hlsl\"")
+                .replace(&format!("#include \"{pass_file}\""), "#include \"BenchPass.hlsl\"");
+            (inserted(&shader, "            #pragma vertex", &pragmas), "global_keywords = []\n")
+        }
+        Shape::Unity => {
+            let corpus = root.join("tests/corpus/unity/Unity-Built-in-Shaders");
+            std::fs::create_dir_all(dir.join("CGIncludes")).expect("mkdir");
+            for entry in std::fs::read_dir(corpus.join("CGIncludes")).expect("CGIncludes").flatten() {
+                std::fs::copy(entry.path(), dir.join("CGIncludes").join(entry.file_name())).expect("copy");
+            }
+            let shader = read(corpus.join("DefaultResourcesExtra/Unlit/Unlit-Normal.shader"))
+                .replace("Shader \"Unlit/Texture\"", "Shader \"Bench/Hlsl\"")
+                .replace("            #pragma multi_compile_fog\n", &pragmas);
+            let shader = inserted(&shader, "                return col;\n", &terms("col.rgb"));
+            (shader, "global_keywords = []\ninclude_paths = [\"CGIncludes\"]\nshaders = [\"Bench.shader\"]\n")
+        }
+    };
     std::fs::write(dir.join("Bench.shader"), shader).expect("write");
-    std::fs::write(dir.join("kiln.toml"), "global_keywords = []\n").expect("write");
+    std::fs::write(dir.join("kiln.toml"), config).expect("write");
     for m in 0..variants {
         let keywords: Vec<String> =
             (0..KEYWORDS).filter(|b| m & (1 << b) != 0).map(|b| format!("\"_F{b}\"")).collect();
@@ -93,6 +123,8 @@ fn kiln_build(project: &Path, output: &Path) -> (usize, Duration) {
         build_project(&mut store, &[project.to_path_buf()], &mode, &|_, _| {}).expect("project");
     let mut all = diagnostics;
     all.extend(result.diagnostics);
+    // Warnings are Unity's includes' own (keywords they test that no pragma declares).
+    all.retain(|d| d.is_error());
     assert!(all.is_empty(), "{}", kiln::diagnostics::render_plain(&store, &all));
     (result.summary.compiled, started.elapsed())
 }
@@ -180,13 +212,12 @@ fn main() {
         .unwrap_or_else(|| vec![64, 256]);
     let rounds: usize =
         std::env::var("KILN_SCALE_ROUNDS").ok().and_then(|n| n.parse().ok()).unwrap_or(5).max(1);
-    // `unlit` or `lit` after the sizes picks one shape; both by default.
+    // `unlit`, `lit` or `unity` after the sizes picks shapes; all three by default.
     let args: Vec<String> = std::env::args().collect();
-    let shapes: Vec<Shape> = [(Shape::Unlit, "unlit"), (Shape::Lit, "lit")]
-        .into_iter()
-        .filter(|(_, name)| {
-            !args.iter().any(|a| a == "unlit" || a == "lit") || args.iter().any(|a| a == name)
-        })
+    let named = [(Shape::Unlit, "unlit"), (Shape::Lit, "lit"), (Shape::Unity, "unity")];
+    let any_named = args.iter().any(|a| named.iter().any(|(_, n)| a == n));
+    let shapes: Vec<Shape> = (named.into_iter())
+        .filter(|(_, name)| !any_named || args.iter().any(|a| a == name))
         .map(|(shape, _)| shape)
         .collect();
     println!("threads: {}, rounds: {rounds}", rayon::current_num_threads());
@@ -264,7 +295,7 @@ fn main() {
         println!("  kiln / the tools alone: {}", ratio(&kiln, &tools));
         let share = |part: Duration| 100.0 * part.as_secs_f64() / k.as_secs_f64();
         println!(
-            "  shares of kiln's build: glslang {:.0}%, spv-in {:.0}%, the rest of kiln {:.0}%",
+            "  the tools on whole texts against kiln's build: glslang {:.0}%, spv-in {:.0}%, kiln beyond both {:.0}%",
             share(g),
             share(f.saturating_sub(g)),
             share(k.saturating_sub(f))

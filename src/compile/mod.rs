@@ -62,6 +62,19 @@ pub fn cut(
     }
 }
 
+/// The text a front end reads for a stage text in `language`: Cg's with its samplers rewritten as
+/// HLSL's ([`cg`]), as glslang reads it; others as they are. For the benchmarks, which hand the
+/// tools alone what kiln hands them.
+pub fn front_text(language: ProgramLanguage, text: String) -> String {
+    match language {
+        ProgramLanguage::Cg => match cg::rewrite(&text, &SourceMap::default()).rewritten {
+            Some(rewritten) => rewritten.text,
+            None => text,
+        },
+        _ => text,
+    }
+}
+
 /// A parsed and validated module.
 pub struct Checked {
     /// The parsed module, layouts corrected.

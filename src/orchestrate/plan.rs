@@ -141,9 +141,10 @@ pub(super) fn pass_key(store: &SourceStore, settings: &Settings, work: &PassWork
     PassKey::of(&format!("{file}#{}.{}", work.pass.subshader, work.pass.index))
 }
 
-/// The distinct preprocessed stage texts a build of the catalogue compiles, with their stage and
-/// entry point: what naga alone would have to parse, validate and emit for the same output (used
-/// by the benchmarks to compare kiln with naga).
+/// The distinct preprocessed stage texts a build of the catalogue compiles, whole, with their
+/// stage and entry point: what naga (or glslang, Cg's samplers rewritten) alone would have to
+/// parse, validate and emit for the same output (used by the benchmarks to compare kiln with the
+/// tools alone).
 pub fn stage_texts(
     store: &SourceStore,
     includes: &Includes,
@@ -154,7 +155,7 @@ pub fn stage_texts(
         .flat_map(|pass| {
             super::jobs::pass_jobs(store, includes, pass, ParseScope::Whole, &mut Vec::new()).jobs
         })
-        .map(|j| (j.stage, j.entry.to_string(), j.text))
+        .map(|j| (j.stage, j.entry.to_string(), crate::compile::front_text(j.language, j.text)))
         .collect()
 }
 
