@@ -37,17 +37,19 @@ struct Declaration<'t> {
     removable: bool,
 }
 
+/// A token of an HLSL text.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Token {
+pub(crate) enum Token {
     Name,
+    /// Any other character: punctuation, an operator.
     Mark(u8),
-    /// A number, a string, a directive line: names nothing.
+    /// A number, a string, a directive line (with its continuations): names nothing.
     Other,
 }
 
-/// The tokens of `text`, comments skipped; `None` for a text the scan cannot read (an unclosed
-/// comment or string).
-fn tokens(text: &str) -> Option<Vec<(Token, Range<usize>)>> {
+/// The tokens of an HLSL text, comments skipped, and whether it was read to its end: an unclosed
+/// comment or string ends the reading (what the language server reads while one is typed).
+pub(crate) fn tokens(text: &str) -> (Vec<(Token, Range<usize>)>, bool) {
     let bytes = text.as_bytes();
     let mut tokens = Vec::new();
     let mut at = 0;
@@ -70,12 +72,22 @@ fn tokens(text: &str) -> Option<Vec<(Token, Range<usize>)>> {
             continue;
         }
         if rest.starts_with("/*") {
-            at += rest.find("*/")? + 2;
+            match rest.find("*/") {
+                Some(end) => at += end + 2,
+                None => return (tokens, false),
+            }
             continue;
         }
         if c == b'#' && line_start {
-            // A directive the preprocessor left (`#pragma`, `#line`): one token, kept.
-            at += rest.find('\n').unwrap_or(rest.len());
+            // A directive the preprocessor left (`#pragma`, `#line`), to its line's end and
+            // those its `\` continues: one token.
+            loop {
+                at += text[at..].find('\n').unwrap_or(text.len() - at);
+                if at >= text.len() || !text[..at].trim_end_matches('\r').ends_with('\\') {
+                    break;
+                }
+                at += 1;
+            }
             tokens.push((Token::Other, start..at));
             continue;
         }
@@ -96,7 +108,10 @@ fn tokens(text: &str) -> Option<Vec<(Token, Range<usize>)>> {
             at += end;
             Token::Other
         } else if c == b'"' || c == b'\'' {
-            at += 1 + rest[1..].find(c as char)? + 1;
+            match rest[1..].find(c as char) {
+                Some(end) => at += end + 2,
+                None => return (tokens, false),
+            }
             Token::Other
         } else {
             at += rest.chars().next().map_or(1, char::len_utf8);
@@ -104,7 +119,7 @@ fn tokens(text: &str) -> Option<Vec<(Token, Range<usize>)>> {
         };
         tokens.push((token, start..at));
     }
-    Some(tokens)
+    (tokens, true)
 }
 
 /// Words that begin what the scan does not follow.
@@ -125,7 +140,10 @@ const RESOURCE_TYPES: [&str; 9] = [
 
 /// The text's top-level declarations, in order; `None` where the scan cannot follow it.
 fn declarations(text: &str) -> Option<Vec<Declaration<'_>>> {
-    let tokens = tokens(text)?;
+    let (tokens, complete) = tokens(text);
+    if !complete {
+        return None;
+    }
     let word = |i: usize| (tokens[i].0 == Token::Name).then(|| &text[tokens[i].1.clone()]);
     let mark = |i: usize| match tokens[i].0 {
         Token::Mark(c) => Some(c),

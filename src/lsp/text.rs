@@ -1,6 +1,7 @@
 //! Positions and names as the protocol has them: line and UTF-16 column, `file:` URIs; words at a
 //! place in a text.
 
+use crate::compile::hlsl_reach::{self, Token};
 use lsp_types::{Position, Range, Uri};
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
@@ -229,69 +230,16 @@ fn word_position(text: &str, word: &str) -> Option<usize> {
     None
 }
 
-/// A token of an HLSL text, for the declaration scan: a name, or one other character.
-enum Token {
-    Name,
-    Mark(u8),
-}
-
-/// The tokens of `range` of `text`, without comments, strings, numbers and preprocessor lines.
-fn hlsl_tokens(text: &str, range: std::ops::Range<usize>) -> Vec<(Token, std::ops::Range<usize>)> {
-    let bytes = text.as_bytes();
-    let mut tokens = Vec::new();
-    let mut at = range.start;
-    let mut line_start = true;
-    while at < range.end {
-        let c = bytes[at];
-        let rest = &text[at..range.end];
-        let skip_to = move |end: Option<usize>| end.map_or(range.end, |e| at + e);
-        if c == b'\n' {
-            line_start = true;
-            at += 1;
-            continue;
-        }
-        if c.is_ascii_whitespace() {
-            at += 1;
-            continue;
-        }
-        if rest.starts_with("//") {
-            at = skip_to(rest.find('\n'));
-        } else if rest.starts_with("/*") {
-            at = skip_to(rest.find("*/").map(|e| e + 2));
-        } else if c == b'#' && line_start {
-            // A directive runs to the end of its line and its continuations.
-            let mut end = at;
-            loop {
-                let line_end = text[end..range.end].find('\n').map_or(range.end, |e| end + e);
-                end = line_end;
-                if line_end >= range.end || !text[..line_end].trim_end_matches('\r').ends_with('\\') {
-                    break;
-                }
-                end += 1;
-            }
-            at = end;
-        } else if c == b'"' {
-            at = skip_to(rest[1..].find('"').map(|e| e + 2));
-        } else if c.is_ascii_alphabetic() || c == b'_' {
-            let end = skip_to(rest.find(|c: char| !is_name_char(c)));
-            tokens.push((Token::Name, at..end));
-            at = end;
-        } else if c.is_ascii_digit() {
-            at = skip_to(rest.find(|c: char| !is_name_char(c) && c != '.'));
-        } else {
-            tokens.push((Token::Mark(c), at..at + 1));
-            at += rest.chars().next().map_or(1, char::len_utf8);
-        }
-        line_start = false;
-    }
-    tokens
-}
-
 /// The module-scope declarations in `range` of HLSL `text`: functions, structs, constant buffers
 /// and what they hold, globals, and the declarations Unity's macros make (`TEXTURE2D(_BaseMap)`,
 /// `CBUFFER_START(UnityPerMaterial)`, `UNITY_DEFINE_INSTANCED_PROP(float4, _BaseColor)`).
 fn hlsl_declarations(text: &str, range: std::ops::Range<usize>) -> Vec<Declaration> {
-    let tokens = hlsl_tokens(text, range);
+    // The compiler's HLSL tokens, read as far as they go (an unclosed comment is being typed).
+    let (tokens, _) = hlsl_reach::tokens(&text[range.clone()]);
+    let tokens: Vec<(Token, std::ops::Range<usize>)> = (tokens.into_iter())
+        .filter(|(token, _)| *token != Token::Other)
+        .map(|(token, r)| (token, r.start + range.start..r.end + range.start))
+        .collect();
     let name = |i: usize| matches!(tokens.get(i), Some((Token::Name, _))).then(|| &text[tokens[i].1.clone()]);
     let is_macro = |word: &str| word.len() > 1 && !word.bytes().any(|b| b.is_ascii_lowercase());
     let is_buffer = |word: &str| matches!(word, "cbuffer" | "tbuffer");
@@ -409,7 +357,7 @@ fn hlsl_declarations(text: &str, range: std::ops::Range<usize>) -> Vec<Declarati
                     done = true;
                 }
             }
-            Token::Mark(_) => names.clear(),
+            Token::Mark(_) | Token::Other => names.clear(),
         }
     }
     found
