@@ -242,7 +242,9 @@ fn classify<'t>(text: &'t str, tokens: &[(Token, Range<usize>)], range: Range<us
     let Some(opening) = opening else { return kept(names) };
     let leading: Vec<&str> = (start..opening).filter_map(word).collect();
     let declaration = |declares: Vec<&'t str>, removable| {
-        let uses = names.iter().copied().filter(|n| !declares.contains(n)).collect();
+        // A set: a constant buffer may declare thousands of members.
+        let declared: std::collections::HashSet<&str> = declares.iter().copied().collect();
+        let uses = names.iter().copied().filter(|n| !declared.contains(n)).collect();
         Declaration { range: range.clone(), declares, uses, removable }
     };
     match (leading.as_slice(), mark(opening)) {
@@ -406,6 +408,21 @@ color4 frag(v2f i) : SV_Target { return _MainTex.Sample(sampler_MainTex, i.pos.x
         // An entry point the text does not declare, and a text that keeps everything.
         assert!(cut("float f() { return 1.0; }", &SourceMap::default(), "frag").is_none());
         assert!(cut("float4 frag() : SV_Target { return 1.0; }", &SourceMap::default(), "frag").is_none());
+    }
+
+    #[test]
+    fn a_constant_buffer_of_many_members_is_scanned_in_linear_time() {
+        let members: String = (0..50_000).map(|i| format!("float4 m{i};\n")).collect();
+        let uses: String = (0..50_000).step_by(7).map(|i| format!("m{i} + ")).collect();
+        let text = format!(
+            "cbuffer Big {{ {members} }};\nfloat4 unused() {{ return 1.0; }}\nfloat4 frag() : SV_Target {{ return {uses} 1.0; }}\n"
+        );
+        // Counted, not timed: the buffer is one declaration declaring every member once.
+        let declarations = declarations(&text).expect("scanned");
+        assert_eq!(declarations.len(), 3);
+        assert_eq!(declarations[0].declares.len(), 50_001);
+        let (cut, _) = cut(&text, &SourceMap::default(), "frag").expect("cut");
+        assert!(cut.contains("cbuffer Big") && !cut.contains("unused"));
     }
 
     proptest::proptest! {
