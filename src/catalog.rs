@@ -541,6 +541,9 @@ struct Loading<'a> {
     cg_prelude: &'a mut CgPrelude,
 }
 
+/// The name of the in-memory file that holds Unity's `CGPROGRAM` prelude ([`CgPrelude`]).
+pub(crate) const CG_PRELUDE_NAME: &str = "<Unity's CGPROGRAM prelude>";
+
 /// What Unity includes in every `CGPROGRAM` block before its own text (`HLSLSupport.cginc`, then
 /// `UnityShaderVariables.cginc`), where a project's include paths hold Unity's `CGIncludes`: made
 /// once per catalogue, as a file of its own, when a Cg program first asks.
@@ -555,7 +558,7 @@ impl CgPrelude {
                 return None;
             }
             let text = "#include \"HLSLSupport.cginc\"\n#include \"UnityShaderVariables.cginc\"\n";
-            let file = store.add("<Unity's CGPROGRAM prelude>", text);
+            let file = store.add(CG_PRELUDE_NAME, text);
             Some(Span::new(file, 0..text.len()))
         })
     }

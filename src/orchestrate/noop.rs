@@ -40,9 +40,13 @@ pub(super) fn inputs_key(store: &SourceStore, settings: &Settings, read: &[Strin
 fn key_with_library(store: &SourceStore, settings: &Settings, read: &[String], library: &str) -> String {
     // Each file hashed on its own (in parallel: a project reads tens of thousands), then their
     // hashes in order.
-    let in_memory: Vec<FileId> = (store.ids())
-        .filter(|&f| store.path(f).is_none() && !store.name(f).starts_with(LIBRARY_PREFIX))
-        .collect();
+    // Texts kiln made itself (the bundled library, Unity's `CGPROGRAM` prelude) follow from what
+    // is hashed here; a build makes them after the no-op check has looked.
+    let made_by_kiln = |f: FileId| {
+        store.name(f).starts_with(LIBRARY_PREFIX) || store.name(f) == crate::catalog::CG_PRELUDE_NAME
+    };
+    let in_memory: Vec<FileId> =
+        (store.ids()).filter(|&f| store.path(f).is_none() && !made_by_kiln(f)).collect();
     let on_disk: Vec<FileId> = disk_files(store).collect();
     debug_assert_eq!(read.len(), on_disk.len(), "a name for each file read from disk");
     let file_hash = |name: &str, file: Option<FileId>| {
