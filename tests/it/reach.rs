@@ -3,7 +3,7 @@
 //! fixture and corpus, byte for byte where naga writes the same bytes, and through `spirv-dis`
 //! with canonical ids where naga's SPIR-V declares types in another order.
 
-use crate::support::{root, tool};
+use crate::support::{copy_tree, root, tool};
 use kiln::config::{ParseScope, VariantSelection};
 use kiln::orchestrate::BuildSummary;
 use kiln::project::{Request, build_project};
@@ -445,14 +445,8 @@ fn hlsl_and_cg_cut_texts_ship_the_modules_their_whole_texts_give() {
         "DefaultResourcesExtra/UI/UI-Unlit-TextDetail.shader",
         "DefaultResourcesExtra/UI/UI-Unlit-Transparent.shader",
     ];
-    for folder in copied {
-        for entry in walkdir::WalkDir::new(corpus.join(folder)).into_iter().map(|e| e.expect("entry")) {
-            let relative = entry.path().strip_prefix(&corpus).expect("inside");
-            if entry.file_type().is_file() {
-                std::fs::create_dir_all(unity.join(relative).parent().expect("folder")).expect("mkdir");
-                std::fs::copy(entry.path(), unity.join(relative)).expect("copy");
-            }
-        }
+    for path in copied {
+        copy_tree(&corpus.join(path), &unity.join(path));
     }
     std::fs::write(
         unity.join("kiln.toml"),

@@ -351,16 +351,21 @@ pub fn example_project_copy(dir: &Path) -> PathBuf {
 /// A copy of `fixtures/<name>` (its build output left out) in `dir/<name>`.
 pub fn fixture_copy(dir: &Path, name: &str) -> PathBuf {
     let project = dir.join(name);
-    let fixture = root().join("fixtures").join(name);
-    for entry in walkdir::WalkDir::new(&fixture).into_iter().filter_map(Result::ok) {
-        let relative = entry.path().strip_prefix(&fixture).expect("inside");
+    copy_tree(&root().join("fixtures").join(name), &project);
+    project
+}
+
+/// Every file under `from` (a `build` folder at its top left out) copied to the same place under
+/// `to`; `from` may also be one file, copied to `to`.
+pub fn copy_tree(from: &Path, to: &Path) {
+    for entry in walkdir::WalkDir::new(from).into_iter().filter_map(Result::ok) {
+        let relative = entry.path().strip_prefix(from).expect("inside");
         if entry.file_type().is_file() && !relative.starts_with("build") {
-            let to = project.join(relative);
-            std::fs::create_dir_all(to.parent().expect("folder")).expect("mkdir");
-            std::fs::copy(entry.path(), to).expect("copy");
+            let target = if relative.as_os_str().is_empty() { to.to_path_buf() } else { to.join(relative) };
+            std::fs::create_dir_all(target.parent().expect("folder")).expect("mkdir");
+            std::fs::copy(entry.path(), target).expect("copy");
         }
     }
-    project
 }
 
 /// Waits for a process that must end by itself, failing the test (and killing it) after 60 s:
