@@ -418,3 +418,39 @@ fn hlsl_modules_come_from_the_output_s_cache_and_the_shared_cache() {
     assert_eq!((fetched.compiled, fetched.reused), (0, cold.modules), "{fetched:?}");
     assert_eq!(crate::support::shipped(&first), crate::support::shipped(&second));
 }
+
+/// A Cg project whose include path has Unity's prelude files, rebuilt unchanged, is a no-op: the
+/// `CGPROGRAM` prelude kiln makes in memory is not an input of its own (before, it kept the inputs
+/// key from ever matching, and every rebuild preprocessed again). The prelude files here are
+/// stand-ins: Unity's own test names no pragma declares (K0321), and a build that reports
+/// anything records no no-op.
+#[test]
+fn an_unchanged_cg_project_with_unity_s_prelude_rebuilds_as_a_no_op() {
+    use kiln::project::{Request, build_project};
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = dir.path().join("cg");
+    std::fs::create_dir_all(project.join("CGIncludes")).expect("mkdir");
+    std::fs::write(project.join("CGIncludes/HLSLSupport.cginc"), "#define fixed4 float4\n").expect("write");
+    std::fs::write(project.join("CGIncludes/UnityShaderVariables.cginc"), "float4 _Tint;\n").expect("write");
+    let shader = "Shader \"Cg/Tint\" { SubShader { Pass {\nCGPROGRAM\n#pragma vertex vert\n#pragma fragment frag\n\
+                  float4 vert(float4 p : POSITION) : SV_POSITION { return p; }\n\
+                  fixed4 frag() : SV_Target { return _Tint; }\nENDCG\n} } }\n";
+    std::fs::write(project.join("Tint.shader"), shader).expect("shader");
+    std::fs::write(project.join("kiln.toml"), "include_paths = [\"CGIncludes\"]\nglobal_keywords = []\n")
+        .expect("kiln.toml");
+    std::fs::write(project.join("M.mat"), "shader = \"Cg/Tint\"\n").expect("material");
+    let build = || {
+        let mut store = kiln::source::SourceStore::new();
+        let (result, diagnostics) =
+            build_project(&mut store, std::slice::from_ref(&project), &Request::default(), &|_, _| {})
+                .expect("project");
+        let all: Vec<_> = diagnostics.into_iter().chain(result.diagnostics.iter().cloned()).collect();
+        assert!(all.is_empty(), "{}", kiln::diagnostics::render_plain(&store, &all));
+        result
+    };
+    let first = build();
+    assert!(first.manifest.is_some() && first.summary.compiled > 0, "the first build compiles");
+    // A no-op reads no manifest and preprocesses nothing.
+    let again = build();
+    assert!(again.manifest.is_none() && again.summary.preprocessed == 0, "{:?}", again.summary);
+}
