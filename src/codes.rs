@@ -143,5 +143,11 @@ pub const CODES: &[(&str, &str)] = &[
 
 /// Whether `code` is registered.
 pub fn is_registered(code: &str) -> bool {
-    CODES.binary_search_by(|(c, _)| (*c).cmp(code)).is_ok()
+    registered(code).is_some()
+}
+
+/// `code` as the registry holds it, when it is registered (a code read back from a record).
+pub fn registered(code: &str) -> Option<&'static str> {
+    let at = CODES.binary_search_by(|(c, _)| (*c).cmp(code)).ok()?;
+    Some(CODES[at].0)
 }

@@ -281,6 +281,10 @@ fn manifest_ends(materials_hash: Option<String>) -> std::io::Result<(String, Str
 
 /// What a whole build (or a merge) writes beside its packs, and what its record says.
 pub(super) struct Outputs<'a, P> {
+    /// The files read, where what the record keeps of the findings points.
+    pub store: &'a SourceStore,
+    /// What was reported before the build: the record keeps it with the build's own findings.
+    pub earlier: &'a [Diagnostic],
     /// The manifest: its `materials_hash` is set here.
     pub manifest: &'a mut Manifest<P>,
     /// The materials, each one's compact text, in order.
@@ -312,7 +316,7 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
     mut diagnostics: Vec<Diagnostic>,
     alongside: impl FnOnce() -> std::io::Result<u64> + Send,
 ) -> BuildResult {
-    let Outputs { manifest, materials, catalogue, inputs, streamed } = outputs;
+    let Outputs { store, earlier, manifest, materials, catalogue, inputs, streamed } = outputs;
     let output = &settings.output;
     let mut files = Vec::new();
     let cache = Cache::new(output, true);
@@ -376,7 +380,9 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
     if writes.output() && !diagnostics::has_errors(&diagnostics) {
         cache.sweep(&files);
     }
-    if writes.record() && diagnostics.is_empty() {
+    let findings =
+        writes.record().then(|| super::noop::recordable(store, earlier.iter().chain(&diagnostics)));
+    if let Some(findings) = findings.flatten() {
         // Only costs a full build next time if it cannot be written.
         let _ = cache.record_inputs(&Recorded {
             key: inputs.to_string(),
@@ -388,6 +394,7 @@ pub(super) fn finish<P: PassFiles + Serialize + Send + Sync>(
             files,
             read: catalogue.read.clone(),
             absent: catalogue.absent.clone(),
+            findings,
         });
     }
     if writes.output() && !diagnostics::has_errors(&diagnostics) {

@@ -97,6 +97,7 @@ pub(super) fn merge(
     store: &mut SourceStore,
     settings: &Settings,
     writes: Writes,
+    earlier: &[Diagnostic],
     merge: &Merge,
     read: ShardsRead,
 ) -> BuildResult {
@@ -150,14 +151,14 @@ pub(super) fn merge(
         match parsed {
             Ok(parsed) => {
                 let mut manifest = manifest(heads, parsed);
-                let outputs = merged(&mut manifest, &materials, catalogue, &merge.inputs);
+                let outputs = merged((store, earlier), &mut manifest, &materials, catalogue, &merge.inputs);
                 finish(settings, writes, outputs, summary, diagnostics, link)
             }
             Err(error) => BuildResult::failed(settings, summary, vec![error.into()]),
         }
     } else {
         let mut manifest = manifest(heads, parts);
-        let outputs = merged(&mut manifest, &materials, catalogue, &merge.inputs);
+        let outputs = merged((store, earlier), &mut manifest, &materials, catalogue, &merge.inputs);
         finish(settings, writes, outputs, summary, diagnostics, link)
     }
 }
@@ -165,12 +166,13 @@ pub(super) fn merge(
 /// What a merge writes beside the packs: a manifest of either form (its parts parsed, or as the
 /// shards wrote them), whose shaders no pass streamed.
 fn merged<'a, P>(
+    (store, earlier): (&'a SourceStore, &'a [Diagnostic]),
     manifest: &'a mut Manifest<P>,
     materials: &'a [&'a RawValue],
     catalogue: &'a CataloguePart,
     inputs: &'a str,
 ) -> Outputs<'a, P> {
-    Outputs { manifest, materials, catalogue, inputs, streamed: None }
+    Outputs { store, earlier, manifest, materials, catalogue, inputs, streamed: None }
 }
 
 /// A shard's pass: its JSON text, written into the manifest as it is, and what the merge reads of

@@ -95,13 +95,9 @@ impl Writes {
     }
 
     /// What a build asked to write `self` writes after `earlier` findings: nothing after an
-    /// error, no record after any finding.
+    /// error. (Warnings are recorded with the no-op, to be said again: [`noop::recordable`].)
     fn after(self, earlier: &[Diagnostic]) -> Writes {
-        match self {
-            _ if crate::diagnostics::has_errors(earlier) => Writes::Nothing,
-            Writes::OutputAndRecord if !earlier.is_empty() => Writes::Output,
-            writes => writes,
-        }
+        if crate::diagnostics::has_errors(earlier) { Writes::Nothing } else { self }
     }
 }
 
@@ -249,8 +245,8 @@ impl BuildResult {
 
 /// Builds (or, writing nothing, checks) every pass of the catalogue, or the part of it `run.part`
 /// names. `earlier` is what was reported before it (the project's and the catalogue's
-/// findings): after an error nothing is written, after any finding no no-op is recorded
-/// ([`Writes::after`]). `progress` is told (variants done, variants in all).
+/// findings): after an error nothing is written ([`Writes::after`]); the record of a no-op keeps
+/// them with the build's own. `progress` is told (variants done, variants in all).
 pub fn build(
     store: &SourceStore,
     includes: &Includes,
@@ -261,7 +257,7 @@ pub fn build(
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> BuildResult {
     let run = &Run { writes: run.writes.after(earlier), ..run.clone() };
-    timed_in_pool(settings, || build_passes(store, includes, catalog, settings, run, progress))
+    timed_in_pool(settings, || build_passes(store, includes, catalog, settings, run, earlier, progress))
 }
 
 impl Merge {
@@ -285,7 +281,7 @@ pub fn merge(
     read: ShardsRead,
 ) -> BuildResult {
     let writes = writes.after(earlier);
-    timed_in_pool(settings, || merge::merge(store, settings, writes, shards, read))
+    timed_in_pool(settings, || merge::merge(store, settings, writes, earlier, shards, read))
 }
 
 /// Whether rayon's global pool is one [`init_global_pool`] made: with kiln's stacks, and bounded.
@@ -350,6 +346,7 @@ fn build_passes(
     catalog: &Catalog,
     settings: &Settings,
     run: &Run,
+    earlier: &[Diagnostic],
     progress: &(dyn Fn(usize, usize) + Sync),
 ) -> BuildResult {
     let mut diagnostics = Vec::new();
@@ -465,6 +462,8 @@ fn build_passes(
             let mut catalogue = catalogue(read);
             let mut manifest = emit::manifest(std::mem::take(&mut catalogue.shaders), parts);
             let outputs = emit::Outputs {
+                store,
+                earlier,
                 manifest: &mut manifest,
                 materials: &materials,
                 catalogue: &catalogue,

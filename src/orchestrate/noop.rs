@@ -3,10 +3,12 @@
 
 use super::{BuildResult, BuildSummary, COMPILER_REVISION, NAGA_VERSION, Writes};
 use crate::config::Settings;
+use crate::diagnostics::{Diagnostic, Label, Occurrence, PassId, Severity};
 use crate::manifest::SCHEMA_VERSION;
 use crate::preprocess::LIBRARY_PREFIX;
+use crate::source::Span;
 use crate::source::{FileId, SourceStore, relative_to};
-use crate::store::Cache;
+use crate::store::{Cache, RecordedFinding, RecordedLabel, RecordedOccurrence};
 use rayon::prelude::*;
 use std::time::Instant;
 
@@ -102,6 +104,8 @@ pub fn unchanged(store: &mut SourceStore, settings: &Settings, writes: Writes) -
         // What a build stopped since left (its packs, its temporaries) goes, as after any build.
         Cache::new(&settings.output, true).sweep(&recorded.files);
     }
+    // What the build reported is said again, each place verified against the file it names.
+    let diagnostics = replayed(store, &recorded.findings)?;
     let summary = BuildSummary {
         shaders: recorded.shaders,
         passes: recorded.passes,
@@ -111,7 +115,82 @@ pub fn unchanged(store: &mut SourceStore, settings: &Settings, writes: Writes) -
         elapsed: started.elapsed(),
         ..BuildSummary::default()
     };
-    Some(BuildResult { summary, manifest: None, diagnostics: Vec::new(), output: settings.output.clone() })
+    Some(BuildResult { summary, manifest: None, diagnostics, output: settings.output.clone() })
+}
+
+/// What a record keeps of a build's `diagnostics`, so that a no-op says them again: `None`
+/// when any cannot be said again from the files read alone (an error; a finding with no place,
+/// such as a remote cache out of reach, which is about this run; a place in a text kiln made),
+/// and then the build records no no-op.
+pub(super) fn recordable<'a>(
+    store: &SourceStore,
+    diagnostics: impl IntoIterator<Item = &'a Diagnostic>,
+) -> Option<Vec<RecordedFinding>> {
+    let index: std::collections::HashMap<FileId, usize> =
+        disk_files(store).enumerate().map(|(at, file)| (file, at)).collect();
+    let label = |label: &Label| {
+        Some(RecordedLabel {
+            file: *index.get(&label.span.file)?,
+            start: label.span.start,
+            end: label.span.end,
+            message: label.message.clone(),
+        })
+    };
+    let finding = |d: &Diagnostic| {
+        if d.severity == Severity::Error {
+            return None;
+        }
+        let labels = std::iter::once(d.primary.as_ref()?).chain(&d.secondary).map(label);
+        Some(RecordedFinding {
+            severity: d.severity,
+            code: d.code.to_string(),
+            message: d.message.clone(),
+            labels: labels.collect::<Option<_>>()?,
+            notes: d.notes.clone(),
+            help: d.help.clone(),
+            occurrence: d.occurrence.as_ref().map(|o| RecordedOccurrence {
+                variants: o.variants.clone(),
+                shader: o.pass.shader.clone(),
+                pass: o.pass.index,
+                within: o.within.clone(),
+            }),
+        })
+    };
+    diagnostics.into_iter().map(finding).collect()
+}
+
+/// The findings a record kept, as diagnostics on the files `store` read: `None` (a full build)
+/// unless every one is a warning or remark with a registered code and every place is whole
+/// characters inside a file read.
+fn replayed(store: &SourceStore, findings: &[RecordedFinding]) -> Option<Vec<Diagnostic>> {
+    let files: Vec<FileId> = disk_files(store).collect();
+    let label = |label: &RecordedLabel| {
+        let file = *files.get(label.file)?;
+        let text = store.text(file);
+        let (start, end) = (label.start as usize, label.end as usize);
+        (start <= end && text.get(start..end).is_some())
+            .then(|| Label { span: Span::new(file, start..end), message: label.message.clone() })
+    };
+    let diagnostic = |finding: &RecordedFinding| {
+        let code = crate::codes::registered(&finding.code)?;
+        let (primary, secondary) = finding.labels.split_first()?;
+        let mut d = match finding.severity {
+            Severity::Warning => Diagnostic::warning(code, finding.message.clone()),
+            Severity::Note => Diagnostic::remark(code, finding.message.clone()),
+            Severity::Error => return None,
+        };
+        d.primary = Some(label(primary)?);
+        d.secondary = secondary.iter().map(label).collect::<Option<_>>()?;
+        d.notes = finding.notes.clone();
+        d.help = finding.help.clone();
+        d.occurrence = finding.occurrence.as_ref().map(|o| Occurrence {
+            variants: o.variants.clone(),
+            pass: PassId { shader: o.shader.clone(), index: o.pass },
+            within: o.within.clone(),
+        });
+        Some(d)
+    };
+    findings.iter().map(diagnostic).collect()
 }
 
 /// What an earlier build read: how many files it was given, every file it read (relative to the

@@ -62,8 +62,12 @@ pub fn build_part(
     let _lock = request.write.then(|| crate::store::OutputLock::acquire(&settings.output));
     if diagnostics.is_empty()
         && !matches!(run.part, Part::Shard(_))
-        && let Some(result) = crate::orchestrate::unchanged(store, &settings, run.writes)
+        && let Some(mut result) = crate::orchestrate::unchanged(store, &settings, run.writes)
     {
+        // The findings it says again are an error under `strict`, as the build's were.
+        if workspace.strict {
+            diagnostics::promote_warnings(&mut result.diagnostics);
+        }
         return Ok((result, diagnostics));
     }
     let (catalog, found) = catalog(store, &mut includes, &input);

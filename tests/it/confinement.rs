@@ -1,6 +1,7 @@
 //! Records kiln wrote earlier, as an adversary rewrites them: a manifest, a no-op record and a
 //! shard record whose paths lead out of their folder, re-sealed (a seal needs no secret), and
 //! packs replaced by links and devices. Nothing outside the folder is read, embedded or written.
+//! The findings a no-op record keeps are said again only where they fit the files they name.
 
 use crate::support::{build_clean as build, kiln, root};
 use kiln::store::{hash, seal, unsealed};
@@ -272,4 +273,53 @@ proptest::proptest! {
         let parsed = kiln::manifest::Manifest::parse(hostile.as_bytes());
         proptest::prop_assert_eq!(parsed.is_ok(), kiln::manifest::PackPath::parse(&path).is_ok());
     }
+}
+
+/// A no-op record whose kept warnings were rewritten: places past a file's end, off a character,
+/// in a file never read; an unregistered code; an error. None of them is said: the next build is
+/// a full one and says only what it finds. A message that would send the terminal a code is said
+/// with the code written out.
+#[test]
+fn a_no_op_record_s_findings_are_said_again_only_where_they_fit_the_files_read() {
+    use crate::hlsl::{cg_build, cg_project};
+    type Forgery = (&'static str, fn(&mut serde_json::Value));
+    let forgeries: [Forgery; 6] = [
+        ("past the end", |f| f["labels"][0]["end"] = 1_000_000.into()),
+        ("start after end", |f| {
+            f["labels"][0]["start"] = (f["labels"][0]["end"].as_u64().unwrap_or(0) + 1).into()
+        }),
+        ("a file never read", |f| f["labels"][0]["file"] = 99.into()),
+        ("no place", |f| f["labels"] = serde_json::json!([])),
+        ("an unregistered code", |f| f["code"] = "K9999".into()),
+        ("an error", |f| f["severity"] = "error".into()),
+    ];
+    let variables = "#if defined(UNITY_SINGLE_PASS_STEREO)\nfloat4 _Eye;\n#endif\nfloat4 _Tint; // é\n";
+    for (what, forge) in forgeries {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let project = cg_project(dir.path(), variables, "");
+        let (_, said) = cg_build(&project);
+        let record = project.join("build/kiln/.cache/build/inputs.json");
+        reseal(&record, ".cache/build/inputs.json", |record| forge(&mut record["findings"][0]));
+        let (again, said_again) = cg_build(&project);
+        assert!(again.summary.preprocessed > 0, "{what}: taken as a no-op: {:?}", again.summary);
+        assert_eq!(said_again, said, "{what}");
+    }
+    // Off a character boundary: inside the two bytes of `é`.
+    let dir = tempfile::tempdir().expect("temp dir");
+    let project = cg_project(dir.path(), variables, "");
+    cg_build(&project);
+    let text =
+        std::fs::read_to_string(project.join("CGIncludes/UnityShaderVariables.cginc")).expect("include");
+    let inside = text.find('é').expect("é") + 1;
+    reseal(&project.join("build/kiln/.cache/build/inputs.json"), ".cache/build/inputs.json", |record| {
+        record["findings"][0]["labels"][0]["end"] = inside.into()
+    });
+    assert!(cg_build(&project).0.summary.preprocessed > 0, "a place off a character was said");
+    // A message that fits but carries a terminal's escape is said, the escape written out.
+    reseal(&project.join("build/kiln/.cache/build/inputs.json"), ".cache/build/inputs.json", |record| {
+        record["findings"][0]["message"] = "\u{1b}[2Jcleared".into()
+    });
+    let (again, said) = cg_build(&project);
+    assert!(again.summary.preprocessed == 0, "{:?}", again.summary);
+    assert!(said.contains("\\u{1b}[2Jcleared") && !said.contains('\u{1b}'), "{said}");
 }

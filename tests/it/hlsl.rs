@@ -426,31 +426,75 @@ fn hlsl_modules_come_from_the_output_s_cache_and_the_shared_cache() {
 /// anything records no no-op.
 #[test]
 fn an_unchanged_cg_project_with_unity_s_prelude_rebuilds_as_a_no_op() {
-    use kiln::project::{Request, build_project};
     let dir = tempfile::tempdir().expect("temp dir");
-    let project = dir.path().join("cg");
+    let project = cg_project(dir.path(), "float4 _Tint;\n", "");
+    let (first, said) = cg_build(&project);
+    assert!(said.is_empty(), "{said}");
+    assert!(first.manifest.is_some() && first.summary.compiled > 0, "the first build compiles");
+    // A no-op reads no manifest and preprocesses nothing.
+    let (again, said) = cg_build(&project);
+    assert!(said.is_empty(), "{said}");
+    assert!(again.manifest.is_none() && again.summary.preprocessed == 0, "{:?}", again.summary);
+}
+
+/// A Cg project on a two-file `CGIncludes/` (`variables` the second), with `settings` in its
+/// `kiln.toml`.
+pub(crate) fn cg_project(dir: &Path, variables: &str, settings: &str) -> std::path::PathBuf {
+    let project = dir.join("cg");
     std::fs::create_dir_all(project.join("CGIncludes")).expect("mkdir");
     std::fs::write(project.join("CGIncludes/HLSLSupport.cginc"), "#define fixed4 float4\n").expect("write");
-    std::fs::write(project.join("CGIncludes/UnityShaderVariables.cginc"), "float4 _Tint;\n").expect("write");
+    std::fs::write(project.join("CGIncludes/UnityShaderVariables.cginc"), variables).expect("write");
     let shader = "Shader \"Cg/Tint\" { SubShader { Pass {\nCGPROGRAM\n#pragma vertex vert\n#pragma fragment frag\n\
                   float4 vert(float4 p : POSITION) : SV_POSITION { return p; }\n\
                   fixed4 frag() : SV_Target { return _Tint; }\nENDCG\n} } }\n";
     std::fs::write(project.join("Tint.shader"), shader).expect("shader");
-    std::fs::write(project.join("kiln.toml"), "include_paths = [\"CGIncludes\"]\nglobal_keywords = []\n")
-        .expect("kiln.toml");
+    let toml = format!("include_paths = [\"CGIncludes\"]\nglobal_keywords = []\n{settings}");
+    std::fs::write(project.join("kiln.toml"), toml).expect("kiln.toml");
     std::fs::write(project.join("M.mat"), "shader = \"Cg/Tint\"\n").expect("material");
-    let build = || {
-        let mut store = kiln::source::SourceStore::new();
-        let (result, diagnostics) =
-            build_project(&mut store, std::slice::from_ref(&project), &Request::default(), &|_, _| {})
-                .expect("project");
-        let all: Vec<_> = diagnostics.into_iter().chain(result.diagnostics.iter().cloned()).collect();
-        assert!(all.is_empty(), "{}", kiln::diagnostics::render_plain(&store, &all));
-        result
-    };
-    let first = build();
-    assert!(first.manifest.is_some() && first.summary.compiled > 0, "the first build compiles");
-    // A no-op reads no manifest and preprocesses nothing.
-    let again = build();
+    project
+}
+
+/// A build of `project` into its own `build/`, and everything it said, rendered.
+pub(crate) fn cg_build(project: &Path) -> (kiln::orchestrate::BuildResult, String) {
+    let mut store = SourceStore::new();
+    let (result, diagnostics) =
+        build_project(&mut store, &[project.to_path_buf()], &Request::default(), &|_, _| {})
+            .expect("project");
+    let all: Vec<_> = diagnostics.into_iter().chain(result.diagnostics.iter().cloned()).collect();
+    let said = kiln::diagnostics::render_plain(&store, &all);
+    (result, said)
+}
+
+/// Unity's includes test macros no pragma declares (K0321 warnings): a build that said them is
+/// still a no-op when nothing changed, and says them again, at the same places.
+#[test]
+fn an_unchanged_project_whose_includes_warn_is_a_no_op_that_says_the_warnings_again() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let variables = "#if defined(UNITY_SINGLE_PASS_STEREO)\nfloat4 _Eye;\n#endif\nfloat4 _Tint;\n";
+    let project = cg_project(dir.path(), variables, "");
+    let (first, said) = cg_build(&project);
+    assert!(first.manifest.is_some(), "{said}");
+    assert!(said.contains("warning[K0321]") && said.contains("UnityShaderVariables.cginc:1:"), "{said}");
+    let (again, said_again) = cg_build(&project);
     assert!(again.manifest.is_none() && again.summary.preprocessed == 0, "{:?}", again.summary);
+    assert_eq!(said_again, said, "the no-op says what the build said");
+    // An edit to the include is seen: a full build, which says the warning where it now is.
+    std::fs::write(project.join("CGIncludes/UnityShaderVariables.cginc"), format!("\n{variables}"))
+        .expect("edit");
+    let (edited, said) = cg_build(&project);
+    assert!(edited.summary.preprocessed > 0, "{:?}", edited.summary);
+    assert!(said.contains("UnityShaderVariables.cginc:2:"), "{said}");
+}
+
+/// Under `strict` the warnings a no-op says again are errors, as the build's were.
+#[test]
+fn a_strict_project_s_no_op_fails_on_the_warnings_its_build_failed_on() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let variables = "#ifdef UNITY_SINGLE_PASS_STEREO\n#endif\nfloat4 _Tint;\n";
+    let project = cg_project(dir.path(), variables, "strict = true\n");
+    let (_, said) = cg_build(&project);
+    assert!(said.contains("error[K0321]"), "{said}");
+    let (again, said_again) = cg_build(&project);
+    assert!(again.summary.preprocessed == 0, "a no-op: {:?}", again.summary);
+    assert_eq!(said_again, said);
 }
