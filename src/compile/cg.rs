@@ -52,6 +52,12 @@ pub(super) struct Rewrite {
     pub texture_parameters: Vec<Range<usize>>,
 }
 
+/// Whether `text` may declare a Cg sampler: without one, [`rewrite`] changes nothing (every
+/// edit follows from a sampler's declaration), and a text need not be lexed for it.
+pub(super) fn may_have_samplers(text: &str) -> bool {
+    ["sampler2D", "sampler3D", "samplerCUBE"].iter().any(|name| text.contains(name))
+}
+
 /// `text` with Cg's samplers rewritten (`None` when it has none), and its texture parameters.
 pub(super) fn rewrite(text: &str, map: &SourceMap) -> Rewrite {
     let tokens = lex(text);

@@ -55,12 +55,18 @@ fn parse_unguarded(
     entry: &str,
     mapper: &Mapper,
 ) -> Result<Module, Diagnostic> {
-    let cg::Rewrite { rewritten, texture_parameters } = cg::rewrite(text, mapper.map);
-    // A failure of naga's reader where a function takes a texture is said at the parameter.
-    let texture_parameter = texture_parameters.first().cloned();
-    let original = mapper;
+    // Most HLSL texts have no Cg sampler: they are not lexed for one.
+    let cg = cg::may_have_samplers(text).then(|| cg::rewrite(text, mapper.map));
+    let rewritten = cg.as_ref().and_then(|cg| cg.rewritten.as_ref());
+    // A failure of naga's reader where a function takes a texture is said at the parameter
+    // (looked for only then, in a text without Cg samplers).
+    let (original_text, original) = (text, mapper);
+    let texture_parameter = || match &cg {
+        Some(cg) => cg.texture_parameters.first().cloned(),
+        None => cg::rewrite(original_text, original.map).texture_parameters.first().cloned(),
+    };
     let rewritten_mapper;
-    let (text, mapper) = match &rewritten {
+    let (text, mapper) = match rewritten {
         Some(rewritten) => {
             rewritten_mapper = Mapper { map: &rewritten.map, store: mapper.store };
             (rewritten.text.as_str(), &rewritten_mapper)
@@ -87,12 +93,12 @@ fn parse_unguarded(
             panic.location
         ))
     })?;
-    let mut module = read.map_err(|error| match &texture_parameter {
+    let mut module = read.map_err(|error| match texture_parameter() {
         // What naga says of a function's texture parameter: it loads from no global.
         Some(parameter) if matches!(error, naga::front::spv::Error::InvalidGlobalVar(_)) => {
             let d = Diagnostic::error("K0429", format!("a texture passed to a function: naga cannot read the SPIR-V glslang writes for it ({error})"))
                 .help("sample the texture where it is declared, and pass the function what it samples");
-            original.diagnostic_at(d, vec![(parameter.clone(), "this parameter".to_string())])
+            original.diagnostic_at(d, vec![(parameter, "this parameter".to_string())])
         }
         _ => Diagnostic::error("K0426", format!("naga cannot read the SPIR-V glslang wrote for `{entry}`: {error}"))
             .note("glslang compiled the program; naga's SPIR-V reader lacks what it wrote (docs/hlsl.md lists what is known)"),

@@ -39,7 +39,8 @@ pub(crate) struct StageRequest<'a> {
     /// Reads back the GLSL and HLSL written (`kiln check`, where it is installed).
     pub glslang: Option<&'a Glslang>,
     /// The module is already its entry point's alone, compacted (cut out of a parse together,
-    /// `compile::together`): binding it leaves nothing to compact.
+    /// `compile::together`, or read from glslang's SPIR-V of one entry point, which
+    /// `compile::hlsl` compacts): binding it leaves nothing to compact.
     pub compacted: bool,
 }
 

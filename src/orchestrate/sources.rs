@@ -395,7 +395,7 @@ impl Naga {
             layout: ask.layout,
             backends: &pass.settings.backends,
             glslang: pass.settings.glslang.as_ref(),
-            compacted: parsed.from == ParsedFrom::Together,
+            compacted: parsed.from == ParsedFrom::Together || job.language != ProgramLanguage::Wgsl,
         };
         stage::compile(parsed.module, &request, &Mapper { map, store: pass.store })
     }
