@@ -232,6 +232,30 @@ mod tests {
     use super::*;
 
     #[test]
+    fn only_findings_placed_in_files_read_are_recorded_and_they_come_back_as_they_were() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let path = dir.path().join("a.shader");
+        std::fs::write(&path, "Shader \"A\" {}\n").expect("write");
+        let mut store = SourceStore::new();
+        let made = store.add("<in memory>", "text");
+        let read = store.load(&path).expect("read");
+        let warning = Diagnostic::warning("K0321", "`X` is tested but never declared or defined")
+            .at(Span::new(read, 0..6), "always off in this pass")
+            .label(Span::new(read, 8..9), "and here")
+            .note("a note")
+            .help("a help");
+        let recorded = recordable(&store, [&warning]).expect("recordable");
+        assert_eq!(recorded[0].labels[0].file, 0, "by its index among the files read from disk");
+        assert_eq!(replayed(&store, &recorded), Some(vec![warning.clone()]));
+        let unplaced = Diagnostic::warning("K0620", "the remote cache could not be used");
+        let in_memory = Diagnostic::warning("K0321", "m").at(Span::new(made, 0..4), "here");
+        let error = Diagnostic::error("K0321", "e").at(Span::new(read, 0..6), "here");
+        for finding in [unplaced, in_memory, error] {
+            assert!(recordable(&store, [&warning, &finding]).is_none(), "{finding:?}");
+        }
+    }
+
+    #[test]
     fn the_inputs_key_follows_the_bundled_library() {
         let mut store = SourceStore::new();
         store.add("given.shader", "Shader \"A\" {}");
