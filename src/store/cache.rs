@@ -2,7 +2,7 @@
 //! variant skip naga entirely, and atomic writes (a temporary file and a rename) for all of them.
 
 use super::pass_index::{CachedStage, PassIndex, PassIndexView};
-pub use super::records::{OutputFile, PassKey};
+pub use super::records::{OutputFile, PassKey, RecordedFinding, RecordedLabel, RecordedOccurrence};
 use crate::manifest::{Backend, FileRef, PackPath, open_regular};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -43,56 +43,6 @@ pub struct Recorded {
     /// What the build reported (warnings and remarks, never an error), for a no-op to say again.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub findings: Vec<RecordedFinding>,
-}
-
-/// A warning or remark a clean build reported, as its record keeps it: every place is a file of
-/// the record's `read`, by its index there, and the bytes it spans. Nothing in it is trusted:
-/// the no-op check verifies each place against the file it names before saying it again.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct RecordedFinding {
-    /// How serious it is (an error is never recorded, and refused when read).
-    pub severity: crate::diagnostics::Severity,
-    /// Its code, which must be registered.
-    pub code: String,
-    /// What is wrong.
-    pub message: String,
-    /// The primary place, then the others.
-    pub labels: Vec<RecordedLabel>,
-    /// Further facts.
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub notes: Vec<String>,
-    /// What to do about it.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub help: Option<String>,
-    /// The variants it occurs in.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub occurrence: Option<RecordedOccurrence>,
-}
-
-/// The variants a [`RecordedFinding`] occurs in ([`crate::diagnostics::Occurrence`]).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct RecordedOccurrence {
-    /// Each variant as its keywords.
-    pub variants: Vec<String>,
-    /// Their pass's shader.
-    pub shader: String,
-    /// Their pass's index in the shader.
-    pub pass: usize,
-    /// Where in the pass, after its name.
-    pub within: String,
-}
-
-/// A place in a [`RecordedFinding`]: the `file`-th of the files read, bytes `start..end`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct RecordedLabel {
-    /// Its index in the record's `read`.
-    pub file: usize,
-    /// First byte.
-    pub start: u32,
-    /// One past the last byte.
-    pub end: u32,
-    /// What is there.
-    pub message: String,
 }
 
 /// A file a clean build left (the manifest, the materials or a pack), with its length and hash.

@@ -1,6 +1,7 @@
 //! The names the records of an output folder give its files: a pass's key (its cache entry's
-//! file) and the files the no-op record vouches for. Records are untrusted (anyone can edit and
-//! seal one again), so each name parses into a type that can name nothing else.
+//! file) and the files the no-op record vouches for; and the findings the no-op record keeps.
+//! Records are untrusted (anyone can edit and seal one again), so each name parses into a type
+//! that can name nothing else, and each finding's place is verified before it is said.
 
 use super::cache::hash;
 use crate::manifest::PackPath;
@@ -91,4 +92,54 @@ impl<'de> Deserialize<'de> for OutputFile {
             pack => PackPath::parse(pack).map(OutputFile::Pack).map_err(serde::de::Error::custom),
         }
     }
+}
+
+/// A warning or remark a clean build reported, as its record keeps it: every place is a file of
+/// the record's `read`, by its index there, and the bytes it spans. Nothing in it is trusted:
+/// the no-op check verifies each place against the file it names before saying it again.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RecordedFinding {
+    /// How serious it is (an error is never recorded, and refused when read).
+    pub severity: crate::diagnostics::Severity,
+    /// Its code, which must be registered.
+    pub code: String,
+    /// What is wrong.
+    pub message: String,
+    /// The primary place, then the others.
+    pub labels: Vec<RecordedLabel>,
+    /// Further facts.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<String>,
+    /// What to do about it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub help: Option<String>,
+    /// The variants it occurs in.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub occurrence: Option<RecordedOccurrence>,
+}
+
+/// The variants a [`RecordedFinding`] occurs in ([`crate::diagnostics::Occurrence`]).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RecordedOccurrence {
+    /// Each variant as its keywords.
+    pub variants: Vec<String>,
+    /// Their pass's shader.
+    pub shader: String,
+    /// Their pass's index in the shader.
+    pub pass: usize,
+    /// Where in the pass, after its name.
+    pub within: String,
+}
+
+/// A place in a [`RecordedFinding`]: the `file`-th of the files read, bytes `start..end`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RecordedLabel {
+    /// Its index in the record's `read`.
+    pub file: usize,
+    /// First byte.
+    pub start: u32,
+    /// One past the last byte.
+    pub end: u32,
+    /// What is there.
+    pub message: String,
 }
