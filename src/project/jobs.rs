@@ -64,22 +64,26 @@ pub fn build_part(
         && !matches!(run.part, Part::Shard(_))
         && let Some(mut result) = crate::orchestrate::unchanged(store, &settings, run.writes)
     {
-        // The findings it says again are an error under `strict`, as the build's were.
-        if workspace.strict {
-            diagnostics::promote_warnings(&mut result.diagnostics);
-        }
+        strict_errors(&workspace, &mut result, &mut diagnostics);
         return Ok((result, diagnostics));
     }
     let (catalog, found) = catalog(store, &mut includes, &input);
     diagnostics.extend(found);
     diagnostics.extend(unknown_group_names(store, &workspace.group_names));
-    let result = build(store, &includes, &catalog, &settings, &run, &diagnostics, progress);
+    let mut result = build(store, &includes, &catalog, &settings, &run, &diagnostics, progress);
     // At 100,000 variants, freeing the catalogue takes a twentieth of a second nobody waits for.
     std::thread::spawn(move || drop((catalog, includes)));
-    if workspace.strict {
-        diagnostics::promote_warnings(&mut diagnostics);
-    }
+    strict_errors(&workspace, &mut result, &mut diagnostics);
     Ok((result, diagnostics))
+}
+
+/// Under `strict`, every warning a build says is an error: the project's and the catalogue's
+/// (`diagnostics`), and the build's own or those a no-op says again (`result`).
+fn strict_errors(workspace: &Workspace, result: &mut BuildResult, diagnostics: &mut [Diagnostic]) {
+    if workspace.strict {
+        diagnostics::promote_warnings(diagnostics);
+        diagnostics::promote_warnings(&mut result.diagnostics);
+    }
 }
 
 /// A project checked for an editor: besides the diagnostics, what its files were found to hold
@@ -239,13 +243,11 @@ pub fn merge_shards(
     let Given { workspace, mut diagnostics, settings, .. } = given;
     // As a build holds its output folder: another build or merge into it waits.
     let _lock = crate::store::OutputLock::acquire(&settings.output);
-    let result = crate::orchestrate::merge(store, &settings, writes(request), &diagnostics, &merge, read);
+    let mut result = crate::orchestrate::merge(store, &settings, writes(request), &diagnostics, &merge, read);
     // The shards' parts are many small strings: freeing them would hold up the answer for a
     // tenth of a second at 100,000 variants, which a process about to exit need not wait for.
     std::thread::spawn(move || drop(merge));
-    if workspace.strict {
-        diagnostics::promote_warnings(&mut diagnostics);
-    }
+    strict_errors(&workspace, &mut result, &mut diagnostics);
     Ok((result, diagnostics))
 }
 

@@ -486,14 +486,17 @@ fn an_unchanged_project_whose_includes_warn_is_a_no_op_that_says_the_warnings_ag
     assert!(said.contains("UnityShaderVariables.cginc:2:"), "{said}");
 }
 
-/// Under `strict` the warnings a no-op says again are errors, as the build's were.
+/// Under `strict` the warnings a build says are errors, the catalogue's (K0321) and a pass's own
+/// (K0316, found as its variants are preprocessed), and so are those a no-op says again.
 #[test]
 fn a_strict_project_s_no_op_fails_on_the_warnings_its_build_failed_on() {
     let dir = tempfile::tempdir().expect("temp dir");
-    let variables = "#ifdef UNITY_SINGLE_PASS_STEREO\n#endif\nfloat4 _Tint;\n";
+    let variables =
+        "#ifdef UNITY_SINGLE_PASS_STEREO\n#endif\n#define TWICE 1\n#define TWICE 2\nfloat4 _Tint;\n";
     let project = cg_project(dir.path(), variables, "strict = true\n");
     let (_, said) = cg_build(&project);
-    assert!(said.contains("error[K0321]"), "{said}");
+    assert!(said.contains("error[K0321]") && said.contains("error[K0316]"), "{said}");
+    assert!(!said.contains("warning["), "{said}");
     let (again, said_again) = cg_build(&project);
     assert!(again.summary.preprocessed == 0, "a no-op: {:?}", again.summary);
     assert_eq!(said_again, said);
