@@ -53,7 +53,7 @@ pub struct Diagnostic {
 
 /// The variants of a pass a diagnostic occurs in, and where in them: `in variant `A` of `S`
 /// pass 0, fragment stage`, or `in 2 variants `A` and `B` of ...` once repeats are merged.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, serde::Deserialize)]
 pub struct Occurrence {
     /// The variants, each as its keywords (`(no keywords)`, `_CLIPPING _FOG`).
     pub variants: Vec<String>,
@@ -64,7 +64,7 @@ pub struct Occurrence {
 }
 
 /// A pass, by its shader's name and its index in the shader.
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, serde::Deserialize)]
 pub struct PassId {
     /// The shader's name (`Custom RP/Lit`).
     pub shader: String,

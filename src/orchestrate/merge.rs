@@ -151,14 +151,14 @@ pub(super) fn merge(
         match parsed {
             Ok(parsed) => {
                 let mut manifest = manifest(heads, parsed);
-                let outputs = merged((store, earlier), &mut manifest, &materials, catalogue, &merge.inputs);
+                let outputs = merged(store, earlier, &mut manifest, &materials, catalogue, &merge.inputs);
                 finish(settings, writes, outputs, summary, diagnostics, link)
             }
             Err(error) => BuildResult::failed(settings, summary, vec![error.into()]),
         }
     } else {
         let mut manifest = manifest(heads, parts);
-        let outputs = merged((store, earlier), &mut manifest, &materials, catalogue, &merge.inputs);
+        let outputs = merged(store, earlier, &mut manifest, &materials, catalogue, &merge.inputs);
         finish(settings, writes, outputs, summary, diagnostics, link)
     }
 }
@@ -166,7 +166,8 @@ pub(super) fn merge(
 /// What a merge writes beside the packs: a manifest of either form (its parts parsed, or as the
 /// shards wrote them), whose shaders no pass streamed.
 fn merged<'a, P>(
-    (store, earlier): (&'a SourceStore, &'a [Diagnostic]),
+    store: &'a SourceStore,
+    earlier: &'a [Diagnostic],
     manifest: &'a mut Manifest<P>,
     materials: &'a [&'a RawValue],
     catalogue: &'a CataloguePart,

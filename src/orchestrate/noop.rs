@@ -3,12 +3,12 @@
 
 use super::{BuildResult, BuildSummary, COMPILER_REVISION, NAGA_VERSION, Writes};
 use crate::config::Settings;
-use crate::diagnostics::{Diagnostic, Label, Occurrence, PassId, Severity};
+use crate::diagnostics::{Diagnostic, Label, Severity};
 use crate::manifest::SCHEMA_VERSION;
 use crate::preprocess::LIBRARY_PREFIX;
 use crate::source::Span;
 use crate::source::{FileId, SourceStore, relative_to};
-use crate::store::{Cache, RecordedFinding, RecordedLabel, RecordedOccurrence};
+use crate::store::{Cache, RecordedFinding, RecordedLabel};
 use rayon::prelude::*;
 use std::time::Instant;
 
@@ -100,12 +100,12 @@ pub fn unchanged(store: &mut SourceStore, settings: &Settings, writes: Writes) -
     if !same_inputs(store, settings, &inputs, &recorded.key) || !cache.files_in_place(&recorded) {
         return None;
     }
+    // What the build reported is said again, each place verified against the file it names.
+    let diagnostics = replayed(store, &recorded.findings)?;
     if writes.output() {
         // What a build stopped since left (its packs, its temporaries) goes, as after any build.
         Cache::new(&settings.output, true).sweep(&recorded.files);
     }
-    // What the build reported is said again, each place verified against the file it names.
-    let diagnostics = replayed(store, &recorded.findings)?;
     let summary = BuildSummary {
         shaders: recorded.shaders,
         passes: recorded.passes,
@@ -148,12 +148,7 @@ pub(super) fn recordable<'a>(
             labels: labels.collect::<Option<_>>()?,
             notes: d.notes.clone(),
             help: d.help.clone(),
-            occurrence: d.occurrence.as_ref().map(|o| RecordedOccurrence {
-                variants: o.variants.clone(),
-                shader: o.pass.shader.clone(),
-                pass: o.pass.index,
-                within: o.within.clone(),
-            }),
+            occurrence: d.occurrence.clone(),
         })
     };
     diagnostics.into_iter().map(finding).collect()
@@ -183,11 +178,7 @@ fn replayed(store: &SourceStore, findings: &[RecordedFinding]) -> Option<Vec<Dia
         d.secondary = secondary.iter().map(label).collect::<Option<_>>()?;
         d.notes = finding.notes.clone();
         d.help = finding.help.clone();
-        d.occurrence = finding.occurrence.as_ref().map(|o| Occurrence {
-            variants: o.variants.clone(),
-            pass: PassId { shader: o.shader.clone(), index: o.pass },
-            within: o.within.clone(),
-        });
+        d.occurrence = finding.occurrence.clone();
         Some(d)
     };
     findings.iter().map(diagnostic).collect()

@@ -2,7 +2,7 @@
 //! variant skip naga entirely, and atomic writes (a temporary file and a rename) for all of them.
 
 use super::pass_index::{CachedStage, PassIndex, PassIndexView};
-pub use super::records::{OutputFile, PassKey, RecordedFinding, RecordedLabel, RecordedOccurrence};
+pub use super::records::{OutputFile, PassKey, RecordedFinding, RecordedLabel};
 use crate::manifest::{Backend, FileRef, PackPath, open_regular};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};

@@ -11,7 +11,7 @@ pub mod shared;
 
 pub use cache::{
     Cache, Digest, Hashed, ModuleBytes, OutputFile, OutputLock, PassKey, PlannedPack, Recorded, RecordedFile,
-    RecordedFinding, RecordedLabel, RecordedOccurrence, SealedEntry, Staged, durable, durable_folder, hash,
-    link_or_copy, pass_index_path, seal, sealed, stage, unsealed, write_atomically,
+    RecordedFinding, RecordedLabel, SealedEntry, Staged, durable, durable_folder, hash, link_or_copy,
+    pass_index_path, seal, sealed, stage, unsealed, write_atomically,
 };
 pub use pass_index::{CachedStage, PassIndex, PassIndexView};

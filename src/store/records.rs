@@ -115,20 +115,7 @@ pub struct RecordedFinding {
     pub help: Option<String>,
     /// The variants it occurs in.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub occurrence: Option<RecordedOccurrence>,
-}
-
-/// The variants a [`RecordedFinding`] occurs in ([`crate::diagnostics::Occurrence`]).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct RecordedOccurrence {
-    /// Each variant as its keywords.
-    pub variants: Vec<String>,
-    /// Their pass's shader.
-    pub shader: String,
-    /// Their pass's index in the shader.
-    pub pass: usize,
-    /// Where in the pass, after its name.
-    pub within: String,
+    pub occurrence: Option<crate::diagnostics::Occurrence>,
 }
 
 /// A place in a [`RecordedFinding`]: the `file`-th of the files read, bytes `start..end`.
